@@ -1,0 +1,181 @@
+// THE attribute table: name, type, default, range and fallback of every attribute (SPEC §2).
+// Parsing, property reflection, README and fuzz tests all read it; nothing here throws.
+import { FRESNEL_MODELS, type FresnelModel } from '../math/fresnel';
+import { clampPitch } from '../math/camera';
+
+export const DEBUG_VIEWS = ['none', 'reflection', 'scene', 'fresnel', 'passes'] as const;
+export type DebugView = (typeof DEBUG_VIEWS)[number];
+
+export type Vec3Tuple = [number, number, number];
+export type YawPitch = [number, number];
+
+/** Every attribute's parsed value, by property name. */
+export interface SceneAttributes {
+  transparency: number;
+  cubeDistance: number;
+  ior: number;
+  fresnel: FresnelModel;
+  cameraPosition: Vec3Tuple;
+  cameraRotation: YawPitch;
+  fov: number;
+  controls: boolean;
+  spin: number;
+  /** Fixed scene clock in seconds, or null for the live clock. */
+  time: number | null;
+  debugView: DebugView;
+}
+
+export type AttributeName = keyof SceneAttributes;
+
+/** The outcome of parsing one raw value: the value to use, and a reason when it is a fallback. */
+export interface Parsed<T> {
+  value: T;
+  problem?: string;
+}
+
+export interface AttributeSpec<K extends AttributeName = AttributeName> {
+  property: K;
+  attribute: string;
+  default: SceneAttributes[K];
+  /** One line for the README and warnings. */
+  doc: string;
+  parse(raw: string | null): Parsed<SceneAttributes[K]>;
+  format(value: SceneAttributes[K]): string | null;
+}
+
+/** Default view: the cube in front, its reflection in the glass, the sphere behind it. */
+export const DEFAULT_CAMERA_POSITION: Vec3Tuple = [3.6, 1.7, 5.2];
+export const DEFAULT_CAMERA_ROTATION: YawPitch = [-120, -8];
+
+const num = (s: string) => (/^\s*$/.test(s) ? NaN : Number(s));
+
+function numberSpec<K extends AttributeName>(
+  property: K, attribute: string, def: number, min: number, max: number, doc: string,
+): AttributeSpec<K> {
+  return {
+    property, attribute, default: def as SceneAttributes[K], doc,
+    parse(raw) {
+      if (raw === null) return { value: def as SceneAttributes[K] };
+      const x = num(raw);
+      if (Number.isNaN(x)) return { value: def as SceneAttributes[K], problem: `not a number, using ${def}` };
+      if (x < min) return { value: min as SceneAttributes[K], problem: `below ${min}, clamped` };
+      if (x > max) return { value: max as SceneAttributes[K], problem: `above ${max}, clamped` };
+      return { value: x as SceneAttributes[K] };
+    },
+    format: (v) => String(v),
+  };
+}
+
+/** Finite numbers only: ±Infinity and NaN fall back to the default. */
+function finiteSpec<K extends AttributeName>(property: K, attribute: string, def: number, doc: string): AttributeSpec<K> {
+  return {
+    property, attribute, default: def as SceneAttributes[K], doc,
+    parse(raw) {
+      if (raw === null) return { value: def as SceneAttributes[K] };
+      const x = num(raw);
+      if (!Number.isFinite(x)) return { value: def as SceneAttributes[K], problem: `not a finite number, using ${def}` };
+      return { value: x as SceneAttributes[K] };
+    },
+    format: (v) => String(v),
+  };
+}
+
+function keywordSpec<K extends AttributeName>(
+  property: K, attribute: string, words: readonly string[], doc: string,
+): AttributeSpec<K> {
+  const def = words[0] as SceneAttributes[K];
+  return {
+    property, attribute, default: def, doc,
+    parse(raw) {
+      if (raw === null) return { value: def };
+      const w = raw.trim().toLowerCase();
+      if (words.includes(w)) return { value: w as SceneAttributes[K] };
+      return { value: def, problem: `expected one of ${words.join(', ')}; using ${String(def)}` };
+    },
+    format: (v) => String(v),
+  };
+}
+
+function tupleParse(raw: string, n: number): number[] | undefined {
+  const parts = raw.trim().split(/[\s,]+/);
+  if (parts.length !== n) return undefined;
+  const xs = parts.map(num);
+  return xs.every(Number.isFinite) ? xs : undefined;
+}
+
+// Ranges of the camera position: beyond ±1e7 float64 composition still holds, but nothing
+// useful is visible; the bound keeps every derived uniform finite.
+const MAX_COORD = 1e7;
+
+export const ATTRIBUTES: readonly AttributeSpec[] = [
+  numberSpec('transparency', 'transparency', 0.5, 0, 1, 'T in the glass equation; 1 = clear glass'),
+  finiteSpec('cubeDistance', 'cube-distance', 2.5, "z of the cube's centre (signed distance from the glass)"),
+  numberSpec('ior', 'ior', 1.5, 1, 10, 'index of refraction for the Fresnel term'),
+  keywordSpec('fresnel', 'fresnel', FRESNEL_MODELS, 'Fresnel model: exact, schlick or classic (seed 000)'),
+  {
+    property: 'cameraPosition', attribute: 'camera-position', default: DEFAULT_CAMERA_POSITION,
+    doc: '"x y z" of the flyby camera',
+    parse(raw) {
+      if (raw === null) return { value: [...DEFAULT_CAMERA_POSITION] };
+      const xs = tupleParse(raw, 3);
+      if (!xs) return { value: [...DEFAULT_CAMERA_POSITION], problem: 'expected "x y z", using the default view' };
+      const c = xs.map((x) => Math.max(-MAX_COORD, Math.min(MAX_COORD, x))) as Vec3Tuple;
+      return c.some((x, i) => x !== xs[i]) ? { value: c, problem: `coordinates clamped to ±${MAX_COORD}` } : { value: c };
+    },
+    format: (v) => v.join(' '),
+  } satisfies AttributeSpec<'cameraPosition'>,
+  {
+    property: 'cameraRotation', attribute: 'camera-rotation', default: DEFAULT_CAMERA_ROTATION,
+    doc: '"yaw pitch" in degrees; yaw −90 looks down −Z, pitch clamped to ±89.9',
+    parse(raw) {
+      if (raw === null) return { value: [...DEFAULT_CAMERA_ROTATION] };
+      const xs = tupleParse(raw, 2);
+      if (!xs) return { value: [...DEFAULT_CAMERA_ROTATION], problem: 'expected "yaw pitch", using the default view' };
+      // Yaw wraps into (−180, 180] so huge values keep their precision meaningfully.
+      const yaw = ((((xs[0] + 180) % 360) + 360) % 360) - 180;
+      const pitch = clampPitch(xs[1]);
+      return pitch !== xs[1] ? { value: [yaw, pitch], problem: 'pitch clamped to ±89.9' } : { value: [yaw, pitch] };
+    },
+    format: (v) => v.join(' '),
+  } satisfies AttributeSpec<'cameraRotation'>,
+  numberSpec('fov', 'fov', 60, 1, 179, 'vertical field of view in degrees'),
+  {
+    property: 'controls', attribute: 'controls', default: false,
+    doc: 'boolean: keyboard and mouse flyby',
+    parse: (raw) => ({ value: raw !== null }),
+    format: (v) => (v ? '' : null),
+  } satisfies AttributeSpec<'controls'>,
+  finiteSpec('spin', 'spin', 0.8, "the cube's spin about its Y axis, rad/s; 0 stops it"),
+  {
+    property: 'time', attribute: 'time', default: null,
+    doc: 'fixes the scene clock, in seconds (deterministic frames)',
+    parse(raw) {
+      if (raw === null) return { value: null };
+      const x = num(raw);
+      if (!Number.isFinite(x)) return { value: null, problem: 'not a finite number, using the live clock' };
+      return { value: x };
+    },
+    format: (v) => (v === null ? null : String(v)),
+  } satisfies AttributeSpec<'time'>,
+  keywordSpec('debugView', 'debug-view', DEBUG_VIEWS, 'shows one pass instead of the final image'),
+] as AttributeSpec[];
+
+export const ATTRIBUTE_BY_NAME: ReadonlyMap<string, AttributeSpec> = new Map(ATTRIBUTES.map((s) => [s.attribute, s]));
+
+export function defaultAttributes(): SceneAttributes {
+  const out = {} as Record<string, unknown>;
+  for (const s of ATTRIBUTES) out[s.property] = s.parse(null).value;
+  return out as unknown as SceneAttributes;
+}
+
+/**
+ * Turns whatever a script assigned to a property into the attribute string it stands for:
+ * null/undefined remove it, booleans toggle presence, arrays join with spaces.
+ */
+export function propertyToRaw(spec: AttributeSpec, value: unknown): string | null {
+  if (value === null || value === undefined) return null;
+  if (spec.property === 'controls') return value ? '' : null;
+  if (Array.isArray(value)) return value.map((x) => String(x)).join(' ');
+  if (typeof value === 'number' || typeof value === 'string' || typeof value === 'boolean') return String(value);
+  return '\u0000invalid'; // objects, symbols, functions: never usable
+}

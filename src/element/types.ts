@@ -1,0 +1,25 @@
+// Public types of the element's events, stats and captures.
+import type { PassName, FrameReport, RenderStats } from '../render/types';
+
+export type { PassName, FrameReport, RenderStats };
+
+export type CapturePass = 'reflection' | 'scene' | 'final';
+
+export type ErrorType = 'webgl2-unavailable' | 'context-lost' | 'shader' | 'load';
+
+export interface GlassPlaneSceneErrorDetail {
+  type: ErrorType;
+  message: string;
+}
+
+export interface CameraChangeDetail {
+  position: [number, number, number];
+  rotation: [number, number];
+}
+
+export interface GlassPlaneSceneEventMap extends HTMLElementEventMap {
+  ready: CustomEvent<FrameReport>;
+  frame: CustomEvent<FrameReport>;
+  error: CustomEvent<GlassPlaneSceneErrorDetail>;
+  'camera-change': CustomEvent<CameraChangeDetail>;
+}

@@ -1,0 +1,37 @@
+// Fresnel reflectance models of SPEC §4; the GLSL in shaders/glass.frag mirrors these.
+
+export type FresnelModel = 'exact' | 'schlick' | 'classic';
+export const FRESNEL_MODELS: readonly FresnelModel[] = ['exact', 'schlick', 'classic'];
+
+const clamp01 = (x: number) => (x < 0 ? 0 : x > 1 ? 1 : x);
+
+/** Unpolarized dielectric reflectance from air into a medium of index `ior` ≥ 1. */
+export function fresnelExact(cosTheta: number, ior: number): number {
+  const ci = clamp01(cosTheta);
+  const sinT2 = (1 - ci * ci) / (ior * ior);
+  if (sinT2 >= 1) return 1;
+  const ct = Math.sqrt(1 - sinT2);
+  // max(…, tiny) keeps ior = 1 at grazing incidence finite (0/0 otherwise).
+  const rs = (ci - ior * ct) / Math.max(ci + ior * ct, 1e-30);
+  const rp = (ct - ior * ci) / Math.max(ct + ior * ci, 1e-30);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
+/** Schlick's approximation: R0 + (1 − R0)(1 − cosθ)^5. */
+export function fresnelSchlick(cosTheta: number, ior: number): number {
+  const r0 = ((ior - 1) / (ior + 1)) ** 2;
+  return r0 + (1 - r0) * (1 - clamp01(cosTheta)) ** 5;
+}
+
+/** Seed 000's term, verbatim: (1 − cosθ)^3 (ignores ior). */
+export function fresnelClassic(cosTheta: number): number {
+  return (1 - clamp01(cosTheta)) ** 3;
+}
+
+export function fresnel(model: FresnelModel, cosTheta: number, ior: number): number {
+  switch (model) {
+    case 'schlick': return fresnelSchlick(cosTheta, ior);
+    case 'classic': return fresnelClassic(cosTheta);
+    default: return fresnelExact(cosTheta, ior);
+  }
+}

@@ -1,0 +1,53 @@
+// Reflection across a plane: points, directions and the mirrored view matrix (float64).
+import { mat4 } from 'gl-matrix';
+import type { ReadonlyMat4, ReadonlyVec3 } from 'gl-matrix';
+
+/** A plane [nx, ny, nz, d]: points x with n·x + d = 0; n must be unit length. */
+export type Plane = readonly [number, number, number, number] | Float64Array;
+
+type Out3 = Float64Array | Float32Array | number[];
+type Out16 = Float64Array | Float32Array | number[];
+
+/** Signed distance of a point from the plane (positive on the side n points to). */
+export function signedDistance(plane: Plane, p: ReadonlyVec3): number {
+  return plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3];
+}
+
+/** out = p mirrored across the plane. `out` may alias `p`. */
+export function reflectPoint<T extends Out3>(out: T, p: ReadonlyVec3, plane: Plane): T {
+  const k = 2 * signedDistance(plane, p);
+  out[0] = p[0] - k * plane[0];
+  out[1] = p[1] - k * plane[1];
+  out[2] = p[2] - k * plane[2];
+  return out;
+}
+
+/** out = direction d mirrored across the plane (translation ignored). `out` may alias `d`. */
+export function reflectDirection<T extends Out3>(out: T, d: ReadonlyVec3, plane: Plane): T {
+  const k = 2 * (plane[0] * d[0] + plane[1] * d[1] + plane[2] * d[2]);
+  out[0] = d[0] - k * plane[0];
+  out[1] = d[1] - k * plane[1];
+  out[2] = d[2] - k * plane[2];
+  return out;
+}
+
+/** out = the 4×4 reflection matrix of the plane (column-major, det −1, its own inverse). */
+export function reflectionMatrix<T extends Out16>(out: T, plane: Plane): T {
+  const [a, b, c, d] = [plane[0], plane[1], plane[2], plane[3]];
+  out[0] = 1 - 2 * a * a; out[1] = -2 * a * b;    out[2] = -2 * a * c;     out[3] = 0;
+  out[4] = -2 * a * b;    out[5] = 1 - 2 * b * b; out[6] = -2 * b * c;     out[7] = 0;
+  out[8] = -2 * a * c;    out[9] = -2 * b * c;    out[10] = 1 - 2 * c * c; out[11] = 0;
+  out[12] = -2 * a * d;   out[13] = -2 * b * d;   out[14] = -2 * c * d;    out[15] = 1;
+  return out;
+}
+
+/**
+ * out = view × reflection: the view of the mirrored world from the real camera. A point on
+ * the plane projects where it does in the real view, so the reflection texture lines up
+ * with the screen; the determinant is −1, so front faces wind the other way.
+ * `out` may alias `view`; `scratch` is a caller-owned 16-element temporary.
+ */
+export function mirroredView<T extends Out16>(out: T, view: ReadonlyMat4, plane: Plane, scratch: Out16): T {
+  reflectionMatrix(scratch, plane);
+  return mat4.multiply(out as mat4, view, scratch as mat4) as T;
+}

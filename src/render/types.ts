@@ -1,0 +1,60 @@
+// Plain data the renderer takes and gives back: no DOM, no GL handles.
+import type { FresnelModel } from '../math/fresnel';
+
+export type PassName = 'reflection' | 'scene' | 'glass';
+
+export type RenderView = 'final' | 'reflection' | 'scene' | 'fresnel' | 'passes';
+
+/** Everything a frame depends on. Same state in, same pixels out. */
+export interface FrameState {
+  width: number;
+  height: number;
+  time: number;
+  spin: number;
+  cubeDistance: number;
+  transparency: number;
+  ior: number;
+  fresnel: FresnelModel;
+  fov: number;
+  cameraPosition: readonly [number, number, number];
+  yaw: number;
+  pitch: number;
+  view: RenderView;
+}
+
+export interface PassReport {
+  ran: boolean;
+  /** Why a pass did not run. */
+  reason?: string;
+}
+
+export interface FrameReport {
+  /** Frames rendered so far by this element, this one included. */
+  frame: number;
+  /** Scene clock of the frame, seconds. */
+  time: number;
+  width: number;
+  height: number;
+  passes: Record<PassName, PassReport>;
+  drawCalls: number;
+}
+
+export interface ResourceCounts {
+  buffers: number;
+  textures: number;
+  framebuffers: number;
+  renderbuffers: number;
+  vertexArrays: number;
+  programs: number;
+  shaders: number;
+}
+
+export interface RenderStats {
+  frames: number;
+  passesRun: Record<PassName, number>;
+  passesSkipped: Record<PassName, number>;
+  /** Draw calls of the last frame. */
+  drawCalls: number;
+  /** Live GL objects owned by this element; all zero after it is removed. */
+  resources: ResourceCounts & { total: number };
+}

@@ -1,0 +1,39 @@
+// The seeded checker-plus-noise texture of SPEC §3 (never Math.random: frames are reproducible).
+import { TEXTURE_SIZE } from './default-scene';
+
+const CELL = 64;
+const LIGHT = 200;
+const DARK = 100;
+
+/** Per-texel noise in −15..15 levels, from the §3 integer hash. */
+export function textureNoise(x: number, y: number): number {
+  let h = (Math.imul(x, 374761393) + Math.imul(y, 668265263)) | 0;
+  h = Math.imul(h ^ (h >>> 13), 1274126177);
+  return (((h ^ (h >>> 16)) >>> 0) % 31) - 15;
+}
+
+/** The 8-bit grey level of texel (x, y), 0 ≤ x, y < 512. */
+export function texel(x: number, y: number): number {
+  const base = ((Math.floor(x / CELL) + Math.floor(y / CELL)) & 1) === 0 ? LIGHT : DARK;
+  const v = base + textureNoise(x, y);
+  return v < 0 ? 0 : v > 255 ? 255 : v;
+}
+
+let cached: Uint8Array | undefined;
+
+/** RGBA8 pixels, row y = 0 first (the first row uploaded). Built once, shared, read-only. */
+export function proceduralTexture(): Uint8Array {
+  if (cached) return cached;
+  const n = TEXTURE_SIZE;
+  const data = new Uint8Array(n * n * 4);
+  for (let y = 0; y < n; y++) {
+    for (let x = 0; x < n; x++) {
+      const v = texel(x, y);
+      const i = (y * n + x) * 4;
+      data[i] = data[i + 1] = data[i + 2] = v;
+      data[i + 3] = 255;
+    }
+  }
+  cached = data;
+  return data;
+}

@@ -1,0 +1,44 @@
+// Dev server for the demo (and the browser tests), and the two library builds:
+//   `vite build`                    ESM, gl-matrix left as a dependency
+//   `vite build --mode standalone`  one self-contained minified file for <script type="module">
+import { defineConfig, type Plugin } from 'vite';
+
+/** `/` opens the demo, so `npm run demo` lands on it. */
+const demoAtRoot: Plugin = {
+  name: 'demo-at-root',
+  configureServer(server) {
+    server.middlewares.use((req, res, next) => {
+      if (req.url === '/' || req.url === '/index.html') {
+        res.statusCode = 302;
+        res.setHeader('Location', '/demo/');
+        res.end();
+        return;
+      }
+      next();
+    });
+  },
+};
+
+export default defineConfig(({ mode }) => {
+  const standalone = mode === 'standalone';
+  return {
+    plugins: [demoAtRoot],
+    appType: 'mpa',
+    server: { host: '127.0.0.1', port: 5173 },
+    build: {
+      outDir: 'dist',
+      emptyOutDir: !standalone,
+      target: 'es2022',
+      minify: standalone,
+      sourcemap: true,
+      lib: {
+        entry: 'src/index.ts',
+        formats: ['es'],
+        fileName: () => (standalone ? 'glass-plane-scene.standalone.js' : 'glass-plane-scene.js'),
+      },
+      rollupOptions: {
+        external: standalone ? [] : [/^gl-matrix/],
+      },
+    },
+  };
+});
