@@ -17,7 +17,7 @@ export interface CameraChangeDetail {
   rotation: [number, number];
 }
 
-export interface GlassPlaneSceneEventMap extends HTMLElementEventMap {
+export interface GlassPlaneSceneEventMap extends Omit<HTMLElementEventMap, 'error'> {
   ready: CustomEvent<FrameReport>;
   frame: CustomEvent<FrameReport>;
   error: CustomEvent<GlassPlaneSceneErrorDetail>;

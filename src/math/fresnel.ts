@@ -8,9 +8,8 @@ const clamp01 = (x: number) => (x < 0 ? 0 : x > 1 ? 1 : x);
 /** Unpolarized dielectric reflectance from air into a medium of index `ior` ≥ 1. */
 export function fresnelExact(cosTheta: number, ior: number): number {
   const ci = clamp01(cosTheta);
-  const sinT2 = (1 - ci * ci) / (ior * ior);
-  if (sinT2 >= 1) return 1;
-  const ct = Math.sqrt(1 - sinT2);
+  // cosθt = √(n² − 1 + cos²θi)/n: exact for n = 1 (no 1 − cos² rounding at grazing incidence).
+  const ct = Math.sqrt(Math.max(ior * ior - 1 + ci * ci, 0)) / ior;
   // max(…, tiny) keeps ior = 1 at grazing incidence finite (0/0 otherwise).
   const rs = (ci - ior * ct) / Math.max(ci + ior * ct, 1e-30);
   const rp = (ct - ior * ci) / Math.max(ct + ior * ci, 1e-30);

@@ -1,0 +1,53 @@
+#version 300 es
+// Dark glass of SPEC §4: out = F·R + (1 − F)·(T·B + (1 − T)·D), premultiplied over pass 2.
+// One of FRESNEL_EXACT / FRESNEL_SCHLICK / FRESNEL_CLASSIC; OUTPUT_FRESNEL writes F as grey.
+precision highp float;
+
+uniform sampler2D uTexture;
+uniform sampler2D uReflection;
+uniform float uTransparency;
+uniform float uIor;
+uniform vec3 uBodyTint;         // tint ⊙ darkness
+
+in highp vec3 vRelPos;
+in vec3 vNormal;
+in vec2 vUv;
+in highp vec4 vReflectionClip;
+
+out vec4 outColor;
+
+float fresnel(float c) {
+#if defined(FRESNEL_EXACT)
+  // cosθt = √(n² − 1 + cos²θi)/n, exact for n = 1 (no 1 − cos² rounding at grazing incidence).
+  float ct = sqrt(max(uIor * uIor - 1.0 + c * c, 0.0)) / uIor;
+  float rs = (c - uIor * ct) / max(c + uIor * ct, 1e-30);
+  float rp = (ct - uIor * c) / max(ct + uIor * c, 1e-30);
+  return 0.5 * (rs * rs + rp * rp);
+#elif defined(FRESNEL_SCHLICK)
+  float r0 = (uIor - 1.0) / (uIor + 1.0);
+  r0 *= r0;
+  return r0 + (1.0 - r0) * pow(1.0 - c, 5.0);
+#else
+  return pow(1.0 - c, 3.0);
+#endif
+}
+
+void main() {
+  // Two-sided: |N·V|, clamped because a normalised dot can exceed 1 by an ulp.
+  float c = clamp(abs(dot(normalize(vNormal), normalize(-vRelPos))), 0.0, 1.0);
+  float f = fresnel(c);
+#ifdef OUTPUT_FRESNEL
+  outColor = vec4(f, f, f, 1.0);
+#else
+  vec2 uv = vReflectionClip.xy / vReflectionClip.w * 0.5 + 0.5;
+  vec3 r = texture(uReflection, uv).rgb;
+  vec3 d = texture(uTexture, vUv).rgb * uBodyTint;
+#ifdef FRESNEL_CLASSIC
+  // Seed 000 verbatim: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha.
+  float a = (1.0 - uTransparency) * (0.2 + 0.8 * f);
+  outColor = vec4(mix(d, r, f) * a, a);
+#else
+  outColor = vec4(f * r + (1.0 - f) * (1.0 - uTransparency) * d, 1.0 - (1.0 - f) * uTransparency);
+#endif
+#endif
+}

@@ -1,0 +1,36 @@
+#version 300 es
+// Opaque objects. Positions are relative to the eye (float64-composed on the CPU) so a
+// camera far from the origin keeps its precision. CLIP_PLANE: reflection pass only.
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aUv;
+
+uniform highp mat4 uModelViewProjection;
+uniform highp mat4 uModelRelative;
+uniform mat3 uNormalMatrix;
+#ifdef CLIP_PLANE
+uniform highp vec4 uClipPlane;
+#endif
+
+out highp vec3 vRelPos;
+out vec3 vNormal;
+out vec2 vUv;
+#if defined(CLIP_PLANE) && !defined(CLIP_DISTANCE)
+out highp float vClipDistance;
+#endif
+
+void main() {
+  vec4 rel = uModelRelative * vec4(aPosition, 1.0);
+  vRelPos = rel.xyz;
+  vNormal = uNormalMatrix * aNormal;
+  vUv = aUv;
+#ifdef CLIP_PLANE
+  float clipDistance = dot(uClipPlane, vec4(rel.xyz, 1.0));
+#ifdef CLIP_DISTANCE
+  gl_ClipDistance[0] = clipDistance;
+#else
+  vClipDistance = clipDistance;
+#endif
+#endif
+  gl_Position = uModelViewProjection * vec4(aPosition, 1.0);
+}

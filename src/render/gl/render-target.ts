@@ -1,0 +1,56 @@
+// An off-screen colour texture + depth renderbuffer; reallocated only when its size changes.
+import type { ResourceCounter } from './resource-counter';
+
+export class RenderTarget {
+  readonly framebuffer: WebGLFramebuffer;
+  readonly color: WebGLTexture;
+  private readonly depth: WebGLRenderbuffer;
+  width = 0;
+  height = 0;
+
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter) {
+    this.framebuffer = gl.createFramebuffer()!;
+    this.color = gl.createTexture()!;
+    this.depth = gl.createRenderbuffer()!;
+    counter.add('framebuffers');
+    counter.add('textures');
+    counter.add('renderbuffers');
+    gl.bindTexture(gl.TEXTURE_2D, this.color);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+  }
+
+  /** Returns true when storage was (re)allocated. */
+  setSize(width: number, height: number): boolean {
+    width = Math.max(1, Math.floor(width));
+    height = Math.max(1, Math.floor(height));
+    if (width === this.width && height === this.height) return false;
+    const gl = this.gl;
+    this.width = width;
+    this.height = height;
+    gl.bindTexture(gl.TEXTURE_2D, this.color);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, width, height, 0, gl.RGBA, gl.UNSIGNED_BYTE, null);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    gl.bindRenderbuffer(gl.RENDERBUFFER, this.depth);
+    gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, width, height);
+    gl.bindRenderbuffer(gl.RENDERBUFFER, null);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, this.framebuffer);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, this.color, 0);
+    gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, this.depth);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    return true;
+  }
+
+  dispose(): void {
+    const gl = this.gl;
+    gl.deleteFramebuffer(this.framebuffer);
+    gl.deleteTexture(this.color);
+    gl.deleteRenderbuffer(this.depth);
+    this.counter.add('framebuffers', -1);
+    this.counter.add('textures', -1);
+    this.counter.add('renderbuffers', -1);
+  }
+}

@@ -1,0 +1,41 @@
+// An RGBA8 2D texture from pixels (row 0 uploaded first), optionally mipmapped and repeating.
+import type { ResourceCounter } from './resource-counter';
+
+export interface TextureOptions {
+  width: number;
+  height: number;
+  data: Uint8Array | null;
+  mipmap?: boolean;
+  repeat?: boolean;
+}
+
+export class Texture {
+  readonly handle: WebGLTexture;
+
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, o: TextureOptions) {
+    const t = gl.createTexture()!;
+    counter.add('textures');
+    gl.bindTexture(gl.TEXTURE_2D, t);
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, o.width, o.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, o.data);
+    const wrap = o.repeat ? gl.REPEAT : gl.CLAMP_TO_EDGE;
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, wrap);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, wrap);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, o.mipmap ? gl.LINEAR_MIPMAP_LINEAR : gl.LINEAR);
+    if (o.mipmap) gl.generateMipmap(gl.TEXTURE_2D);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    this.handle = t;
+  }
+
+  bind(unit: number): void {
+    const gl = this.gl;
+    gl.activeTexture(gl.TEXTURE0 + unit);
+    gl.bindTexture(gl.TEXTURE_2D, this.handle);
+  }
+
+  dispose(): void {
+    this.gl.deleteTexture(this.handle);
+    this.counter.add('textures', -1);
+  }
+}

@@ -1,0 +1,39 @@
+// Pass 3: the two-sided glass, depth-tested without depth writes, blended over pass 2 with
+// premultiplied alpha (ONE, ONE_MINUS_SRC_ALPHA). `outputFresnel` writes F as grey instead.
+import { GLASS } from '../../scene/default-scene';
+import { setMatrices, type PassContext } from './pass-context';
+
+const BODY_TINT = GLASS.tint.map((c) => c * GLASS.darkness);
+
+/** Draws into the bound framebuffer and viewport; returns the number of draw calls. */
+export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFresnel = false): number {
+  const { gl, setup, state } = ctx;
+  const program = ctx.programs.glass(state.fresnel, outputFresnel);
+  gl.enable(gl.DEPTH_TEST);
+  gl.depthMask(false);
+  if (!outputFresnel) {
+    gl.enable(gl.BLEND);
+    gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA);
+  }
+  try {
+    program.use();
+    setMatrices(gl, program, setup.main.glass);
+    gl.uniformMatrix4fv(program.location('uReflectionViewProjection'), false, setup.reflectionViewProjection);
+    gl.uniform1f(program.location('uTransparency'), state.transparency);
+    gl.uniform1f(program.location('uIor'), state.ior);
+    gl.uniform3fv(program.location('uBodyTint'), BODY_TINT);
+    gl.uniform1i(program.location('uTexture'), 0);
+    gl.uniform1i(program.location('uReflection'), 1);
+    ctx.texture.bind(0);
+    gl.activeTexture(gl.TEXTURE1);
+    gl.bindTexture(gl.TEXTURE_2D, reflection);
+    ctx.meshes.glass.draw();
+  } finally {
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.disable(gl.BLEND);
+    gl.depthMask(true);
+    gl.disable(gl.DEPTH_TEST);
+  }
+  return 1;
+}

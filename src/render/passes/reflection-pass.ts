@@ -1,0 +1,49 @@
+// Pass 1: the eye's side of the glass, seen through the mirror (view × reflection), into an FBO.
+// What lies beyond the glass is clipped on the GPU (gl_ClipDistance, or discard without the
+// extension); an object whose bounds lie wholly beyond it is culled, not drawn.
+import { CUBE, GLASS, SPHERE } from '../../scene/default-scene';
+import { signedDistance } from '../../math/mirror';
+import type { RenderTarget } from '../gl/render-target';
+import { beginTarget, setLighting, setMatrices, type PassContext } from './pass-context';
+
+const CUBE_BOUND = (Math.sqrt(3) / 2) * CUBE.edge;
+const centre = new Float64Array(3);
+
+/** Returns the number of draw calls. */
+export function reflectionPass(ctx: PassContext, target: RenderTarget): number {
+  const { gl, setup, meshes, clipExtension } = ctx;
+  beginTarget(gl, target.framebuffer, { x: 0, y: 0, width: target.width, height: target.height });
+  const program = ctx.programs.standard(clipExtension ? 'clip-distance' : 'discard');
+  let draws = 0;
+  gl.enable(gl.DEPTH_TEST);
+  gl.enable(gl.CULL_FACE);
+  gl.frontFace(gl.CW); // the mirror flips winding
+  if (clipExtension) gl.enable(clipExtension.CLIP_DISTANCE0_WEBGL);
+  try {
+    program.use();
+    setLighting(gl, program);
+    gl.uniform4fv(program.location('uClipPlane'), setup.clipPlane);
+    ctx.texture.bind(0);
+
+    centre[0] = CUBE.x; centre[1] = CUBE.y; centre[2] = ctx.state.cubeDistance;
+    if (setup.side * signedDistance(GLASS.plane, centre) > -CUBE_BOUND) {
+      setMatrices(gl, program, setup.mirrored.cube);
+      gl.uniform3fv(program.location('uAlbedo'), CUBE.albedo);
+      meshes.cube.draw();
+      draws++;
+    }
+    if (setup.side * signedDistance(GLASS.plane, SPHERE.centre) > -SPHERE.radius) {
+      setMatrices(gl, program, setup.mirrored.sphere);
+      gl.uniform3fv(program.location('uAlbedo'), SPHERE.albedo);
+      meshes.sphere.draw();
+      draws++;
+    }
+  } finally {
+    if (clipExtension) gl.disable(clipExtension.CLIP_DISTANCE0_WEBGL);
+    gl.frontFace(gl.CCW);
+    gl.disable(gl.CULL_FACE);
+    gl.disable(gl.DEPTH_TEST);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+  }
+  return draws;
+}

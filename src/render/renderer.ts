@@ -1,0 +1,246 @@
+// Decides which passes run for a view, owns every GL resource of one scene, and reads pixels back.
+// Knows nothing of the DOM: it takes a WebGL2 context and plain FrameState.
+import { Mesh } from './gl/mesh';
+import { RenderTarget } from './gl/render-target';
+import { ResourceCounter } from './gl/resource-counter';
+import { Texture } from './gl/texture';
+import { FrameSetup } from './frame-setup';
+import { ProgramCache } from './programs';
+import { beginTarget, type PassContext, type Viewport } from './passes/pass-context';
+import { reflectionPass } from './passes/reflection-pass';
+import { scenePass } from './passes/scene-pass';
+import { glassPass } from './passes/glass-pass';
+import { boxMesh } from '../scene/geometry/box';
+import { sphereMesh } from '../scene/geometry/sphere';
+import { glassMesh } from '../scene/geometry/rectangle';
+import { proceduralTexture } from '../scene/procedural-texture';
+import { CUBE, SPHERE, TEXTURE_SIZE } from '../scene/default-scene';
+import type { FrameReport, FrameState, PassName, RenderStats, RenderView } from './types';
+
+export interface RendererOptions {
+  /** Check gl.getError() after every frame and report through `onError` (tests and debugging). */
+  checks?: boolean;
+  /** Sphere segments (fixed until the tessellation knob arrives). */
+  sphereSegments?: number;
+}
+
+export interface Pixels {
+  width: number;
+  height: number;
+  /** RGBA8, top row first. */
+  data: Uint8ClampedArray<ArrayBuffer>;
+}
+
+export type ReadbackSource = 'screen' | 'reflection' | 'scene' | 'final';
+
+const BLACK = [0, 0, 0] as const;
+const PASSES: readonly PassName[] = ['reflection', 'scene', 'glass'];
+
+/** Why each pass does not run in a debug view. */
+const SKIPPED_BY_VIEW: Record<RenderView, Partial<Record<PassName, string>>> = {
+  final: {},
+  passes: {},
+  reflection: { scene: 'debug-view reflection', glass: 'debug-view reflection' },
+  scene: { reflection: 'debug-view scene', glass: 'debug-view scene' },
+  fresnel: { reflection: 'debug-view fresnel (F needs no reflection)' },
+};
+
+export class Renderer {
+  private readonly counter = new ResourceCounter();
+  private readonly programs: ProgramCache;
+  private readonly meshes: PassContext['meshes'];
+  private readonly texture: Texture;
+  private readonly reflection: RenderTarget;
+  private captureTarget: RenderTarget | null = null;
+  private readonly blitVao: WebGLVertexArrayObject;
+  private readonly setup = new FrameSetup();
+  private readonly ctx: PassContext;
+  private readonly report: FrameReport = {
+    frame: 0, time: 0, width: 0, height: 0, drawCalls: 0,
+    passes: { reflection: { ran: false }, scene: { ran: false }, glass: { ran: false } },
+  };
+  private readonly counts = {
+    frames: 0,
+    passesRun: { reflection: 0, scene: 0, glass: 0 },
+    passesSkipped: { reflection: 0, scene: 0, glass: 0 },
+  };
+
+  constructor(readonly gl: WebGL2RenderingContext, private readonly options: RendererOptions = {}) {
+    const c = this.counter;
+    this.programs = new ProgramCache(gl, c);
+    this.meshes = {
+      cube: new Mesh(gl, c, boxMesh(CUBE.edge)),
+      sphere: new Mesh(gl, c, sphereMesh(SPHERE.radius, options.sphereSegments ?? 64)),
+      glass: new Mesh(gl, c, glassMesh()),
+    };
+    this.texture = new Texture(gl, c, { width: TEXTURE_SIZE, height: TEXTURE_SIZE, data: proceduralTexture(), mipmap: true, repeat: true });
+    this.reflection = new RenderTarget(gl, c);
+    this.blitVao = gl.createVertexArray()!;
+    c.add('vertexArrays');
+    this.ctx = {
+      gl, programs: this.programs, meshes: this.meshes, texture: this.texture, setup: this.setup,
+      state: undefined as unknown as FrameState,
+      clipExtension: gl.getExtension('WEBGL_clip_cull_distance') as { CLIP_DISTANCE0_WEBGL: number } | null,
+    };
+  }
+
+  /** Draws one frame of `state.view` to the canvas and returns its report (reused object). */
+  render(state: FrameState): FrameReport {
+    const drawCalls = this.draw(state, null);
+    const r = this.report;
+    this.counts.frames++;
+    r.frame = this.counts.frames;
+    r.time = state.time;
+    r.width = state.width;
+    r.height = state.height;
+    r.drawCalls = drawCalls;
+    const skipped = SKIPPED_BY_VIEW[state.view];
+    for (const p of PASSES) {
+      const reason = skipped[p];
+      r.passes[p].ran = reason === undefined;
+      r.passes[p].reason = reason;
+      if (reason === undefined) this.counts.passesRun[p]++;
+      else this.counts.passesSkipped[p]++;
+    }
+    if (this.options.checks) this.checkErrors();
+    return r;
+  }
+
+  /**
+   * Pixels of `state` as drawn: 'screen' redraws the canvas and reads it back (the drawing
+   * buffer is not preserved between frames); the others draw one pass off screen.
+   */
+  read(source: ReadbackSource, state: FrameState): Pixels {
+    const gl = this.gl;
+    if (source === 'screen') {
+      this.draw(state, null);
+      return this.readFramebuffer(null, state.width, state.height);
+    }
+    this.prepare(state);
+    if (source === 'reflection') {
+      reflectionPass(this.ctx, this.reflection);
+      return this.readFramebuffer(this.reflection.framebuffer, this.reflection.width, this.reflection.height);
+    }
+    const target = (this.captureTarget ??= new RenderTarget(gl, this.counter));
+    target.setSize(state.width, state.height);
+    this.draw({ ...state, view: source }, target.framebuffer);
+    return this.readFramebuffer(target.framebuffer, target.width, target.height);
+  }
+
+  get stats(): RenderStats {
+    const counts = { ...this.counter.counts };
+    return {
+      frames: this.counts.frames,
+      passesRun: { ...this.counts.passesRun },
+      passesSkipped: { ...this.counts.passesSkipped },
+      drawCalls: this.report.drawCalls,
+      resources: { ...counts, total: this.counter.total },
+    };
+  }
+
+  /** Compiled shader programs (only the variants in use are compiled). */
+  get programCount(): number {
+    return this.programs.size;
+  }
+
+  dispose(): void {
+    const gl = this.gl;
+    this.programs.dispose();
+    this.meshes.cube.dispose();
+    this.meshes.sphere.dispose();
+    this.meshes.glass.dispose();
+    this.texture.dispose();
+    this.reflection.dispose();
+    this.captureTarget?.dispose();
+    this.captureTarget = null;
+    gl.deleteVertexArray(this.blitVao);
+    this.counter.add('vertexArrays', -1);
+  }
+
+  private prepare(state: FrameState): void {
+    this.ctx.state = state;
+    this.setup.update(state);
+    this.reflection.setSize(state.width, state.height);
+  }
+
+  /** Draws `state.view` into `framebuffer` (null = canvas); returns the draw calls. */
+  private draw(state: FrameState, framebuffer: WebGLFramebuffer | null): number {
+    this.prepare(state);
+    const full: Viewport = { x: 0, y: 0, width: state.width, height: state.height };
+    const ctx = this.ctx;
+    switch (state.view) {
+      case 'scene':
+        beginTarget(this.gl, framebuffer, full);
+        return scenePass(ctx);
+      case 'fresnel':
+        return this.drawFresnel(framebuffer, full);
+      case 'reflection': {
+        const n = reflectionPass(ctx, this.reflection);
+        return n + this.blit(framebuffer, full);
+      }
+      case 'passes':
+        return this.drawTiles(framebuffer, state.width, state.height);
+      default: {
+        const n = reflectionPass(ctx, this.reflection);
+        beginTarget(this.gl, framebuffer, full);
+        return n + scenePass(ctx) + glassPass(ctx, this.reflection.color);
+      }
+    }
+  }
+
+  private drawFresnel(framebuffer: WebGLFramebuffer | null, vp: Viewport): number {
+    beginTarget(this.gl, framebuffer, vp, BLACK);
+    return scenePass(this.ctx, true) + glassPass(this.ctx, this.reflection.color, true);
+  }
+
+  /** Reflection | scene over fresnel | final, in the four quadrants. */
+  private drawTiles(framebuffer: WebGLFramebuffer | null, width: number, height: number): number {
+    const ctx = this.ctx;
+    const w = Math.floor(width / 2);
+    const h = Math.floor(height / 2);
+    const top = height - h;
+    let n = reflectionPass(ctx, this.reflection);
+    n += this.blit(framebuffer, { x: 0, y: top, width: w, height: h });
+    beginTarget(this.gl, framebuffer, { x: width - w, y: top, width: w, height: h });
+    n += scenePass(ctx);
+    n += this.drawFresnel(framebuffer, { x: 0, y: 0, width: w, height: h });
+    beginTarget(this.gl, framebuffer, { x: width - w, y: 0, width: w, height: h });
+    n += scenePass(ctx) + glassPass(ctx, this.reflection.color);
+    return n;
+  }
+
+  private blit(framebuffer: WebGLFramebuffer | null, vp: Viewport): number {
+    const gl = this.gl;
+    beginTarget(gl, framebuffer, vp);
+    const p = this.programs.blit();
+    p.use();
+    gl.uniform1i(p.location('uSource'), 0);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, this.reflection.color);
+    gl.bindVertexArray(this.blitVao);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    gl.bindVertexArray(null);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    return 1;
+  }
+
+  private readFramebuffer(framebuffer: WebGLFramebuffer | null, width: number, height: number): Pixels {
+    const gl = this.gl;
+    const raw = new Uint8Array(width * height * 4);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
+    gl.pixelStorei(gl.PACK_ALIGNMENT, 1);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, raw);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    const data = new Uint8ClampedArray(raw.length);
+    const row = width * 4;
+    for (let y = 0; y < height; y++) data.set(raw.subarray((height - 1 - y) * row, (height - y) * row), y * row);
+    return { width, height, data };
+  }
+
+  private checkErrors(): void {
+    const gl = this.gl;
+    for (let e = gl.getError(), i = 0; e !== gl.NO_ERROR && i < 8; e = gl.getError(), i++) {
+      console.error(`glass-plane-scene: WebGL error 0x${e.toString(16)} after frame ${this.counts.frames}`);
+    }
+  }
+}

@@ -1,0 +1,264 @@
+// THE attribute table (SPEC §2): defaults, fallbacks with a problem, reflection, fuzz.
+import { describe, expect, it } from 'vitest';
+import {
+  ATTRIBUTE_BY_NAME, ATTRIBUTES, DEBUG_VIEWS, defaultAttributes, propertyToRaw,
+  type AttributeSpec, type Parsed,
+} from '../../src/element/attributes';
+import { PITCH_LIMIT } from '../../src/math/camera';
+
+function spec(attribute: string): AttributeSpec {
+  const s = ATTRIBUTE_BY_NAME.get(attribute);
+  if (!s) throw new Error(`no attribute ${attribute}`);
+  return s;
+}
+const parse = (attribute: string, raw: string | null): Parsed<unknown> => spec(attribute).parse(raw);
+
+function expectOk(attribute: string, raw: string, value: unknown): void {
+  const r = parse(attribute, raw);
+  expect(r.value, `${attribute}="${raw}"`).toEqual(value);
+  expect(r.problem, `${attribute}="${raw}" should have no problem`).toBeUndefined();
+}
+
+function expectFallback(attribute: string, raw: string, value: unknown): void {
+  const r = parse(attribute, raw);
+  expect(r.value, `${attribute}="${raw}"`).toEqual(value);
+  expect(typeof r.problem, `${attribute}="${raw}" should report a problem`).toBe('string');
+  expect(r.problem!.length).toBeGreaterThan(0);
+}
+
+describe('defaults', () => {
+  it('has the SPEC §2 default for every attribute', () => {
+    const d = defaultAttributes();
+    expect(d.transparency).toBe(0.5);
+    expect(d.cubeDistance).toBe(2.5);
+    expect(d.ior).toBe(1.5);
+    expect(d.fresnel).toBe('exact');
+    expect(d.fov).toBe(60);
+    expect(d.spin).toBe(0.8);
+    expect(d.time).toBeNull();
+    expect(d.debugView).toBe('none');
+    expect(d.controls).toBe(false);
+    expect(d.cameraPosition).toHaveLength(3);
+    expect(d.cameraPosition.every(Number.isFinite)).toBe(true);
+    expect(d.cameraRotation).toHaveLength(2);
+    expect(Math.abs(d.cameraRotation[1])).toBeLessThanOrEqual(PITCH_LIMIT);
+  });
+
+  it('declares every attribute once, with a kebab-case name matching its camelCase property', () => {
+    const names = ATTRIBUTES.map((s) => s.attribute);
+    expect(new Set(names).size).toBe(names.length);
+    expect([...names].sort()).toEqual([
+      'camera-position', 'camera-rotation', 'controls', 'cube-distance', 'debug-view', 'fov',
+      'fresnel', 'ior', 'spin', 'time', 'transparency',
+    ]);
+    for (const s of ATTRIBUTES) {
+      expect(s.attribute.replace(/-([a-z])/g, (_, c: string) => c.toUpperCase())).toBe(s.property);
+      expect(s.doc.length).toBeGreaterThan(0);
+      expect(s.parse(null).problem).toBeUndefined();
+      expect(s.parse(null).value).toEqual(s.default);
+    }
+  });
+
+  it('hands out fresh arrays, so mutating one parse cannot change the default', () => {
+    const a = defaultAttributes();
+    a.cameraPosition[0] = 999;
+    a.cameraRotation[0] = 999;
+    expect(defaultAttributes().cameraPosition[0]).not.toBe(999);
+    expect(defaultAttributes().cameraRotation[0]).not.toBe(999);
+    expect(spec('camera-position').default).not.toContain(999);
+  });
+
+  it('formats the default back to a string that parses to the same value', () => {
+    for (const s of ATTRIBUTES) {
+      const raw = s.format(s.default as never);
+      const r = s.parse(raw);
+      expect(r.value, s.attribute).toEqual(s.default);
+      expect(r.problem).toBeUndefined();
+    }
+  });
+});
+
+describe('numbers', () => {
+  it('transparency clamps to 0..1 and falls back to 0.5 on garbage', () => {
+    expectOk('transparency', '0.25', 0.25);
+    expectOk('transparency', '1', 1);
+    expectOk('transparency', '  3e-1  ', 0.3);
+    expectFallback('transparency', '2', 1);
+    expectFallback('transparency', '-1', 0);
+    expectFallback('transparency', 'abc', 0.5);
+    expectFallback('transparency', '', 0.5);
+    expectFallback('transparency', '   ', 0.5);
+    expectFallback('transparency', 'NaN', 0.5);
+    expectFallback('transparency', '0.5px', 0.5);
+  });
+
+  it('ior clamps to 1..10', () => {
+    expectOk('ior', '1.33', 1.33);
+    expectFallback('ior', '0.5', 1);
+    expectFallback('ior', '11', 10);
+    expectFallback('ior', 'glass', 1.5);
+  });
+
+  it('fov clamps to 1..179', () => {
+    expectOk('fov', '45', 45);
+    expectFallback('fov', '0', 1);
+    expectFallback('fov', '500', 179);
+    expectFallback('fov', '-Infinity', 1);
+  });
+
+  it('cube-distance and spin take any finite number, never ±Infinity', () => {
+    expectOk('cube-distance', '-3', -3);
+    expectOk('cube-distance', '1e308', 1e308);
+    expectFallback('cube-distance', 'Infinity', 2.5);
+    expectFallback('cube-distance', '1e309', 2.5);
+    expectFallback('cube-distance', 'far', 2.5);
+    expectOk('spin', '0', 0);
+    expectOk('spin', '-2.5', -2.5);
+    expectFallback('spin', '-Infinity', 0.8);
+  });
+
+  it('time is a finite number of seconds or null', () => {
+    expectOk('time', '0', 0);
+    expectOk('time', '12.5', 12.5);
+    expectFallback('time', 'abc', null);
+    expectFallback('time', 'Infinity', null);
+    expectFallback('time', '', null);
+  });
+});
+
+describe('keywords', () => {
+  it('fresnel is case-insensitive and falls back to exact', () => {
+    expectOk('fresnel', 'SCHLICK', 'schlick');
+    expectOk('fresnel', ' classic ', 'classic');
+    expectOk('fresnel', 'exact', 'exact');
+    expectFallback('fresnel', 'foo', 'exact');
+    expectFallback('fresnel', '', 'exact');
+  });
+
+  it('debug-view accepts every listed view', () => {
+    for (const v of DEBUG_VIEWS) expectOk('debug-view', v, v);
+    expectFallback('debug-view', 'depth', 'none');
+  });
+});
+
+describe('camera', () => {
+  const defPos = spec('camera-position').default;
+  const defRot = spec('camera-rotation').default;
+
+  it('camera-position takes exactly three finite numbers', () => {
+    expectOk('camera-position', '1 2 3', [1, 2, 3]);
+    expectOk('camera-position', ' -1.5,0 ,  2e1 ', [-1.5, 0, 20]);
+    expectFallback('camera-position', '1 2', defPos);
+    expectFallback('camera-position', '1 2 3 4', defPos);
+    expectFallback('camera-position', '1 NaN 3', defPos);
+    expectFallback('camera-position', '1 Infinity 3', defPos);
+    expectFallback('camera-position', '', defPos);
+  });
+
+  it('camera-rotation clamps pitch to ±89.9 and wraps yaw', () => {
+    expectOk('camera-rotation', '-90 0', [-90, 0]);
+    expectFallback('camera-rotation', '10 95', [10, 89.9]);
+    expectFallback('camera-rotation', '10 -95', [10, -89.9]);
+    expectOk('camera-rotation', ' 370 0', [10, 0]);
+    expectOk('camera-rotation', '-370 0', [-10, 0]);
+    expectOk('camera-rotation', '720 5', [0, 5]);
+    expectFallback('camera-rotation', '10', defRot);
+    expectFallback('camera-rotation', 'left up', defRot);
+  });
+});
+
+describe('controls', () => {
+  it('is a presence boolean', () => {
+    expect(parse('controls', null).value).toBe(false);
+    expect(parse('controls', '').value).toBe(true);
+    expect(parse('controls', 'controls').value).toBe(true);
+    expect(parse('controls', 'false').value).toBe(true); // HTML boolean attributes: presence wins
+    expect(spec('controls').format(true as never)).toBe('');
+    expect(spec('controls').format(false as never)).toBeNull();
+  });
+});
+
+describe('propertyToRaw', () => {
+  it('turns numbers, strings, arrays, booleans, null and objects into attribute strings', () => {
+    expect(propertyToRaw(spec('transparency'), 0.25)).toBe('0.25');
+    expect(propertyToRaw(spec('fresnel'), 'schlick')).toBe('schlick');
+    expect(propertyToRaw(spec('camera-position'), [1, 2, 3])).toBe('1 2 3');
+    expect(propertyToRaw(spec('camera-rotation'), [-90, 5])).toBe('-90 5');
+    expect(propertyToRaw(spec('controls'), true)).toBe('');
+    expect(propertyToRaw(spec('controls'), false)).toBeNull();
+    expect(propertyToRaw(spec('controls'), 1)).toBe('');
+    expect(propertyToRaw(spec('time'), null)).toBeNull();
+    expect(propertyToRaw(spec('time'), undefined)).toBeNull();
+    expect(propertyToRaw(spec('transparency'), true)).toBe('true');
+  });
+
+  it('round-trips property values through parse', () => {
+    expect(parse('camera-position', propertyToRaw(spec('camera-position'), [4, -5, 6])).value).toEqual([4, -5, 6]);
+    expect(parse('fov', propertyToRaw(spec('fov'), 75)).value).toBe(75);
+    expect(parse('time', propertyToRaw(spec('time'), null)).value).toBeNull();
+  });
+
+  it('makes objects, functions and symbols unusable values that parse to a fallback', () => {
+    for (const v of [{}, { x: 1 }, () => 1, Symbol('s'), new Map()]) {
+      const raw = propertyToRaw(spec('transparency'), v);
+      expect(typeof raw).toBe('string');
+      expectFallback('transparency', raw!, 0.5);
+      expectFallback('camera-position', propertyToRaw(spec('camera-position'), v)!, defaultAttributes().cameraPosition);
+      expectFallback('fresnel', propertyToRaw(spec('fresnel'), v)!, 'exact');
+    }
+  });
+});
+
+describe('fuzz: parse never throws and always yields a usable value', () => {
+  const hostile = [
+    '', ' ', '\t\n', '\u00a0', '\u0000', '\u0000invalid', 'é', '∞', '１', '🙂', '\u202e1', '٣',
+    'x'.repeat(10_000), '1 '.repeat(5_000), '9'.repeat(400), '1e309', '-1e309', '1e-400', '-0', '0x10', '0b11', '0o7',
+    '  3  ', '3,', ',3', '1,,2,,3', '1 2 3 ', 'NaN NaN NaN', 'Infinity', '-Infinity', '+5', '.5', '5.', '1e', '--1',
+    'null', 'undefined', 'true', '[1,2,3]', '{"x":1}', '<script>', 'EXACT', 'Reflection', '1 2 3\n', '1\t2\t3',
+    '180 0', '-180 0', '1e300 1e300', '-1e300 -1e300', '1e7 -1e7 1e8', '5e-324 0 0',
+  ];
+
+  for (const s of ATTRIBUTES) {
+    it(s.attribute, () => {
+      for (const raw of hostile) {
+        let r: Parsed<unknown> | undefined;
+        expect(() => { r = s.parse(raw); }, `${s.attribute}="${raw.slice(0, 20)}"`).not.toThrow();
+        const v = r!.value;
+        if (r!.problem !== undefined) expect(typeof r!.problem).toBe('string');
+        switch (s.property) {
+          case 'controls': expect(v).toBe(true); break;
+          case 'fresnel': expect(['exact', 'schlick', 'classic']).toContain(v); break;
+          case 'debugView': expect(DEBUG_VIEWS).toContain(v); break;
+          case 'time': expect(v === null || Number.isFinite(v)).toBe(true); break;
+          case 'cameraPosition':
+            expect(v).toHaveLength(3);
+            for (const x of v as number[]) expect(Math.abs(x)).toBeLessThanOrEqual(1e7);
+            break;
+          case 'cameraRotation': {
+            const [yaw, pitch] = v as number[];
+            expect(Number.isFinite(yaw)).toBe(true);
+            expect(yaw).toBeGreaterThanOrEqual(-180);
+            expect(yaw).toBeLessThanOrEqual(180);
+            expect(Math.abs(pitch)).toBeLessThanOrEqual(PITCH_LIMIT);
+            break;
+          }
+          default: {
+            expect(Number.isFinite(v), `${s.attribute}="${raw.slice(0, 20)}" → ${String(v)}`).toBe(true);
+            const range = { transparency: [0, 1], ior: [1, 10], fov: [1, 179] }[s.property as string];
+            if (range) {
+              expect(v as number).toBeGreaterThanOrEqual(range[0]);
+              expect(v as number).toBeLessThanOrEqual(range[1]);
+            }
+          }
+        }
+      }
+    });
+  }
+
+  it('treats whitespace-padded numbers, -0 and hex as numbers', () => {
+    expectOk('fov', '  3  ', 3);
+    expectFallback('transparency', '0x10', 1);
+    expect(parse('cube-distance', '-0').value).toBe(-0);
+    expect(parse('camera-rotation', '-0 -0').value).toEqual([0, -0]);
+  });
+});

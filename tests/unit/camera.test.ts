@@ -1,0 +1,108 @@
+// Camera pose → forward, view and projection (SPEC §3).
+import { describe, expect, it } from 'vitest';
+import { vec4, type mat4 } from 'gl-matrix';
+import { clampPitch, forwardFromYawPitch, PITCH_LIMIT, projectionMatrix, rotationOnlyView, viewMatrix } from '../../src/math/camera';
+
+function expectClose(actual: ArrayLike<number>, expected: ArrayLike<number>, eps = 1e-12): void {
+  for (let i = 0; i < expected.length; i++) {
+    expect(Math.abs(actual[i] - expected[i]), `component ${i}: ${actual[i]} vs ${expected[i]}`).toBeLessThanOrEqual(eps);
+  }
+}
+
+function apply(m: ArrayLike<number>, p: ArrayLike<number>): Float64Array {
+  const out = new Float64Array(4);
+  vec4.transformMat4(out as unknown as vec4, [p[0], p[1], p[2], 1], m as mat4);
+  return out;
+}
+
+describe('forwardFromYawPitch', () => {
+  it('yaw −90, pitch 0 looks down −Z', () => {
+    expectClose(forwardFromYawPitch(new Float64Array(3), -90, 0), [0, 0, -1]);
+  });
+
+  it('yaw 0 looks down +X, yaw 90 down +Z, yaw 180 down −X', () => {
+    expectClose(forwardFromYawPitch(new Float64Array(3), 0, 0), [1, 0, 0]);
+    expectClose(forwardFromYawPitch(new Float64Array(3), 90, 0), [0, 0, 1]);
+    expectClose(forwardFromYawPitch([0, 0, 0], 180, 0), [-1, 0, 0]);
+  });
+
+  it('pitch 30 tilts up by sin 30 and stays unit length', () => {
+    const f = forwardFromYawPitch(new Float64Array(3), -90, 30);
+    expectClose(f, [0, 0.5, -Math.sqrt(3) / 2]);
+    expect(Math.hypot(f[0], f[1], f[2])).toBeCloseTo(1, 14);
+  });
+
+  it('clamps pitch before use', () => {
+    const f = forwardFromYawPitch(new Float64Array(3), -90, 120);
+    expect(f[1]).toBeCloseTo(Math.sin((PITCH_LIMIT * Math.PI) / 180), 14);
+    expect(f[2]).toBeLessThan(0);
+  });
+});
+
+describe('clampPitch', () => {
+  it('clamps to ±89.9 and passes values inside', () => {
+    expect(PITCH_LIMIT).toBe(89.9);
+    expect(clampPitch(95)).toBe(89.9);
+    expect(clampPitch(-1000)).toBe(-89.9);
+    expect(clampPitch(45)).toBe(45);
+    expect(clampPitch(-89.9)).toBe(-89.9);
+  });
+});
+
+describe('viewMatrix', () => {
+  const cases = [
+    { position: [0, 0, 0], yaw: -90, pitch: 0 },
+    { position: [3.6, 1.7, 5.2], yaw: -120, pitch: -8 },
+    { position: [-2, 5, -9], yaw: 37, pitch: 60 },
+    { position: [1e5, -3, 2e5], yaw: 179, pitch: -89.9 },
+  ] as const;
+
+  for (const { position, yaw, pitch } of cases) {
+    it(`maps the eye to the origin and eye + forward to (0,0,−1): ${position} ${yaw} ${pitch}`, () => {
+      const view = viewMatrix(new Float64Array(16), position, yaw, pitch, new Float64Array(3));
+      const eps = 1e-9 * Math.max(1, Math.hypot(...position));
+      expectClose(apply(view, position), [0, 0, 0, 1], eps);
+      const f = forwardFromYawPitch(new Float64Array(3), yaw, pitch);
+      const ahead = [position[0] + f[0], position[1] + f[1], position[2] + f[2]];
+      expectClose(apply(view, ahead), [0, 0, -1, 1], eps);
+    });
+  }
+
+  it('keeps world up in the upper half of the view (no roll)', () => {
+    const view = viewMatrix(new Float64Array(16), [0, 0, 0], -90, 0, new Float64Array(3));
+    expectClose(apply(view, [0, 1, 0]), [0, 1, 0, 1]);
+    expectClose(apply(view, [1, 0, 0]), [1, 0, 0, 1]); // +X is to the right looking down −Z
+  });
+
+  it('rotationOnlyView equals viewMatrix at the origin', () => {
+    const a = viewMatrix(new Float64Array(16), [0, 0, 0], 33, -12, new Float64Array(3));
+    const b = rotationOnlyView(new Float64Array(16), 33, -12, new Float64Array(3));
+    expectClose(b, a, 0);
+  });
+});
+
+describe('projectionMatrix', () => {
+  const near = 0.1;
+  const far = 100;
+  const proj = projectionMatrix(new Float64Array(16), 60, 16 / 9, near, far);
+  const ndcZ = (z: number) => {
+    const c = apply(proj, [0, 0, z]);
+    return c[2] / c[3];
+  };
+
+  it('maps the near plane to z_ndc = −1 and the far plane to +1', () => {
+    expect(ndcZ(-near)).toBeCloseTo(-1, 12);
+    expect(ndcZ(-far)).toBeCloseTo(1, 9);
+    expect(ndcZ(-1)).toBeGreaterThan(-1);
+    expect(ndcZ(-1)).toBeLessThan(1);
+  });
+
+  it('puts the top of the vertical fov at y_ndc = 1 and respects the aspect', () => {
+    const z = -5;
+    const h = -z * Math.tan((30 * Math.PI) / 180);
+    const top = apply(proj, [0, h, z]);
+    expect(top[1] / top[3]).toBeCloseTo(1, 12);
+    const right = apply(proj, [h * (16 / 9), 0, z]);
+    expect(right[0] / right[3]).toBeCloseTo(1, 12);
+  });
+});

@@ -1,0 +1,131 @@
+// Mirror math: points, directions, the reflection matrix and the mirrored view (SPEC §4 pass 1).
+import { describe, expect, it } from 'vitest';
+import { mat4, vec4 } from 'gl-matrix';
+import { mirroredView, reflectDirection, reflectionMatrix, reflectPoint, signedDistance, type Plane } from '../../src/math/mirror';
+
+const Z0: Plane = [0, 0, 1, 0];
+// Unit normal (0.6, 0, 0.8), points with 0.6x + 0.8z = 2.
+const OBLIQUE: Plane = [0.6, 0, 0.8, -2];
+// Unit normal (2/3, 1/3, 2/3), offset 1.
+const OBLIQUE2: Plane = [2 / 3, 1 / 3, 2 / 3, 1];
+
+function expectClose(actual: ArrayLike<number>, expected: ArrayLike<number>, eps = 1e-12): void {
+  expect(actual.length).toBe(expected.length);
+  for (let i = 0; i < expected.length; i++) {
+    expect(Math.abs(actual[i] - expected[i]), `component ${i}: ${actual[i]} vs ${expected[i]}`).toBeLessThanOrEqual(eps);
+  }
+}
+
+/** view · (p, 1), divided by nothing: affine matrices keep w = 1. */
+function apply(m: ArrayLike<number>, p: ArrayLike<number>): Float64Array {
+  const out = new Float64Array(4);
+  vec4.transformMat4(out as unknown as vec4, [p[0], p[1], p[2], 1], m as mat4);
+  return out;
+}
+
+describe('reflectPoint', () => {
+  it('mirrors across z = 0', () => {
+    expectClose(reflectPoint(new Float64Array(3), [1, 2, 3], Z0), [1, 2, -3]);
+    expectClose(reflectPoint(new Float64Array(3), [-4, 0.5, -0.25], Z0), [-4, 0.5, 0.25]);
+  });
+
+  it('mirrors across an oblique plane (hand-computed)', () => {
+    // distance of (1,1,1) = 0.6 + 0.8 − 2 = −0.6 → p − 2(−0.6)n = (1.72, 1, 1.96)
+    expectClose(reflectPoint(new Float64Array(3), [1, 1, 1], OBLIQUE), [1.72, 1, 1.96]);
+    // origin is at distance 1 from OBLIQUE2 → −2n
+    expectClose(reflectPoint(new Float64Array(3), [0, 0, 0], OBLIQUE2), [-4 / 3, -2 / 3, -4 / 3]);
+  });
+
+  it('negates the signed distance and keeps points on the plane fixed', () => {
+    const p = [0.3, -7, 11] as const;
+    const r = reflectPoint(new Float64Array(3), p, OBLIQUE);
+    expect(signedDistance(OBLIQUE, r)).toBeCloseTo(-signedDistance(OBLIQUE, p), 12);
+    const onPlane = [2 / 0.6 - (0.8 / 0.6) * 1, 5, 1] as const; // 0.6x + 0.8·1 = 2
+    expectClose(reflectPoint(new Float64Array(3), onPlane, OBLIQUE), onPlane);
+  });
+
+  it('works with out aliasing the input', () => {
+    const p = new Float64Array([1, 1, 1]);
+    const r = reflectPoint(p, p, OBLIQUE);
+    expect(r).toBe(p);
+    expectClose(p, [1.72, 1, 1.96]);
+  });
+
+  it('reflecting twice is the identity', () => {
+    const p = new Float64Array([-3.5, 2.25, 9]);
+    const r = reflectPoint(new Float64Array(3), p, OBLIQUE2);
+    expectClose(reflectPoint(new Float64Array(3), r, OBLIQUE2), p, 1e-12);
+  });
+});
+
+describe('reflectDirection', () => {
+  it('flips z across z = 0 and ignores the offset', () => {
+    expectClose(reflectDirection(new Float64Array(3), [1, 2, 3], Z0), [1, 2, -3]);
+    expectClose(reflectDirection(new Float64Array(3), [1, 2, 3], [0, 0, 1, 5]), [1, 2, -3]);
+  });
+
+  it('mirrors across an oblique plane (hand-computed)', () => {
+    // d = +X: n·d = 0.6 → d − 1.2n = (0.28, 0, −0.96); the offset −2 plays no part.
+    expectClose(reflectDirection(new Float64Array(3), [1, 0, 0], OBLIQUE), [0.28, 0, -0.96]);
+  });
+
+  it('works with out aliasing the input and round-trips', () => {
+    const d = new Float64Array([0.2, -0.4, 0.9]);
+    reflectDirection(d, d, OBLIQUE2);
+    expect(Math.abs(d[0] - 0.2)).toBeGreaterThan(1e-3); // it did change
+    reflectDirection(d, d, OBLIQUE2);
+    expectClose(d, [0.2, -0.4, 0.9]);
+  });
+});
+
+describe('reflectionMatrix', () => {
+  for (const [name, plane] of [['z = 0', Z0], ['oblique', OBLIQUE], ['oblique 2', OBLIQUE2]] as const) {
+    it(`${name}: R·R = I and det R = −1`, () => {
+      const r = reflectionMatrix(new Float64Array(16), plane);
+      const rr = mat4.multiply(new Float64Array(16) as unknown as mat4, r as unknown as mat4, r as unknown as mat4);
+      expectClose(rr, mat4.identity(new Float64Array(16) as unknown as mat4), 1e-12);
+      expect(mat4.determinant(r as unknown as mat4)).toBeCloseTo(-1, 12);
+    });
+
+    it(`${name}: agrees with reflectPoint and reflectDirection`, () => {
+      const r = reflectionMatrix(new Float64Array(16), plane);
+      const p = [1.5, -2, 0.75] as const;
+      const mp = apply(r, p);
+      expectClose(mp.subarray(0, 3), reflectPoint(new Float64Array(3), p, plane));
+      expect(mp[3]).toBe(1);
+      const md = new Float64Array(4);
+      vec4.transformMat4(md as unknown as vec4, [p[0], p[1], p[2], 0], r as unknown as mat4);
+      expectClose(md.subarray(0, 3), reflectDirection(new Float64Array(3), p, plane));
+    });
+  }
+});
+
+describe('mirroredView', () => {
+  const view = mat4.lookAt(new Float64Array(16) as unknown as mat4, [3.6, 1.7, 5.2], [1, 0.5, -1], [0, 1, 0]);
+
+  for (const [name, plane] of [['z = 0', Z0], ['oblique', OBLIQUE]] as const) {
+    it(`${name}: a point on the plane lands where the real view puts it`, () => {
+      const mv = mirroredView(new Float64Array(16), view, plane, new Float64Array(16));
+      const onPlane = reflectPoint(new Float64Array(3), [0.7, 1.3, -0.4], plane); // midpoint of p and its mirror is on the plane
+      const mid = [(onPlane[0] + 0.7) / 2, (onPlane[1] + 1.3) / 2, (onPlane[2] - 0.4) / 2];
+      expect(signedDistance(plane, mid)).toBeCloseTo(0, 12);
+      expectClose(apply(mv, mid), apply(view, mid), 1e-12);
+    });
+
+    it(`${name}: mirroredView·p = view·reflectPoint(p)`, () => {
+      const mv = mirroredView(new Float64Array(16), view, plane, new Float64Array(16));
+      for (const p of [[-1, 1, 2.5], [1, 1, -1.5], [10, -3, 7]] as const) {
+        expectClose(apply(mv, p), apply(view, reflectPoint(new Float64Array(3), p, plane)), 1e-12);
+      }
+    });
+  }
+
+  it('works with out aliasing view, and its determinant is −1', () => {
+    const expected = mirroredView(new Float64Array(16), view, OBLIQUE, new Float64Array(16));
+    const v = Float64Array.from(view);
+    const r = mirroredView(v, v, OBLIQUE, new Float64Array(16));
+    expect(r).toBe(v);
+    expectClose(v, expected, 0);
+    expect(mat4.determinant(v as unknown as mat4)).toBeCloseTo(-1, 12);
+  });
+});
