@@ -44,8 +44,8 @@ export interface AttributeSpec<K extends AttributeName = AttributeName> {
 }
 
 /** Default view: the cube in front, its reflection in the glass, the sphere behind it. */
-export const DEFAULT_CAMERA_POSITION: Vec3Tuple = [3.6, 1.7, 5.2];
-export const DEFAULT_CAMERA_ROTATION: YawPitch = [-120, -8];
+export const DEFAULT_CAMERA_POSITION: Vec3Tuple = [5.25, 3, 1];
+export const DEFAULT_CAMERA_ROTATION: YawPitch = [-170.8, -19.6];
 
 const num = (s: string) => (/^\s*$/.test(s) ? NaN : Number(s));
 

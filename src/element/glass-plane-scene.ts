@@ -12,6 +12,7 @@ const PREFIX = 'glass-plane-scene:';
 const MAX_WARNINGS = 200;
 const CAPTURE_SOURCES: Record<CapturePass, ReadbackSource> = { reflection: 'reflection', scene: 'scene', final: 'final' };
 const DEBUG_KEY = 'KeyF';
+const DEFAULT_LABEL = 'A dark glass plane reflecting a cube, with a sphere behind it';
 
 // Lets the module load where HTMLElement does not exist (server-side rendering, Node tests).
 const Base = (typeof HTMLElement === 'undefined' ? class {} : HTMLElement) as typeof HTMLElement;
@@ -32,7 +33,16 @@ export interface GlassPlaneScene extends SceneAttributes {}
 
 export class GlassPlaneScene extends Base {
   static get observedAttributes(): string[] {
-    return ATTRIBUTES.map((a) => a.attribute);
+    return [...ATTRIBUTES.map((a) => a.attribute), 'alt'];
+  }
+
+  /** Text alternative for assistive technology (like <img alt>); becomes the aria-label. */
+  get alt(): string {
+    return this.getAttribute('alt') ?? DEFAULT_LABEL;
+  }
+
+  set alt(value: string) {
+    this.setAttribute('alt', String(value));
   }
 
   private readonly values: SceneAttributes = defaultAttributes();
@@ -76,7 +86,7 @@ export class GlassPlaneScene extends Base {
     for (const spec of ATTRIBUTES) this.upgradeProperty(spec.property);
     if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
     if (!this.hasAttribute('role')) this.setAttribute('role', 'img');
-    if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', 'Dark glass plane reflecting a cube, with a sphere behind it');
+    if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', this.alt);
     this.addEventListener('keydown', this.onKeyDown);
     this.addEventListener('keyup', this.onKeyUp);
     this.addEventListener('blur', this.onBlur);
@@ -106,6 +116,10 @@ export class GlassPlaneScene extends Base {
   }
 
   attributeChangedCallback(name: string, _old: string | null, raw: string | null): void {
+    if (name === 'alt') {
+      this.setAttribute('aria-label', raw ?? DEFAULT_LABEL);
+      return;
+    }
     const spec = ATTRIBUTE_BY_NAME.get(name);
     if (!spec) return;
     const parsed = spec.parse(raw);
