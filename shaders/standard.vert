@@ -1,6 +1,8 @@
 #version 300 es
 // Opaque objects. Positions are relative to the eye (float64-composed on the CPU) so a
 // camera far from the origin keeps its precision. CLIP_PLANE: reflection pass only.
+// SHADING_PHONG lights per fragment; SHADING_GOURAUD per vertex, interpolated;
+// SHADING_FLAT per vertex, taken from one vertex of each triangle.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
@@ -12,18 +14,28 @@ uniform mat3 uNormalMatrix;
 uniform highp vec4 uClipPlane;
 #endif
 
+out vec2 vUv;
+#if defined(SHADING_PHONG)
 out highp vec3 vRelPos;
 out vec3 vNormal;
-out vec2 vUv;
+#elif defined(SHADING_FLAT)
+flat out vec2 vLight;
+#else
+out vec2 vLight;
+#endif
 #if defined(CLIP_PLANE) && !defined(CLIP_DISTANCE)
 out highp float vClipDistance;
 #endif
 
 void main() {
   vec4 rel = uModelRelative * vec4(aPosition, 1.0);
+  vUv = aUv;
+#if defined(SHADING_PHONG)
   vRelPos = rel.xyz;
   vNormal = uNormalMatrix * aNormal;
-  vUv = aUv;
+#else
+  vLight = blinnPhong(normalize(uNormalMatrix * aNormal), normalize(-rel.xyz));
+#endif
 #ifdef CLIP_PLANE
   float clipDistance = dot(uClipPlane, vec4(rel.xyz, 1.0));
 #ifdef CLIP_DISTANCE

@@ -6,6 +6,10 @@ import { clampPitch } from '../math/camera';
 export const DEBUG_VIEWS = ['none', 'reflection', 'scene', 'fresnel', 'passes'] as const;
 export type DebugView = (typeof DEBUG_VIEWS)[number];
 
+export const SHADINGS = ['phong', 'gouraud', 'flat'] as const;
+export type Shading = (typeof SHADINGS)[number];
+export const SAMPLE_COUNTS = [0, 2, 4] as const;
+
 export type Vec3Tuple = [number, number, number];
 export type YawPitch = [number, number];
 
@@ -23,6 +27,15 @@ export interface SceneAttributes {
   /** Fixed scene clock in seconds, or null for the live clock. */
   time: number | null;
   debugView: DebugView;
+  /** Reflection framebuffer size ÷ drawing-buffer size. */
+  reflectionScale: number;
+  /** MSAA samples for the reflection and scene passes: 0, 2 or 4. */
+  samples: number;
+  shading: Shading;
+  /** Sphere segments 4..512, or 'auto' (from the sphere's size on screen). */
+  tessellation: number | 'auto';
+  /** Drawing buffer ÷ CSS pixels, or 'auto' (devicePixelRatio). */
+  pixelRatio: number | 'auto';
 }
 
 export type AttributeName = keyof SceneAttributes;
@@ -48,6 +61,26 @@ export const DEFAULT_CAMERA_POSITION: Vec3Tuple = [5.25, 3, 1];
 export const DEFAULT_CAMERA_ROTATION: YawPitch = [-170.8, -19.6];
 
 const num = (s: string) => (/^\s*$/.test(s) ? NaN : Number(s));
+
+/** A number in [min, max] or the keyword 'auto'; `integer` rounds. */
+function autoOrNumberSpec<K extends AttributeName>(
+  property: K, attribute: string, min: number, max: number, integer: boolean, doc: string,
+): AttributeSpec<K> {
+  const def = 'auto' as SceneAttributes[K];
+  return {
+    property, attribute, default: def, doc,
+    parse(raw) {
+      if (raw === null || raw.trim().toLowerCase() === 'auto') return { value: def };
+      let x = num(raw);
+      if (Number.isNaN(x)) return { value: def, problem: `expected a number or auto, using auto` };
+      if (integer) x = Math.round(x);
+      if (x < min) return { value: min as SceneAttributes[K], problem: `below ${min}, clamped` };
+      if (x > max) return { value: max as SceneAttributes[K], problem: `above ${max}, clamped` };
+      return { value: x as SceneAttributes[K] };
+    },
+    format: (v) => String(v),
+  };
+}
 
 function numberSpec<K extends AttributeName>(
   property: K, attribute: string, def: number, min: number, max: number, doc: string,
@@ -158,6 +191,23 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
     format: (v) => (v === null ? null : String(v)),
   } satisfies AttributeSpec<'time'>,
   keywordSpec('debugView', 'debug-view', DEBUG_VIEWS, 'shows one pass instead of the final image'),
+  numberSpec('reflectionScale', 'reflection-scale', 1, 0.125, 2, 'reflection framebuffer size ÷ drawing-buffer size'),
+  {
+    property: 'samples', attribute: 'samples', default: 0,
+    doc: 'MSAA samples of the reflection and scene passes: 0, 2 or 4',
+    parse(raw) {
+      if (raw === null) return { value: 0 };
+      const x = num(raw);
+      if (Number.isNaN(x)) return { value: 0, problem: 'expected 0, 2 or 4; using 0' };
+      // The nearest allowed count at or below the request (ties never arise: 0, 2, 4).
+      const value = x >= 4 ? 4 : x >= 2 ? 2 : 0;
+      return value === x ? { value } : { value, problem: `expected 0, 2 or 4; using ${value}` };
+    },
+    format: (v) => String(v),
+  } satisfies AttributeSpec<'samples'>,
+  keywordSpec('shading', 'shading', SHADINGS, 'per-fragment phong, per-vertex gouraud, or flat (one vertex per triangle)'),
+  autoOrNumberSpec('tessellation', 'tessellation', 4, 512, true, "sphere segments 4..512, or auto (from the sphere's size on screen)"),
+  autoOrNumberSpec('pixelRatio', 'pixel-ratio', 0.25, 4, false, 'drawing-buffer pixels per CSS pixel, or auto (devicePixelRatio)'),
 ] as AttributeSpec[];
 
 export const ATTRIBUTE_BY_NAME: ReadonlyMap<string, AttributeSpec> = new Map(ATTRIBUTES.map((s) => [s.attribute, s]));

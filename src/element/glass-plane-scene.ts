@@ -20,7 +20,7 @@ const Base = (typeof HTMLElement === 'undefined' ? class {} : HTMLElement) as ty
 function emptyStats(): RenderStats {
   const zero = { reflection: 0, scene: 0, glass: 0 };
   return {
-    frames: 0, passesRun: { ...zero }, passesSkipped: { ...zero }, drawCalls: 0,
+    frames: 0, programs: 0, sphereSegments: 0, passesRun: { ...zero }, passesSkipped: { ...zero }, drawCalls: 0,
     resources: { buffers: 0, textures: 0, framebuffers: 0, renderbuffers: 0, vertexArrays: 0, programs: 0, shaders: 0, total: 0 },
   };
 }
@@ -64,6 +64,7 @@ export class GlassPlaneScene extends Base {
   private readonly state: FrameState = {
     width: 1, height: 1, time: 0, spin: 0, cubeDistance: 0, transparency: 0, ior: 1, fresnel: 'exact',
     fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final',
+    reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 'auto',
   };
 
   constructor() {
@@ -129,6 +130,7 @@ export class GlassPlaneScene extends Base {
       const [yaw, pitch] = this.values.cameraRotation;
       this.flyby.setPose(this.values.cameraPosition, yaw, pitch);
     }
+    if (spec.property === 'pixelRatio') this.onResize();
     this.requestRender();
   }
 
@@ -186,8 +188,10 @@ export class GlassPlaneScene extends Base {
   private start(): void {
     if (this.renderer || this.failed) return;
     if (!this.gl) {
+      // alpha: true so the canvas is RGBA8 like our multisampled targets (a multisample
+      // resolve cannot convert formats); every pass writes alpha 1, so it stays opaque.
       const gl = this.canvas.getContext('webgl2', {
-        alpha: false, antialias: false, depth: true, stencil: false, premultipliedAlpha: true, preserveDrawingBuffer: false,
+        alpha: true, antialias: false, depth: true, stencil: false, premultipliedAlpha: true, preserveDrawingBuffer: false,
       });
       if (!gl) {
         this.fail('webgl2-unavailable', new Error('WebGL2 is not available in this browser, so this scene cannot be shown.'));
@@ -264,6 +268,10 @@ export class GlassPlaneScene extends Base {
     s.yaw = this.flyby.pose.yaw;
     s.pitch = this.flyby.pose.pitch;
     s.view = v.debugView === 'none' ? 'final' : v.debugView;
+    s.reflectionScale = v.reflectionScale;
+    s.samples = v.samples;
+    s.shading = v.shading;
+    s.tessellation = v.tessellation;
     return s;
   }
 
@@ -280,7 +288,7 @@ export class GlassPlaneScene extends Base {
   private resizeCanvas(): boolean {
     const gl = this.gl;
     if (!gl) return false;
-    const dpr = window.devicePixelRatio || 1;
+    const dpr = this.values.pixelRatio === 'auto' ? window.devicePixelRatio || 1 : this.values.pixelRatio;
     const max = gl.getParameter(gl.MAX_VIEWPORT_DIMS) as Int32Array;
     const limit = Math.min(max[0], max[1], gl.getParameter(gl.MAX_TEXTURE_SIZE) as number, gl.getParameter(gl.MAX_RENDERBUFFER_SIZE) as number);
     const w = Math.max(1, Math.min(limit, Math.round(this.clientWidth * dpr)));
@@ -302,7 +310,9 @@ export class GlassPlaneScene extends Base {
       : type === 'shader' ? 'The glass scene could not be drawn: a shader failed to compile.' : 'The graphics context was lost; waiting for it to come back.';
     this.message.hidden = false;
     this.canvas.hidden = type === 'webgl2-unavailable';
-    if (type !== 'webgl2-unavailable') console.error(`${PREFIX} ${message}`);
+    // A broken shader is a bug worth a console line (with the annotated source); a missing
+    // WebGL2 or a lost context is a state of the machine, reported through the event only.
+    if (type === 'shader') console.error(`${PREFIX} ${message}`);
     queueMicrotask(() => this.dispatchEvent(new CustomEvent('error', { detail: { type, message } })));
   }
 

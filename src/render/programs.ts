@@ -5,7 +5,9 @@ import glassVert from '../../shaders/glass.vert?raw';
 import glassFrag from '../../shaders/glass.frag?raw';
 import blitVert from '../../shaders/blit.vert?raw';
 import blitFrag from '../../shaders/blit.frag?raw';
+import lighting from '../../shaders/lighting.glsl?raw';
 import type { FresnelModel } from '../math/fresnel';
+import type { Shading } from './types';
 import { Program } from './gl/program';
 import type { ResourceCounter } from './gl/resource-counter';
 
@@ -20,12 +22,13 @@ export class ProgramCache {
     return this.programs.size;
   }
 
-  standard(clip: ClipMode): Program {
+  standard(clip: ClipMode, shading: Shading): Program {
     const header =
       clip === 'none' ? [] :
       clip === 'clip-distance' ? ['#extension GL_ANGLE_clip_cull_distance : require', '#define CLIP_PLANE', '#define CLIP_DISTANCE'] :
       ['#define CLIP_PLANE'];
-    return this.get(`standard:${clip}`, standardVert, standardFrag, header);
+    header.push(`#define SHADING_${shading.toUpperCase()}`, lighting);
+    return this.get(`standard:${clip}:${shading}`, standardVert, standardFrag, header);
   }
 
   glass(model: FresnelModel, outputFresnel: boolean): Program {

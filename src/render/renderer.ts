@@ -2,6 +2,8 @@
 // Knows nothing of the DOM: it takes a WebGL2 context and plain FrameState.
 import { Mesh } from './gl/mesh';
 import { RenderTarget } from './gl/render-target';
+import { MultisampleTarget } from './gl/multisample-target';
+import { SphereLod } from './sphere-lod';
 import { ResourceCounter } from './gl/resource-counter';
 import { Texture } from './gl/texture';
 import { FrameSetup } from './frame-setup';
@@ -11,17 +13,14 @@ import { reflectionPass } from './passes/reflection-pass';
 import { scenePass } from './passes/scene-pass';
 import { glassPass } from './passes/glass-pass';
 import { boxMesh } from '../scene/geometry/box';
-import { sphereMesh } from '../scene/geometry/sphere';
 import { glassMesh } from '../scene/geometry/rectangle';
 import { proceduralTexture } from '../scene/procedural-texture';
-import { CUBE, SPHERE, TEXTURE_SIZE } from '../scene/default-scene';
+import { CUBE, TEXTURE_SIZE } from '../scene/default-scene';
 import type { FrameReport, FrameState, PassName, RenderStats, RenderView } from './types';
 
 export interface RendererOptions {
   /** Check gl.getError() after every frame and report through `onError` (tests and debugging). */
   checks?: boolean;
-  /** Sphere segments (fixed until the tessellation knob arrives). */
-  sphereSegments?: number;
 }
 
 export interface Pixels {
@@ -52,6 +51,11 @@ export class Renderer {
   private readonly texture: Texture;
   private readonly reflection: RenderTarget;
   private captureTarget: RenderTarget | null = null;
+  /** Multisampled stand-ins, created only when `samples` > 0. */
+  private reflectionMsaa: MultisampleTarget | null = null;
+  private mainMsaa: MultisampleTarget | null = null;
+  private readonly sphere: SphereLod;
+  private readonly maxSamples: number;
   private readonly blitVao: WebGLVertexArrayObject;
   private readonly setup = new FrameSetup();
   private readonly ctx: PassContext;
@@ -68,11 +72,13 @@ export class Renderer {
   constructor(readonly gl: WebGL2RenderingContext, private readonly options: RendererOptions = {}) {
     const c = this.counter;
     this.programs = new ProgramCache(gl, c);
+    this.sphere = new SphereLod(gl, c);
     this.meshes = {
       cube: new Mesh(gl, c, boxMesh(CUBE.edge)),
-      sphere: new Mesh(gl, c, sphereMesh(SPHERE.radius, options.sphereSegments ?? 64)),
+      sphere: null as unknown as Mesh, // chosen per frame by the sphere's LOD
       glass: new Mesh(gl, c, glassMesh()),
     };
+    this.maxSamples = gl.getParameter(gl.MAX_SAMPLES) as number;
     this.texture = new Texture(gl, c, { width: TEXTURE_SIZE, height: TEXTURE_SIZE, data: proceduralTexture(), mipmap: true, repeat: true });
     this.reflection = new RenderTarget(gl, c);
     this.blitVao = gl.createVertexArray()!;
@@ -118,7 +124,7 @@ export class Renderer {
     }
     this.prepare(state);
     if (source === 'reflection') {
-      reflectionPass(this.ctx, this.reflection);
+      this.runReflection();
       return this.readFramebuffer(this.reflection.framebuffer, this.reflection.width, this.reflection.height);
     }
     const target = (this.captureTarget ??= new RenderTarget(gl, this.counter));
@@ -131,6 +137,8 @@ export class Renderer {
     const counts = { ...this.counter.counts };
     return {
       frames: this.counts.frames,
+      programs: this.programs.size,
+      sphereSegments: this.sphere.segments,
       passesRun: { ...this.counts.passesRun },
       passesSkipped: { ...this.counts.passesSkipped },
       drawCalls: this.report.drawCalls,
@@ -138,16 +146,14 @@ export class Renderer {
     };
   }
 
-  /** Compiled shader programs (only the variants in use are compiled). */
-  get programCount(): number {
-    return this.programs.size;
-  }
-
   dispose(): void {
     const gl = this.gl;
     this.programs.dispose();
     this.meshes.cube.dispose();
-    this.meshes.sphere.dispose();
+    this.sphere.dispose();
+    this.reflectionMsaa?.dispose();
+    this.mainMsaa?.dispose();
+    this.reflectionMsaa = this.mainMsaa = null;
     this.meshes.glass.dispose();
     this.texture.dispose();
     this.reflection.dispose();
@@ -160,12 +166,41 @@ export class Renderer {
   private prepare(state: FrameState): void {
     this.ctx.state = state;
     this.setup.update(state);
-    this.reflection.setSize(state.width, state.height);
+    this.meshes.sphere = this.sphere.update(state);
+    const scale = state.reflectionScale;
+    this.reflection.setSize(Math.max(1, Math.round(state.width * scale)), Math.max(1, Math.round(state.height * scale)));
   }
 
-  /** Draws `state.view` into `framebuffer` (null = canvas); returns the draw calls. */
-  private draw(state: FrameState, framebuffer: WebGLFramebuffer | null): number {
+  private samplesFor(state: FrameState): number {
+    return Math.min(state.samples, this.maxSamples);
+  }
+
+  /** Pass 1 into the reflection texture, through a multisampled target when asked. */
+  private runReflection(): number {
+    const { width, height } = this.reflection;
+    const samples = this.samplesFor(this.ctx.state);
+    if (samples === 0) return reflectionPass(this.ctx, this.reflection.framebuffer, width, height);
+    const msaa = (this.reflectionMsaa ??= new MultisampleTarget(this.gl, this.counter));
+    msaa.setSize(width, height, samples);
+    const n = reflectionPass(this.ctx, msaa.framebuffer, width, height);
+    msaa.resolve(this.reflection.framebuffer);
+    return n;
+  }
+
+  /** Draws `state.view` into `destination` (null = canvas), multisampled when asked. */
+  private draw(state: FrameState, destination: WebGLFramebuffer | null): number {
     this.prepare(state);
+    const samples = this.samplesFor(state);
+    if (samples === 0) return this.drawView(state, destination);
+    const msaa = (this.mainMsaa ??= new MultisampleTarget(this.gl, this.counter));
+    msaa.setSize(state.width, state.height, samples);
+    const n = this.drawView(state, msaa.framebuffer);
+    msaa.resolve(destination);
+    return n;
+  }
+
+  /** Draws `state.view` into `framebuffer`; returns the draw calls. */
+  private drawView(state: FrameState, framebuffer: WebGLFramebuffer | null): number {
     const full: Viewport = { x: 0, y: 0, width: state.width, height: state.height };
     const ctx = this.ctx;
     switch (state.view) {
@@ -175,13 +210,13 @@ export class Renderer {
       case 'fresnel':
         return this.drawFresnel(framebuffer, full);
       case 'reflection': {
-        const n = reflectionPass(ctx, this.reflection);
+        const n = this.runReflection();
         return n + this.blit(framebuffer, full);
       }
       case 'passes':
         return this.drawTiles(framebuffer, state.width, state.height);
       default: {
-        const n = reflectionPass(ctx, this.reflection);
+        const n = this.runReflection();
         beginTarget(this.gl, framebuffer, full);
         return n + scenePass(ctx) + glassPass(ctx, this.reflection.color);
       }
@@ -199,7 +234,7 @@ export class Renderer {
     const w = Math.floor(width / 2);
     const h = Math.floor(height / 2);
     const top = height - h;
-    let n = reflectionPass(ctx, this.reflection);
+    let n = this.runReflection();
     n += this.blit(framebuffer, { x: 0, y: top, width: w, height: h });
     beginTarget(this.gl, framebuffer, { x: width - w, y: top, width: w, height: h });
     n += scenePass(ctx);

@@ -20,7 +20,16 @@ export interface FrameState {
   yaw: number;
   pitch: number;
   view: RenderView;
+  /** Reflection framebuffer size ÷ drawing-buffer size (0.125..2). */
+  reflectionScale: number;
+  /** MSAA samples (0 = none); clamped to the context's MAX_SAMPLES. */
+  samples: number;
+  shading: Shading;
+  /** Sphere segments, or 'auto' from its size on screen. */
+  tessellation: number | 'auto';
 }
+
+export type Shading = 'phong' | 'gouraud' | 'flat';
 
 export interface PassReport {
   ran: boolean;
@@ -51,6 +60,10 @@ export interface ResourceCounts {
 
 export interface RenderStats {
   frames: number;
+  /** Shader programs compiled (only the variants in use). */
+  programs: number;
+  /** Segments of the sphere mesh in use. */
+  sphereSegments: number;
   passesRun: Record<PassName, number>;
   passesSkipped: Record<PassName, number>;
   /** Draw calls of the last frame. */

@@ -49,7 +49,8 @@ describe('defaults', () => {
     expect(new Set(names).size).toBe(names.length);
     expect([...names].sort()).toEqual([
       'camera-position', 'camera-rotation', 'controls', 'cube-distance', 'debug-view', 'fov',
-      'fresnel', 'ior', 'spin', 'time', 'transparency',
+      'fresnel', 'ior', 'pixel-ratio', 'reflection-scale', 'samples', 'shading', 'spin', 'tessellation',
+      'time', 'transparency',
     ]);
     for (const s of ATTRIBUTES) {
       expect(s.attribute.replace(/-([a-z])/g, (_, c: string) => c.toUpperCase())).toBe(s.property);
@@ -229,6 +230,14 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
           case 'controls': expect(v).toBe(true); break;
           case 'fresnel': expect(['exact', 'schlick', 'classic']).toContain(v); break;
           case 'debugView': expect(DEBUG_VIEWS).toContain(v); break;
+          case 'shading': expect(['phong', 'gouraud', 'flat']).toContain(v); break;
+          case 'samples': expect([0, 2, 4]).toContain(v); break;
+          case 'tessellation':
+            if (v !== 'auto') expect(Number.isInteger(v) && (v as number) >= 4 && (v as number) <= 512).toBe(true);
+            break;
+          case 'pixelRatio':
+            if (v !== 'auto') expect((v as number) >= 0.25 && (v as number) <= 4).toBe(true);
+            break;
           case 'time': expect(v === null || Number.isFinite(v)).toBe(true); break;
           case 'cameraPosition':
             expect(v).toHaveLength(3);
@@ -244,7 +253,7 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
           }
           default: {
             expect(Number.isFinite(v), `${s.attribute}="${raw.slice(0, 20)}" → ${String(v)}`).toBe(true);
-            const range = { transparency: [0, 1], ior: [1, 10], fov: [1, 179] }[s.property as string];
+            const range = { transparency: [0, 1], ior: [1, 10], fov: [1, 179], reflectionScale: [0.125, 2] }[s.property as string];
             if (range) {
               expect(v as number).toBeGreaterThanOrEqual(range[0]);
               expect(v as number).toBeLessThanOrEqual(range[1]);

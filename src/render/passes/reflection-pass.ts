@@ -3,17 +3,16 @@
 // extension); an object whose bounds lie wholly beyond it is culled, not drawn.
 import { CUBE, GLASS, SPHERE } from '../../scene/default-scene';
 import { signedDistance } from '../../math/mirror';
-import type { RenderTarget } from '../gl/render-target';
 import { beginTarget, setLighting, setMatrices, type PassContext } from './pass-context';
 
 const CUBE_BOUND = (Math.sqrt(3) / 2) * CUBE.edge;
 const centre = new Float64Array(3);
 
 /** Returns the number of draw calls. */
-export function reflectionPass(ctx: PassContext, target: RenderTarget): number {
+export function reflectionPass(ctx: PassContext, framebuffer: WebGLFramebuffer, width: number, height: number): number {
   const { gl, setup, meshes, clipExtension } = ctx;
-  beginTarget(gl, target.framebuffer, { x: 0, y: 0, width: target.width, height: target.height });
-  const program = ctx.programs.standard(clipExtension ? 'clip-distance' : 'discard');
+  beginTarget(gl, framebuffer, { x: 0, y: 0, width, height });
+  const program = ctx.programs.standard(clipExtension ? 'clip-distance' : 'discard', ctx.state.shading);
   let draws = 0;
   gl.enable(gl.DEPTH_TEST);
   gl.enable(gl.CULL_FACE);

@@ -6,7 +6,7 @@ import { setLighting, setMatrices, type PassContext } from './pass-context';
 /** Draws into the bound framebuffer and viewport; returns the number of draw calls. */
 export function scenePass(ctx: PassContext, depthOnly = false): number {
   const { gl, setup, meshes } = ctx;
-  const program = ctx.programs.standard('none');
+  const program = ctx.programs.standard('none', ctx.state.shading);
   gl.enable(gl.DEPTH_TEST);
   gl.enable(gl.CULL_FACE);
   if (depthOnly) gl.colorMask(false, false, false, false);

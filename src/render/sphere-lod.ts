@@ -1,0 +1,52 @@
+// The sphere's mesh at the tessellation asked for, or at 'auto': enough segments that the
+// silhouette error r(1 − cos(π/N)) stays under half a pixel at its current size on screen.
+import { Mesh } from './gl/mesh';
+import type { ResourceCounter } from './gl/resource-counter';
+import { segmentsForScreenRadius, sphereMesh } from '../scene/geometry/sphere';
+import { SPHERE } from '../scene/default-scene';
+import type { FrameState } from './types';
+
+const DEG = Math.PI / 180;
+
+/** Radius in pixels of the sphere seen from `state`'s camera (its largest on-screen extent). */
+export function sphereScreenRadius(state: FrameState): number {
+  const [x, y, z] = state.cameraPosition;
+  const c = SPHERE.centre;
+  const d = Math.hypot(c[0] - x, c[1] - y, c[2] - z);
+  const focal = state.height / 2 / Math.tan((state.fov * DEG) / 2);
+  if (d <= SPHERE.radius * 1.0001) return Number.POSITIVE_INFINITY; // inside it
+  // Silhouette of a sphere: angular radius asin(r/d).
+  return focal * Math.tan(Math.asin(SPHERE.radius / d));
+}
+
+export class SphereLod {
+  mesh: Mesh | null = null;
+  segments = 0;
+
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter) {}
+
+  /** Returns the mesh to draw this frame; rebuilds only when the segment count must change. */
+  update(state: FrameState): Mesh {
+    let wanted: number;
+    if (state.tessellation === 'auto') {
+      wanted = segmentsForScreenRadius(Math.min(sphereScreenRadius(state), 1e6));
+      // Hysteresis: keep a finer mesh until it is twice what is needed, so a camera moving
+      // back and forth does not rebuild the mesh every frame.
+      if (this.mesh && this.segments >= wanted && this.segments <= 2 * wanted) wanted = this.segments;
+    } else {
+      wanted = state.tessellation;
+    }
+    if (!this.mesh || wanted !== this.segments) {
+      this.mesh?.dispose();
+      this.mesh = new Mesh(this.gl, this.counter, sphereMesh(SPHERE.radius, wanted));
+      this.segments = wanted;
+    }
+    return this.mesh;
+  }
+
+  dispose(): void {
+    this.mesh?.dispose();
+    this.mesh = null;
+    this.segments = 0;
+  }
+}
