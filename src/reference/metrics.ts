@@ -1,0 +1,74 @@
+// Error of an RGBA8 image against a reference, per region: RMSE and PSNR in 8-bit levels, and max error.
+import { REGION_BACKGROUND, REGION_CUBE, REGION_EDGE, REGION_GLASS, REGION_SPHERE } from './regions';
+import type { ReferenceImage } from './reference-renderer';
+
+export type RegionName = 'all' | 'glass' | 'objects' | 'background' | 'edges';
+export const REGION_NAMES: readonly RegionName[] = ['all', 'glass', 'objects', 'background', 'edges'];
+export type PerRegion = Record<RegionName, number>;
+
+export interface CompareOptions {
+  /**
+   * 'float' (default): against the float64 reference, so a perfect 8-bit image still shows
+   * its ≤ 0.5-level rounding. 'rgba8': against the reference rounded to 8 bits.
+   */
+  against?: 'float' | 'rgba8';
+}
+
+export interface ImageComparison {
+  /** 20·log10(255 / RMSE) in dB; Infinity when identical, NaN for an empty region. */
+  psnr: PerRegion;
+  /** Root mean square error over R, G and B, in 8-bit levels; NaN for an empty region. */
+  rmse: PerRegion;
+  /** Largest absolute channel error over the whole image, in 8-bit levels. */
+  maxError: number;
+  maxErrorByRegion: PerRegion;
+  /** Pixels in each region. */
+  pixels: PerRegion;
+}
+
+const REGION_OF: Record<number, RegionName> = {
+  [REGION_BACKGROUND]: 'background',
+  [REGION_CUBE]: 'objects',
+  [REGION_SPHERE]: 'objects',
+  [REGION_GLASS]: 'glass',
+  [REGION_EDGE]: 'edges',
+};
+
+const perRegion = (v: number): PerRegion => ({ all: v, glass: v, objects: v, background: v, edges: v });
+
+/** Compares `rgba` (top row first, as `capture()` and the reference give it) with `ref`. */
+export function compareImages(
+  ref: ReferenceImage, rgba: Uint8ClampedArray | Uint8Array, options: CompareOptions = {},
+): ImageComparison {
+  const count = ref.width * ref.height;
+  if (rgba.length !== count * 4) {
+    throw new Error(`glass-plane-scene: image has ${rgba.length} bytes, the ${ref.width}×${ref.height} reference needs ${count * 4}`);
+  }
+  const quantised = options.against === 'rgba8';
+  const squares = perRegion(0);
+  const pixels = perRegion(0);
+  const maxErrorByRegion = perRegion(0);
+  for (let i = 0; i < count; i++) {
+    const name = REGION_OF[ref.regions[i]];
+    let sq = 0, max = 0;
+    for (let c = 0; c < 3; c++) {
+      const expected = quantised ? ref.rgba[4 * i + c] : ref.rgb[3 * i + c] * 255;
+      const e = Math.abs(rgba[4 * i + c] - expected);
+      sq += e * e;
+      if (e > max) max = e;
+    }
+    for (const r of ['all', name] as const) {
+      squares[r] += sq;
+      pixels[r]++;
+      if (max > maxErrorByRegion[r]) maxErrorByRegion[r] = max;
+    }
+  }
+  const rmse = perRegion(NaN);
+  const psnr = perRegion(NaN);
+  for (const r of REGION_NAMES) {
+    if (pixels[r] === 0) continue;
+    rmse[r] = Math.sqrt(squares[r] / (3 * pixels[r]));
+    psnr[r] = rmse[r] === 0 ? Infinity : 20 * Math.log10(255 / rmse[r]);
+  }
+  return { psnr, rmse, maxError: maxErrorByRegion.all, maxErrorByRegion, pixels };
+}

@@ -1,0 +1,67 @@
+// The per-pixel region map: what a pixel shows, or the edge band where its error is dominated by edges.
+import { isCube, SURFACE_GLASS, SURFACE_SPHERE } from './ray-scene';
+import { KEY_BASE } from './sample-tracer';
+
+export const REGION_BACKGROUND = 0;
+export const REGION_CUBE = 1;
+export const REGION_SPHERE = 2;
+export const REGION_GLASS = 3;
+export const REGION_EDGE = 4;
+
+export type Region = 0 | 1 | 2 | 3 | 4;
+
+/** The region of the first visible surface named by a sample key. */
+export function regionOfKey(key: number): Region {
+  const primary = key % KEY_BASE;
+  if (isCube(primary)) return REGION_CUBE;
+  if (primary === SURFACE_SPHERE) return REGION_SPHERE;
+  if (primary === SURFACE_GLASS) return REGION_GLASS;
+  return REGION_BACKGROUND;
+}
+
+/**
+ * Region per pixel from one key per pixel and a flag for pixels whose samples disagreed.
+ * A pixel is on a boundary when it is mixed or an 8-neighbour's key differs (the key names
+ * the cube face, what lies behind the glass and what the glass reflects, so creases,
+ * silhouettes seen through the glass and in the mirror count too, and it flags samples whose
+ * texture footprint was singular: grazing incidence, the sphere's poles). The edge band is the
+ * boundary pixels grown by one pixel: every pixel within about 1.5 px of a boundary.
+ */
+export function regionMap(keys: Int32Array, mixed: Uint8Array, width: number, height: number): Uint8Array {
+  const boundary = new Uint8Array(width * height);
+  for (let y = 0; y < height; y++) {
+    for (let x = 0; x < width; x++) {
+      const i = y * width + x;
+      boundary[i] = mixed[i] || differsFromNeighbour(keys, width, height, x, y) ? 1 : 0;
+    }
+  }
+  const regions = new Uint8Array(width * height);
+  for (let y = 0; y < height; y++) {
+    for (let x = 0; x < width; x++) {
+      const i = y * width + x;
+      regions[i] = anyNear(boundary, width, height, x, y) ? REGION_EDGE : regionOfKey(keys[i]);
+    }
+  }
+  return regions;
+}
+
+function differsFromNeighbour(keys: Int32Array, width: number, height: number, x: number, y: number): boolean {
+  const k = keys[y * width + x];
+  for (let dy = -1; dy <= 1; dy++) {
+    for (let dx = -1; dx <= 1; dx++) {
+      const nx = x + dx, ny = y + dy;
+      if (nx >= 0 && ny >= 0 && nx < width && ny < height && keys[ny * width + nx] !== k) return true;
+    }
+  }
+  return false;
+}
+
+function anyNear(flags: Uint8Array, width: number, height: number, x: number, y: number): boolean {
+  for (let dy = -1; dy <= 1; dy++) {
+    for (let dx = -1; dx <= 1; dx++) {
+      const nx = x + dx, ny = y + dy;
+      if (nx >= 0 && ny >= 0 && nx < width && ny < height && flags[ny * width + nx]) return true;
+    }
+  }
+  return false;
+}

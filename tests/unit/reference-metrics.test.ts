@@ -1,0 +1,73 @@
+// Error figures against the reference (PSNR/RMSE per region, max error), and the module's portability.
+import { describe, expect, it } from 'vitest';
+import { readdirSync, readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import {
+  compareImages, REGION_BACKGROUND, REGION_CUBE, REGION_EDGE, REGION_GLASS, REGION_SPHERE, type ReferenceImage,
+} from '../../src/reference';
+
+/** A 5-pixel reference, one pixel per region, every channel 0.5. */
+function tiny(): ReferenceImage {
+  const regions = new Uint8Array([REGION_BACKGROUND, REGION_CUBE, REGION_SPHERE, REGION_GLASS, REGION_EDGE]);
+  const rgb = new Float64Array(15).fill(0.5);
+  const rgba = new Uint8ClampedArray(20);
+  for (let i = 0; i < 5; i++) rgba.set([128, 128, 128, 255], 4 * i);
+  return { width: 5, height: 1, view: 'final', samplesPerAxis: 1, textureFilter: 'point', rgb, rgba, regions };
+}
+
+describe('compareImages', () => {
+  it('identical to the 8-bit reference: infinite PSNR; against float the rounding (0.5 level) shows', () => {
+    const ref = tiny();
+    const q = compareImages(ref, ref.rgba, { against: 'rgba8' });
+    expect(q.psnr.all).toBe(Infinity);
+    expect(q.maxError).toBe(0);
+    const f = compareImages(ref, ref.rgba);
+    expect(f.rmse.all).toBeCloseTo(0.5, 12);
+    expect(f.maxError).toBeCloseTo(0.5, 12);
+    expect(f.psnr.all).toBeCloseTo(20 * Math.log10(255 / 0.5), 9);
+  });
+
+  it('routes pixels to their regions (cube and sphere are "objects")', () => {
+    const ref = tiny();
+    const img = new Uint8ClampedArray(ref.rgba);
+    img[4 * 1] += 10; // cube pixel, red off by 10
+    img[4 * 4 + 2] -= 6; // edge pixel, blue off by 6
+    const c = compareImages(ref, img, { against: 'rgba8' });
+    expect(c.pixels).toEqual({ all: 5, glass: 1, objects: 2, background: 1, edges: 1 });
+    expect(c.rmse.objects).toBeCloseTo(Math.sqrt(100 / 6), 12);
+    expect(c.rmse.edges).toBeCloseTo(Math.sqrt(36 / 3), 12);
+    expect(c.rmse.background).toBe(0);
+    expect(c.rmse.all).toBeCloseTo(Math.sqrt(136 / 15), 12);
+    expect(c.maxError).toBe(10);
+    expect(c.maxErrorByRegion.edges).toBe(6);
+    expect(c.psnr.glass).toBe(Infinity);
+  });
+
+  it('empty regions give NaN, a wrong-sized image throws a prefixed error', () => {
+    const ref = { ...tiny(), regions: new Uint8Array(5) };
+    expect(compareImages(ref, ref.rgba).rmse.glass).toBeNaN();
+    expect(() => compareImages(ref, new Uint8Array(16))).toThrow(/^glass-plane-scene:/);
+  });
+});
+
+describe('portability', () => {
+  it('src/reference uses no Node-only API (runs in the browser and in workers)', () => {
+    const dir = join(__dirname, '../../src/reference');
+    const files = readdirSync(dir).filter((f) => f.endsWith('.ts'));
+    expect(files.length).toBeGreaterThan(5);
+    let imports = 0;
+    for (const f of files) {
+      const text = readFileSync(join(dir, f), 'utf8');
+      expect(text, f).not.toMatch(/from '(node:|fs|path|os|url|worker_threads|perf_hooks)/);
+      expect(text, f).not.toMatch(/\b(Buffer|process|require|__dirname|__filename|setImmediate)\b/);
+      // Only pure modules at run time: math, scene data, gl-matrix; the renderer only for types.
+      for (const [, typeOnly, spec] of text.matchAll(/^(?:import|export) (type )?[^;]*? from '([^']+)'/gms)) {
+        const allowed = typeOnly ? /^(\.\/|\.\.\/math\/|\.\.\/scene\/|\.\.\/render\/types$|gl-matrix$)/ : /^(\.\/|\.\.\/math\/|\.\.\/scene\/|gl-matrix$)/;
+        expect(spec, `${f} imports ${spec}`).toMatch(allowed);
+        imports++;
+      }
+      expect(text.split('\n').length, `${f} is short`).toBeLessThan(300);
+    }
+    expect(imports).toBeGreaterThan(20);
+  });
+});
