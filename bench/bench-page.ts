@@ -1,0 +1,105 @@
+// In-browser half of `npm run bench`: draws configurations with our Renderer (and the
+// three.js peer), times batches of frames closed by a 1-pixel readback, returns pixels.
+import { Renderer } from '../src/render/renderer';
+import type { FrameState } from '../src/render/types';
+import { ThreePeer } from './three-peer';
+import type { Knobs } from './configs';
+import type { BenchView } from './views';
+
+export interface Scene {
+  width: number;
+  height: number;
+  time: number;
+}
+
+function frameState(scene: Scene, knobs: Knobs, view: BenchView, mode: FrameState['view'] = 'final'): FrameState {
+  return {
+    width: Math.max(1, Math.round(scene.width * knobs.pixelRatio)),
+    height: Math.max(1, Math.round(scene.height * knobs.pixelRatio)),
+    time: scene.time, spin: 0.8, cubeDistance: 2.5, transparency: 0.5, ior: 1.5, fresnel: knobs.fresnel, fov: 60,
+    cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, view: mode,
+    reflectionScale: knobs.reflectionScale, samples: knobs.samples, shading: knobs.shading, tessellation: knobs.tessellation,
+  };
+}
+
+const oursCanvas = document.getElementById('ours') as HTMLCanvasElement;
+const peerCanvas = document.getElementById('peer') as HTMLCanvasElement;
+// The element's own context attributes (src/element/glass-plane-scene.ts).
+const gl = oursCanvas.getContext('webgl2', {
+  alpha: true, antialias: false, depth: true, stencil: false, premultipliedAlpha: true, preserveDrawingBuffer: false,
+})!;
+const renderer = new Renderer(gl, {});
+let peer: ThreePeer | null = null;
+const pixel = new Uint8Array(4);
+
+function resize(canvas: HTMLCanvasElement, s: FrameState): void {
+  if (canvas.width !== s.width) canvas.width = s.width;
+  if (canvas.height !== s.height) canvas.height = s.height;
+}
+
+function finish(context: WebGL2RenderingContext): void {
+  context.readPixels(0, 0, 1, 1, context.RGBA, context.UNSIGNED_BYTE, pixel);
+}
+
+function toBase64(bytes: Uint8ClampedArray | Uint8Array): string {
+  let s = '';
+  for (let i = 0; i < bytes.length; i += 0x8000) s += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+  return btoa(s);
+}
+
+type Kind = 'ours' | 'scene-only' | 'clear-only' | 'three';
+
+const api = {
+  /** ms per frame over `frames` frames, after `warmup` untimed ones. */
+  time(kind: Kind, scene: Scene, knobs: Knobs, view: BenchView, frames: number, warmup: number): number {
+    const s = frameState(scene, knobs, view, kind === 'scene-only' ? 'scene' : 'final');
+    if (kind === 'three') {
+      resize(peerCanvas, s);
+      peer ??= new ThreePeer(peerCanvas);
+      const pgl = peerCanvas.getContext('webgl2') as WebGL2RenderingContext;
+      const opts = { samples: knobs.samples, reflectionScale: knobs.reflectionScale, sphereSegments: typeof knobs.tessellation === 'number' ? knobs.tessellation : 64 };
+      for (let i = 0; i < warmup; i++) peer.render(s, opts);
+      finish(pgl);
+      const t0 = performance.now();
+      for (let i = 0; i < frames; i++) peer.render(s, opts);
+      finish(pgl);
+      return (performance.now() - t0) / frames;
+    }
+    resize(oursCanvas, s);
+    const draw = kind === 'clear-only'
+      ? () => { gl.bindFramebuffer(gl.FRAMEBUFFER, null); gl.viewport(0, 0, s.width, s.height); gl.clearColor(0.1, 0.1, 0.1, 1); gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT); }
+      : () => { renderer.render(s); };
+    for (let i = 0; i < warmup; i++) draw();
+    finish(gl);
+    const t0 = performance.now();
+    for (let i = 0; i < frames; i++) draw();
+    finish(gl);
+    return (performance.now() - t0) / frames;
+  },
+
+  /** RGBA8, top row first, base64, at the drawing-buffer size. */
+  pixels(kind: 'ours' | 'three', scene: Scene, knobs: Knobs, view: BenchView): { width: number; height: number; data: string } {
+    const s = frameState(scene, knobs, view);
+    if (kind === 'three') {
+      resize(peerCanvas, s);
+      peer ??= new ThreePeer(peerCanvas);
+      peer.render(s, { samples: knobs.samples, reflectionScale: knobs.reflectionScale, sphereSegments: typeof knobs.tessellation === 'number' ? knobs.tessellation : 64 });
+      return { width: s.width, height: s.height, data: toBase64(peer.readPixels()) };
+    }
+    resize(oursCanvas, s);
+    const px = renderer.read('screen', s);
+    return { width: px.width, height: px.height, data: toBase64(px.data) };
+  },
+
+  info(): { renderer: string; timerQuery: boolean; maxSamples: number } {
+    const dbg = gl.getExtension('WEBGL_debug_renderer_info');
+    return {
+      renderer: dbg ? String(gl.getParameter(dbg.UNMASKED_RENDERER_WEBGL)) : 'unknown',
+      timerQuery: gl.getExtension('EXT_disjoint_timer_query_webgl2') !== null,
+      maxSamples: gl.getParameter(gl.MAX_SAMPLES) as number,
+    };
+  },
+};
+
+(window as unknown as { bench: typeof api }).bench = api;
+export type BenchApi = typeof api;

@@ -1,0 +1,26 @@
+// `npm run bench`: the benchmark runs as one long Playwright test so it shares the test
+// suite's browser (pinned SwiftShader Chromium) and Vite server. BENCH_SMOKE=1 runs one
+// configuration for two frames (part of `npm test`, so the bench cannot rot).
+import { defineConfig } from '@playwright/test';
+
+const PORT = 5184;
+
+export default defineConfig({
+  testDir: '.',
+  testMatch: 'bench.spec.ts',
+  outputDir: '../test-results/bench',
+  workers: 1,
+  retries: 0,
+  timeout: 80 * 60_000,
+  reporter: 'list',
+  use: { baseURL: `http://127.0.0.1:${PORT}`, viewport: { width: 1400, height: 900 }, deviceScaleFactor: 1 },
+  webServer: {
+    command: `npx vite --port ${PORT} --strictPort`,
+    cwd: '..', // the project root, which Vite serves
+    url: `http://127.0.0.1:${PORT}/bench/page.html`,
+    reuseExistingServer: !process.env.CI,
+    timeout: 60_000,
+    stdout: 'ignore',
+    stderr: 'pipe',
+  },
+});

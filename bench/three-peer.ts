@@ -1,0 +1,496 @@
+// The benchmark's peer: the default scene of SPEC §3–§4 built with three.js and its stock
+// `Reflector` (planar reflection by rendering the scene from a mirrored camera into a render
+// target, near plane replaced by the mirror plane with Lengyel's oblique projection).
+//
+// three.js is a devDependency used here only; nothing under src/ imports it.
+//
+// What is matched on purpose, so an accuracy comparison measures the reflection technique and
+// not unrelated differences:
+//  - geometry and UVs: our own MeshData builders (boxMesh, sphereMesh, glassMesh);
+//  - the texture: proceduralTexture(), row 0 first (flipY false), RGBA8, repeat, trilinear mips,
+//    no colour space; renderer output linear, no tone mapping, ColorManagement off;
+//  - shading: ShaderMaterials that evaluate our Blinn-Phong (SPEC §3) per fragment, and the
+//    glass equation of SPEC §4 (exact / Schlick / classic Fresnel, premultiplied blending);
+//  - camera: same fov, near/far, position and lookAt(position + forward, +Y).
+//
+// Measured (bench/check-peer.mjs, SwiftShader, 640×360): off the glass the peer's pixels equal
+// ours exactly (also with MSAA). On the glass, with reflectionType 'byte', they match to within
+// 1 level at samples 0 (every Fresnel model and shading tried) and to within 4 levels on ~50
+// edge pixels with MSAA (the sample pattern is not mirror-symmetric and the reflection image is
+// flipped); with the stock 'half' target the mean difference on the glass is ~0.1–0.3 levels
+// (reflected highlights above 1 are not clamped), max 1 at samples 0, up to 16 with MSAA at ior 10.
+//
+// Known differences from our renderer (each is what three.js does, or the simplest honest
+// equivalent of it):
+//  - Reflection clipping: oblique near plane (Reflector) instead of gl_ClipDistance; depth
+//    precision in the reflection degrades as the camera nears the plane.
+//  - Reflection texture: Reflector allocates a HalfFloatType target (values above 1, e.g.
+//    reflected specular highlights, survive into F·R); ours is RGBA8 (clamped at 1). Set
+//    `reflectionType: 'byte'` to match ours.
+//  - The mirrored camera is a proper rotation (Reflector reflects position, target and up), so
+//    the reflection texture is ours flipped left-right. The flip maps texel centres onto texel
+//    centres, so projective lookups sample the same values (measured: no difference).
+//  - Two-sided glass: stock Reflector renders nothing when the camera is behind its plane (it
+//    returns early and the glass shows whatever the texture last held). SPEC §3 wants the
+//    reflection of the camera's side, so the Reflector is turned to face the camera each frame (scale
+//    (−1, 1, −1), a rotation by π about Y: what a three.js user would do for a two-sided
+//    mirror). The glass UVs are computed from world x, y so the body texture does not flip.
+//  - MSAA: three's `antialias` is a context flag with a browser-chosen sample count, so with
+//    `samples` > 0 the scene is drawn into a multisampled WebGLRenderTarget (three resolves it
+//    into a texture) and copied to the canvas with a full-screen triangle, as three's
+//    EffectComposer/OutputPass would. Ours resolves straight into the canvas with one blit, so
+//    the peer pays one extra full-screen pass there. With samples 0 both draw straight into
+//    the canvas.
+//  - The reflection pass renders the whole scene (no culling of objects wholly behind the glass,
+//    no scissor to the glass's screen rectangle, unlike SPEC §7). It is skipped only when three's
+//    frustum culling drops the Reflector mesh (onBeforeRender runs for visible meshes only).
+//  - Only view 'final' is drawn (debug views are ignored); `state.tessellation` is ignored in
+//    favour of `options.sphereSegments`.
+import * as THREE from 'three';
+import { Reflector } from 'three/addons/objects/Reflector.js';
+import type { FrameState } from '../src/render/types';
+import type { MeshData } from '../src/scene/geometry/mesh-data';
+import { boxMesh } from '../src/scene/geometry/box';
+import { sphereMesh } from '../src/scene/geometry/sphere';
+import { glassMesh } from '../src/scene/geometry/rectangle';
+import { proceduralTexture } from '../src/scene/procedural-texture';
+import { forwardFromYawPitch } from '../src/math/camera';
+import { signedDistance } from '../src/math/mirror';
+import { BACKGROUND, CAMERA, CUBE, GLASS, LIGHT, MATERIAL, SPHERE, TEXTURE_SIZE } from '../src/scene/default-scene';
+
+export interface PeerOptions {
+  /** MSAA samples of the reflection and of the scene (0 = none). */
+  samples: 0 | 2 | 4;
+  /** Reflection target size ÷ drawing-buffer size. */
+  reflectionScale: number;
+  /** Sphere segments around the equator (sphereMesh). */
+  sphereSegments: number;
+  /** Reflection target format: 'half' = Reflector's stock HalfFloatType (default), 'byte' = RGBA8 like ours. */
+  reflectionType?: 'half' | 'byte';
+}
+
+// ---- shaders (three's GLSL1-style dialect; three compiles them as GLSL ES 3.00) --------------
+
+const BLINN_PHONG = /* glsl */ `
+uniform vec3 uLightDirection;
+uniform vec3 uLightIntensity;   // ambient, diffuse, specular
+uniform vec2 uSpecular;         // Ks, shininess
+vec2 blinnPhong(vec3 n, vec3 v) {
+  float nl = dot(n, uLightDirection);
+  float specular = 0.0;
+  if (nl > 0.0) {
+    vec3 h = normalize(uLightDirection + v);
+    specular = uSpecular.x * uLightIntensity.z * pow(max(dot(n, h), 0.0), uSpecular.y);
+  }
+  return vec2(uLightIntensity.x + uLightIntensity.y * max(nl, 0.0), specular);
+}
+`;
+
+const LIGHTING_VARYINGS = /* glsl */ `
+varying vec2 vUv;
+#if defined(SHADING_PHONG)
+varying vec3 vWorldPosition;
+varying vec3 vNormal;
+#elif defined(SHADING_FLAT)
+flat varying vec2 vLight;
+#else
+varying vec2 vLight;
+#endif
+`;
+
+const OBJECT_VERTEX = /* glsl */ `
+${BLINN_PHONG}
+${LIGHTING_VARYINGS}
+void main() {
+  vec4 world = modelMatrix * vec4(position, 1.0);
+  vec3 n = mat3(modelMatrix) * normal; // rotation + translation only: its own normal matrix
+  vUv = uv;
+#if defined(SHADING_PHONG)
+  vWorldPosition = world.xyz;
+  vNormal = n;
+#else
+  vLight = blinnPhong(normalize(n), normalize(cameraPosition - world.xyz));
+#endif
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+}
+`;
+
+const OBJECT_FRAGMENT = /* glsl */ `
+${BLINN_PHONG}
+${LIGHTING_VARYINGS}
+uniform sampler2D uTexture;
+uniform vec3 uAlbedo;
+void main() {
+#if defined(SHADING_PHONG)
+  vec2 light = blinnPhong(normalize(vNormal), normalize(cameraPosition - vWorldPosition));
+#else
+  vec2 light = vLight;
+#endif
+  vec3 k = uAlbedo * texture2D(uTexture, vUv).rgb;
+  gl_FragColor = vec4(k * light.x + light.y, 1.0);
+}
+`;
+
+/** Passed to Reflector as `options.shader`: Reflector supplies tDiffuse and textureMatrix. */
+const GLASS_VERTEX = /* glsl */ `
+uniform mat4 textureMatrix;
+uniform vec4 uGlassRect;        // xMin, yMin, 1/(xMax − xMin), 1/(yMax − yMin)
+varying vec4 vReflectionUv;
+varying vec3 vWorldPosition;
+varying vec3 vNormal;
+varying vec2 vUv;
+void main() {
+  vReflectionUv = textureMatrix * vec4(position, 1.0);
+  vec4 world = modelMatrix * vec4(position, 1.0);
+  vWorldPosition = world.xyz;
+  vNormal = mat3(modelMatrix) * normal;
+  // SPEC §3 glass UVs from world x, y: unchanged when the Reflector is turned to face the camera.
+  vUv = (world.xy - uGlassRect.xy) * uGlassRect.zw;
+  gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
+}
+`;
+
+const GLASS_FRAGMENT = /* glsl */ `
+uniform sampler2D tDiffuse;
+uniform sampler2D uTexture;
+uniform float uTransparency;
+uniform float uIor;
+uniform vec3 uBodyTint;
+varying vec4 vReflectionUv;
+varying vec3 vWorldPosition;
+varying vec3 vNormal;
+varying vec2 vUv;
+
+float fresnel(float c) {
+#if defined(FRESNEL_EXACT)
+  float ct = sqrt(max(uIor * uIor - 1.0 + c * c, 0.0)) / uIor;
+  float rs = (c - uIor * ct) / max(c + uIor * ct, 1e-30);
+  float rp = (ct - uIor * c) / max(ct + uIor * c, 1e-30);
+  return 0.5 * (rs * rs + rp * rp);
+#elif defined(FRESNEL_SCHLICK)
+  float r0 = (uIor - 1.0) / (uIor + 1.0);
+  r0 *= r0;
+  return r0 + (1.0 - r0) * pow(1.0 - c, 5.0);
+#else
+  return pow(1.0 - c, 3.0);
+#endif
+}
+
+void main() {
+  float c = clamp(abs(dot(normalize(vNormal), normalize(cameraPosition - vWorldPosition))), 0.0, 1.0);
+  float f = fresnel(c);
+  vec3 r = texture2DProj(tDiffuse, vReflectionUv).rgb;
+  vec3 d = texture2D(uTexture, vUv).rgb * uBodyTint;
+#if defined(FRESNEL_CLASSIC)
+  float a = (1.0 - uTransparency) * (0.2 + 0.8 * f);
+  gl_FragColor = vec4(mix(d, r, f) * a, a);
+#else
+  gl_FragColor = vec4(f * r + (1.0 - f) * (1.0 - uTransparency) * d, 1.0 - (1.0 - f) * uTransparency);
+#endif
+}
+`;
+
+const COPY_VERTEX = /* glsl */ `
+void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }
+`;
+
+const COPY_FRAGMENT = /* glsl */ `
+uniform sampler2D tSource;
+void main() { gl_FragColor = texelFetch(tSource, ivec2(gl_FragCoord.xy), 0); }
+`;
+
+// ---- helpers ---------------------------------------------------------------------------------
+
+function toGeometry(m: MeshData): THREE.BufferGeometry {
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('position', new THREE.BufferAttribute(m.positions, 3));
+  g.setAttribute('normal', new THREE.BufferAttribute(m.normals, 3));
+  g.setAttribute('uv', new THREE.BufferAttribute(m.uvs, 2));
+  g.setIndex(new THREE.BufferAttribute(m.indices, 1));
+  return g;
+}
+
+type Defines = Record<string, string>;
+
+function shadingDefines(shading: FrameState['shading']): Defines {
+  return { [shading === 'flat' ? 'SHADING_FLAT' : shading === 'gouraud' ? 'SHADING_GOURAUD' : 'SHADING_PHONG']: '' };
+}
+
+function fresnelDefines(fresnel: FrameState['fresnel']): Defines {
+  return { [fresnel === 'schlick' ? 'FRESNEL_SCHLICK' : fresnel === 'classic' ? 'FRESNEL_CLASSIC' : 'FRESNEL_EXACT']: '' };
+}
+
+function v3(a: readonly number[]): THREE.Vector3 {
+  return new THREE.Vector3(a[0], a[1], a[2]);
+}
+
+const DEFAULT_OPTIONS: PeerOptions = { samples: 0, reflectionScale: 1, sphereSegments: 64 };
+
+// ---- the peer --------------------------------------------------------------------------------
+
+export class ThreePeer {
+  readonly renderer: THREE.WebGLRenderer;
+  private readonly gl: WebGL2RenderingContext;
+  private readonly scene = new THREE.Scene();
+  private readonly camera = new THREE.PerspectiveCamera(60, 1, CAMERA.near, CAMERA.far);
+  private readonly texture: THREE.DataTexture;
+  private readonly cube: THREE.Mesh;
+  private readonly sphere: THREE.Mesh;
+  private readonly cubeMaterial: THREE.ShaderMaterial;
+  private readonly sphereMaterial: THREE.ShaderMaterial;
+  private readonly glassGeometry: THREE.BufferGeometry;
+  private readonly reflector: Reflector;
+  private reflectionType: 'half' | 'byte' = 'half';
+  private sphereSegments = 0;
+  private shading: FrameState['shading'] = 'phong';
+  private fresnel: FrameState['fresnel'] = 'exact';
+  /** Multisampled scene target (samples > 0) and the full-screen copy to the canvas. */
+  private sceneTarget: THREE.WebGLRenderTarget | null = null;
+  private readonly copyScene = new THREE.Scene();
+  private readonly copyCamera = new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 1);
+  private readonly copyMaterial: THREE.ShaderMaterial;
+  private readonly forward = new Float64Array(3);
+  private readonly target = new THREE.Vector3();
+  private width = -1;
+  private height = -1;
+  private raw = new Uint8Array(0);
+
+  constructor(canvas: HTMLCanvasElement | OffscreenCanvas) {
+    // Stored values everywhere: no sRGB decode/encode, no tone mapping.
+    THREE.ColorManagement.enabled = false;
+    this.renderer = new THREE.WebGLRenderer({
+      canvas, antialias: false, alpha: false, depth: true, stencil: false,
+      premultipliedAlpha: true, preserveDrawingBuffer: false, powerPreference: 'default',
+    });
+    const r = this.renderer;
+    r.outputColorSpace = THREE.LinearSRGBColorSpace;
+    r.toneMapping = THREE.NoToneMapping;
+    r.setPixelRatio(1);
+    r.setClearColor(new THREE.Color(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2]), 1);
+    this.gl = r.getContext() as WebGL2RenderingContext;
+
+    const t = new THREE.DataTexture(proceduralTexture(), TEXTURE_SIZE, TEXTURE_SIZE, THREE.RGBAFormat, THREE.UnsignedByteType);
+    t.flipY = false; // row y = 0 is the first row uploaded: texel (x, y) at UV ((x+0.5)/512, (y+0.5)/512)
+    t.wrapS = t.wrapT = THREE.RepeatWrapping;
+    t.magFilter = THREE.LinearFilter;
+    t.minFilter = THREE.LinearMipmapLinearFilter;
+    t.generateMipmaps = true;
+    t.colorSpace = THREE.NoColorSpace;
+    t.unpackAlignment = 1;
+    t.needsUpdate = true;
+    this.texture = t;
+
+    this.cubeMaterial = this.objectMaterial(CUBE.albedo);
+    this.sphereMaterial = this.objectMaterial(SPHERE.albedo);
+    this.cube = new THREE.Mesh(toGeometry(boxMesh(CUBE.edge)), this.cubeMaterial);
+    this.cube.position.set(CUBE.x, CUBE.y, 0);
+    this.sphere = new THREE.Mesh(new THREE.BufferGeometry(), this.sphereMaterial);
+    this.sphere.position.copy(v3(SPHERE.centre));
+    this.scene.add(this.cube, this.sphere);
+
+    this.glassGeometry = toGeometry(glassMesh());
+    this.reflector = this.createReflector(DEFAULT_OPTIONS);
+    this.scene.add(this.reflector);
+
+    this.copyMaterial = new THREE.ShaderMaterial({
+      name: 'PeerCopy', vertexShader: COPY_VERTEX, fragmentShader: COPY_FRAGMENT,
+      uniforms: { tSource: { value: null } }, depthTest: false, depthWrite: false,
+    });
+    const tri = new THREE.BufferGeometry();
+    tri.setAttribute('position', new THREE.BufferAttribute(new Float32Array([-1, -1, 0, 3, -1, 0, -1, 3, 0]), 3));
+    const copy = new THREE.Mesh(tri, this.copyMaterial);
+    copy.frustumCulled = false;
+    this.copyScene.add(copy);
+  }
+
+  /** Draws one frame of `state` (view 'final') at state.width × state.height into the canvas. */
+  render(state: FrameState, options: PeerOptions): void {
+    const r = this.renderer;
+    const w = Math.max(1, Math.floor(state.width));
+    const h = Math.max(1, Math.floor(state.height));
+    if (w !== this.width || h !== this.height) {
+      r.setSize(w, h, false);
+      this.width = w;
+      this.height = h;
+    }
+    this.configure(state, options, w, h);
+
+    // Camera (SPEC §3): lookAt(position, position + forward, +Y).
+    const cam = this.camera;
+    cam.fov = state.fov;
+    cam.aspect = w / h;
+    cam.updateProjectionMatrix();
+    const [x, y, z] = state.cameraPosition;
+    cam.position.set(x, y, z);
+    const f = forwardFromYawPitch(this.forward, state.yaw, state.pitch);
+    cam.lookAt(this.target.set(x + f[0], y + f[1], z + f[2]));
+
+    this.cube.position.z = state.cubeDistance;
+    this.cube.rotation.y = state.spin * state.time;
+
+    // Face the Reflector towards the camera (two-sided glass; see the header).
+    const behind = signedDistance(GLASS.plane, state.cameraPosition) < 0;
+    this.reflector.scale.set(behind ? -1 : 1, 1, behind ? -1 : 1);
+    const u = (this.reflector.material as THREE.ShaderMaterial).uniforms;
+    u.uTransparency.value = state.transparency;
+    u.uIor.value = state.ior;
+
+    const samples = options.samples;
+    if (samples > 0) {
+      const target = this.ensureSceneTarget(w, h, samples);
+      r.setRenderTarget(target);
+      r.render(this.scene, cam); // the Reflector draws its pass from onBeforeRender
+      r.setRenderTarget(null);
+      this.copyMaterial.uniforms.tSource.value = target.texture;
+      r.autoClear = false;
+      r.render(this.copyScene, this.copyCamera);
+      r.autoClear = true;
+    } else {
+      r.setRenderTarget(null);
+      r.render(this.scene, cam);
+    }
+  }
+
+  /** RGBA8 of the last frame, top row first. Call in the same task as render() (the drawing buffer is not preserved). */
+  readPixels(): Uint8ClampedArray {
+    const { gl, width: w, height: h } = this;
+    if (w <= 0 || h <= 0) return new Uint8ClampedArray(0);
+    if (this.raw.length !== w * h * 4) this.raw = new Uint8Array(w * h * 4);
+    this.renderer.setRenderTarget(null);
+    gl.pixelStorei(gl.PACK_ALIGNMENT, 1);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, this.raw);
+    const out = new Uint8ClampedArray(w * h * 4);
+    const row = w * 4;
+    for (let j = 0; j < h; j++) out.set(this.raw.subarray((h - 1 - j) * row, (h - j) * row), j * row);
+    return out;
+  }
+
+  dispose(): void {
+    this.cube.geometry.dispose();
+    this.sphere.geometry.dispose();
+    this.glassGeometry.dispose();
+    this.cubeMaterial.dispose();
+    this.sphereMaterial.dispose();
+    this.reflector.dispose();
+    this.texture.dispose();
+    this.sceneTarget?.dispose();
+    this.sceneTarget = null;
+    this.copyScene.traverse((o) => { if (o instanceof THREE.Mesh) o.geometry.dispose(); });
+    this.copyMaterial.dispose();
+    this.renderer.dispose();
+  }
+
+  // ---- per-frame configuration (allocates only when a knob changes) ------------------------
+
+  private configure(state: FrameState, options: PeerOptions, w: number, h: number): void {
+    const segments = Math.round(options.sphereSegments);
+    if (segments !== this.sphereSegments) {
+      this.sphere.geometry.dispose();
+      this.sphere.geometry = toGeometry(sphereMesh(SPHERE.radius, segments));
+      this.sphereSegments = segments;
+    }
+    if (state.shading !== this.shading) {
+      this.shading = state.shading;
+      for (const m of [this.cubeMaterial, this.sphereMaterial]) {
+        m.defines = shadingDefines(state.shading);
+        m.needsUpdate = true;
+      }
+    }
+    const glass = this.reflector.material as THREE.ShaderMaterial;
+    if (state.fresnel !== this.fresnel) {
+      this.fresnel = state.fresnel;
+      glass.defines = fresnelDefines(state.fresnel);
+      glass.needsUpdate = true;
+    }
+    const type = options.reflectionType ?? 'half';
+    const rt = this.reflector.getRenderTarget();
+    if (type !== this.reflectionType) {
+      // The target's storage is created lazily; dispose so it is rebuilt with the new type.
+      this.reflectionType = type;
+      rt.dispose();
+      rt.texture.type = type === 'byte' ? THREE.UnsignedByteType : THREE.HalfFloatType;
+    }
+    if (rt.samples !== options.samples) {
+      rt.dispose();
+      rt.samples = options.samples;
+    }
+    const rw = Math.max(1, Math.round(w * options.reflectionScale));
+    const rh = Math.max(1, Math.round(h * options.reflectionScale));
+    if (rt.width !== rw || rt.height !== rh) rt.setSize(rw, rh);
+  }
+
+  private ensureSceneTarget(w: number, h: number, samples: number): THREE.WebGLRenderTarget {
+    let t = this.sceneTarget;
+    if (!t) {
+      t = this.sceneTarget = new THREE.WebGLRenderTarget(w, h, {
+        samples, type: THREE.UnsignedByteType, format: THREE.RGBAFormat, colorSpace: THREE.NoColorSpace,
+        depthBuffer: true, stencilBuffer: false, generateMipmaps: false,
+        minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter,
+      });
+    }
+    if (t.samples !== samples) {
+      t.dispose();
+      t.samples = samples;
+    }
+    if (t.width !== w || t.height !== h) t.setSize(w, h);
+    return t;
+  }
+
+  private objectMaterial(albedo: readonly number[]): THREE.ShaderMaterial {
+    return new THREE.ShaderMaterial({
+      name: 'PeerBlinnPhong',
+      vertexShader: OBJECT_VERTEX,
+      fragmentShader: OBJECT_FRAGMENT,
+      defines: shadingDefines('phong'),
+      uniforms: {
+        uTexture: { value: this.texture },
+        uAlbedo: { value: v3(albedo) },
+        uLightDirection: { value: v3(LIGHT.direction) },
+        uLightIntensity: { value: new THREE.Vector3(LIGHT.ambient, LIGHT.diffuse, LIGHT.specular) },
+        uSpecular: { value: new THREE.Vector2(MATERIAL.ks, MATERIAL.shininess) },
+      },
+    });
+  }
+
+  private createReflector(options: PeerOptions): Reflector {
+    const reflector = new Reflector(this.glassGeometry, {
+      textureWidth: 1, // sized per frame from reflectionScale
+      textureHeight: 1,
+      clipBias: 0,
+      multisample: options.samples,
+      shader: {
+        name: 'PeerGlass',
+        uniforms: {
+          color: { value: null },
+          tDiffuse: { value: null },
+          textureMatrix: { value: null },
+          uTexture: { value: null },
+          uTransparency: { value: 0.5 },
+          uIor: { value: 1.5 },
+          uBodyTint: { value: null },
+          uGlassRect: { value: null },
+        },
+        vertexShader: GLASS_VERTEX,
+        fragmentShader: GLASS_FRAGMENT,
+      },
+    });
+    const m = reflector.material as THREE.ShaderMaterial;
+    // Set after construction: Reflector clones the shader's uniforms, which would clone a texture.
+    m.uniforms.uTexture.value = this.texture;
+    m.uniforms.uBodyTint.value = new THREE.Vector3(...GLASS.tint.map((c) => c * GLASS.darkness));
+    m.uniforms.uGlassRect.value = new THREE.Vector4(
+      GLASS.xMin, GLASS.yMin, 1 / (GLASS.xMax - GLASS.xMin), 1 / (GLASS.yMax - GLASS.yMin));
+    m.defines = fresnelDefines('exact');
+    // Premultiplied "over" (SPEC §4): src.rgb + (1 − src.a)·dst.
+    m.transparent = true;
+    m.blending = THREE.CustomBlending;
+    m.blendEquation = THREE.AddEquation;
+    m.blendSrc = THREE.OneFactor;
+    m.blendDst = THREE.OneMinusSrcAlphaFactor;
+    m.depthTest = true;
+    m.depthWrite = false;
+    m.side = THREE.DoubleSide;
+    reflector.getRenderTarget().texture.type = THREE.HalfFloatType; // Reflector's own choice, stated
+    return reflector;
+  }
+}

@@ -1,0 +1,61 @@
+// The bench's own arithmetic: Pareto dominance with noise, quartiles, seeded shuffle, resampling.
+import { describe, expect, it } from 'vitest';
+import { dominates, paretoFront, PSNR_TOLERANCE_DB } from '../../bench/pareto';
+import { quantile, shuffled, summary } from '../../bench/stats';
+import { resample } from '../../bench/resample';
+import { CONFIGS, BASELINE, configName } from '../../bench/configs';
+
+describe('pareto', () => {
+  it('dominates when no slower, no worse, and better beyond the noise in one', () => {
+    const slowGood = { ms: 10, noise: 0.5, psnr: 40 };
+    const fastBad = { ms: 5, noise: 0.5, psnr: 30 };
+    const fastGood = { ms: 5, noise: 0.5, psnr: 41 };
+    expect(dominates(fastGood, slowGood)).toBe(true);
+    expect(dominates(fastBad, slowGood)).toBe(false);
+    expect(dominates(slowGood, fastBad)).toBe(false);
+    expect(dominates(fastGood, fastBad)).toBe(true); // as fast, far more accurate
+    // Inside the bands: not told apart, neither dominates.
+    const twin = { ms: 10.3, noise: 0.5, psnr: 40 + PSNR_TOLERANCE_DB / 2 };
+    expect(dominates(twin, slowGood)).toBe(false);
+    expect(dominates(slowGood, twin)).toBe(false);
+    // Faster beyond the noise but less accurate beyond the tolerance: a trade, not dominance.
+    expect(dominates({ ms: 5, noise: 0.5, psnr: 39 }, slowGood)).toBe(false);
+    expect(paretoFront([slowGood, fastBad, fastGood])).toEqual([false, false, true]);
+    expect(paretoFront([slowGood, fastBad])).toEqual([true, true]);
+  });
+});
+
+describe('stats', () => {
+  it('interpolates quantiles and summarises', () => {
+    expect(quantile([1, 2, 3, 4], 0.5)).toBe(2.5);
+    expect(summary([5, 1, 3, 2, 4])).toEqual({ median: 3, q1: 2, q3: 4, iqr: 2 });
+  });
+  it('shuffles reproducibly and completely', () => {
+    const xs = Array.from({ length: 20 }, (_, i) => i);
+    expect(shuffled(xs, 7)).toEqual(shuffled(xs, 7));
+    expect(shuffled(xs, 7)).not.toEqual(xs);
+    expect([...shuffled(xs, 7)].sort((a, b) => a - b)).toEqual(xs);
+  });
+});
+
+describe('resample', () => {
+  it('box-filters an integer shrink and keeps a same-size image', () => {
+    const src = new Uint8ClampedArray([0, 0, 0, 255, 100, 100, 100, 255, 200, 200, 200, 255, 100, 100, 100, 255]);
+    expect([...resample(src, 2, 2, 1, 1)]).toEqual([100, 100, 100, 255]);
+    expect([...resample(src, 2, 2, 2, 2)]).toEqual([...src]);
+  });
+  it('bilinearly enlarges, preserving a constant image', () => {
+    const src = new Uint8ClampedArray(4 * 4).fill(77);
+    expect(new Set(resample(src, 2, 2, 3, 3))).toEqual(new Set([77]));
+  });
+});
+
+describe('configs', () => {
+  it('has about 30 distinct configurations, named by what differs from the baseline', () => {
+    expect(CONFIGS.length).toBeGreaterThanOrEqual(25);
+    expect(CONFIGS.length).toBeLessThanOrEqual(35);
+    expect(new Set(CONFIGS.map((c) => c.name)).size).toBe(CONFIGS.length);
+    expect(configName(BASELINE)).toBe('baseline');
+    expect(configName({ ...BASELINE, samples: 0 })).toBe('samples 0');
+  });
+});
