@@ -6,7 +6,7 @@ import { gzipSync } from 'node:zlib';
 import { createHash } from 'node:crypto';
 import { test, expect } from '../tests/e2e/fixtures';
 import { renderReference, compareImages, type ReferenceImage } from '../src/reference';
-import { BASELINE, CONFIGS, type BenchConfig, type Knobs } from './configs';
+import { BASELINE, CONFIGS, DEFAULTS, configName, type BenchConfig, type Knobs } from './configs';
 import { VIEWS, type BenchView } from './views';
 import { summary, shuffled } from './stats';
 import { paretoFront } from './pareto';
@@ -68,7 +68,10 @@ test('bench', async ({ page }) => {
   const views: BenchView[] = SMOKE ? [VIEWS[0]] : [...VIEWS];
   type Kind = 'ours' | 'scene-only' | 'clear-only' | 'three';
   const runs: { key: string; kind: Kind; knobs: Knobs; label: string }[] = [
-    ...configs.map((c) => ({ key: c.name, kind: 'ours' as const, knobs: c as Knobs, label: c.name })),
+    ...configs.map((c) => ({
+      key: c.name, kind: 'ours' as const, knobs: c as Knobs,
+      label: c.name === configName(DEFAULTS) ? `**defaults**: ${c.name}` : c.name,
+    })),
     { key: 'three.js', kind: 'three', knobs: BASELINE, label: 'three.js (Reflector, HalfFloat, MSAA 4)' },
     { key: 'scene only', kind: 'scene-only', knobs: BASELINE, label: 'baseline, scene pass only' },
     { key: 'clear only', kind: 'clear-only', knobs: BASELINE, label: 'clear only' },

@@ -19,6 +19,11 @@ export const BASELINE: Knobs = {
   reflectionScale: 1, samples: 4, fresnel: 'exact', shading: 'phong', tessellation: 128, pixelRatio: 1,
 };
 
+/** The element's defaults (src/element/attributes.ts), at pixel-ratio 1 like every row. */
+export const DEFAULTS: Knobs = {
+  reflectionScale: 0.5, samples: 4, fresnel: 'exact', shading: 'phong', tessellation: 'auto', pixelRatio: 1,
+};
+
 /** Short, stable name: only the knobs that differ from the baseline. */
 export function configName(k: Knobs): string {
   const parts: string[] = [];

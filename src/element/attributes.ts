@@ -191,14 +191,15 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
     format: (v) => (v === null ? null : String(v)),
   } satisfies AttributeSpec<'time'>,
   keywordSpec('debugView', 'debug-view', DEBUG_VIEWS, 'shows one pass instead of the final image'),
-  numberSpec('reflectionScale', 'reflection-scale', 1, 0.125, 2, 'reflection framebuffer size ÷ drawing-buffer size'),
+  // Defaults of the quality knobs come from the bench's Pareto front (README, "Speed and accuracy").
+  numberSpec('reflectionScale', 'reflection-scale', 0.5, 0.125, 2, 'reflection framebuffer size ÷ drawing-buffer size'),
   {
-    property: 'samples', attribute: 'samples', default: 0,
+    property: 'samples', attribute: 'samples', default: 4,
     doc: 'MSAA samples of the reflection and scene passes: 0, 2 or 4',
     parse(raw) {
-      if (raw === null) return { value: 0 };
+      if (raw === null) return { value: 4 };
       const x = num(raw);
-      if (Number.isNaN(x)) return { value: 0, problem: 'expected 0, 2 or 4; using 0' };
+      if (Number.isNaN(x)) return { value: 4, problem: 'expected 0, 2 or 4; using 4' };
       // The nearest allowed count at or below the request (ties never arise: 0, 2, 4).
       const value = x >= 4 ? 4 : x >= 2 ? 2 : 0;
       return value === x ? { value } : { value, problem: `expected 0, 2 or 4; using ${value}` };
