@@ -1,8 +1,11 @@
 // <glass-plane-scene>: attributes → typed properties, shadow DOM, observers, input, events.
-// All GL work is the renderer's; this file only turns the page's state into FrameState.
-import { ATTRIBUTES, ATTRIBUTE_BY_NAME, defaultAttributes, propertyToRaw, type AttributeSpec, type SceneAttributes } from './attributes';
+// All GL work is the renderer's; this file turns the page's state into FrameState, decides
+// when a frame is needed, and copies frames from the page's shared context to its canvas.
+import { ATTRIBUTES, ATTRIBUTE_BY_NAME, DEBUG_VIEWS, defaultAttributes, propertyToRaw, type AttributeSpec, type SceneAttributes } from './attributes';
 import { FlybyController } from './flyby-controller';
+import { FlybyInput } from './flyby-input';
 import { applyStyle } from './element-style';
+import { SharedContext, type ContextClient } from './shared-context';
 import { Renderer, type ReadbackSource } from '../render/renderer';
 import { ShaderError } from '../render/gl/program';
 import type { FrameReport, FrameState, RenderStats } from '../render/types';
@@ -11,8 +14,15 @@ import type { CapturePass, ErrorType, GlassPlaneSceneEventMap } from './types';
 const PREFIX = 'glass-plane-scene:';
 const MAX_WARNINGS = 200;
 const CAPTURE_SOURCES: Record<CapturePass, ReadbackSource> = { reflection: 'reflection', scene: 'scene', final: 'final' };
-const DEBUG_KEY = 'KeyF';
 const DEFAULT_LABEL = 'A dark glass plane reflecting a cube, with a sphere behind it';
+const MESSAGES: Record<ErrorType, string> = {
+  'webgl2-unavailable': 'WebGL2 is not available here, so the glass scene cannot be shown.',
+  shader: 'The glass scene could not be drawn: a shader failed to compile.',
+  'context-lost': 'The graphics context was lost; waiting for it to come back.',
+  load: 'The glass scene could not be loaded.',
+};
+/** Start drawing a little before the element scrolls into view. */
+const VIEW_MARGIN = '64px';
 
 // Lets the module load where HTMLElement does not exist (server-side rendering, Node tests).
 const Base = (typeof HTMLElement === 'undefined' ? class {} : HTMLElement) as typeof HTMLElement;
@@ -31,35 +41,33 @@ function checksEnabled(): boolean {
 
 export interface GlassPlaneScene extends SceneAttributes {}
 
-export class GlassPlaneScene extends Base {
+export class GlassPlaneScene extends Base implements ContextClient {
   static get observedAttributes(): string[] {
     return [...ATTRIBUTES.map((a) => a.attribute), 'alt'];
-  }
-
-  /** Text alternative for assistive technology (like <img alt>); becomes the aria-label. */
-  get alt(): string {
-    return this.getAttribute('alt') ?? DEFAULT_LABEL;
-  }
-
-  set alt(value: string) {
-    this.setAttribute('alt', String(value));
   }
 
   private readonly values: SceneAttributes = defaultAttributes();
   private readonly canvas: HTMLCanvasElement;
   private readonly message: HTMLElement;
   private readonly flyby = new FlybyController();
+  private readonly input: FlybyInput;
   private readonly warned = new Set<string>();
-  private gl: WebGL2RenderingContext | null = null;
+  private shared: SharedContext | null = null;
+  private output: CanvasRenderingContext2D | null = null;
   private renderer: Renderer | null = null;
   private resizeObserver: ResizeObserver | null = null;
+  private intersectionObserver: IntersectionObserver | null = null;
+  private reducedMotion: MediaQueryList | null = null;
   private rafId = 0;
   private lastNow = 0;
   private clockStart = -1;
-  private failed = false;
+  private failed: ErrorType | null = null;
+  private inView = false;
+  private dirty = true;
   private readyFired = false;
   private lastState: FrameState | null = null;
   private totals = emptyStats();
+  private frames = 0;
   private cameraDirty = false;
   private readonly state: FrameState = {
     width: 1, height: 1, time: 0, spin: 0, cubeDistance: 0, transparency: 0, ior: 1, fresnel: 'exact',
@@ -79,6 +87,16 @@ export class GlassPlaneScene extends Base {
     this.message.hidden = true;
     root.append(this.canvas, this.message);
     this.flyby.setPose(this.values.cameraPosition, this.values.cameraRotation[0], this.values.cameraRotation[1]);
+    this.input = new FlybyInput(this, this.canvas, this.flyby, {
+      enabled: () => this.values.controls,
+      moved: (byMouse) => {
+        if (byMouse) this.cameraMoved();
+        this.requestRender();
+      },
+      cycleDebugView: () => {
+        this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length];
+      },
+    });
   }
 
   // ---- lifecycle -------------------------------------------------------------------------
@@ -88,32 +106,30 @@ export class GlassPlaneScene extends Base {
     if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
     if (!this.hasAttribute('role')) this.setAttribute('role', 'img');
     if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', this.alt);
-    this.addEventListener('keydown', this.onKeyDown);
-    this.addEventListener('keyup', this.onKeyUp);
-    this.addEventListener('blur', this.onBlur);
-    this.canvas.addEventListener('click', this.onClick);
-    this.canvas.addEventListener('mousemove', this.onMouseMove);
-    this.canvas.addEventListener('webglcontextlost', this.onContextLost);
-    this.canvas.addEventListener('webglcontextrestored', this.onContextRestored);
+    this.input.attach();
     this.resizeObserver = new ResizeObserver(this.onResize);
     this.resizeObserver.observe(this);
+    this.intersectionObserver = new IntersectionObserver(this.onIntersection, { rootMargin: VIEW_MARGIN });
+    this.intersectionObserver.observe(this);
+    document.addEventListener('visibilitychange', this.onVisibility);
+    this.reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
+    this.reducedMotion?.addEventListener('change', this.onMotionPreference);
     this.start();
   }
 
   disconnectedCallback(): void {
-    cancelAnimationFrame(this.rafId);
-    this.rafId = 0;
+    this.cancelFrame();
     this.resizeObserver?.disconnect();
-    this.resizeObserver = null;
-    this.removeEventListener('keydown', this.onKeyDown);
-    this.removeEventListener('keyup', this.onKeyUp);
-    this.removeEventListener('blur', this.onBlur);
-    this.canvas.removeEventListener('click', this.onClick);
-    this.canvas.removeEventListener('mousemove', this.onMouseMove);
-    this.canvas.removeEventListener('webglcontextlost', this.onContextLost);
-    this.canvas.removeEventListener('webglcontextrestored', this.onContextRestored);
-    this.flyby.releaseAll();
+    this.intersectionObserver?.disconnect();
+    this.resizeObserver = this.intersectionObserver = null;
+    document.removeEventListener('visibilitychange', this.onVisibility);
+    this.reducedMotion?.removeEventListener('change', this.onMotionPreference);
+    this.reducedMotion = null;
+    this.input.detach();
     this.disposeRenderer();
+    this.shared?.release(this);
+    this.shared = null;
+    this.inView = false;
   }
 
   attributeChangedCallback(name: string, _old: string | null, raw: string | null): void {
@@ -136,9 +152,19 @@ export class GlassPlaneScene extends Base {
 
   // ---- public API --------------------------------------------------------------------------
 
-  /** Draws a frame soon (on the next animation frame), even when nothing changed. */
+  /** Text alternative for assistive technology (like <img alt>); becomes the aria-label. */
+  get alt(): string {
+    return this.getAttribute('alt') ?? DEFAULT_LABEL;
+  }
+
+  set alt(value: string) {
+    this.setAttribute('alt', String(value));
+  }
+
+  /** Draws a frame on the next animation frame, even when nothing changed. */
   requestRender(): void {
-    if (this.rafId === 0 && this.renderer && !this.failed) this.rafId = requestAnimationFrame(this.onFrame);
+    this.dirty = true;
+    this.scheduleFrame();
   }
 
   /**
@@ -153,18 +179,20 @@ export class GlassPlaneScene extends Base {
       if (!(pass in CAPTURE_SOURCES)) this.warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
     }
     try {
+      this.shared!.reserve(this.canvas.width, this.canvas.height);
       const px = this.renderer.read(source, this.lastState ?? this.frameState(performance.now()));
       return new ImageData(px.data, px.width, px.height);
     } catch (e) {
-      this.fail(e instanceof ShaderError ? 'shader' : 'context-lost', e);
+      this.handleRenderError(e);
       return null;
     }
   }
 
-  /** Frames, passes run and skipped, draw calls and live GL resources. */
+  /** Frames, passes run and skipped, draw calls, compiled programs and live GL resources. */
   get stats(): RenderStats {
-    if (!this.renderer) return structuredClone(this.totals);
-    return this.renderer.stats;
+    const s = this.renderer ? this.renderer.stats : structuredClone(this.totals);
+    s.frames = this.frames;
+    return s;
   }
 
   // ---- typed events ------------------------------------------------------------------------
@@ -183,27 +211,37 @@ export class GlassPlaneScene extends Base {
     super.removeEventListener(type, listener, options);
   }
 
-  // ---- rendering ---------------------------------------------------------------------------
+  // ---- the shared context ------------------------------------------------------------------
+
+  /** @internal ContextClient: every GL object died with the context. */
+  contextLost(): void {
+    this.cancelFrame();
+    this.disposeRenderer();
+    this.fail('context-lost', new Error('WebGL context lost'));
+  }
+
+  /** @internal ContextClient: rebuild on the restored context and draw. */
+  contextRestored(): void {
+    if (this.failed !== 'context-lost') return;
+    this.failed = null;
+    this.message.hidden = true;
+    this.canvas.hidden = false;
+    this.start();
+  }
 
   private start(): void {
-    if (this.renderer || this.failed) return;
-    if (!this.gl) {
-      // alpha: true so the canvas is RGBA8 like our multisampled targets (a multisample
-      // resolve cannot convert formats); every pass writes alpha 1, so it stays opaque.
-      const gl = this.canvas.getContext('webgl2', {
-        alpha: true, antialias: false, depth: true, stencil: false, premultipliedAlpha: true, preserveDrawingBuffer: false,
-      });
-      if (!gl) {
-        this.fail('webgl2-unavailable', new Error('WebGL2 is not available in this browser, so this scene cannot be shown.'));
-        return;
-      }
-      this.gl = gl;
+    if (this.renderer || (this.failed && this.failed !== 'context-lost')) return;
+    this.shared ??= SharedContext.acquire(this);
+    if (!this.shared) {
+      this.fail('webgl2-unavailable', new Error('WebGL2 is not available in this browser, so this scene cannot be shown.'));
+      return;
     }
-    if (this.gl.isContextLost()) return;
+    if (this.shared.lost || this.shared.gl.isContextLost()) return;
+    this.output ??= this.canvas.getContext('2d', { alpha: false });
     try {
-      this.renderer = new Renderer(this.gl, { checks: checksEnabled() });
+      this.renderer = new Renderer(this.shared.gl, { checks: checksEnabled() });
     } catch (e) {
-      this.fail(e instanceof ShaderError ? 'shader' : 'context-lost', e);
+      this.handleRenderError(e);
       return;
     }
     this.resizeCanvas();
@@ -218,37 +256,68 @@ export class GlassPlaneScene extends Base {
     this.renderer = null;
   }
 
+  // ---- frames ------------------------------------------------------------------------------
+
+  /** Draws only when something changed or moves, the element is in view and the page shown. */
+  private scheduleFrame(): void {
+    if (this.rafId !== 0 || !this.renderer || this.failed || !this.inView || document.hidden) return;
+    if (!this.dirty && !this.animating()) return;
+    this.rafId = requestAnimationFrame(this.onFrame);
+  }
+
+  private cancelFrame(): void {
+    cancelAnimationFrame(this.rafId);
+    this.rafId = 0;
+    this.lastNow = 0;
+  }
+
   private readonly onFrame = (now: number): void => {
     this.rafId = 0;
-    const renderer = this.renderer;
-    if (!renderer || this.failed) return;
+    if (!this.renderer || this.failed) return;
     const dt = this.lastNow ? (now - this.lastNow) / 1000 : 0;
     this.lastNow = now;
     if (this.flyby.update(dt)) this.cameraMoved();
-    const state = this.frameState(now);
-    let report: FrameReport;
-    try {
-      report = renderer.render(state);
-    } catch (e) {
-      this.fail(e instanceof ShaderError ? 'shader' : 'context-lost', e);
-      return;
-    }
-    this.lastState = { ...state, cameraPosition: [...state.cameraPosition] };
-    const detail = structuredClone(report);
-    if (!this.readyFired) {
-      this.readyFired = true;
-      this.dispatchEvent(new CustomEvent('ready', { detail }));
-    }
-    this.dispatchEvent(new CustomEvent('frame', { detail }));
-    if (this.animating()) this.requestRender();
+    this.draw(now);
+    if (this.animating()) this.scheduleFrame();
     else {
       this.lastNow = 0;
       if (this.cameraDirty) this.reflectCamera();
     }
   };
 
+  private draw(now: number): void {
+    const renderer = this.renderer!;
+    this.dirty = false;
+    const { width, height } = this.canvas;
+    if (this.clientWidth === 0 || this.clientHeight === 0) return; // nothing to show
+    const state = this.frameState(now);
+    let report: FrameReport;
+    try {
+      this.shared!.reserve(width, height);
+      report = renderer.render(state);
+      this.shared!.present(this.output!, width, height);
+    } catch (e) {
+      this.handleRenderError(e);
+      return;
+    }
+    this.frames++;
+    this.lastState = { ...state, cameraPosition: [...state.cameraPosition] };
+    const detail = structuredClone(report);
+    detail.frame = this.frames;
+    if (!this.readyFired) {
+      this.readyFired = true;
+      this.dispatchEvent(new CustomEvent('ready', { detail }));
+    }
+    this.dispatchEvent(new CustomEvent('frame', { detail }));
+  }
+
+  /** Spin counts unless reduced motion is asked for and the page did not set `spin` itself. */
+  private effectiveSpin(): number {
+    return this.reducedMotion?.matches && !this.hasAttribute('spin') ? 0 : this.values.spin;
+  }
+
   private animating(): boolean {
-    return (this.values.spin !== 0 && this.values.time === null) || this.flyby.active;
+    return (this.effectiveSpin() !== 0 && this.values.time === null) || this.flyby.active;
   }
 
   private frameState(now: number): FrameState {
@@ -258,7 +327,7 @@ export class GlassPlaneScene extends Base {
     s.width = this.canvas.width;
     s.height = this.canvas.height;
     s.time = v.time ?? (now - this.clockStart) / 1000;
-    s.spin = v.spin;
+    s.spin = this.effectiveSpin();
     s.cubeDistance = v.cubeDistance;
     s.transparency = v.transparency;
     s.ior = v.ior;
@@ -275,39 +344,58 @@ export class GlassPlaneScene extends Base {
     return s;
   }
 
+  // ---- observers ---------------------------------------------------------------------------
+
   private readonly onResize = (): void => {
-    if (this.resizeCanvas()) {
-      // Resizing clears the canvas: draw now rather than show an empty frame.
-      cancelAnimationFrame(this.rafId);
-      this.rafId = 0;
-      if (this.renderer) this.onFrame(performance.now());
-    }
+    if (!this.resizeCanvas()) return;
+    // Resizing clears the canvas: draw now rather than show an empty frame.
+    this.cancelFrame();
+    this.dirty = true;
+    if (this.renderer && !this.failed && this.inView && !document.hidden) this.onFrame(performance.now());
   };
 
-  /** Drawing buffer = CSS box × devicePixelRatio, within the GL limits. Returns true if it changed. */
+  /** Drawing buffer = CSS box × pixel ratio, within the GL limits. Returns true if it changed. */
   private resizeCanvas(): boolean {
-    const gl = this.gl;
-    if (!gl) return false;
-    const dpr = this.values.pixelRatio === 'auto' ? window.devicePixelRatio || 1 : this.values.pixelRatio;
-    const max = gl.getParameter(gl.MAX_VIEWPORT_DIMS) as Int32Array;
-    const limit = Math.min(max[0], max[1], gl.getParameter(gl.MAX_TEXTURE_SIZE) as number, gl.getParameter(gl.MAX_RENDERBUFFER_SIZE) as number);
-    const w = Math.max(1, Math.min(limit, Math.round(this.clientWidth * dpr)));
-    const h = Math.max(1, Math.min(limit, Math.round(this.clientHeight * dpr)));
+    if (!this.shared) return false;
+    const ratio = this.values.pixelRatio === 'auto' ? window.devicePixelRatio || 1 : this.values.pixelRatio;
+    const limit = this.shared.maxSize;
+    const w = Math.max(1, Math.min(limit, Math.round(this.clientWidth * ratio)));
+    const h = Math.max(1, Math.min(limit, Math.round(this.clientHeight * ratio)));
     if (w === this.canvas.width && h === this.canvas.height) return false;
     this.canvas.width = w;
     this.canvas.height = h;
     return true;
   }
 
-  // ---- failures ----------------------------------------------------------------------------
+  private readonly onIntersection = (entries: IntersectionObserverEntry[]): void => {
+    const entry = entries[entries.length - 1];
+    this.inView = entry.isIntersecting;
+    if (this.inView) this.scheduleFrame();
+    else this.cancelFrame();
+  };
+
+  private readonly onVisibility = (): void => {
+    if (document.hidden) this.cancelFrame();
+    else this.scheduleFrame();
+  };
+
+  private readonly onMotionPreference = (): void => {
+    this.requestRender();
+  };
+
+  // ---- failures and warnings ---------------------------------------------------------------
+
+  private handleRenderError(e: unknown): void {
+    if (e instanceof ShaderError) this.fail('shader', e);
+    else if (this.shared?.gl.isContextLost()) this.contextLost();
+    else throw e;
+  }
 
   private fail(type: ErrorType, error: unknown): void {
     const message = error instanceof Error ? error.message : String(error);
-    this.failed = type !== 'context-lost';
+    this.failed = type;
     if (type !== 'context-lost') this.disposeRenderer();
-    this.message.textContent = type === 'webgl2-unavailable'
-      ? 'WebGL2 is not available here, so the glass scene cannot be shown.'
-      : type === 'shader' ? 'The glass scene could not be drawn: a shader failed to compile.' : 'The graphics context was lost; waiting for it to come back.';
+    this.message.textContent = MESSAGES[type];
     this.message.hidden = false;
     this.canvas.hidden = type === 'webgl2-unavailable';
     // A broken shader is a bug worth a console line (with the annotated source); a missing
@@ -315,23 +403,6 @@ export class GlassPlaneScene extends Base {
     if (type === 'shader') console.error(`${PREFIX} ${message}`);
     queueMicrotask(() => this.dispatchEvent(new CustomEvent('error', { detail: { type, message } })));
   }
-
-  private readonly onContextLost = (e: Event): void => {
-    e.preventDefault(); // tells the browser we will restore
-    cancelAnimationFrame(this.rafId);
-    this.rafId = 0;
-    this.disposeRenderer();
-    this.fail('context-lost', new Error('WebGL context lost'));
-  };
-
-  private readonly onContextRestored = (): void => {
-    this.message.hidden = true;
-    this.canvas.hidden = false;
-    this.failed = false;
-    this.start();
-  };
-
-  // ---- warnings ----------------------------------------------------------------------------
 
   private warnOnce(spec: AttributeSpec, raw: string, problem: string): void {
     const key = `${spec.attribute}\u0000${raw}`;
@@ -346,47 +417,7 @@ export class GlassPlaneScene extends Base {
     console.warn(`${PREFIX} ${text}`);
   }
 
-  // ---- input -------------------------------------------------------------------------------
-
-  private readonly onKeyDown = (e: KeyboardEvent): void => {
-    if (!this.values.controls || e.altKey || e.ctrlKey || e.metaKey) return;
-    if (e.code === DEBUG_KEY && !e.repeat) {
-      const views = ['none', 'reflection', 'scene', 'fresnel', 'passes'];
-      this.debugView = views[(views.indexOf(this.values.debugView) + 1) % views.length] as SceneAttributes['debugView'];
-      return;
-    }
-    if (this.flyby.keyDown(e.code)) {
-      e.preventDefault();
-      this.requestRender();
-    }
-  };
-
-  private readonly onKeyUp = (e: KeyboardEvent): void => {
-    if (this.flyby.keyUp(e.code)) e.preventDefault();
-  };
-
-  private readonly onBlur = (): void => {
-    this.flyby.releaseAll();
-  };
-
-  private readonly onClick = (): void => {
-    if (!this.values.controls || this.shadowRoot?.pointerLockElement === this.canvas) return;
-    this.focus();
-    try {
-      // Refusal (headless, iframes without allow-pointer-lock) leaves keyboard look working.
-      const p = this.canvas.requestPointerLock() as unknown as Promise<void> | undefined;
-      p?.catch?.(() => {});
-    } catch { /* pointer lock unavailable */ }
-  };
-
-  private readonly onMouseMove = (e: MouseEvent): void => {
-    if (!this.values.controls || this.shadowRoot?.pointerLockElement !== this.canvas) return;
-    if (this.flyby.look(e.movementX, e.movementY)) {
-      this.cameraMoved();
-      this.cameraDirty = true;
-      this.requestRender();
-    }
-  };
+  // ---- camera ------------------------------------------------------------------------------
 
   private cameraMoved(): void {
     this.cameraDirty = true;
@@ -398,8 +429,7 @@ export class GlassPlaneScene extends Base {
   private reflectCamera(): void {
     this.cameraDirty = false;
     const { position, yaw, pitch } = this.flyby.pose;
-    const p: [number, number, number] = [position[0], position[1], position[2]];
-    this.setAttribute('camera-position', p.join(' '));
+    this.setAttribute('camera-position', `${position[0]} ${position[1]} ${position[2]}`);
     this.setAttribute('camera-rotation', `${yaw} ${pitch}`);
   }
 

@@ -34,8 +34,9 @@ export class FrameSetup {
   /** Clip plane in mirrored-eye-relative coordinates; keeps the eye's side. */
   readonly clipPlane = new Float32Array(4);
 
+  /** Projection × rotation-only view: maps eye-relative points to clip space. */
+  readonly viewProjection = f64(16);
   private readonly viewRotation = f64(16);
-  private readonly viewProjection = f64(16);
   private readonly mirroredViewProjection = f64(16);
   private readonly reflectionLinear = f64(16);
   private readonly relative = f64(16);

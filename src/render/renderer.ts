@@ -4,6 +4,8 @@ import { Mesh } from './gl/mesh';
 import { RenderTarget } from './gl/render-target';
 import { MultisampleTarget } from './gl/multisample-target';
 import { SphereLod } from './sphere-lod';
+import { glassScreenRect, type ScreenRect } from './glass-bounds';
+import { findNonFinite } from './finite-check';
 import { ResourceCounter } from './gl/resource-counter';
 import { Texture } from './gl/texture';
 import { FrameSetup } from './frame-setup';
@@ -33,6 +35,10 @@ export interface Pixels {
 export type ReadbackSource = 'screen' | 'reflection' | 'scene' | 'final';
 
 const BLACK = [0, 0, 0] as const;
+/** Below this projected area (px²) the glass covers no pixel centre worth a pass. */
+const MIN_GLASS_AREA = 0.5;
+/** An eye this close to the glass plane sees it edge-on. */
+const EDGE_ON_DISTANCE = 1e-3;
 const PASSES: readonly PassName[] = ['reflection', 'scene', 'glass'];
 
 /** Why each pass does not run in a debug view. */
@@ -63,6 +69,13 @@ export class Renderer {
     frame: 0, time: 0, width: 0, height: 0, drawCalls: 0,
     passes: { reflection: { ran: false }, scene: { ran: false }, glass: { ran: false } },
   };
+  private readonly glassRect: ScreenRect = { x0: 0, y0: 0, x1: 0, y1: 0, area: 0 };
+  private readonly scissor: Viewport = { x: 0, y: 0, width: 0, height: 0 };
+  /**
+   * Skip the reflection and glass when the glass is not on screen, cull objects beyond the
+   * glass from the reflection, scissor it to the glass (SPEC §7). Off only to measure savings.
+   */
+  optimize = true;
   private readonly counts = {
     frames: 0,
     passesRun: { reflection: 0, scene: 0, glass: 0 },
@@ -87,6 +100,8 @@ export class Renderer {
       gl, programs: this.programs, meshes: this.meshes, texture: this.texture, setup: this.setup,
       state: undefined as unknown as FrameState,
       clipExtension: gl.getExtension('WEBGL_clip_cull_distance') as { CLIP_DISTANCE0_WEBGL: number } | null,
+      cull: true,
+      scissor: null,
     };
   }
 
@@ -101,8 +116,9 @@ export class Renderer {
     r.height = state.height;
     r.drawCalls = drawCalls;
     const skipped = SKIPPED_BY_VIEW[state.view];
+    const glassSkip = state.view === 'final' ? this.glassSkipReason : undefined;
     for (const p of PASSES) {
-      const reason = skipped[p];
+      const reason = skipped[p] ?? (p === 'scene' ? undefined : glassSkip);
       r.passes[p].ran = reason === undefined;
       r.passes[p].reason = reason;
       if (reason === undefined) this.counts.passesRun[p]++;
@@ -111,6 +127,9 @@ export class Renderer {
     if (this.options.checks) this.checkErrors();
     return r;
   }
+
+  /** Why the final view needs neither reflection nor glass this frame, if it does not. */
+  private glassSkipReason: string | undefined;
 
   /**
    * Pixels of `state` as drawn: 'screen' redraws the canvas and reads it back (the drawing
@@ -166,6 +185,13 @@ export class Renderer {
   private prepare(state: FrameState): void {
     this.ctx.state = state;
     this.setup.update(state);
+    if (this.options.checks) this.checkFinite(state);
+    const rect = glassScreenRect(this.setup.viewProjection, this.setup.eye, state.width, state.height, this.glassRect);
+    this.glassSkipReason = !this.optimize ? undefined
+      : rect.x1 <= rect.x0 || rect.y1 <= rect.y0 ? 'glass off screen'
+      : rect.area < MIN_GLASS_AREA ? (Math.abs(this.setup.eyeDistance) < EDGE_ON_DISTANCE ? 'glass edge-on' : 'glass too small')
+      : undefined;
+    this.ctx.cull = this.optimize;
     this.meshes.sphere = this.sphere.update(state);
     const scale = state.reflectionScale;
     this.reflection.setSize(Math.max(1, Math.round(state.width * scale)), Math.max(1, Math.round(state.height * scale)));
@@ -175,9 +201,26 @@ export class Renderer {
     return Math.min(state.samples, this.maxSamples);
   }
 
-  /** Pass 1 into the reflection texture, through a multisampled target when asked. */
-  private runReflection(): number {
+  /** The glass's screen rectangle in reflection texels, one texel wider for bilinear reads. */
+  private reflectionScissor(): Viewport {
+    const s = this.ctx.state.reflectionScale;
+    const r = this.glassRect;
     const { width, height } = this.reflection;
+    const x0 = Math.max(0, Math.floor(r.x0 * s) - 1);
+    const y0 = Math.max(0, Math.floor(r.y0 * s) - 1);
+    const x1 = Math.min(width, Math.ceil(r.x1 * s) + 1);
+    const y1 = Math.min(height, Math.ceil(r.y1 * s) + 1);
+    Object.assign(this.scissor, { x: x0, y: y0, width: Math.max(0, x1 - x0), height: Math.max(0, y1 - y0) });
+    return this.scissor;
+  }
+
+  /**
+   * Pass 1 into the reflection texture, through a multisampled target when asked. `scissored`
+   * limits it to the glass (the final image); debug views and captures of it draw it whole.
+   */
+  private runReflection(scissored = false): number {
+    const { width, height } = this.reflection;
+    this.ctx.scissor = scissored && this.optimize ? this.reflectionScissor() : null;
     const samples = this.samplesFor(this.ctx.state);
     if (samples === 0) return reflectionPass(this.ctx, this.reflection.framebuffer, width, height);
     const msaa = (this.reflectionMsaa ??= new MultisampleTarget(this.gl, this.counter));
@@ -216,7 +259,11 @@ export class Renderer {
       case 'passes':
         return this.drawTiles(framebuffer, state.width, state.height);
       default: {
-        const n = this.runReflection();
+        if (this.glassSkipReason !== undefined) {
+          beginTarget(this.gl, framebuffer, full);
+          return scenePass(ctx);
+        }
+        const n = this.runReflection(true);
         beginTarget(this.gl, framebuffer, full);
         return n + scenePass(ctx) + glassPass(ctx, this.reflection.color);
       }
@@ -270,6 +317,11 @@ export class Renderer {
     const row = width * 4;
     for (let y = 0; y < height; y++) data.set(raw.subarray((height - 1 - y) * row, (height - y) * row), y * row);
     return { width, height, data };
+  }
+
+  private checkFinite(state: FrameState): void {
+    const bad = findNonFinite(this.setup, state);
+    if (bad) console.error(`glass-plane-scene: non-finite uniform ${bad} in frame ${this.counts.frames + 1}`);
   }
 
   private checkErrors(): void {

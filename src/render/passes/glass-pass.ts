@@ -11,6 +11,10 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
   const program = ctx.programs.glass(state.fresnel, outputFresnel);
   gl.enable(gl.DEPTH_TEST);
   gl.depthMask(false);
+  // Pushed back a hair, so a cube face lying in the glass plane wins the depth test every
+  // time instead of z-fighting (cube-distance ±0.5 with spin 0).
+  gl.enable(gl.POLYGON_OFFSET_FILL);
+  gl.polygonOffset(1, 1);
   if (!outputFresnel) {
     gl.enable(gl.BLEND);
     gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA);
@@ -32,6 +36,7 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
     gl.bindTexture(gl.TEXTURE_2D, null);
     gl.activeTexture(gl.TEXTURE0);
     gl.disable(gl.BLEND);
+    gl.disable(gl.POLYGON_OFFSET_FILL);
     gl.depthMask(true);
     gl.disable(gl.DEPTH_TEST);
   }

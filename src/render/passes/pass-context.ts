@@ -30,16 +30,21 @@ export interface PassContext {
   state: FrameState;
   /** The WEBGL_clip_cull_distance extension, or null (then the shader discards). */
   clipExtension: { CLIP_DISTANCE0_WEBGL: number } | null;
+  /** Cull objects beyond the glass from the reflection (off only to measure what it saves). */
+  cull: boolean;
+  /** Pass 1 draws only inside this rectangle of its target, or everywhere when null. */
+  scissor: Viewport | null;
 }
 
 /** Binds `framebuffer`, sets the viewport and clears it (scissored, so tiles clear only themselves). */
 export function beginTarget(
   gl: WebGL2RenderingContext, framebuffer: WebGLFramebuffer | null, vp: Viewport, clear: readonly number[] = BACKGROUND,
+  scissor: Viewport = vp,
 ): void {
   gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
   gl.viewport(vp.x, vp.y, vp.width, vp.height);
   gl.enable(gl.SCISSOR_TEST);
-  gl.scissor(vp.x, vp.y, vp.width, vp.height);
+  gl.scissor(scissor.x, scissor.y, scissor.width, scissor.height);
   gl.clearColor(clear[0], clear[1], clear[2], 1);
   gl.clearDepth(1);
   gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);

@@ -1,7 +1,7 @@
 // Pass 1: the eye's side of the glass, seen through the mirror (view × reflection), into an FBO.
 // What lies beyond the glass is clipped on the GPU (gl_ClipDistance, or discard without the
 // extension); an object whose bounds lie wholly beyond it is culled, not drawn.
-import { CUBE, GLASS, SPHERE } from '../../scene/default-scene';
+import { BACKGROUND, CUBE, GLASS, SPHERE } from '../../scene/default-scene';
 import { signedDistance } from '../../math/mirror';
 import { beginTarget, setLighting, setMatrices, type PassContext } from './pass-context';
 
@@ -10,8 +10,14 @@ const centre = new Float64Array(3);
 
 /** Returns the number of draw calls. */
 export function reflectionPass(ctx: PassContext, framebuffer: WebGLFramebuffer, width: number, height: number): number {
-  const { gl, setup, meshes, clipExtension } = ctx;
-  beginTarget(gl, framebuffer, { x: 0, y: 0, width, height });
+  const { gl, setup, meshes, clipExtension, scissor } = ctx;
+  const full = { x: 0, y: 0, width, height };
+  // Scissored to the glass: only texels the glass pass can read are cleared and drawn.
+  beginTarget(gl, framebuffer, full, BACKGROUND, scissor ?? full);
+  if (scissor) {
+    gl.enable(gl.SCISSOR_TEST);
+    gl.scissor(scissor.x, scissor.y, scissor.width, scissor.height);
+  }
   const program = ctx.programs.standard(clipExtension ? 'clip-distance' : 'discard', ctx.state.shading);
   let draws = 0;
   gl.enable(gl.DEPTH_TEST);
@@ -25,19 +31,20 @@ export function reflectionPass(ctx: PassContext, framebuffer: WebGLFramebuffer, 
     ctx.texture.bind(0);
 
     centre[0] = CUBE.x; centre[1] = CUBE.y; centre[2] = ctx.state.cubeDistance;
-    if (setup.side * signedDistance(GLASS.plane, centre) > -CUBE_BOUND) {
+    if (!ctx.cull || setup.side * signedDistance(GLASS.plane, centre) > -CUBE_BOUND) {
       setMatrices(gl, program, setup.mirrored.cube);
       gl.uniform3fv(program.location('uAlbedo'), CUBE.albedo);
       meshes.cube.draw();
       draws++;
     }
-    if (setup.side * signedDistance(GLASS.plane, SPHERE.centre) > -SPHERE.radius) {
+    if (!ctx.cull || setup.side * signedDistance(GLASS.plane, SPHERE.centre) > -SPHERE.radius) {
       setMatrices(gl, program, setup.mirrored.sphere);
       gl.uniform3fv(program.location('uAlbedo'), SPHERE.albedo);
       meshes.sphere.draw();
       draws++;
     }
   } finally {
+    gl.disable(gl.SCISSOR_TEST);
     if (clipExtension) gl.disable(clipExtension.CLIP_DISTANCE0_WEBGL);
     gl.frontFace(gl.CCW);
     gl.disable(gl.CULL_FACE);
