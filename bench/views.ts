@@ -34,3 +34,9 @@ export const VIEWS: readonly BenchView[] = [
   { name: '0.01 from the plane', cameraPosition: [3.5, 1.2, 0.01], yaw: -172, pitch: -4 },
   lookingAt('far away', [45, 30, 60]),
 ];
+
+/** Extra views for what SPEC §7's skips save: the glass behind the camera, and edge-on. */
+export const SKIP_VIEWS: readonly BenchView[] = [
+  { name: 'glass behind the camera', cameraPosition: [...DEFAULT_CAMERA_POSITION], yaw: DEFAULT_CAMERA_ROTATION[0] + 180, pitch: 0 },
+  { name: 'glass edge-on', cameraPosition: [6, 1, 0], yaw: 180, pitch: 0 },
+];
