@@ -99,14 +99,20 @@ function numberSpec<K extends AttributeName>(
   };
 }
 
-/** Finite numbers only: ±Infinity and NaN fall back to the default. */
-function finiteSpec<K extends AttributeName>(property: K, attribute: string, def: number, doc: string): AttributeSpec<K> {
+/**
+ * Finite numbers only: ±Infinity and NaN fall back to the default; magnitudes beyond `limit`
+ * clamp to it (a value that is finite in float64 may overflow float32 on its way to the GPU).
+ */
+function finiteSpec<K extends AttributeName>(
+  property: K, attribute: string, def: number, doc: string, limit = Number.MAX_VALUE,
+): AttributeSpec<K> {
   return {
     property, attribute, default: def as SceneAttributes[K], doc,
     parse(raw) {
       if (raw === null) return { value: def as SceneAttributes[K] };
       const x = num(raw);
       if (!Number.isFinite(x)) return { value: def as SceneAttributes[K], problem: `not a finite number, using ${def}` };
+      if (Math.abs(x) > limit) return { value: Math.sign(x) * limit as SceneAttributes[K], problem: `beyond ±${limit}, clamped` };
       return { value: x as SceneAttributes[K] };
     },
     format: (v) => String(v),
@@ -142,7 +148,7 @@ const MAX_COORD = 1e7;
 
 export const ATTRIBUTES: readonly AttributeSpec[] = [
   numberSpec('transparency', 'transparency', 0.5, 0, 1, 'T in the glass equation; 1 = clear glass'),
-  finiteSpec('cubeDistance', 'cube-distance', 2.5, "z of the cube's centre (signed distance from the glass)"),
+  finiteSpec('cubeDistance', 'cube-distance', 2.5, "z of the cube's centre (signed distance from the glass)", MAX_COORD),
   numberSpec('ior', 'ior', 1.5, 1, 10, 'index of refraction for the Fresnel term'),
   keywordSpec('fresnel', 'fresnel', FRESNEL_MODELS, 'Fresnel model: exact, schlick or classic (seed 000)'),
   {

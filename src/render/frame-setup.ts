@@ -16,6 +16,7 @@ export class DrawMatrices {
 export type ObjectName = 'cube' | 'sphere' | 'glass';
 
 const f64 = (n: number) => new Float64Array(n);
+const TWO_PI = 2 * Math.PI;
 const OBJECTS: readonly ObjectName[] = ['cube', 'sphere', 'glass'];
 
 export class FrameSetup {
@@ -67,7 +68,9 @@ export class FrameSetup {
     const t = this.scratch3;
     t[0] = CUBE.x; t[1] = CUBE.y; t[2] = s.cubeDistance;
     mat4.fromTranslation(cube, t);
-    mat4.rotateY(cube, cube, s.spin * s.time);
+    // spin·time may overflow (both finite, product not): any angle is then as good as another.
+    const angle = s.spin * s.time;
+    mat4.rotateY(cube, cube, Number.isFinite(angle) ? angle % TWO_PI : 0);
     const sphere = this.models.sphere as unknown as mat4;
     mat4.fromTranslation(sphere, SPHERE.centre);
 

@@ -62,6 +62,8 @@ export class Renderer {
   private mainMsaa: MultisampleTarget | null = null;
   private readonly sphere: SphereLod;
   private readonly maxSamples: number;
+  /** Largest side of any render target (texture, renderbuffer and viewport limits). */
+  private readonly maxTargetSize: number;
   private readonly blitVao: WebGLVertexArrayObject;
   private readonly setup = new FrameSetup();
   private readonly ctx: PassContext;
@@ -92,6 +94,8 @@ export class Renderer {
       glass: new Mesh(gl, c, glassMesh()),
     };
     this.maxSamples = gl.getParameter(gl.MAX_SAMPLES) as number;
+    const dims = gl.getParameter(gl.MAX_VIEWPORT_DIMS) as Int32Array;
+    this.maxTargetSize = Math.min(dims[0], dims[1], gl.getParameter(gl.MAX_TEXTURE_SIZE) as number, gl.getParameter(gl.MAX_RENDERBUFFER_SIZE) as number);
     this.texture = new Texture(gl, c, { width: TEXTURE_SIZE, height: TEXTURE_SIZE, data: proceduralTexture(), mipmap: true, repeat: true });
     this.reflection = new RenderTarget(gl, c);
     this.blitVao = gl.createVertexArray()!;
@@ -193,8 +197,13 @@ export class Renderer {
       : undefined;
     this.ctx.cull = this.optimize;
     this.meshes.sphere = this.sphere.update(state);
+    // Clamped like the canvas: the glass reads it with normalised coordinates, so a smaller
+    // target still lines up.
     const scale = state.reflectionScale;
-    this.reflection.setSize(Math.max(1, Math.round(state.width * scale)), Math.max(1, Math.round(state.height * scale)));
+    const max = this.maxTargetSize;
+    this.reflection.setSize(
+      Math.max(1, Math.min(max, Math.round(state.width * scale))), Math.max(1, Math.min(max, Math.round(state.height * scale))),
+    );
   }
 
   private samplesFor(state: FrameState): number {

@@ -107,9 +107,13 @@ describe('numbers', () => {
     expectFallback('fov', '-Infinity', 1);
   });
 
-  it('cube-distance and spin take any finite number, never ±Infinity', () => {
+  it('cube-distance and spin take finite numbers, never ±Infinity; cube-distance within ±1e7', () => {
     expectOk('cube-distance', '-3', -3);
-    expectOk('cube-distance', '1e308', 1e308);
+    expectOk('cube-distance', '1e7', 1e7);
+    // Finite in float64 but not in float32 on the way to the GPU: clamped like camera-position.
+    expectFallback('cube-distance', '1e308', 1e7);
+    expectFallback('cube-distance', '-3.5e38', -1e7);
+    expectOk('spin', '1e308', 1e308);
     expectFallback('cube-distance', 'Infinity', 2.5);
     expectFallback('cube-distance', '1e309', 2.5);
     expectFallback('cube-distance', 'far', 2.5);
