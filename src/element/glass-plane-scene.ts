@@ -146,7 +146,9 @@ export class GlassPlaneScene extends Base implements ContextClient {
       const [yaw, pitch] = this.values.cameraRotation;
       this.flyby.setPose(this.values.cameraPosition, yaw, pitch);
     }
-    if (spec.property === 'pixelRatio') this.onResize();
+    // Resize only: drawing here, mid-way through a script's batch of attribute changes, would
+    // show a frame with half of them applied (the next animation frame comes before paint).
+    if (spec.property === 'pixelRatio') this.resizeCanvas();
     this.requestRender();
   }
 
