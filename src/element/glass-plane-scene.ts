@@ -5,7 +5,7 @@ import { ATTRIBUTES, ATTRIBUTE_BY_NAME, DEBUG_VIEWS, defaultAttributes, property
 import { FlybyController } from './flyby-controller';
 import { FlybyInput } from './flyby-input';
 import { applyStyle } from './element-style';
-import { SharedContext, type ContextClient } from './shared-context';
+import { SharedContext, type ContextClient, type Presenter } from './shared-context';
 import { Renderer, type ReadbackSource } from '../render/renderer';
 import { ShaderError } from '../render/gl/program';
 import type { FrameReport, FrameState, RenderStats } from '../render/types';
@@ -53,7 +53,7 @@ export class GlassPlaneScene extends Base implements ContextClient {
   private readonly input: FlybyInput;
   private readonly warned = new Set<string>();
   private shared: SharedContext | null = null;
-  private output: CanvasRenderingContext2D | null = null;
+  private output: Presenter | null = null;
   private renderer: Renderer | null = null;
   private resizeObserver: ResizeObserver | null = null;
   private intersectionObserver: IntersectionObserver | null = null;
@@ -239,7 +239,7 @@ export class GlassPlaneScene extends Base implements ContextClient {
       return;
     }
     if (this.shared.lost || this.shared.gl.isContextLost()) return;
-    this.output ??= this.canvas.getContext('2d', { alpha: false });
+    this.output ??= this.shared.presenterFor(this.canvas);
     try {
       this.renderer = new Renderer(this.shared.gl, { checks: checksEnabled() });
     } catch (e) {
@@ -297,7 +297,7 @@ export class GlassPlaneScene extends Base implements ContextClient {
     try {
       this.shared!.reserve(width, height);
       report = renderer.render(state);
-      this.shared!.present(this.output!, width, height);
+      this.output!.present(width, height);
     } catch (e) {
       this.handleRenderError(e);
       return;

@@ -4,12 +4,17 @@ import { test, expect, openPage, type SceneElement } from './fixtures';
 import type { GlassPlaneSceneErrorDetail } from '../../src/element/types';
 
 test.beforeEach(async ({ page }) => {
+  // On every kind of canvas the element might create (its shared context is an OffscreenCanvas
+  // where the browser has one).
   await page.addInitScript(() => {
-    const original = HTMLCanvasElement.prototype.getContext;
-    HTMLCanvasElement.prototype.getContext = function (this: HTMLCanvasElement, type: string, ...rest: unknown[]) {
-      if (type === 'webgl2') return null;
-      return (original as (...a: unknown[]) => unknown).call(this, type, ...rest);
-    } as typeof original;
+    for (const C of [globalThis.HTMLCanvasElement, globalThis.OffscreenCanvas]) {
+      if (!C) continue;
+      const original = C.prototype.getContext as (...a: unknown[]) => unknown;
+      C.prototype.getContext = function (this: unknown, type: string, ...rest: unknown[]) {
+        if (type === 'webgl2') return null;
+        return original.call(this, type, ...rest);
+      } as typeof C.prototype.getContext;
+    }
   });
   await openPage(page);
 });
