@@ -46,6 +46,7 @@
 //    frustum culling drops the Reflector mesh (onBeforeRender runs for visible meshes only).
 //  - Only view 'final' is drawn (debug views are ignored); `state.tessellation` is ignored in
 //    favour of `options.sphereSegments`.
+import lighting from '../shaders/lighting.glsl?raw';
 import * as THREE from 'three';
 import { Reflector } from 'three/addons/objects/Reflector.js';
 import type { FrameState } from '../src/render/types';
@@ -71,20 +72,8 @@ export interface PeerOptions {
 
 // ---- shaders (three's GLSL1-style dialect; three compiles them as GLSL ES 3.00) --------------
 
-const BLINN_PHONG = /* glsl */ `
-uniform vec3 uLightDirection;
-uniform vec3 uLightIntensity;   // ambient, diffuse, specular
-uniform vec2 uSpecular;         // Ks, shininess
-vec2 blinnPhong(vec3 n, vec3 v) {
-  float nl = dot(n, uLightDirection);
-  float specular = 0.0;
-  if (nl > 0.0) {
-    vec3 h = normalize(uLightDirection + v);
-    specular = uSpecular.x * uLightIntensity.z * pow(max(dot(n, h), 0.0), uSpecular.y);
-  }
-  return vec2(uLightIntensity.x + uLightIntensity.y * max(nl, 0.0), specular);
-}
-`;
+// The very Blinn-Phong our renderer uses, so the two scenes differ only in the reflection technique.
+const BLINN_PHONG = lighting;
 
 const LIGHTING_VARYINGS = /* glsl */ `
 varying vec2 vUv;

@@ -1,4 +1,4 @@
-// Issue 5: the element works in a page served with a strict Content-Security-Policy
+// Issue 4 §5: the element works in a page served with a strict Content-Security-Policy
 // (`default-src 'self'`: no eval, no new Function, no inline script or style, no blob: or data:
 // workers), and attribute values are never written as HTML.
 //
@@ -6,6 +6,7 @@
 // Playwright runs); its HTML is served from disk by page.route with the policy header, so Vite's
 // dev client is not injected. Test code in that page must not use new Function either, hence the
 // local `change()` instead of the fixtures' nextFrame/setAttributes.
+import { withoutWebGL2 } from './helpers/no-webgl2';
 import fs from 'node:fs';
 import path from 'node:path';
 import { test, expect, openPage, mount, capture, type SceneElement } from './fixtures';
@@ -32,17 +33,6 @@ function recordViolations(): void {
 }
 const violations = (page: Page) => page.evaluate(() => (window as unknown as { __csp: string[] }).__csp);
 
-/** getContext('webgl2') returns null, on every kind of canvas the element might create. */
-function withoutWebGL2(): void {
-  for (const C of [globalThis.HTMLCanvasElement, globalThis.OffscreenCanvas]) {
-    if (!C) continue;
-    const original = C.prototype.getContext as (...a: unknown[]) => unknown;
-    C.prototype.getContext = function (this: unknown, type: string, ...rest: unknown[]) {
-      if (type === 'webgl2') return null;
-      return original.call(this, type, ...rest);
-    } as typeof C.prototype.getContext;
-  }
-}
 
 async function openCspPage(page: Page): Promise<void> {
   await page.addInitScript(recordViolations);

@@ -2,20 +2,10 @@
 // nothing. The browser here has WebGL2, so getContext('webgl2') is stubbed to return null.
 import { test, expect, openPage, type SceneElement } from './fixtures';
 import type { GlassPlaneSceneErrorDetail } from '../../src/element/types';
+import { withoutWebGL2 } from './helpers/no-webgl2';
 
 test.beforeEach(async ({ page }) => {
-  // On every kind of canvas the element might create (its shared context is an OffscreenCanvas
-  // where the browser has one).
-  await page.addInitScript(() => {
-    for (const C of [globalThis.HTMLCanvasElement, globalThis.OffscreenCanvas]) {
-      if (!C) continue;
-      const original = C.prototype.getContext as (...a: unknown[]) => unknown;
-      C.prototype.getContext = function (this: unknown, type: string, ...rest: unknown[]) {
-        if (type === 'webgl2') return null;
-        return original.call(this, type, ...rest);
-      } as typeof C.prototype.getContext;
-    }
-  });
+  await page.addInitScript(withoutWebGL2);
   await openPage(page);
 });
 
