@@ -1,7 +1,9 @@
 // <glass-plane-scene>: attributes → typed properties, shadow DOM, observers, input, events.
 // All GL work is the renderer's; this file turns the page's state into FrameState, decides
 // when a frame is needed, and copies frames from the page's shared context to its canvas.
-import { ATTRIBUTES, ATTRIBUTE_BY_NAME, DEBUG_VIEWS, defaultAttributes, propertyToRaw, type AttributeSpec, type SceneAttributes } from './attributes';
+import { ATTRIBUTES, ATTRIBUTE_BY_NAME, DEBUG_VIEWS, defaultAttributes, type SceneAttributes } from './attributes';
+import { defineAttributeProperties, upgradeProperties, type AttributeHost } from './attribute-properties';
+import { AttributeWarnings, PREFIX, warn } from './warnings';
 import { FlybyController } from './flyby-controller';
 import { FlybyInput } from './flyby-input';
 import { applyStyle } from './element-style';
@@ -11,8 +13,6 @@ import { ShaderError } from '../render/gl/program';
 import type { FrameReport, FrameState, RenderStats } from '../render/types';
 import type { CapturePass, ErrorType, GlassPlaneSceneEventMap } from './types';
 
-const PREFIX = 'glass-plane-scene:';
-const MAX_WARNINGS = 200;
 const CAPTURE_SOURCES: Record<CapturePass, ReadbackSource> = { reflection: 'reflection', scene: 'scene', final: 'final' };
 const DEFAULT_LABEL = 'A dark glass plane reflecting a cube, with a sphere behind it';
 const MESSAGES: Record<ErrorType, string> = {
@@ -41,7 +41,7 @@ function checksEnabled(): boolean {
 
 export interface GlassPlaneScene extends SceneAttributes {}
 
-export class GlassPlaneScene extends Base implements ContextClient {
+export class GlassPlaneScene extends Base implements ContextClient, AttributeHost {
   static get observedAttributes(): string[] {
     return [...ATTRIBUTES.map((a) => a.attribute), 'alt'];
   }
@@ -51,7 +51,7 @@ export class GlassPlaneScene extends Base implements ContextClient {
   private readonly message: HTMLElement;
   private readonly flyby = new FlybyController();
   private readonly input: FlybyInput;
-  private readonly warned = new Set<string>();
+  private readonly warnings = new AttributeWarnings();
   private shared: SharedContext | null = null;
   private output: Presenter | null = null;
   private renderer: Renderer | null = null;
@@ -102,7 +102,7 @@ export class GlassPlaneScene extends Base implements ContextClient {
   // ---- lifecycle -------------------------------------------------------------------------
 
   connectedCallback(): void {
-    for (const spec of ATTRIBUTES) this.upgradeProperty(spec.property);
+    upgradeProperties(this);
     if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
     if (!this.hasAttribute('role')) this.setAttribute('role', 'img');
     if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', this.alt);
@@ -140,7 +140,7 @@ export class GlassPlaneScene extends Base implements ContextClient {
     const spec = ATTRIBUTE_BY_NAME.get(name);
     if (!spec) return;
     const parsed = spec.parse(raw);
-    if (parsed.problem) this.warnOnce(spec, raw ?? '', parsed.problem);
+    if (parsed.problem) this.warnings.report(spec, raw ?? '', parsed.problem);
     (this.values as unknown as Record<string, unknown>)[spec.property] = parsed.value;
     if (spec.property === 'cameraPosition' || spec.property === 'cameraRotation') {
       const [yaw, pitch] = this.values.cameraRotation;
@@ -178,7 +178,7 @@ export class GlassPlaneScene extends Base implements ContextClient {
     let source: ReadbackSource = 'screen';
     if (pass !== undefined) {
       source = CAPTURE_SOURCES[pass as CapturePass] ?? 'final';
-      if (!(pass in CAPTURE_SOURCES)) this.warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
+      if (!(pass in CAPTURE_SOURCES)) warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
     }
     try {
       this.shared!.reserve(this.canvas.width, this.canvas.height);
@@ -211,6 +211,13 @@ export class GlassPlaneScene extends Base implements ContextClient {
   override removeEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | EventListenerOptions): void;
   override removeEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | EventListenerOptions): void {
     super.removeEventListener(type, listener, options);
+  }
+
+  /** @internal AttributeHost: the parsed value, or the live pose for the flown camera. */
+  readAttributeValue(property: keyof SceneAttributes): unknown {
+    if (property === 'cameraPosition') return this.flyby.pose.position;
+    if (property === 'cameraRotation') return [this.flyby.pose.yaw, this.flyby.pose.pitch];
+    return this.values[property];
   }
 
   // ---- the shared context ------------------------------------------------------------------
@@ -385,7 +392,7 @@ export class GlassPlaneScene extends Base implements ContextClient {
     this.requestRender();
   };
 
-  // ---- failures and warnings ---------------------------------------------------------------
+  // ---- failures ----------------------------------------------------------------------------
 
   private handleRenderError(e: unknown): void {
     if (e instanceof ShaderError) this.fail('shader', e);
@@ -406,19 +413,6 @@ export class GlassPlaneScene extends Base implements ContextClient {
     queueMicrotask(() => this.dispatchEvent(new CustomEvent('error', { detail: { type, message } })));
   }
 
-  private warnOnce(spec: AttributeSpec, raw: string, problem: string): void {
-    const key = `${spec.attribute}\u0000${raw}`;
-    if (this.warned.has(key) || this.warned.size >= MAX_WARNINGS) return;
-    this.warned.add(key);
-    const shown = raw.length > 40 ? `${raw.slice(0, 40)}…` : raw;
-    this.warn(`${spec.attribute}=${JSON.stringify(shown)}: ${problem}`);
-    if (this.warned.size === MAX_WARNINGS) this.warn('further attribute warnings are suppressed');
-  }
-
-  private warn(text: string): void {
-    console.warn(`${PREFIX} ${text}`);
-  }
-
   // ---- camera ------------------------------------------------------------------------------
 
   private cameraMoved(): void {
@@ -434,34 +428,6 @@ export class GlassPlaneScene extends Base implements ContextClient {
     this.setAttribute('camera-position', `${position[0]} ${position[1]} ${position[2]}`);
     this.setAttribute('camera-rotation', `${yaw} ${pitch}`);
   }
-
-  private upgradeProperty(prop: keyof SceneAttributes): void {
-    // A property set before the element was defined shadows the accessor: replay it.
-    if (Object.prototype.hasOwnProperty.call(this, prop)) {
-      const value = (this as unknown as Record<string, unknown>)[prop];
-      delete (this as unknown as Record<string, unknown>)[prop];
-      (this as unknown as Record<string, unknown>)[prop] = value;
-    }
-  }
 }
 
-// One accessor per row of the attribute table: the getter returns the parsed value (the
-// live pose for the camera), the setter writes the attribute, which parses and re-renders.
-for (const spec of ATTRIBUTES) {
-  Object.defineProperty(GlassPlaneScene.prototype, spec.property, {
-    configurable: true,
-    enumerable: true,
-    get(this: GlassPlaneScene) {
-      const self = this as unknown as { values: SceneAttributes; flyby: FlybyController };
-      if (spec.property === 'cameraPosition') return [...self.flyby.pose.position];
-      if (spec.property === 'cameraRotation') return [self.flyby.pose.yaw, self.flyby.pose.pitch];
-      const v = self.values[spec.property];
-      return Array.isArray(v) ? [...v] : v;
-    },
-    set(this: GlassPlaneScene, value: unknown) {
-      const raw = propertyToRaw(spec, value);
-      if (raw === null) this.removeAttribute(spec.attribute);
-      else this.setAttribute(spec.attribute, raw);
-    },
-  });
-}
+defineAttributeProperties(GlassPlaneScene.prototype);

@@ -1,0 +1,38 @@
+// One camelCase accessor per row of the attribute table: the getter returns the parsed value,
+// the setter writes the attribute (which parses, warns if needed and re-renders).
+import { ATTRIBUTES, propertyToRaw, type SceneAttributes } from './attributes';
+
+/** Where an element keeps its parsed values; `live` may override one (the flown camera). */
+export interface AttributeHost extends HTMLElement {
+  readAttributeValue(property: keyof SceneAttributes): unknown;
+}
+
+export function defineAttributeProperties(proto: AttributeHost): void {
+  for (const spec of ATTRIBUTES) {
+    Object.defineProperty(proto, spec.property, {
+      configurable: true,
+      enumerable: true,
+      get(this: AttributeHost) {
+        const v = this.readAttributeValue(spec.property);
+        return Array.isArray(v) ? [...v] : v;
+      },
+      set(this: AttributeHost, value: unknown) {
+        const raw = propertyToRaw(spec, value);
+        if (raw === null) this.removeAttribute(spec.attribute);
+        else this.setAttribute(spec.attribute, raw);
+      },
+    });
+  }
+}
+
+/** A property set before the element was defined shadows the accessor: replay it through it. */
+export function upgradeProperties(el: HTMLElement): void {
+  const own = el as unknown as Record<string, unknown>;
+  for (const { property } of ATTRIBUTES) {
+    if (Object.prototype.hasOwnProperty.call(el, property)) {
+      const value = own[property];
+      delete own[property];
+      own[property] = value;
+    }
+  }
+}
