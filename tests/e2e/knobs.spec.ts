@@ -1,0 +1,69 @@
+// Each quality knob (SPEC §5) changes what it should, and only that.
+import { test, expect, openPage, mount, capture, setAttributes, type SceneElement } from './fixtures';
+import { compareImages } from './helpers/golden';
+
+const SIZE = { width: 160, height: 90 };
+
+test.beforeEach(async ({ page }) => {
+  await openPage(page);
+});
+
+const stats = (page: import('@playwright/test').Page, s: string) =>
+  page.evaluate((sel) => (document.querySelector(sel) as SceneElement).stats, s);
+
+test('reflection-scale sizes the reflection framebuffer, not the screen', async ({ page }) => {
+  const { selector } = await mount(page, { time: 1.25 }, SIZE);
+  for (const [scale, w, h] of [[0.5, 80, 45], [0.25, 40, 23], [2, 320, 180]] as const) {
+    await setAttributes(page, selector, { 'reflection-scale': scale });
+    const r = await capture(page, 'reflection', selector);
+    const screen = await capture(page, undefined, selector);
+    expect([r.width, r.height], `reflection-scale ${scale}`).toEqual([w, h]);
+    expect([screen.width, screen.height]).toEqual([160, 90]);
+  }
+});
+
+test('samples antialiases edges: 0 leaves only hard edges, 4 blends them', async ({ page }) => {
+  const { selector } = await mount(page, { time: 1.25, samples: 0 }, SIZE);
+  const hard = await capture(page, 'scene', selector);
+  await setAttributes(page, selector, { samples: 4 });
+  const soft = await capture(page, 'scene', selector);
+  // Same picture, different edges: a few percent of pixels (the silhouettes) change.
+  const { differing } = compareImages(hard, soft);
+  expect(differing).toBeGreaterThan(20);
+  expect(differing).toBeLessThan(0.1 * SIZE.width * SIZE.height);
+  // With MSAA the cube's silhouette has intermediate shades between cube red and background.
+  const distinct = (img: { data: Uint8Array }) => new Set(Array.from({ length: img.data.length / 4 }, (_, i) => img.data[4 * i] * 65536 + img.data[4 * i + 1] * 256 + img.data[4 * i + 2])).size;
+  expect(distinct(soft)).toBeGreaterThan(distinct(hard));
+});
+
+test('shading switches the lighting model: phong, gouraud and flat differ on the sphere', async ({ page }) => {
+  const { selector } = await mount(page, { time: 1.25, tessellation: 8 }, SIZE);
+  const images = [];
+  for (const shading of ['phong', 'gouraud', 'flat']) {
+    await setAttributes(page, selector, { shading });
+    images.push(await capture(page, 'scene', selector));
+  }
+  expect(compareImages(images[0], images[1]).differing).toBeGreaterThan(10);
+  expect(compareImages(images[1], images[2]).differing).toBeGreaterThan(10);
+  expect((await stats(page, selector)).programs).toBeGreaterThanOrEqual(3);
+});
+
+test('tessellation sets the sphere segments; auto follows its size on screen', async ({ page }) => {
+  const { selector } = await mount(page, { time: 1.25, tessellation: 12 }, SIZE);
+  expect((await stats(page, selector)).sphereSegments).toBe(12);
+  await setAttributes(page, selector, { tessellation: 'auto' });
+  const small = (await stats(page, selector)).sphereSegments;
+  // Nearer the sphere it covers more pixels and needs more segments.
+  await setAttributes(page, selector, { 'camera-position': '1 1 0.5', 'camera-rotation': '-90 0' });
+  const near = (await stats(page, selector)).sphereSegments;
+  expect(near).toBeGreaterThan(small);
+});
+
+test('pixel-ratio scales the drawing buffer against the CSS size', async ({ page }) => {
+  const { selector } = await mount(page, { time: 1.25 }, SIZE);
+  for (const [ratio, w, h] of [['2', 320, 180], ['0.5', 80, 45], ['auto', 160, 90]] as const) {
+    await setAttributes(page, selector, { 'pixel-ratio': ratio });
+    const img = await capture(page, undefined, selector);
+    expect([img.width, img.height], `pixel-ratio ${ratio}`).toEqual([w, h]);
+  }
+});
