@@ -40,7 +40,8 @@ void main() {
   outColor = vec4(f, f, f, 1.0);
 #else
   vec2 uv = vReflectionClip.xy / vReflectionClip.w * 0.5 + 0.5;
-  vec3 r = texture(uReflection, uv).rgb;
+  // Clamped as an 8-bit target would: the reflection is what pass 1 shows, highlights included.
+  vec3 r = min(texture(uReflection, uv).rgb, vec3(1.0));
   vec3 d = texture(uTexture, vUv).rgb * uBodyTint;
 #ifdef FRESNEL_CLASSIC
   // Seed 000 verbatim: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha.

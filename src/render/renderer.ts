@@ -62,6 +62,7 @@ export class Renderer {
   private mainMsaa: MultisampleTarget | null = null;
   private readonly sphere: SphereLod;
   private readonly maxSamples: number;
+  private readonly reflectionHalfFloat: boolean;
   /** Largest side of any render target (texture, renderbuffer and viewport limits). */
   private readonly maxTargetSize: number;
   private readonly blitVao: WebGLVertexArrayObject;
@@ -97,7 +98,11 @@ export class Renderer {
     const dims = gl.getParameter(gl.MAX_VIEWPORT_DIMS) as Int32Array;
     this.maxTargetSize = Math.min(dims[0], dims[1], gl.getParameter(gl.MAX_TEXTURE_SIZE) as number, gl.getParameter(gl.MAX_RENDERBUFFER_SIZE) as number);
     this.texture = new Texture(gl, c, { width: TEXTURE_SIZE, height: TEXTURE_SIZE, data: proceduralTexture(), mipmap: true, repeat: true });
-    this.reflection = new RenderTarget(gl, c);
+    // The reflection in half float where the context can render to it: at grazing incidence F
+    // nears 1 and an 8-bit reflection's rounding shows through undimmed (the bench measured
+    // +3.5 dB on the glass at 89° against the float64 reference).
+    this.reflectionHalfFloat = gl.getExtension('EXT_color_buffer_float') !== null;
+    this.reflection = new RenderTarget(gl, c, this.reflectionHalfFloat);
     this.blitVao = gl.createVertexArray()!;
     c.add('vertexArrays');
     this.ctx = {
@@ -148,7 +153,7 @@ export class Renderer {
     this.prepare(state);
     if (source === 'reflection') {
       this.runReflection();
-      return this.readFramebuffer(this.reflection.framebuffer, this.reflection.width, this.reflection.height);
+      return this.readFramebuffer(this.reflection.framebuffer, this.reflection.width, this.reflection.height, this.reflectionHalfFloat);
     }
     const target = (this.captureTarget ??= new RenderTarget(gl, this.counter));
     target.setSize(state.width, state.height);
@@ -232,7 +237,7 @@ export class Renderer {
     this.ctx.scissor = scissored && this.optimize ? this.reflectionScissor() : null;
     const samples = this.samplesFor(this.ctx.state);
     if (samples === 0) return reflectionPass(this.ctx, this.reflection.framebuffer, width, height);
-    const msaa = (this.reflectionMsaa ??= new MultisampleTarget(this.gl, this.counter));
+    const msaa = (this.reflectionMsaa ??= new MultisampleTarget(this.gl, this.counter, this.reflectionHalfFloat));
     msaa.setSize(width, height, samples);
     const n = reflectionPass(this.ctx, msaa.framebuffer, width, height);
     msaa.resolve(this.reflection.framebuffer);
@@ -315,12 +320,19 @@ export class Renderer {
     return 1;
   }
 
-  private readFramebuffer(framebuffer: WebGLFramebuffer | null, width: number, height: number): Pixels {
+  /** RGBA8, top row first; a half-float target is read as float and rounded as an 8-bit one would be. */
+  private readFramebuffer(framebuffer: WebGLFramebuffer | null, width: number, height: number, float = false): Pixels {
     const gl = this.gl;
-    const raw = new Uint8Array(width * height * 4);
+    let raw = new Uint8Array(width * height * 4);
     gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
     gl.pixelStorei(gl.PACK_ALIGNMENT, 1);
-    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, raw);
+    if (float) {
+      const f = new Float32Array(width * height * 4);
+      gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, f);
+      raw = Uint8Array.from(f, (x) => Math.round(Math.min(1, Math.max(0, x)) * 255));
+    } else {
+      gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, raw);
+    }
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     const data = new Uint8ClampedArray(raw.length);
     const row = width * 4;

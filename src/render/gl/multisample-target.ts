@@ -9,7 +9,9 @@ export class MultisampleTarget {
   height = 0;
   samples = 0;
 
-  constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter) {
+  constructor(
+    private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, readonly halfFloat = false,
+  ) {
     this.framebuffer = gl.createFramebuffer()!;
     this.color = gl.createRenderbuffer()!;
     this.depth = gl.createRenderbuffer()!;
@@ -25,7 +27,7 @@ export class MultisampleTarget {
     const gl = this.gl;
     Object.assign(this, { width, height, samples });
     gl.bindRenderbuffer(gl.RENDERBUFFER, this.color);
-    gl.renderbufferStorageMultisample(gl.RENDERBUFFER, samples, gl.RGBA8, width, height);
+    gl.renderbufferStorageMultisample(gl.RENDERBUFFER, samples, this.halfFloat ? gl.RGBA16F : gl.RGBA8, width, height);
     gl.bindRenderbuffer(gl.RENDERBUFFER, this.depth);
     gl.renderbufferStorageMultisample(gl.RENDERBUFFER, samples, gl.DEPTH_COMPONENT24, width, height);
     gl.bindRenderbuffer(gl.RENDERBUFFER, null);

@@ -1,4 +1,5 @@
 // An off-screen colour texture + depth renderbuffer; reallocated only when its size changes.
+// `halfFloat` stores colour as RGBA16F (needs EXT_color_buffer_float), else RGBA8.
 import type { ResourceCounter } from './resource-counter';
 
 export class RenderTarget {
@@ -8,7 +9,9 @@ export class RenderTarget {
   width = 0;
   height = 0;
 
-  constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter) {
+  constructor(
+    private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, readonly halfFloat = false,
+  ) {
     this.framebuffer = gl.createFramebuffer()!;
     this.color = gl.createTexture()!;
     this.depth = gl.createRenderbuffer()!;
@@ -32,7 +35,8 @@ export class RenderTarget {
     this.width = width;
     this.height = height;
     gl.bindTexture(gl.TEXTURE_2D, this.color);
-    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, width, height, 0, gl.RGBA, gl.UNSIGNED_BYTE, null);
+    if (this.halfFloat) gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA16F, width, height, 0, gl.RGBA, gl.HALF_FLOAT, null);
+    else gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, width, height, 0, gl.RGBA, gl.UNSIGNED_BYTE, null);
     gl.bindTexture(gl.TEXTURE_2D, null);
     gl.bindRenderbuffer(gl.RENDERBUFFER, this.depth);
     gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, width, height);
