@@ -19,6 +19,7 @@ function frameState(scene: Scene, knobs: Knobs, view: BenchView, mode: FrameStat
     time: scene.time, spin: 0.8, cubeDistance: 2.5, transparency: 0.5, ior: 1.5, fresnel: knobs.fresnel, fov: 60,
     cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, view: mode,
     reflectionScale: knobs.reflectionScale, samples: knobs.samples, shading: knobs.shading, tessellation: knobs.tessellation,
+    reflectionFormat: knobs.reflectionFormat,
   };
 }
 

@@ -1,7 +1,7 @@
 // Bench configurations: a high-quality baseline, one knob at a time from it, and the grids
 // shading × tessellation and reflection-scale × samples (deduplicated).
 import type { FresnelModel } from '../src/math/fresnel';
-import type { Shading } from '../src/render/types';
+import type { ReflectionFormat, Shading } from '../src/render/types';
 
 export interface BenchConfig {
   name: string;
@@ -11,17 +11,18 @@ export interface BenchConfig {
   shading: Shading;
   tessellation: number | 'auto';
   pixelRatio: number;
+  reflectionFormat: ReflectionFormat;
 }
 
 export type Knobs = Omit<BenchConfig, 'name'>;
 
 export const BASELINE: Knobs = {
-  reflectionScale: 1, samples: 4, fresnel: 'exact', shading: 'phong', tessellation: 128, pixelRatio: 1,
+  reflectionScale: 1, samples: 4, fresnel: 'exact', shading: 'phong', tessellation: 128, pixelRatio: 1, reflectionFormat: 'rgba8',
 };
 
 /** The element's defaults (src/element/attributes.ts), at pixel-ratio 1 like every row. */
 export const DEFAULTS: Knobs = {
-  reflectionScale: 0.5, samples: 4, fresnel: 'exact', shading: 'phong', tessellation: 'auto', pixelRatio: 1,
+  reflectionScale: 0.5, samples: 4, fresnel: 'exact', shading: 'phong', tessellation: 'auto', pixelRatio: 1, reflectionFormat: 'rgba8',
 };
 
 /** Short, stable name: only the knobs that differ from the baseline. */
@@ -33,6 +34,7 @@ export function configName(k: Knobs): string {
   if (k.shading !== BASELINE.shading) parts.push(`shading ${k.shading}`);
   if (k.tessellation !== BASELINE.tessellation) parts.push(`tessellation ${k.tessellation}`);
   if (k.pixelRatio !== BASELINE.pixelRatio) parts.push(`pixel-ratio ${k.pixelRatio}`);
+  if (k.reflectionFormat !== BASELINE.reflectionFormat) parts.push(`reflection-format ${k.reflectionFormat}`);
   return parts.length ? parts.join(', ') : 'baseline';
 }
 
@@ -47,6 +49,8 @@ function build(): BenchConfig[] {
   one('shading', ['gouraud', 'flat']);
   one('tessellation', [8, 16, 32, 64, 256, 'auto']);
   one('pixelRatio', [0.5, 0.75, 1.5, 2]);
+  one('reflectionFormat', ['rgba16f']);
+  list.push({ ...DEFAULTS, reflectionFormat: 'rgba16f' }, { ...DEFAULTS, samples: 0, reflectionFormat: 'rgba16f' });
   for (const shading of ['phong', 'gouraud', 'flat'] as const) {
     for (const tessellation of [16, 32, 'auto'] as const) list.push({ ...BASELINE, shading, tessellation });
   }

@@ -18,6 +18,7 @@ const state: FrameState = {
   ior: num('ior', 1.5), fresnel: (q.get('fresnel') ?? 'exact') as FrameState['fresnel'], fov: 60,
   cameraPosition: [num('x', 5.25), num('y', 3), num('z', 1)], yaw: num('yaw', -170.8), pitch: num('pitch', -19.6),
   view: 'final', reflectionScale: num('scale', 1), samples, shading: (q.get('shading') ?? 'phong') as FrameState['shading'], tessellation: num('segments', 64),
+  reflectionFormat: 'rgba8',
 };
 const peerOptions: PeerOptions = {
   samples, reflectionScale: state.reflectionScale, sphereSegments: state.tessellation as number,

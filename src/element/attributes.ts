@@ -36,6 +36,8 @@ export interface SceneAttributes {
   tessellation: number | 'auto';
   /** Drawing buffer ÷ CSS pixels, or 'auto' (devicePixelRatio). */
   pixelRatio: number | 'auto';
+  /** Storage of the reflection framebuffer. */
+  reflectionFormat: 'rgba8' | 'rgba16f';
 }
 
 export type AttributeName = keyof SceneAttributes;
@@ -215,6 +217,7 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
   keywordSpec('shading', 'shading', SHADINGS, 'per-fragment phong, per-vertex gouraud, or flat (one vertex per triangle)'),
   autoOrNumberSpec('tessellation', 'tessellation', 4, 512, true, "sphere segments 4..512, or auto (from the sphere's size on screen)"),
   autoOrNumberSpec('pixelRatio', 'pixel-ratio', 0.25, 4, false, 'drawing-buffer pixels per CSS pixel, or auto (devicePixelRatio)'),
+  keywordSpec('reflectionFormat', 'reflection-format', ['rgba8', 'rgba16f'], 'reflection storage: rgba8, or rgba16f (half float, where supported)'),
 ] as AttributeSpec[];
 
 export const ATTRIBUTE_BY_NAME: ReadonlyMap<string, AttributeSpec> = new Map(ATTRIBUTES.map((s) => [s.attribute, s]));

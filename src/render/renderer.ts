@@ -55,14 +55,15 @@ export class Renderer {
   private readonly programs: ProgramCache;
   private readonly meshes: PassContext['meshes'];
   private readonly texture: Texture;
-  private readonly reflection: RenderTarget;
+  private reflection: RenderTarget;
   private captureTarget: RenderTarget | null = null;
   /** Multisampled stand-ins, created only when `samples` > 0. */
   private reflectionMsaa: MultisampleTarget | null = null;
   private mainMsaa: MultisampleTarget | null = null;
   private readonly sphere: SphereLod;
   private readonly maxSamples: number;
-  private readonly reflectionHalfFloat: boolean;
+  /** Can the context render to RGBA16F (EXT_color_buffer_float)? */
+  private readonly canHalfFloat: boolean;
   /** Largest side of any render target (texture, renderbuffer and viewport limits). */
   private readonly maxTargetSize: number;
   private readonly blitVao: WebGLVertexArrayObject;
@@ -98,11 +99,8 @@ export class Renderer {
     const dims = gl.getParameter(gl.MAX_VIEWPORT_DIMS) as Int32Array;
     this.maxTargetSize = Math.min(dims[0], dims[1], gl.getParameter(gl.MAX_TEXTURE_SIZE) as number, gl.getParameter(gl.MAX_RENDERBUFFER_SIZE) as number);
     this.texture = new Texture(gl, c, { width: TEXTURE_SIZE, height: TEXTURE_SIZE, data: proceduralTexture(), mipmap: true, repeat: true });
-    // The reflection in half float where the context can render to it: at grazing incidence F
-    // nears 1 and an 8-bit reflection's rounding shows through undimmed (the bench measured
-    // +3.5 dB on the glass at 89° against the float64 reference).
-    this.reflectionHalfFloat = gl.getExtension('EXT_color_buffer_float') !== null;
-    this.reflection = new RenderTarget(gl, c, this.reflectionHalfFloat);
+    this.canHalfFloat = gl.getExtension('EXT_color_buffer_float') !== null;
+    this.reflection = new RenderTarget(gl, c);
     this.blitVao = gl.createVertexArray()!;
     c.add('vertexArrays');
     this.ctx = {
@@ -153,7 +151,7 @@ export class Renderer {
     this.prepare(state);
     if (source === 'reflection') {
       this.runReflection();
-      return this.readFramebuffer(this.reflection.framebuffer, this.reflection.width, this.reflection.height, this.reflectionHalfFloat);
+      return this.readFramebuffer(this.reflection.framebuffer, this.reflection.width, this.reflection.height, this.reflection.halfFloat);
     }
     const target = (this.captureTarget ??= new RenderTarget(gl, this.counter));
     target.setSize(state.width, state.height);
@@ -204,6 +202,16 @@ export class Renderer {
     this.meshes.sphere = this.sphere.update(state);
     // Clamped like the canvas: the glass reads it with normalised coordinates, so a smaller
     // target still lines up.
+    // rgba16f: at grazing incidence F nears 1 and an 8-bit reflection's rounding shows through
+    // undimmed (+3.6 dB on the glass at 89° in the bench); it falls back to rgba8 where the
+    // context cannot render to half float.
+    const half = state.reflectionFormat === 'rgba16f' && this.canHalfFloat;
+    if (half !== this.reflection.halfFloat) {
+      this.reflection.dispose();
+      this.reflectionMsaa?.dispose();
+      this.reflectionMsaa = null;
+      this.reflection = new RenderTarget(this.gl, this.counter, half);
+    }
     const scale = state.reflectionScale;
     const max = this.maxTargetSize;
     this.reflection.setSize(
@@ -237,7 +245,7 @@ export class Renderer {
     this.ctx.scissor = scissored && this.optimize ? this.reflectionScissor() : null;
     const samples = this.samplesFor(this.ctx.state);
     if (samples === 0) return reflectionPass(this.ctx, this.reflection.framebuffer, width, height);
-    const msaa = (this.reflectionMsaa ??= new MultisampleTarget(this.gl, this.counter, this.reflectionHalfFloat));
+    const msaa = (this.reflectionMsaa ??= new MultisampleTarget(this.gl, this.counter, this.reflection.halfFloat));
     msaa.setSize(width, height, samples);
     const n = reflectionPass(this.ctx, msaa.framebuffer, width, height);
     msaa.resolve(this.reflection.framebuffer);

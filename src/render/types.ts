@@ -27,7 +27,11 @@ export interface FrameState {
   shading: Shading;
   /** Sphere segments, or 'auto' from its size on screen. */
   tessellation: number | 'auto';
+  /** Storage of the reflection: 8-bit, or half float (where the context can render to it). */
+  reflectionFormat: ReflectionFormat;
 }
+
+export type ReflectionFormat = 'rgba8' | 'rgba16f';
 
 export type Shading = 'phong' | 'gouraud' | 'flat';
 

@@ -67,3 +67,24 @@ test('pixel-ratio scales the drawing buffer against the CSS size', async ({ page
     expect([img.width, img.height], `pixel-ratio ${ratio}`).toEqual([w, h]);
   }
 });
+
+test('reflection-format rgba16f keeps the reflection unrounded: the glass changes by rounding only', async ({ page }) => {
+  // Grazing incidence, where F nears 1 and the reflection's own 8-bit rounding shows through.
+  const grazing = { time: 1.25, 'camera-position': '6 1 0.105', 'camera-rotation': '-179 0', 'reflection-scale': 1 };
+  const { selector } = await mount(page, grazing, SIZE);
+  const byte = await capture(page, undefined, selector);
+  await setAttributes(page, selector, { 'reflection-format': 'rgba16f' });
+  const half = await capture(page, undefined, selector);
+  let changed = 0;
+  let max = 0;
+  for (let i = 0; i < byte.data.length; i += 4) {
+    let d = 0;
+    for (let c = 0; c < 3; c++) d = Math.max(d, Math.abs(byte.data[i + c] - half.data[i + c]));
+    if (d > 0) changed++;
+    max = Math.max(max, d);
+  }
+  expect(changed, 'some glass pixels round differently').toBeGreaterThan(0);
+  expect(max, 'by rounding only: at most a couple of levels').toBeLessThanOrEqual(2);
+  const r = await capture(page, 'reflection', selector);
+  expect([r.width, r.height]).toEqual([160, 90]); // still read back as RGBA8 at the same size
+});

@@ -49,8 +49,8 @@ describe('defaults', () => {
     expect(new Set(names).size).toBe(names.length);
     expect([...names].sort()).toEqual([
       'camera-position', 'camera-rotation', 'controls', 'cube-distance', 'debug-view', 'fov',
-      'fresnel', 'ior', 'pixel-ratio', 'reflection-scale', 'samples', 'shading', 'spin', 'tessellation',
-      'time', 'transparency',
+      'fresnel', 'ior', 'pixel-ratio', 'reflection-format', 'reflection-scale', 'samples', 'shading', 'spin',
+      'tessellation', 'time', 'transparency',
     ]);
     for (const s of ATTRIBUTES) {
       expect(s.attribute.replace(/-([a-z])/g, (_, c: string) => c.toUpperCase())).toBe(s.property);
@@ -235,6 +235,7 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
           case 'fresnel': expect(['exact', 'schlick', 'classic']).toContain(v); break;
           case 'debugView': expect(DEBUG_VIEWS).toContain(v); break;
           case 'shading': expect(['phong', 'gouraud', 'flat']).toContain(v); break;
+          case 'reflectionFormat': expect(['rgba8', 'rgba16f']).toContain(v); break;
           case 'samples': expect([0, 2, 4]).toContain(v); break;
           case 'tessellation':
             if (v !== 'auto') expect(Number.isInteger(v) && (v as number) >= 4 && (v as number) <= 512).toBe(true);

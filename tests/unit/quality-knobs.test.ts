@@ -59,11 +59,20 @@ describe('tessellation and pixel-ratio', () => {
   });
 });
 
+describe('reflection-format', () => {
+  it('is rgba8 by default (from the bench) and takes rgba16f', () => {
+    expect(parse('reflection-format', null).value).toBe('rgba8');
+    expect(parse('reflection-format', 'RGBA16F')).toEqual({ value: 'rgba16f' });
+    expect(parse('reflection-format', 'float')).toMatchObject({ value: 'rgba8' });
+    expect(parse('reflection-format', 'float').problem).toBeTruthy();
+  });
+});
+
 describe('auto tessellation', () => {
   const state = (z: number, height = 360): FrameState => ({
     width: 640, height, time: 0, spin: 0, cubeDistance: 2.5, transparency: 0.5, ior: 1.5, fresnel: 'exact',
     fov: 60, cameraPosition: [1, 1, z], yaw: -90, pitch: 0, view: 'final',
-    reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 'auto',
+    reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
   });
 
   it('measures the sphere on screen: nearer and taller buffers make it bigger', () => {
