@@ -65,7 +65,9 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private inView = false;
   private dirty = true;
   private readyFired = false;
+  /** The state of the last frame drawn (what capture() redraws); filled in place. */
   private lastState: FrameState | null = null;
+  private readonly lastPosition: [number, number, number] = [0, 0, 0];
   private totals = emptyStats();
   private frames = 0;
   private cameraDirty = false;
@@ -310,7 +312,12 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       return;
     }
     this.frames++;
-    this.lastState = { ...state, cameraPosition: [...state.cameraPosition] };
+    const last = (this.lastState ??= { ...state });
+    Object.assign(last, state);
+    this.lastPosition[0] = state.cameraPosition[0];
+    this.lastPosition[1] = state.cameraPosition[1];
+    this.lastPosition[2] = state.cameraPosition[2];
+    last.cameraPosition = this.lastPosition;
     const detail = structuredClone(report);
     detail.frame = this.frames;
     if (!this.readyFired) {
