@@ -93,6 +93,9 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       enabled: () => this.values.controls,
       moved: (byMouse) => {
         if (byMouse) this.cameraMoved();
+        // Motion starts now, not at the next frame: on a busy page that frame may come after
+        // the key is released already, and a first step of dt = 0 would lose the press.
+        else if (this.lastNow === 0) this.lastNow = performance.now();
         this.requestRender();
       },
       cycleDebugView: () => {
