@@ -9,6 +9,8 @@ export interface FlybyInputHooks {
   moved(byMouse: boolean): void;
   /** The debug-view key (F) was pressed. */
   cycleDebugView(): void;
+  /** A key is about to be released: account for the motion since the last frame first. */
+  settle(): void;
 }
 
 const DEBUG_KEY = 'KeyF';
@@ -51,6 +53,7 @@ export class FlybyInput {
   };
 
   private readonly onKeyUp = (e: KeyboardEvent): void => {
+    if (this.flyby.active) this.hooks.settle();
     if (this.flyby.keyUp(e.code)) e.preventDefault();
   };
 

@@ -98,6 +98,10 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
         else if (this.lastNow === 0) this.lastNow = performance.now();
         this.requestRender();
       },
+      settle: () => {
+        this.advanceFlyby();
+        this.requestRender();
+      },
       cycleDebugView: () => {
         this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length];
       },
@@ -285,12 +289,25 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.lastNow = 0;
   }
 
+  /**
+   * Moves the flyby camera by the time since the last step. Motion is timed with
+   * performance.now() (the key events' clock), not the frame's timestamp, which can be
+   * earlier than a key press handled in the same frame.
+   */
+  private advanceFlyby(): void {
+    const t = performance.now();
+    const dt = this.lastNow ? (t - this.lastNow) / 1000 : 0;
+    this.lastNow = t;
+    if (this.flyby.update(dt)) {
+      this.cameraMoved();
+      this.dirty = true;
+    }
+  }
+
   private readonly onFrame = (now: number): void => {
     this.rafId = 0;
     if (!this.renderer || this.failed) return;
-    const dt = this.lastNow ? (now - this.lastNow) / 1000 : 0;
-    this.lastNow = now;
-    if (this.flyby.update(dt)) this.cameraMoved();
+    this.advanceFlyby();
     this.draw(now);
     if (this.animating()) this.scheduleFrame();
     else {
