@@ -80,6 +80,52 @@ const api = {
     return (performance.now() - t0) / frames;
   },
 
+  /**
+   * GPU ms per frame from EXT_disjoint_timer_query_webgl2 (median of `frames` queries), or
+   * null where the extension is missing or the GPU reported a disjoint interval.
+   */
+  async gpuTime(kind: Kind, scene: Scene, knobs: Knobs, view: BenchView, frames: number): Promise<number | null> {
+    const s = frameState(scene, knobs, view, kind === 'scene-only' ? 'scene' : 'final');
+    let context = gl;
+    let draw: () => void;
+    if (kind === 'three') {
+      resize(peerCanvas, s);
+      peer ??= new ThreePeer(peerCanvas);
+      context = peerCanvas.getContext('webgl2') as WebGL2RenderingContext;
+      const opts = { samples: knobs.samples, reflectionScale: knobs.reflectionScale, sphereSegments: typeof knobs.tessellation === 'number' ? knobs.tessellation : 64 };
+      draw = () => peer!.render(s, opts);
+    } else {
+      resize(oursCanvas, s);
+      draw = kind === 'clear-only'
+        ? () => { gl.bindFramebuffer(gl.FRAMEBUFFER, null); gl.viewport(0, 0, s.width, s.height); gl.clearColor(0.1, 0.1, 0.1, 1); gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT); }
+        : () => { renderer.optimize = kind !== 'ours-unoptimized'; renderer.render(s); renderer.optimize = true; };
+    }
+    const ext = context.getExtension('EXT_disjoint_timer_query_webgl2') as
+      { TIME_ELAPSED_EXT: number; GPU_DISJOINT_EXT: number } | null;
+    if (!ext) return null;
+    draw(); // warm-up: compile and allocate outside the measurement
+    const queries: WebGLQuery[] = [];
+    for (let i = 0; i < frames; i++) {
+      const q = context.createQuery()!;
+      context.beginQuery(ext.TIME_ELAPSED_EXT, q);
+      draw();
+      context.endQuery(ext.TIME_ELAPSED_EXT);
+      queries.push(q);
+    }
+    finish(context);
+    // Results arrive only after control returns to the event loop.
+    for (let tries = 0; tries < 200; tries++) {
+      if (queries.every((q) => context.getQueryParameter(q, context.QUERY_RESULT_AVAILABLE))) break;
+      await new Promise((r) => setTimeout(r, 5));
+    }
+    const disjoint = context.getParameter(ext.GPU_DISJOINT_EXT) as boolean;
+    const ns = queries.map((q) => (context.getQueryParameter(q, context.QUERY_RESULT_AVAILABLE) ? Number(context.getQueryParameter(q, context.QUERY_RESULT)) : NaN));
+    for (const q of queries) context.deleteQuery(q);
+    if (disjoint || ns.some(Number.isNaN)) return null;
+    ns.sort((a, b) => a - b);
+    return ns[Math.floor(ns.length / 2)] / 1e6;
+  },
+
   /** RGBA8, top row first, base64, at the drawing-buffer size. */
   pixels(kind: 'ours' | 'three', scene: Scene, knobs: Knobs, view: BenchView): { width: number; height: number; data: string } {
     const s = frameState(scene, knobs, view);

@@ -90,6 +90,15 @@ test('bench', async ({ page }) => {
     }
   }
 
+  // GPU time per frame from timer queries where the context has them (one pass, shuffled).
+  const gpu = new Map<string, number | null>();
+  for (const { r, v } of shuffled(jobs, 4321)) {
+    const ms = await page.evaluate(([kind, scene, knobs, view, frames]) =>
+      (window as unknown as Bench).bench.gpuTime(kind, scene, knobs, view, frames),
+      [r.kind, SCENE, r.knobs, v, FRAMES] as const);
+    gpu.set(`${r.key}|${v.name}`, ms);
+  }
+
   // Accuracy against the reference, per view.
   const refs = new Map(views.map((v) => [v.name, reference(v)]));
   const rows: Row[] = [];
@@ -105,7 +114,7 @@ test('bench', async ({ page }) => {
         const c = compareImages(refs.get(v.name)!, rgba);
         error = { psnr: c.psnr, maxError: c.maxError };
       }
-      perView.push({ view: v.name, ms: t.median, iqr: t.iqr, error });
+      perView.push({ view: v.name, ms: t.median, iqr: t.iqr, gpuMs: gpu.get(`${r.key}|${v.name}`) ?? null, error });
     }
     rows.push({ key: r.key, label: r.label, kind: r.kind, knobs: r.knobs, perView });
   }

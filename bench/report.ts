@@ -8,6 +8,8 @@ export interface ViewResult {
   /** Median ms per frame, and the interquartile range over repetitions. */
   ms: number;
   iqr: number;
+  /** GPU ms per frame from EXT_disjoint_timer_query_webgl2, when available. */
+  gpuMs: number | null;
   error: { psnr: PerRegion; maxError: number } | null;
 }
 
@@ -27,6 +29,12 @@ export function meanPsnr(row: Row, region: keyof PerRegion): number {
   const xs = row.perView.map((v) => v.error?.psnr[region] ?? NaN).filter((x) => !Number.isNaN(x));
   // An identical region has infinite PSNR; cap it so one view cannot dominate the mean.
   return xs.length ? mean(xs.map((x) => Math.min(x, 99))) : NaN;
+}
+
+/** Mean over views of the timer-query GPU time, NaN when any view has none. */
+export function meanGpu(row: Row): number {
+  const xs = row.perView.map((v) => v.gpuMs ?? NaN);
+  return xs.some(Number.isNaN) ? NaN : mean(xs);
 }
 
 /** A row as one point: mean over views of the median time, of the spread, and of PSNR (all). */
@@ -56,15 +64,16 @@ export function formatResults(input: ResultsInput): { markdown: string; json: un
   const lines: string[] = [];
   lines.push(`# Bench results`, '');
   lines.push(`${input.scene.width}×${input.scene.height}, time ${input.scene.time} s, ${input.views.length} views (${input.views.join('; ')}).`);
-  lines.push(`${input.repetitions} repetitions × ${input.frames} frames per configuration and view, shuffled round-robin; each batch closed by a 1-pixel readback.`);
+  lines.push(`${input.repetitions} repetitions × ${input.frames} frames per configuration and view, shuffled round-robin; each batch closed by a 1-pixel readback (ms/frame, wall clock: what a page pays, CPU submission included).`);
+  lines.push(`GPU ms: median of ${input.frames} EXT_disjoint_timer_query_webgl2 intervals per view (${input.info.timerQuery ? 'available here' : 'not available here'}); on SwiftShader the "GPU" is the CPU rasterizer. The Pareto front uses the wall clock.`);
   lines.push(`Error against the float64 reference at ${input.referenceSpp} samples per pixel (exact Fresnel). GPU: ${input.info.renderer}.`, '');
-  lines.push('| config | ms/frame median [IQR] | PSNR dB all / glass / objects / edges | max err | Pareto |');
-  lines.push('|---|---|---|---|---|');
+  lines.push('| config | ms/frame median [IQR] | GPU ms (timer query) | PSNR dB all / glass / objects / edges | max err | Pareto |');
+  lines.push('|---|---|---|---|---|---|');
   for (const r of scored) {
     const a = aggregate(r);
     const maxErr = Math.max(...r.perView.map((v) => v.error!.maxError));
     const psnr = (['all', 'glass', 'objects', 'edges'] as const).map((g) => f(meanPsnr(r, g), 1)).join(' / ');
-    lines.push(`| ${r.label} | ${f(a.ms)} [${f(a.noise)}] | ${psnr} | ${f(maxErr, 0)} | ${r.pareto ? '✓' : ''} |`);
+    lines.push(`| ${r.label} | ${f(a.ms)} [${f(a.noise)}] | ${f(meanGpu(r))} | ${psnr} | ${f(maxErr, 0)} | ${r.pareto ? '✓' : ''} |`);
   }
   const byKey = new Map(rows.map((r) => [r.key, r]));
   const base = byKey.get('baseline');
