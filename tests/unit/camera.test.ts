@@ -1,19 +1,8 @@
 // Camera pose → forward, view and projection (SPEC §3).
 import { describe, expect, it } from 'vitest';
-import { vec4, type mat4 } from 'gl-matrix';
+import { apply, expectClose } from './helpers';
 import { clampPitch, forwardFromYawPitch, PITCH_LIMIT, projectionMatrix, rotationOnlyView, viewMatrix } from '../../src/math/camera';
 
-function expectClose(actual: ArrayLike<number>, expected: ArrayLike<number>, eps = 1e-12): void {
-  for (let i = 0; i < expected.length; i++) {
-    expect(Math.abs(actual[i] - expected[i]), `component ${i}: ${actual[i]} vs ${expected[i]}`).toBeLessThanOrEqual(eps);
-  }
-}
-
-function apply(m: ArrayLike<number>, p: ArrayLike<number>): Float64Array {
-  const out = new Float64Array(4);
-  vec4.transformMat4(out as unknown as vec4, [p[0], p[1], p[2], 1], m as mat4);
-  return out;
-}
 
 describe('forwardFromYawPitch', () => {
   it('yaw −90, pitch 0 looks down −Z', () => {

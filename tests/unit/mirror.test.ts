@@ -1,5 +1,6 @@
 // Mirror math: points, directions, the reflection matrix and the mirrored view (SPEC §4 pass 1).
 import { describe, expect, it } from 'vitest';
+import { apply, expectClose } from './helpers';
 import { mat4, vec4 } from 'gl-matrix';
 import { mirroredView, reflectDirection, reflectionMatrix, reflectPoint, signedDistance, type Plane } from '../../src/math/mirror';
 
@@ -9,19 +10,7 @@ const OBLIQUE: Plane = [0.6, 0, 0.8, -2];
 // Unit normal (2/3, 1/3, 2/3), offset 1.
 const OBLIQUE2: Plane = [2 / 3, 1 / 3, 2 / 3, 1];
 
-function expectClose(actual: ArrayLike<number>, expected: ArrayLike<number>, eps = 1e-12): void {
-  expect(actual.length).toBe(expected.length);
-  for (let i = 0; i < expected.length; i++) {
-    expect(Math.abs(actual[i] - expected[i]), `component ${i}: ${actual[i]} vs ${expected[i]}`).toBeLessThanOrEqual(eps);
-  }
-}
 
-/** view · (p, 1), divided by nothing: affine matrices keep w = 1. */
-function apply(m: ArrayLike<number>, p: ArrayLike<number>): Float64Array {
-  const out = new Float64Array(4);
-  vec4.transformMat4(out as unknown as vec4, [p[0], p[1], p[2], 1], m as mat4);
-  return out;
-}
 
 describe('reflectPoint', () => {
   it('mirrors across z = 0', () => {
