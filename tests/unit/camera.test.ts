@@ -3,7 +3,6 @@ import { describe, expect, it } from 'vitest';
 import { apply, expectClose } from './helpers';
 import { clampPitch, forwardFromYawPitch, PITCH_LIMIT, projectionMatrix, rotationOnlyView, viewMatrix } from '../../src/math/camera';
 
-
 describe('forwardFromYawPitch', () => {
   it('yaw −90, pitch 0 looks down −Z', () => {
     expectClose(forwardFromYawPitch(new Float64Array(3), -90, 0), [0, 0, -1]);

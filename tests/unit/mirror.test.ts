@@ -10,8 +10,6 @@ const OBLIQUE: Plane = [0.6, 0, 0.8, -2];
 // Unit normal (2/3, 1/3, 2/3), offset 1.
 const OBLIQUE2: Plane = [2 / 3, 1 / 3, 2 / 3, 1];
 
-
-
 describe('reflectPoint', () => {
   it('mirrors across z = 0', () => {
     expectClose(reflectPoint(new Float64Array(3), [1, 2, 3], Z0), [1, 2, -3]);
