@@ -3,6 +3,8 @@
 // with OffscreenCanvas as an ImageBitmap transfer (no copy), else by a 2D drawImage.
 // DOM side only: the renderer never sees this canvas, just the context.
 
+import { maxTargetSize } from '../render/gl/limits';
+
 export interface ContextClient {
   /** The context is gone: drop every GL object (they are dead) and stop drawing. */
   contextLost(): void;
@@ -69,10 +71,7 @@ export class SharedContext {
 
   /** Largest drawing buffer the context can take on either side. */
   get maxSize(): number {
-    const gl = this.gl;
-    const dims = gl.getParameter(gl.MAX_VIEWPORT_DIMS) as Int32Array | null;
-    if (!dims) return 4096; // lost context: any sane bound
-    return Math.min(dims[0], dims[1], gl.getParameter(gl.MAX_TEXTURE_SIZE) as number, gl.getParameter(gl.MAX_RENDERBUFFER_SIZE) as number);
+    return maxTargetSize(this.gl);
   }
 
   /**

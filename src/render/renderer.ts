@@ -6,6 +6,7 @@ import { MultisampleTarget } from './gl/multisample-target';
 import { SphereLod } from './sphere-lod';
 import { glassScreenRect, type ScreenRect } from './glass-bounds';
 import { findNonFinite } from './finite-check';
+import { maxTargetSize } from './gl/limits';
 import { ResourceCounter } from './gl/resource-counter';
 import { Texture } from './gl/texture';
 import { FrameSetup } from './frame-setup';
@@ -73,6 +74,8 @@ export class Renderer {
     frame: 0, time: 0, width: 0, height: 0, drawCalls: 0,
     passes: { reflection: { ran: false }, scene: { ran: false }, glass: { ran: false } },
   };
+  /** Why the final view needs neither reflection nor glass this frame, if it does not. */
+  private glassSkipReason: string | undefined;
   private readonly glassRect: ScreenRect = { x0: 0, y0: 0, x1: 0, y1: 0, area: 0 };
   private readonly scissor: Viewport = { x: 0, y: 0, width: 0, height: 0 };
   /**
@@ -96,8 +99,7 @@ export class Renderer {
       glass: new Mesh(gl, c, glassMesh()),
     };
     this.maxSamples = gl.getParameter(gl.MAX_SAMPLES) as number;
-    const dims = gl.getParameter(gl.MAX_VIEWPORT_DIMS) as Int32Array;
-    this.maxTargetSize = Math.min(dims[0], dims[1], gl.getParameter(gl.MAX_TEXTURE_SIZE) as number, gl.getParameter(gl.MAX_RENDERBUFFER_SIZE) as number);
+    this.maxTargetSize = maxTargetSize(gl);
     this.texture = new Texture(gl, c, { width: TEXTURE_SIZE, height: TEXTURE_SIZE, data: proceduralTexture(), mipmap: true, repeat: true });
     this.canHalfFloat = gl.getExtension('EXT_color_buffer_float') !== null;
     this.reflection = new RenderTarget(gl, c);
@@ -134,9 +136,6 @@ export class Renderer {
     if (this.options.checks) this.checkErrors();
     return r;
   }
-
-  /** Why the final view needs neither reflection nor glass this frame, if it does not. */
-  private glassSkipReason: string | undefined;
 
   /**
    * Pixels of `state` as drawn: 'screen' redraws the canvas and reads it back (the drawing
