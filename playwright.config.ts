@@ -4,7 +4,8 @@
 // Chromium comes from the pinned @sparticuz/chromium package (or $PLAYWRIGHT_CHROMIUM).
 import { defineConfig } from '@playwright/test';
 
-const PORT = 5183;
+// PLAYWRIGHT_PORT lets two checkouts on one machine run their suites side by side (each its own Vite).
+const PORT = Number(process.env.PLAYWRIGHT_PORT ?? 5183);
 const CI = !!process.env.CI;
 
 export default defineConfig({

@@ -3,7 +3,7 @@
 // configuration for two frames (part of `npm test`, so the bench cannot rot).
 import { defineConfig } from '@playwright/test';
 
-const PORT = 5184;
+const PORT = Number(process.env.BENCH_PORT ?? 5184);
 
 export default defineConfig({
   testDir: '.',
