@@ -1,6 +1,7 @@
 // In-browser half of `npm run bench`: draws configurations with our Renderer (and the
 // three.js peer), times batches of frames closed by a 1-pixel readback, returns pixels.
 import { Renderer } from '../src/render/renderer';
+import { DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
 import type { FrameState } from '../src/render/types';
 import { ThreePeer } from './three-peer';
 import type { Knobs } from './configs';
@@ -16,7 +17,7 @@ function frameState(scene: Scene, knobs: Knobs, view: BenchView, mode: FrameStat
   return {
     width: Math.max(1, Math.round(scene.width * knobs.pixelRatio)),
     height: Math.max(1, Math.round(scene.height * knobs.pixelRatio)),
-    time: scene.time, spin: 0.8, cubeDistance: 2.5, transparency: 0.5, ior: 1.5, fresnel: knobs.fresnel, fov: 60,
+    time: scene.time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: knobs.fresnel, fov: 60,
     cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, view: mode,
     reflectionScale: knobs.reflectionScale, samples: knobs.samples, shading: knobs.shading, tessellation: knobs.tessellation,
     reflectionFormat: knobs.reflectionFormat,

@@ -8,6 +8,7 @@ import { test, expect } from '../tests/e2e/fixtures';
 import { renderReference, compareImages, type ReferenceImage } from '../src/reference';
 import { BASELINE, CONFIGS, DEFAULTS, configName, type BenchConfig, type Knobs } from './configs';
 import { SKIP_VIEWS, VIEWS, type BenchView } from './views';
+import { DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
 import { summary, shuffled } from './stats';
 import { paretoFront } from './pareto';
 import { resample } from './resample';
@@ -27,7 +28,7 @@ type Bench = { bench: BenchApi };
 /** The reference is slow (64 spp, float64): cache it by everything that defines it. */
 function reference(view: BenchView): ReferenceImage {
   const state = {
-    width: SCENE.width, height: SCENE.height, time: SCENE.time, spin: 0.8, cubeDistance: 2.5, transparency: 0.5,
+    width: SCENE.width, height: SCENE.height, time: SCENE.time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5,
     ior: 1.5, fresnel: 'exact' as const, fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch,
     view: 'final' as const,
   };

@@ -4,6 +4,7 @@
 // `?samples=4&scale=0.5&segments=32&type=byte&x=..&y=..&z=..&yaw=..&pitch=..&time=..&timing=0`
 // changes the frame. bench/check-peer.mjs loads it headless and reads `window.__peerCheck`.
 import { Renderer } from '../src/render/renderer';
+import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
 import type { FrameState } from '../src/render/types';
 import { ThreePeer, type PeerOptions } from './three-peer';
 
@@ -14,9 +15,10 @@ const W = num('w', 640);
 const H = num('h', 360);
 const samples = num('samples', 0) as 0 | 2 | 4;
 const state: FrameState = {
-  width: W, height: H, time: num('time', 1.25), spin: 0.8, cubeDistance: num('cube', 2.5), transparency: num('t', 0.5),
+  width: W, height: H, time: num('time', 1.25), spin: 0.8, cubeDistance: num('cube', DEFAULT_CUBE_DISTANCE), transparency: num('t', 0.5),
   ior: num('ior', 1.5), fresnel: (q.get('fresnel') ?? 'exact') as FrameState['fresnel'], fov: 60,
-  cameraPosition: [num('x', 5.25), num('y', 3), num('z', 1)], yaw: num('yaw', -170.8), pitch: num('pitch', -19.6),
+  cameraPosition: [num('x', DEFAULT_CAMERA_POSITION[0]), num('y', DEFAULT_CAMERA_POSITION[1]), num('z', DEFAULT_CAMERA_POSITION[2])],
+  yaw: num('yaw', DEFAULT_CAMERA_ROTATION[0]), pitch: num('pitch', DEFAULT_CAMERA_ROTATION[1]),
   view: 'final', reflectionScale: num('scale', 1), samples, shading: (q.get('shading') ?? 'phong') as FrameState['shading'], tessellation: num('segments', 64),
   reflectionFormat: 'rgba8',
 };

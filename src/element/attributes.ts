@@ -58,9 +58,15 @@ export interface AttributeSpec<K extends AttributeName = AttributeName> {
   format(value: SceneAttributes[K]): string | null;
 }
 
-/** Default view: the cube in front, its reflection in the glass, the sphere behind it. */
-export const DEFAULT_CAMERA_POSITION: Vec3Tuple = [5.25, 3, 1];
-export const DEFAULT_CAMERA_ROTATION: YawPitch = [-170.8, -19.6];
+/**
+ * Default view: the glass at grazing incidence (it passes 0.2 in front of the plane, where the
+ * exact Fresnel term climbs towards 1), the cube's reflection standing beside the cube, the
+ * whole sphere through the glass. From the seed's 2.5 the reflection can only be seen at
+ * θ ≤ 72° (F ≤ 0.19): hence also the default cube-distance of 0.75 (SPEC §2).
+ */
+export const DEFAULT_CAMERA_POSITION: Vec3Tuple = [3.6, 2.4, 0.2];
+export const DEFAULT_CAMERA_ROTATION: YawPitch = [-169, -23.6];
+export const DEFAULT_CUBE_DISTANCE = 0.75;
 
 const num = (s: string) => (/^\s*$/.test(s) ? NaN : Number(s));
 
@@ -150,7 +156,7 @@ const MAX_COORD = 1e7;
 
 export const ATTRIBUTES: readonly AttributeSpec[] = [
   numberSpec('transparency', 'transparency', 0.5, 0, 1, 'T in the glass equation; 1 = clear glass'),
-  finiteSpec('cubeDistance', 'cube-distance', 2.5, "z of the cube's centre (signed distance from the glass)", MAX_COORD),
+  finiteSpec('cubeDistance', 'cube-distance', DEFAULT_CUBE_DISTANCE, "z of the cube's centre (signed distance from the glass)", MAX_COORD),
   numberSpec('ior', 'ior', 1.5, 1, 10, 'index of refraction for the Fresnel term'),
   keywordSpec('fresnel', 'fresnel', FRESNEL_MODELS, 'Fresnel model: exact, schlick or classic (seed 000)'),
   {

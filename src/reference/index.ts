@@ -2,7 +2,7 @@
 export { renderReference, type ReferenceImage, type ReferenceOptions } from './reference-renderer';
 export { compareImages, REGION_NAMES, type CompareOptions, type ImageComparison, type PerRegion, type RegionName } from './metrics';
 export {
-  REGION_BACKGROUND, REGION_CUBE, REGION_EDGE, REGION_GLASS, REGION_SPHERE, regionOfKey, type Region,
+  REGION_BACKGROUND, REGION_CUBE, REGION_EDGE, REGION_GLASS, REGION_SPHERE, glassReflectsCube, regionOfKey, type Region,
 } from './regions';
 export type { ReferenceState } from './reference-state';
 export type { TextureFilter } from './sample-tracer';

@@ -32,6 +32,11 @@ export interface ReferenceImage {
   rgb: Float64Array;
   /** Per pixel: 0 background, 1 cube, 2 sphere, 3 glass, 4 edge band (regions.ts). */
   regions: Uint8Array;
+  /**
+   * Per pixel, the key of its first sample: the surfaces it saw, primary + 9·behind +
+   * 81·reflected (sample-tracer.ts). Geometry, not colour: `reflectsCube` reads it.
+   */
+  keys: Int32Array;
 }
 
 /**
@@ -84,6 +89,6 @@ export function renderReference(state: ReferenceState, options: ReferenceOptions
   }
   return {
     width, height, view: state.view, samplesPerAxis: n, textureFilter,
-    rgba, rgb, regions: regionMap(keys, mixed, width, height),
+    rgba, rgb, regions: regionMap(keys, mixed, width, height), keys,
   };
 }

@@ -65,3 +65,11 @@ function anyNear(flags: Uint8Array, width: number, height: number, x: number, y:
   }
   return false;
 }
+
+/**
+ * Is this a pixel where the glass reflects the cube? Read from a sample key (the geometry the
+ * sample's rays hit), never from colours: primary surface the glass, mirrored ray on the cube.
+ */
+export function glassReflectsCube(key: number): boolean {
+  return key % KEY_BASE === SURFACE_GLASS && isCube(Math.floor(key / (KEY_BASE * KEY_BASE)) % KEY_BASE);
+}

@@ -24,3 +24,11 @@ for (const [cameraName, cameraAttrs] of Object.entries(CAMERAS)) {
     }
   });
 }
+
+// The README's picture is this golden: what the element draws by default, at 640×360, kept
+// true by the same comparison.
+test('README picture: the default view at 640×360', async ({ page }) => {
+  await openPage(page);
+  await mount(page, { time: 1.25 }, { width: 640, height: 360 });
+  compareToGolden('readme-default-view', await capture(page));
+});

@@ -283,7 +283,7 @@ test.describe('attributes and properties', () => {
       el.setAttribute('ior', '2');
       return { before, attr, cubeDistance: el.cubeDistance, ior: el.ior };
     }, selector);
-    expect(r.before).toEqual({ ior: 1.5, cubeDistance: 2.5, transparency: 0.5 });
+    expect(r.before).toEqual({ ior: 1.5, cubeDistance: 0.75, transparency: 0.5 });
     expect(r.attr).toBe('1');
     expect(r.cubeDistance).toBe(1);
     expect(r.ior).toBe(2);

@@ -11,6 +11,7 @@
 import { test, expect, mount, openPage, capture, canvasSize, nextFrame, setAttributes, type Attrs, type SceneElement, type RgbaImage, type FrameReport } from './fixtures';
 import { renderReference, compareImages as compareWithReference } from '../../src/reference';
 import type { FrameState } from '../../src/render/types';
+import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import { cameraAttrs, debugLog, diffImages, dumpImage, formatDiff, garbagePixels, glLimits, histogram, lookAt, type FrameDiff } from './helpers/stability';
 import type { Vec3 } from './helpers/projection';
 
@@ -417,7 +418,7 @@ test.describe('SPEC §6 error against the float64 reference', () => {
   // 101 levels), so skipping the glass within the near distance would fail this bound.
   const SPP = 4;
   const QUALITY: Attrs = { ...BASE, samples: 4, 'reflection-scale': 1 };
-  const DEFAULT_POSE = { position: [5.25, 3, 1] as Vec3, yaw: -170.8, pitch: -19.6 };
+  const DEFAULT_POSE = { position: DEFAULT_CAMERA_POSITION as Vec3, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1] };
   const grazing = incidence(89.99);
   const cases: { name: string; pose?: { position: Vec3; yaw: number; pitch: number }; state?: Partial<FrameState> }[] = [
     { name: 'default view (baseline)' },
@@ -442,7 +443,7 @@ test.describe('SPEC §6 error against the float64 reference', () => {
     const failures: string[] = [];
     for (const c of cases) {
       const pose = c.pose ?? DEFAULT_POSE;
-      const s = { cubeDistance: 2.5, transparency: 0.5, ior: 1.5, ...c.state };
+      const s = { cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, ...c.state };
       const { image } = await shoot(page, selector, {
         ...cameraAttrs(pose.position, pose.yaw, pose.pitch),
         'cube-distance': s.cubeDistance, transparency: s.transparency, ior: s.ior,

@@ -30,7 +30,7 @@ describe('defaults', () => {
   it('has the SPEC §2 default for every attribute', () => {
     const d = defaultAttributes();
     expect(d.transparency).toBe(0.5);
-    expect(d.cubeDistance).toBe(2.5);
+    expect(d.cubeDistance).toBe(0.75);
     expect(d.ior).toBe(1.5);
     expect(d.fresnel).toBe('exact');
     expect(d.fov).toBe(60);
@@ -114,9 +114,9 @@ describe('numbers', () => {
     expectFallback('cube-distance', '1e308', 1e7);
     expectFallback('cube-distance', '-3.5e38', -1e7);
     expectOk('spin', '1e308', 1e308);
-    expectFallback('cube-distance', 'Infinity', 2.5);
-    expectFallback('cube-distance', '1e309', 2.5);
-    expectFallback('cube-distance', 'far', 2.5);
+    expectFallback('cube-distance', 'Infinity', 0.75);
+    expectFallback('cube-distance', '1e309', 0.75);
+    expectFallback('cube-distance', 'far', 0.75);
     expectOk('spin', '0', 0);
     expectOk('spin', '-2.5', -2.5);
     expectFallback('spin', '-Infinity', 0.8);

@@ -1,11 +1,13 @@
 // Supersampling convergence of the reference: 16, 64 and 256 spp agree away from edges (issue 3 §1).
 import { describe, expect, it } from 'vitest';
 import { renderReference, REGION_EDGE, type ReferenceImage, type ReferenceState } from '../../src/reference';
+import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 
 /** The element's default view (cube, its reflection, the sphere through the glass), shrunk to 64×36. */
 const DEFAULT_VIEW: ReferenceState = {
-  width: 64, height: 36, time: 1.25, spin: 0.8, cubeDistance: 2.5, transparency: 0.5, ior: 1.5,
-  fresnel: 'exact', fov: 60, cameraPosition: [5.25, 3, 1], yaw: -170.8, pitch: -19.6, view: 'final',
+  width: 64, height: 36, time: 1.25, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5,
+  fresnel: 'exact', fov: 60, cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
+  view: 'final',
 };
 const OBLIQUE_VIEW: ReferenceState = { ...DEFAULT_VIEW, cameraPosition: [2.5, 1.6, 5], yaw: -115, pitch: -8 };
 
@@ -31,28 +33,36 @@ function renders(state: ReferenceState): ReferenceImage[] {
 }
 
 describe('16 vs 64 vs 256 spp, away from edges', () => {
+  // The one feature that converges slowly off the edges is the sphere's specular highlight
+  // (shininess 32), about one pixel wide at 64×36. Stratum-centre sampling integrates a smooth
+  // feature with an O(1/n²) error, so the bounds are per sample count: 16 spp within 0.75 of a
+  // level of 256 spp, 64 spp within 0.15, and the first at least 3× the second (5× for an exact
+  // C/n² law). In the seed's view the highlight was ~7 px of sphere away, through the glass at
+  // an angle that dimmed it, and every pair sat under 0.1; the default view since issue 14 sees
+  // the sphere 2.4× closer through the glass: 0.61 and 0.13 at the highlight, < 0.02 elsewhere.
   for (const [name, state] of [['default', DEFAULT_VIEW], ['oblique', OBLIQUE_VIEW]] as const) {
-    it(`${name} view, final image: every pair differs by < 0.1 of an 8-bit level at every pixel`, () => {
+    it(`${name} view, final image: 16 and 64 spp converge on 256 as 1/n², the mean within 0.01 of a level`, () => {
       const [s16, s64, s256] = renders(state);
-      for (const [a, b] of [[s16, s64], [s64, s256], [s16, s256]]) {
-        const d = difference(a, b, [s16, s64, s256]);
+      const all = [s16, s64, s256];
+      const d16 = difference(s16, s256, all), d64 = difference(s64, s256, all);
+      for (const d of [d16, d64, difference(s16, s64, all)]) {
         expect(d.pixels).toBeGreaterThan(0.5 * 64 * 36);
-        expect(d.max, `${a.samplesPerAxis}² vs ${b.samplesPerAxis}²`).toBeLessThan(0.1);
-        if (process.env.REFERENCE_BENCH) console.log(name, `${a.samplesPerAxis}² vs ${b.samplesPerAxis}²`, JSON.stringify(d));
+        expect(d.mean).toBeLessThan(0.01);
       }
+      expect(d16.max, '16 vs 256 spp').toBeLessThan(0.75);
+      expect(d64.max, '64 vs 256 spp').toBeLessThan(0.15);
+      expect(d16.max / d64.max, 'second-order convergence').toBeGreaterThan(3);
     });
   }
 
   it('scene pass alone: the mean differs by < 0.1 level; the max is set by the 1-px specular highlight and falls as 1/n²', () => {
-    // Without the glass in front, the sphere's highlight (shininess 32, sphere ~7 px across at
-    // 64×36) is a feature about one pixel wide. Stratum-centre sampling integrates smooth
-    // features with an O(1/n²) error, so 16 spp sits ~0.5 level off there, 64 spp ~0.1.
+    // Without the glass in front the highlight is undimmed: 1.34 levels at 16 spp, 0.29 at 64.
     const [s16, s64, s256] = renders({ ...DEFAULT_VIEW, view: 'scene' });
     const all = [s16, s64, s256];
     const d16 = difference(s16, s256, all), d64 = difference(s64, s256, all);
     for (const d of [d16, d64, difference(s16, s64, all)]) expect(d.mean).toBeLessThan(0.1);
-    expect(d16.max).toBeLessThan(1);
-    expect(d64.max).toBeLessThan(0.25);
+    expect(d16.max).toBeLessThan(1.5);
+    expect(d64.max).toBeLessThan(0.35);
     // Second order: with error C/n², |e₄ − e₁₆| / |e₈ − e₁₆| = (1/16 − 1/256)/(1/64 − 1/256) = 5.
     expect(d16.max / d64.max).toBeGreaterThan(3);
   });

@@ -12,7 +12,7 @@ function tiny(): ReferenceImage {
   const rgb = new Float64Array(15).fill(0.5);
   const rgba = new Uint8ClampedArray(20);
   for (let i = 0; i < 5; i++) rgba.set([128, 128, 128, 255], 4 * i);
-  return { width: 5, height: 1, view: 'final', samplesPerAxis: 1, textureFilter: 'point', rgb, rgba, regions };
+  return { width: 5, height: 1, view: 'final', samplesPerAxis: 1, textureFilter: 'point', rgb, rgba, regions, keys: new Int32Array(5) };
 }
 
 describe('compareImages', () => {
