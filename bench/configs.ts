@@ -22,7 +22,7 @@ export const BASELINE: Knobs = {
 
 /** The element's defaults (src/element/attributes.ts), at pixel-ratio 1 like every row. */
 export const DEFAULTS: Knobs = {
-  reflectionScale: 0.5, samples: 4, fresnel: 'exact', shading: 'phong', tessellation: 'auto', pixelRatio: 1, reflectionFormat: 'rgba8',
+  reflectionScale: 1, samples: 4, fresnel: 'exact', shading: 'phong', tessellation: 'auto', pixelRatio: 1, reflectionFormat: 'rgba8',
 };
 
 /** Short, stable name: only the knobs that differ from the baseline. */

@@ -206,7 +206,7 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
   } satisfies AttributeSpec<'time'>,
   keywordSpec('debugView', 'debug-view', DEBUG_VIEWS, 'shows one pass instead of the final image'),
   // Defaults of the quality knobs come from the bench's Pareto front (README, "Speed and accuracy").
-  numberSpec('reflectionScale', 'reflection-scale', 0.5, 0.125, 2, 'reflection framebuffer size ÷ drawing-buffer size'),
+  numberSpec('reflectionScale', 'reflection-scale', 1, 0.125, 2, 'reflection framebuffer size ÷ drawing-buffer size'),
   {
     property: 'samples', attribute: 'samples', default: 4,
     doc: 'MSAA samples of the reflection and scene passes: 0, 2 or 4',

@@ -74,7 +74,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private readonly state: FrameState = {
     width: 1, height: 1, time: 0, spin: 0, cubeDistance: 0, transparency: 0, ior: 1, fresnel: 'exact',
     fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final',
-    reflectionScale: 0.5, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
+    reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
   };
 
   constructor() {

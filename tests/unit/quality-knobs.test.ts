@@ -8,13 +8,13 @@ import type { FrameState } from '../../src/render/types';
 const parse = (attr: string, raw: string | null) => ATTRIBUTE_BY_NAME.get(attr)!.parse(raw);
 
 describe('reflection-scale', () => {
-  it('defaults to 0.5 (from the bench) and clamps to 0.125..2 with a problem', () => {
-    expect(parse('reflection-scale', null)).toEqual({ value: 0.5 });
+  it('defaults to 1 (from the bench, in the default view of issue 14) and clamps to 0.125..2 with a problem', () => {
+    expect(parse('reflection-scale', null)).toEqual({ value: 1 });
     expect(parse('reflection-scale', '0.5')).toEqual({ value: 0.5 });
     expect(parse('reflection-scale', '0.01').value).toBe(0.125);
     expect(parse('reflection-scale', '0.01').problem).toBeTruthy();
     expect(parse('reflection-scale', '9').value).toBe(2);
-    expect(parse('reflection-scale', 'big').value).toBe(0.5);
+    expect(parse('reflection-scale', 'big').value).toBe(1);
     expect(parse('reflection-scale', 'big').problem).toBeTruthy();
   });
 });
