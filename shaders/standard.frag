@@ -1,6 +1,6 @@
 #version 300 es
 // Ka = Kd = albedo ⊙ tex; the lighting factors come from blinnPhong (lighting.glsl),
-// per fragment (phong) or interpolated from the vertices (gouraud, flat).
+// per fragment (phong), interpolated from the vertices (gouraud), or one per triangle (flat).
 precision highp float;
 
 uniform sampler2D uTexture;

@@ -2,10 +2,14 @@
 // Opaque objects. Positions are relative to the eye (float64-composed on the CPU) so a
 // camera far from the origin keeps its precision. CLIP_PLANE: reflection pass only.
 // SHADING_PHONG lights per fragment; SHADING_GOURAUD per vertex, interpolated;
-// SHADING_FLAT per vertex, taken from one vertex of each triangle.
+// SHADING_FLAT once per triangle, from its face normal at its centroid: flat meshes carry both
+// on each of a triangle's three vertices (src/scene/geometry/flat.ts), so all three agree.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv;
+#ifdef SHADING_FLAT
+layout(location = 3) in vec3 aCentroid;
+#endif
 
 uniform highp mat4 uModelViewProjection;
 uniform highp mat4 uModelRelative;
@@ -33,6 +37,9 @@ void main() {
 #if defined(SHADING_PHONG)
   vRelPos = rel.xyz;
   vNormal = uNormalMatrix * aNormal;
+#elif defined(SHADING_FLAT)
+  vec3 faceCentre = (uModelRelative * vec4(aCentroid, 1.0)).xyz; // "centroid" is a GLSL ES 3.0 keyword
+  vLight = blinnPhong(normalize(uNormalMatrix * aNormal), normalize(-faceCentre));
 #else
   vLight = blinnPhong(normalize(uNormalMatrix * aNormal), normalize(-rel.xyz));
 #endif

@@ -16,6 +16,7 @@ import { reflectionPass } from './passes/reflection-pass';
 import { scenePass } from './passes/scene-pass';
 import { glassPass } from './passes/glass-pass';
 import { boxMesh } from '../scene/geometry/box';
+import { flatMesh } from '../scene/geometry/flat';
 import { glassMesh } from '../scene/geometry/rectangle';
 import { proceduralTexture } from '../scene/procedural-texture';
 import { CUBE, TEXTURE_SIZE } from '../scene/default-scene';
@@ -62,6 +63,9 @@ export class Renderer {
   private reflectionMsaa: MultisampleTarget | null = null;
   private mainMsaa: MultisampleTarget | null = null;
   private readonly sphere: SphereLod;
+  /** The cube as smooth (per-vertex normal) and, once flat shading is asked for, per-face mesh. */
+  private readonly cubeSmooth: Mesh;
+  private cubeFlat: Mesh | null = null;
   private readonly maxSamples: number;
   /** Can the context render to RGBA16F (EXT_color_buffer_float)? */
   private readonly canHalfFloat: boolean;
@@ -93,8 +97,9 @@ export class Renderer {
     const c = this.counter;
     this.programs = new ProgramCache(gl, c);
     this.sphere = new SphereLod(gl, c);
+    this.cubeSmooth = new Mesh(gl, c, boxMesh(CUBE.edge));
     this.meshes = {
-      cube: new Mesh(gl, c, boxMesh(CUBE.edge)),
+      cube: this.cubeSmooth,
       sphere: null as unknown as Mesh, // chosen per frame by the sphere's LOD
       glass: new Mesh(gl, c, glassMesh()),
     };
@@ -174,7 +179,9 @@ export class Renderer {
   dispose(): void {
     const gl = this.gl;
     this.programs.dispose();
-    this.meshes.cube.dispose();
+    this.cubeSmooth.dispose();
+    this.cubeFlat?.dispose();
+    this.cubeFlat = null;
     this.sphere.dispose();
     this.reflectionMsaa?.dispose();
     this.mainMsaa?.dispose();
@@ -199,6 +206,8 @@ export class Renderer {
       : undefined;
     this.ctx.cull = this.optimize;
     this.meshes.sphere = this.sphere.update(state);
+    this.meshes.cube = state.shading !== 'flat' ? this.cubeSmooth
+      : (this.cubeFlat ??= new Mesh(this.gl, this.counter, flatMesh(boxMesh(CUBE.edge))));
     // Clamped like the canvas: the glass reads it with normalised coordinates, so a smaller
     // target still lines up.
     // rgba16f: at grazing incidence F nears 1 and an 8-bit reflection's rounding shows through

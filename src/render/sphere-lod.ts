@@ -3,6 +3,7 @@
 import { Mesh } from './gl/mesh';
 import type { ResourceCounter } from './gl/resource-counter';
 import { segmentsForScreenRadius, sphereMesh } from '../scene/geometry/sphere';
+import { flatMesh } from '../scene/geometry/flat';
 import { SPHERE } from '../scene/default-scene';
 import type { FrameState } from './types';
 
@@ -29,6 +30,8 @@ export function sphereScreenRadius(state: FrameState): number {
 export class SphereLod {
   mesh: Mesh | null = null;
   segments = 0;
+  /** Whether `mesh` is the per-face mesh of flat shading. */
+  private flat = false;
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter) {}
 
@@ -43,10 +46,13 @@ export class SphereLod {
     } else {
       wanted = state.tessellation;
     }
-    if (!this.mesh || wanted !== this.segments) {
+    const flat = state.shading === 'flat';
+    if (!this.mesh || wanted !== this.segments || flat !== this.flat) {
       this.mesh?.dispose();
-      this.mesh = new Mesh(this.gl, this.counter, sphereMesh(SPHERE.radius, wanted));
+      const data = sphereMesh(SPHERE.radius, wanted);
+      this.mesh = new Mesh(this.gl, this.counter, flat ? flatMesh(data) : data);
       this.segments = wanted;
+      this.flat = flat;
     }
     return this.mesh;
   }

@@ -4,6 +4,11 @@ export interface MeshData {
   normals: Float32Array;
   uvs: Float32Array;
   indices: Uint16Array | Uint32Array;
+  /**
+   * Per vertex, the centroid of its triangle: only in flat meshes (flat.ts), where every
+   * triangle has vertices of its own and lighting is computed once per face, at its centroid.
+   */
+  centroids?: Float32Array;
 }
 
 export function indexArray(count: number, vertexCount: number): Uint16Array | Uint32Array {
