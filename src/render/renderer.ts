@@ -5,6 +5,7 @@ import { RenderTarget } from './gl/render-target';
 import { MultisampleTarget } from './gl/multisample-target';
 import { SphereLod } from './sphere-lod';
 import { glassScreenRect, type ScreenRect } from './glass-bounds';
+import { reflectionScissor, reflectionTargetSide } from './reflection-scissor';
 import { findNonFinite } from './finite-check';
 import { maxTargetSize } from './gl/limits';
 import { ResourceCounter } from './gl/resource-counter';
@@ -213,26 +214,17 @@ export class Renderer {
     }
     const scale = state.reflectionScale;
     const max = this.maxTargetSize;
-    this.reflection.setSize(
-      Math.max(1, Math.min(max, Math.round(state.width * scale))), Math.max(1, Math.min(max, Math.round(state.height * scale))),
-    );
+    this.reflection.setSize(reflectionTargetSide(state.width, scale, max), reflectionTargetSide(state.height, scale, max));
   }
 
   private samplesFor(state: FrameState): number {
     return Math.min(state.samples, this.maxSamples);
   }
 
-  /** The glass's screen rectangle in reflection texels, one texel wider for bilinear reads. */
+  /** The glass's screen rectangle in reflection texels (of the target as clamped, not as asked). */
   private reflectionScissor(): Viewport {
-    const s = this.ctx.state.reflectionScale;
-    const r = this.glassRect;
-    const { width, height } = this.reflection;
-    const x0 = Math.max(0, Math.floor(r.x0 * s) - 1);
-    const y0 = Math.max(0, Math.floor(r.y0 * s) - 1);
-    const x1 = Math.min(width, Math.ceil(r.x1 * s) + 1);
-    const y1 = Math.min(height, Math.ceil(r.y1 * s) + 1);
-    Object.assign(this.scissor, { x: x0, y: y0, width: Math.max(0, x1 - x0), height: Math.max(0, y1 - y0) });
-    return this.scissor;
+    const { width, height } = this.ctx.state;
+    return reflectionScissor(this.glassRect, width, height, this.reflection.width, this.reflection.height, this.scissor);
   }
 
   /**
