@@ -52,6 +52,14 @@ const SKIPPED_BY_VIEW: Record<RenderView, Partial<Record<PassName, string>>> = {
   fresnel: { reflection: 'debug-view fresnel (F needs no reflection)' },
 };
 
+function setViewport(out: Viewport, x: number, y: number, width: number, height: number): Viewport {
+  out.x = x;
+  out.y = y;
+  out.width = width;
+  out.height = height;
+  return out;
+}
+
 export class Renderer {
   private readonly counter = new ResourceCounter();
   private readonly programs: ProgramCache;
@@ -79,6 +87,8 @@ export class Renderer {
   private glassSkipReason: string | undefined;
   private readonly glassRect: ScreenRect = { x0: 0, y0: 0, x1: 0, y1: 0, area: 0 };
   private readonly scissor: Viewport = { x: 0, y: 0, width: 0, height: 0 };
+  /** The tiles of debug-view passes (filled in place). */
+  private readonly tile: Viewport = { x: 0, y: 0, width: 0, height: 0 };
   /**
    * Skip the reflection and glass when the glass is not on screen, cull objects beyond the
    * glass from the reflection, scissor it to the glass (SPEC §7). Off only to measure savings.
@@ -288,18 +298,23 @@ export class Renderer {
     return scenePass(this.ctx, true) + glassPass(this.ctx, this.reflection.color, true);
   }
 
-  /** Reflection | scene over fresnel | final, in the four quadrants. */
+  /**
+   * Reflection | scene over fresnel | final, in the four quadrants. On an odd size the right
+   * column and top row of tiles take the extra pixel, so no line between them is left unwritten.
+   */
   private drawTiles(framebuffer: WebGLFramebuffer | null, width: number, height: number): number {
     const ctx = this.ctx;
-    const w = Math.floor(width / 2);
-    const h = Math.floor(height / 2);
-    const top = height - h;
+    const left = Math.floor(width / 2);
+    const right = width - left;
+    const bottom = Math.floor(height / 2);
+    const top = height - bottom;
+    const t = this.tile;
     let n = this.runReflection();
-    n += this.blit(framebuffer, { x: 0, y: top, width: w, height: h });
-    beginTarget(this.gl, framebuffer, { x: width - w, y: top, width: w, height: h });
+    n += this.blit(framebuffer, setViewport(t, 0, bottom, left, top));
+    beginTarget(this.gl, framebuffer, setViewport(t, left, bottom, right, top));
     n += scenePass(ctx);
-    n += this.drawFresnel(framebuffer, { x: 0, y: 0, width: w, height: h });
-    beginTarget(this.gl, framebuffer, { x: width - w, y: 0, width: w, height: h });
+    n += this.drawFresnel(framebuffer, setViewport(t, 0, 0, left, bottom));
+    beginTarget(this.gl, framebuffer, setViewport(t, left, 0, right, bottom));
     n += scenePass(ctx) + glassPass(ctx, this.reflection.color);
     return n;
   }
