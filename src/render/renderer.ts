@@ -87,7 +87,8 @@ export class Renderer {
   private glassSkipReason: string | undefined;
   private readonly glassRect: ScreenRect = { x0: 0, y0: 0, x1: 0, y1: 0, area: 0 };
   private readonly scissor: Viewport = { x: 0, y: 0, width: 0, height: 0 };
-  /** The tiles of debug-view passes (filled in place). */
+  /** The viewports of this frame's drawing (filled in place: nothing is allocated per frame). */
+  private readonly full: Viewport = { x: 0, y: 0, width: 0, height: 0 };
   private readonly tile: Viewport = { x: 0, y: 0, width: 0, height: 0 };
   /**
    * Skip the reflection and glass when the glass is not on screen, cull objects beyond the
@@ -267,7 +268,7 @@ export class Renderer {
 
   /** Draws `state.view` into `framebuffer`; returns the draw calls. */
   private drawView(state: FrameState, framebuffer: WebGLFramebuffer | null): number {
-    const full: Viewport = { x: 0, y: 0, width: state.width, height: state.height };
+    const full = setViewport(this.full, 0, 0, state.width, state.height);
     const ctx = this.ctx;
     switch (state.view) {
       case 'scene':
