@@ -338,8 +338,13 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.lastPosition[1] = state.cameraPosition[1];
     this.lastPosition[2] = state.cameraPosition[2];
     last.cameraPosition = this.lastPosition;
-    const detail = structuredClone(report);
-    detail.frame = this.frames;
+    // One small frozen object per frame (the event is one anyway), its passes shared frozen
+    // records: listeners may keep it, and nothing later changes it. A deep copy per frame
+    // (structuredClone) is what it replaces.
+    const detail: FrameReport = Object.freeze({
+      frame: this.frames, time: report.time, width: report.width, height: report.height,
+      drawCalls: report.drawCalls, passes: report.passes,
+    });
     if (!this.readyFired) {
       this.readyFired = true;
       this.dispatchEvent(new CustomEvent('ready', { detail }));

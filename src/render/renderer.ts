@@ -20,7 +20,7 @@ import { boxMesh } from '../scene/geometry/box';
 import { glassMesh } from '../scene/geometry/rectangle';
 import { proceduralTexture } from '../scene/procedural-texture';
 import { CUBE, TEXTURE_SIZE } from '../scene/default-scene';
-import type { FrameReport, FrameState, PassName, RenderStats, RenderView } from './types';
+import type { FrameReport, FrameState, PassName, PassReport, RenderStats, RenderView } from './types';
 
 export interface RendererOptions {
   /** Check gl.getError() after every frame and report through `onError` (tests and debugging). */
@@ -52,6 +52,23 @@ const SKIPPED_BY_VIEW: Record<RenderView, Partial<Record<PassName, string>>> = {
   fresnel: { reflection: 'debug-view fresnel (F needs no reflection)' },
 };
 
+type PassReports = Readonly<Record<PassName, Readonly<PassReport>>>;
+
+/** Frozen reports of the three passes given why each was skipped (absent: it ran). */
+function passReports(skipped: Partial<Record<PassName, string>>): PassReports {
+  const one = (p: PassName): Readonly<PassReport> =>
+    Object.freeze(skipped[p] === undefined ? { ran: true } : { ran: false, reason: skipped[p] });
+  return Object.freeze({ reflection: one('reflection'), scene: one('scene'), glass: one('glass') });
+}
+
+// Every frame's passes are one of these few shared, frozen records: a frame report kept by a
+// listener never changes, and none is built per frame.
+const PASSES_BY_VIEW = Object.fromEntries(
+  Object.entries(SKIPPED_BY_VIEW).map(([view, skipped]) => [view, passReports(skipped)]),
+) as Record<RenderView, PassReports>;
+/** The final view with the glass (and so the reflection) skipped, by reason; filled on first use. */
+const GLASS_SKIPPED = new Map<string, PassReports>();
+
 function setViewport(out: Viewport, x: number, y: number, width: number, height: number): Viewport {
   out.x = x;
   out.y = y;
@@ -81,7 +98,7 @@ export class Renderer {
   private readonly ctx: PassContext;
   private readonly report: FrameReport = {
     frame: 0, time: 0, width: 0, height: 0, drawCalls: 0,
-    passes: { reflection: { ran: false }, scene: { ran: false }, glass: { ran: false } },
+    passes: PASSES_BY_VIEW.final,
   };
   /** Why the final view needs neither reflection nor glass this frame, if it does not. */
   private glassSkipReason: string | undefined;
@@ -126,7 +143,7 @@ export class Renderer {
     };
   }
 
-  /** Draws one frame of `state.view` to the canvas and returns its report (reused object). */
+  /** Draws one frame of `state.view` to the canvas and returns its report (reused object; its `passes` are frozen and shared). */
   render(state: FrameState): FrameReport {
     const drawCalls = this.draw(state, null);
     const r = this.report;
@@ -136,13 +153,15 @@ export class Renderer {
     r.width = state.width;
     r.height = state.height;
     r.drawCalls = drawCalls;
-    const skipped = SKIPPED_BY_VIEW[state.view];
     const glassSkip = state.view === 'final' ? this.glassSkipReason : undefined;
+    let passes = PASSES_BY_VIEW[state.view];
+    if (glassSkip !== undefined) {
+      passes = GLASS_SKIPPED.get(glassSkip) ?? passReports({ reflection: glassSkip, glass: glassSkip });
+      GLASS_SKIPPED.set(glassSkip, passes);
+    }
+    r.passes = passes;
     for (const p of PASSES) {
-      const reason = skipped[p] ?? (p === 'scene' ? undefined : glassSkip);
-      r.passes[p].ran = reason === undefined;
-      r.passes[p].reason = reason;
-      if (reason === undefined) this.counts.passesRun[p]++;
+      if (passes[p].ran) this.counts.passesRun[p]++;
       else this.counts.passesSkipped[p]++;
     }
     if (this.options.checks) this.checkErrors();
