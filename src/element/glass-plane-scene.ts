@@ -7,6 +7,7 @@ import { AttributeWarnings, PREFIX, warn } from './warnings';
 import { FlybyController } from './flyby-controller';
 import { FlybyInput } from './flyby-input';
 import { applyStyle } from './element-style';
+import { readCanvas } from './canvas-readback';
 import { SharedContext, type ContextClient, type Presenter } from './shared-context';
 import { Renderer, type ReadbackSource } from '../render/renderer';
 import { ShaderError } from '../render/gl/program';
@@ -65,7 +66,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private inView = false;
   private dirty = true;
   private readyFired = false;
-  /** The state of the last frame drawn (what capture() redraws); filled in place. */
+  /** The state of the last frame drawn (what capture(pass) draws a pass of); filled in place. */
   private lastState: FrameState | null = null;
   private readonly lastPosition: [number, number, number] = [0, 0, 0];
   private totals = emptyStats();
@@ -179,16 +180,15 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   }
 
   /**
-   * RGBA8 pixels of the last frame (no argument: exactly what is on screen) or of one pass,
-   * at the drawing-buffer size, top row first. Null while nothing can be drawn.
+   * RGBA8 pixels of the last frame (no argument: exactly what is on screen, read back from the
+   * element's canvas without drawing) or of one pass (drawn off screen from the last frame's
+   * state), at the drawing-buffer size, top row first. Null while nothing can be drawn.
    */
   capture(pass?: CapturePass): ImageData | null {
     if (!this.renderer || this.failed) return null;
-    let source: ReadbackSource = 'screen';
-    if (pass !== undefined) {
-      source = CAPTURE_SOURCES[pass as CapturePass] ?? 'final';
-      if (!(pass in CAPTURE_SOURCES)) warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
-    }
+    if (pass === undefined) return this.frames > 0 ? readCanvas(this.canvas) : null;
+    const source: ReadbackSource = CAPTURE_SOURCES[pass as CapturePass] ?? 'final';
+    if (!(pass in CAPTURE_SOURCES)) warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
     try {
       this.shared!.reserve(this.canvas.width, this.canvas.height);
       const px = this.renderer.read(source, this.lastState ?? this.frameState(performance.now()));
