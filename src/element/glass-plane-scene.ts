@@ -63,6 +63,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private lastNow = 0;
   private clockStart = -1;
   private failed: ErrorType | null = null;
+  /** The shader error last reported: the same one again (the same broken variant) is not news. */
+  private reportedShaderError: unknown = null;
   private inView = false;
   private dirty = true;
   private readyFired = false;
@@ -159,6 +161,9 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     // Resize only: drawing here, mid-way through a script's batch of attribute changes, would
     // show a frame with half of them applied (the next animation frame comes before paint).
     if (spec.property === 'pixelRatio') this.resizeCanvas();
+    // A shader failure is not final: the change may select a variant that compiles. The message
+    // stays up until a frame is drawn.
+    if (this.failed === 'shader') this.failed = null;
     this.requestRender();
   }
 
@@ -332,6 +337,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       return;
     }
     this.frames++;
+    if (!this.message.hidden) this.message.hidden = true; // drawn again after a shader failure
+    this.reportedShaderError = null;
     const last = (this.lastState ??= { ...state });
     Object.assign(last, state);
     this.lastPosition[0] = state.cameraPosition[0];
@@ -436,10 +443,16 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private fail(type: ErrorType, error: unknown): void {
     const message = error instanceof Error ? error.message : String(error);
     this.failed = type;
-    if (type !== 'context-lost') this.disposeRenderer();
+    // The renderer stays after a shader failure: everything else in it works, and its program
+    // cache remembers the broken variant, so drawing the same state again fails without compiling.
+    if (type !== 'context-lost' && type !== 'shader') this.disposeRenderer();
     this.message.textContent = MESSAGES[type];
     this.message.hidden = false;
     this.canvas.hidden = type === 'webgl2-unavailable';
+    if (type === 'shader') {
+      if (error === this.reportedShaderError) return;
+      this.reportedShaderError = error;
+    }
     // A broken shader is a bug worth a console line (with the annotated source); a missing
     // WebGL2 or a lost context is a state of the machine, reported through the event only.
     if (type === 'shader') console.error(`${PREFIX} ${message}`);

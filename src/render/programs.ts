@@ -8,7 +8,7 @@ import blitFrag from '../../shaders/blit.frag?raw';
 import lighting from '../../shaders/lighting.glsl?raw';
 import type { FresnelModel } from '../math/fresnel';
 import type { Shading } from './types';
-import { Program } from './gl/program';
+import { Program, ShaderError } from './gl/program';
 import type { ResourceCounter } from './gl/resource-counter';
 
 export type ClipMode = 'none' | 'clip-distance' | 'discard';
@@ -36,6 +36,11 @@ export class ProgramCache {
   private standards: Partial<Record<ClipMode, Partial<Record<Shading, Program>>>> = {};
   private glasses: Partial<Record<FresnelModel, { colour?: Program; fresnel?: Program }>> = {};
   private blitProgram: Program | undefined;
+  /**
+   * Variants that failed to compile, by key: asked again (the same state drawn again), they throw
+   * the same error without compiling again. A new context means a new cache, so a restore retries.
+   */
+  private readonly broken = new Map<string, ShaderError>();
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter) {}
 
@@ -60,9 +65,16 @@ export class ProgramCache {
   }
 
   private build(key: string, vert: string, frag: string, header: string[]): Program {
-    const p = new Program(this.gl, this.counter, key, vert, frag, header);
-    this.all.push(p);
-    return p;
+    const known = this.broken.get(key);
+    if (known) throw known;
+    try {
+      const p = new Program(this.gl, this.counter, key, vert, frag, header);
+      this.all.push(p);
+      return p;
+    } catch (e) {
+      if (e instanceof ShaderError) this.broken.set(key, e);
+      throw e;
+    }
   }
 
   dispose(): void {
@@ -71,5 +83,6 @@ export class ProgramCache {
     this.standards = {};
     this.glasses = {};
     this.blitProgram = undefined;
+    this.broken.clear();
   }
 }

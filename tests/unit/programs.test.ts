@@ -3,6 +3,7 @@
 import { describe, expect, it } from 'vitest';
 import { ProgramCache, type ClipMode } from '../../src/render/programs';
 import { ResourceCounter } from '../../src/render/gl/resource-counter';
+import { ShaderError } from '../../src/render/gl/program';
 import { FRESNEL_MODELS } from '../../src/math/fresnel';
 import type { Shading } from '../../src/render/types';
 import { fakeGl } from './fake-gl';
@@ -63,5 +64,26 @@ describe('ProgramCache', () => {
     expect(counter.total).toBe(0);
     expect(cache.standard('clip-distance', 'flat')).toBeDefined(); // rebuilt on demand
     expect(cache.size).toBe(1);
+  });
+});
+
+describe('ProgramCache with a variant that does not compile', () => {
+  it('throws the same error again without compiling again; other variants still compile; dispose forgets it', () => {
+    const fake = fakeGl();
+    fake.failCompile = (src) => src.includes('#define FRESNEL_SCHLICK');
+    const counter = new ResourceCounter();
+    const cache = new ProgramCache(fake.gl, counter);
+    let first: unknown;
+    try { cache.glass('schlick', false); } catch (e) { first = e; }
+    expect(first).toBeInstanceOf(ShaderError);
+    expect((first as Error).message).toMatch(/^glass-plane-scene: .*"glass:schlick:false" failed to compile/);
+    const compiles = fake.calls.get('compileShader');
+    expect(() => cache.glass('schlick', false)).toThrow(first as Error);
+    expect(fake.calls.get('compileShader'), 'not compiled again').toBe(compiles);
+    expect(cache.glass('exact', false)).toBeDefined();
+    expect(counter.counts.shaders, 'the failed shaders were deleted').toBe(2);
+    cache.dispose();
+    fake.failCompile = () => false;
+    expect(cache.glass('schlick', false)).toBeDefined();
   });
 });

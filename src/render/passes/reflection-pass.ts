@@ -11,6 +11,9 @@ const centre = new Float64Array(3);
 /** Returns the number of draw calls. */
 export function reflectionPass(ctx: PassContext, framebuffer: WebGLFramebuffer, width: number, height: number): number {
   const { gl, setup, meshes, clipExtension, scissor } = ctx;
+  // First, before any state is set: a variant that fails to compile throws, and the element
+  // draws again later (another variant, a restored context) from clean state.
+  const program = ctx.programs.standard(clipExtension ? 'clip-distance' : 'discard', ctx.state.shading);
   const full = { x: 0, y: 0, width, height };
   // Scissored to the glass: only texels the glass pass can read are cleared and drawn.
   beginTarget(gl, framebuffer, full, BACKGROUND, scissor ?? full);
@@ -18,7 +21,6 @@ export function reflectionPass(ctx: PassContext, framebuffer: WebGLFramebuffer, 
     gl.enable(gl.SCISSOR_TEST);
     gl.scissor(scissor.x, scissor.y, scissor.width, scissor.height);
   }
-  const program = ctx.programs.standard(clipExtension ? 'clip-distance' : 'discard', ctx.state.shading);
   let draws = 0;
   gl.enable(gl.DEPTH_TEST);
   gl.enable(gl.CULL_FACE);
