@@ -3,10 +3,12 @@
 // extension); an object whose bounds lie wholly beyond it is culled, not drawn.
 import { BACKGROUND, CUBE, GLASS, SPHERE } from '../../scene/default-scene';
 import { signedDistance } from '../../math/mirror';
-import { beginTarget, setLighting, setMatrices, type PassContext } from './pass-context';
+import { beginTarget, setLighting, setMatrices, type PassContext, type Viewport } from './pass-context';
 
 const CUBE_BOUND = (Math.sqrt(3) / 2) * CUBE.edge;
 const centre = new Float64Array(3);
+/** The whole target, filled in place each frame. */
+const full: Viewport = { x: 0, y: 0, width: 0, height: 0 };
 
 /** Returns the number of draw calls. */
 export function reflectionPass(ctx: PassContext, framebuffer: WebGLFramebuffer, width: number, height: number): number {
@@ -14,7 +16,8 @@ export function reflectionPass(ctx: PassContext, framebuffer: WebGLFramebuffer, 
   // First, before any state is set: a variant that fails to compile throws, and the element
   // draws again later (another variant, a restored context) from clean state.
   const program = ctx.programs.standard(clipExtension ? 'clip-distance' : 'discard', ctx.state.shading);
-  const full = { x: 0, y: 0, width, height };
+  full.width = width;
+  full.height = height;
   // Scissored to the glass: only texels the glass pass can read are cleared and drawn.
   beginTarget(gl, framebuffer, full, BACKGROUND, scissor ?? full);
   if (scissor) {
