@@ -74,6 +74,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private totals = emptyStats();
   private frames = 0;
   private cameraDirty = false;
+  /** True while reflectCamera() sets the camera attributes. */
+  private writingBack = false;
   private readonly state: FrameState = {
     width: 1, height: 1, time: 0, spin: 0, cubeDistance: 0, transparency: 0, ior: 1, fresnel: 'exact',
     fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final',
@@ -154,6 +156,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     const parsed = spec.parse(raw);
     if (parsed.problem) this.warnings.report(spec, raw ?? '', parsed.problem);
     (this.values as unknown as Record<string, unknown>)[spec.property] = parsed.value;
+    // The pose written back at rest is the one just drawn: nothing to move, nothing to draw.
+    if (this.writingBack) return;
     if (spec.property === 'cameraPosition' || spec.property === 'cameraRotation') {
       const [yaw, pitch] = this.values.cameraRotation;
       this.flyby.setPose(this.values.cameraPosition, yaw, pitch);
@@ -471,8 +475,13 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private reflectCamera(): void {
     this.cameraDirty = false;
     const { position, yaw, pitch } = this.flyby.pose;
-    this.setAttribute('camera-position', `${position[0]} ${position[1]} ${position[2]}`);
-    this.setAttribute('camera-rotation', `${yaw} ${pitch}`);
+    this.writingBack = true;
+    try {
+      this.setAttribute('camera-position', `${position[0]} ${position[1]} ${position[2]}`);
+      this.setAttribute('camera-rotation', `${yaw} ${pitch}`);
+    } finally {
+      this.writingBack = false;
+    }
   }
 }
 
