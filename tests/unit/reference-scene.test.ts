@@ -5,7 +5,8 @@ import {
   renderReference, REGION_BACKGROUND, REGION_CUBE, REGION_EDGE, REGION_GLASS, REGION_SPHERE,
   type ReferenceImage, type ReferenceState,
 } from '../../src/reference';
-import { projectionMatrix, viewMatrix } from '../../src/math/camera';
+import { projectionMatrix } from '../../src/math/camera';
+import { lookAtView } from './helpers';
 
 const STATE: ReferenceState = {
   width: 320, height: 180, time: 0, spin: 0, cubeDistance: 2.5, transparency: 0.5, ior: 1.5,
@@ -24,7 +25,7 @@ function cubeMask(img: ReferenceImage): Uint8Array {
 
 /** Pixel coordinates (x right, y down, pixel centres at +0.5) where the camera projects `p`. */
 function project(s: ReferenceState, p: [number, number, number]): [number, number] {
-  const view = viewMatrix(new Float64Array(16), s.cameraPosition, s.yaw, s.pitch, new Float64Array(3));
+  const view = lookAtView(s.cameraPosition, s.yaw, s.pitch);
   const proj = projectionMatrix(new Float64Array(16), s.fov, s.width / s.height, 0.1, 100);
   const c = new Float64Array(4);
   vec4.transformMat4(c as unknown as vec4, [p[0], p[1], p[2], 1], view as unknown as mat4);
