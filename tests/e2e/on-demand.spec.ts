@@ -77,8 +77,8 @@ test.describe('render on demand', () => {
   test('with spin and the live clock it animates (the idle test is not vacuous)', async ({ page }) => {
     const { selector } = await mount(page, { spin: 0.8 }, SIZE);
     const f0 = await frames(page, selector);
-    await page.waitForTimeout(500);
-    expect(await frames(page, selector)).toBeGreaterThan(f0 + 5);
+    // Frames keep coming (how fast is the bench's business, not a test's).
+    await expect.poll(() => frames(page, selector), { message: 'frames keep coming' }).toBeGreaterThan(f0 + 3);
   });
 });
 
@@ -195,8 +195,7 @@ test.describe('off screen and hidden', () => {
       document.body.append(spacer);
     });
     const f0 = await frames(page, selector);
-    await page.waitForTimeout(300);
-    expect(await frames(page, selector), 'animating while visible').toBeGreaterThan(f0);
+    await expect.poll(() => frames(page, selector), { message: 'animating while visible' }).toBeGreaterThan(f0);
 
     await page.evaluate(() => window.scrollTo(0, 2000));
     await page.waitForTimeout(300); // the IntersectionObserver callback, and a frame in flight
