@@ -7,6 +7,7 @@ import { AttributeWarnings, PREFIX, warn } from './warnings';
 import { FlybyController } from './flyby-controller';
 import { FlybyInput } from './flyby-input';
 import { applyStyle } from './element-style';
+import { readCanvas } from './canvas-readback';
 import { SharedContext, type ContextClient, type Presenter } from './shared-context';
 import { Renderer, type ReadbackSource } from '../render/renderer';
 import { ShaderError } from '../render/gl/program';
@@ -62,15 +63,19 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private lastNow = 0;
   private clockStart = -1;
   private failed: ErrorType | null = null;
+  /** The shader error last reported: the same one again (the same broken variant) is not news. */
+  private reportedShaderError: unknown = null;
   private inView = false;
   private dirty = true;
   private readyFired = false;
-  /** The state of the last frame drawn (what capture() redraws); filled in place. */
+  /** The state of the last frame drawn (what capture(pass) draws a pass of); filled in place. */
   private lastState: FrameState | null = null;
   private readonly lastPosition: [number, number, number] = [0, 0, 0];
   private totals = emptyStats();
   private frames = 0;
   private cameraDirty = false;
+  /** True while reflectCamera() sets the camera attributes. */
+  private writingBack = false;
   private readonly state: FrameState = {
     width: 1, height: 1, time: 0, spin: 0, cubeDistance: 0, transparency: 0, ior: 1, fresnel: 'exact',
     fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final',
@@ -151,6 +156,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     const parsed = spec.parse(raw);
     if (parsed.problem) this.warnings.report(spec, raw ?? '', parsed.problem);
     (this.values as unknown as Record<string, unknown>)[spec.property] = parsed.value;
+    // The pose written back at rest is the one just drawn: nothing to move, nothing to draw.
+    if (this.writingBack) return;
     if (spec.property === 'cameraPosition' || spec.property === 'cameraRotation') {
       const [yaw, pitch] = this.values.cameraRotation;
       this.flyby.setPose(this.values.cameraPosition, yaw, pitch);
@@ -158,6 +165,9 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     // Resize only: drawing here, mid-way through a script's batch of attribute changes, would
     // show a frame with half of them applied (the next animation frame comes before paint).
     if (spec.property === 'pixelRatio') this.resizeCanvas();
+    // A shader failure is not final: the change may select a variant that compiles. The message
+    // stays up until a frame is drawn.
+    if (this.failed === 'shader') this.failed = null;
     this.requestRender();
   }
 
@@ -179,16 +189,15 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   }
 
   /**
-   * RGBA8 pixels of the last frame (no argument: exactly what is on screen) or of one pass,
-   * at the drawing-buffer size, top row first. Null while nothing can be drawn.
+   * RGBA8 pixels of the last frame (no argument: exactly what is on screen, read back from the
+   * element's canvas without drawing) or of one pass (drawn off screen from the last frame's
+   * state), at the drawing-buffer size, top row first. Null while nothing can be drawn.
    */
   capture(pass?: CapturePass): ImageData | null {
     if (!this.renderer || this.failed) return null;
-    let source: ReadbackSource = 'screen';
-    if (pass !== undefined) {
-      source = CAPTURE_SOURCES[pass as CapturePass] ?? 'final';
-      if (!(pass in CAPTURE_SOURCES)) warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
-    }
+    if (pass === undefined) return this.frames > 0 ? readCanvas(this.canvas) : null;
+    const source: ReadbackSource = CAPTURE_SOURCES[pass as CapturePass] ?? 'final';
+    if (!(pass in CAPTURE_SOURCES)) warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
     try {
       this.shared!.reserve(this.canvas.width, this.canvas.height);
       const px = this.renderer.read(source, this.lastState ?? this.frameState(performance.now()));
@@ -332,14 +341,21 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       return;
     }
     this.frames++;
+    if (!this.message.hidden) this.message.hidden = true; // drawn again after a shader failure
+    this.reportedShaderError = null;
     const last = (this.lastState ??= { ...state });
     Object.assign(last, state);
     this.lastPosition[0] = state.cameraPosition[0];
     this.lastPosition[1] = state.cameraPosition[1];
     this.lastPosition[2] = state.cameraPosition[2];
     last.cameraPosition = this.lastPosition;
-    const detail = structuredClone(report);
-    detail.frame = this.frames;
+    // One small frozen object per frame (the event is one anyway), its passes shared frozen
+    // records: listeners may keep it, and nothing later changes it. A deep copy per frame
+    // (structuredClone) is what it replaces.
+    const detail: FrameReport = Object.freeze({
+      frame: this.frames, time: report.time, width: report.width, height: report.height,
+      drawCalls: report.drawCalls, passes: report.passes,
+    });
     if (!this.readyFired) {
       this.readyFired = true;
       this.dispatchEvent(new CustomEvent('ready', { detail }));
@@ -431,10 +447,16 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private fail(type: ErrorType, error: unknown): void {
     const message = error instanceof Error ? error.message : String(error);
     this.failed = type;
-    if (type !== 'context-lost') this.disposeRenderer();
+    // The renderer stays after a shader failure: everything else in it works, and its program
+    // cache remembers the broken variant, so drawing the same state again fails without compiling.
+    if (type !== 'context-lost' && type !== 'shader') this.disposeRenderer();
     this.message.textContent = MESSAGES[type];
     this.message.hidden = false;
     this.canvas.hidden = type === 'webgl2-unavailable';
+    if (type === 'shader') {
+      if (error === this.reportedShaderError) return;
+      this.reportedShaderError = error;
+    }
     // A broken shader is a bug worth a console line (with the annotated source); a missing
     // WebGL2 or a lost context is a state of the machine, reported through the event only.
     if (type === 'shader') console.error(`${PREFIX} ${message}`);
@@ -453,8 +475,13 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private reflectCamera(): void {
     this.cameraDirty = false;
     const { position, yaw, pitch } = this.flyby.pose;
-    this.setAttribute('camera-position', `${position[0]} ${position[1]} ${position[2]}`);
-    this.setAttribute('camera-rotation', `${yaw} ${pitch}`);
+    this.writingBack = true;
+    try {
+      this.setAttribute('camera-position', `${position[0]} ${position[1]} ${position[2]}`);
+      this.setAttribute('camera-rotation', `${yaw} ${pitch}`);
+    } finally {
+      this.writingBack = false;
+    }
   }
 }
 

@@ -30,20 +30,10 @@ export function forwardFromYawPitch<T extends Float64Array | number[]>(out: T, y
 }
 
 /**
- * out = lookAt(position, position + forward, +Y). `scratch` (3 elements) holds the target.
+ * out = lookAt(0, forward, +Y): the view of a camera at the origin (camera-relative rendering:
+ * positions are made relative to the eye in float64 first). `scratch` (3 elements) holds forward.
  * Pitch is clamped, so forward is never parallel to up.
  */
-export function viewMatrix<T extends Float64Array | number[]>(
-  out: T, position: ReadonlyVec3, yaw: number, pitch: number, scratch: Float64Array,
-): T {
-  forwardFromYawPitch(scratch, yaw, pitch);
-  scratch[0] += position[0];
-  scratch[1] += position[1];
-  scratch[2] += position[2];
-  return mat4.lookAt(out as mat4, position, scratch, UP) as T;
-}
-
-/** Same as viewMatrix but for a camera at the origin (camera-relative rendering). */
 export function rotationOnlyView<T extends Float64Array | number[]>(
   out: T, yaw: number, pitch: number, scratch: Float64Array,
 ): T {

@@ -1,6 +1,5 @@
-// Reflection across a plane: points, directions and the mirrored view matrix (float64).
-import { mat4 } from 'gl-matrix';
-import type { ReadonlyMat4, ReadonlyVec3 } from 'gl-matrix';
+// Reflection across a plane: points, directions and the reflection matrix (float64).
+import type { ReadonlyVec3 } from 'gl-matrix';
 
 /** A plane [nx, ny, nz, d]: points x with n·x + d = 0; n must be unit length. */
 export type Plane = readonly [number, number, number, number] | Float64Array;
@@ -39,15 +38,4 @@ export function reflectionMatrix<T extends Out16>(out: T, plane: Plane): T {
   out[8] = -2 * a * c;    out[9] = -2 * b * c;    out[10] = 1 - 2 * c * c; out[11] = 0;
   out[12] = -2 * a * d;   out[13] = -2 * b * d;   out[14] = -2 * c * d;    out[15] = 1;
   return out;
-}
-
-/**
- * out = view × reflection: the view of the mirrored world from the real camera. A point on
- * the plane projects where it does in the real view, so the reflection texture lines up
- * with the screen; the determinant is −1, so front faces wind the other way.
- * `out` may alias `view`; `scratch` is a caller-owned 16-element temporary.
- */
-export function mirroredView<T extends Out16>(out: T, view: ReadonlyMat4, plane: Plane, scratch: Out16): T {
-  reflectionMatrix(scratch, plane);
-  return mat4.multiply(out as mat4, view, scratch as mat4) as T;
 }

@@ -8,50 +8,81 @@ import blitFrag from '../../shaders/blit.frag?raw';
 import lighting from '../../shaders/lighting.glsl?raw';
 import type { FresnelModel } from '../math/fresnel';
 import type { Shading } from './types';
-import { Program } from './gl/program';
+import { Program, ShaderError } from './gl/program';
 import type { ResourceCounter } from './gl/resource-counter';
 
 export type ClipMode = 'none' | 'clip-distance' | 'discard';
 
+function standardHeader(clip: ClipMode, shading: Shading): string[] {
+  const header =
+    clip === 'none' ? [] :
+    clip === 'clip-distance' ? ['#extension GL_ANGLE_clip_cull_distance : require', '#define CLIP_PLANE', '#define CLIP_DISTANCE'] :
+    ['#define CLIP_PLANE'];
+  header.push(`#define SHADING_${shading.toUpperCase()}`, lighting);
+  return header;
+}
+
+function glassHeader(model: FresnelModel, outputFresnel: boolean): string[] {
+  const header = [`#define FRESNEL_${model.toUpperCase()}`];
+  if (outputFresnel) header.push('#define OUTPUT_FRESNEL');
+  return header;
+}
+
 export class ProgramCache {
-  private readonly programs = new Map<string, Program>();
+  /** Every program compiled, in order (for size and dispose). */
+  private readonly all: Program[] = [];
+  // Found by their variant's parts, so a frame that compiles nothing builds no key, header or
+  // array: those are made only on a miss.
+  private standards: Partial<Record<ClipMode, Partial<Record<Shading, Program>>>> = {};
+  private glasses: Partial<Record<FresnelModel, { colour?: Program; fresnel?: Program }>> = {};
+  private blitProgram: Program | undefined;
+  /**
+   * Variants that failed to compile, by key: asked again (the same state drawn again), they throw
+   * the same error without compiling again. A new context means a new cache, so a restore retries.
+   */
+  private readonly broken = new Map<string, ShaderError>();
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter) {}
 
   get size(): number {
-    return this.programs.size;
+    return this.all.length;
   }
 
   standard(clip: ClipMode, shading: Shading): Program {
-    const header =
-      clip === 'none' ? [] :
-      clip === 'clip-distance' ? ['#extension GL_ANGLE_clip_cull_distance : require', '#define CLIP_PLANE', '#define CLIP_DISTANCE'] :
-      ['#define CLIP_PLANE'];
-    header.push(`#define SHADING_${shading.toUpperCase()}`, lighting);
-    return this.get(`standard:${clip}:${shading}`, standardVert, standardFrag, header);
+    return ((this.standards[clip] ??= {})[shading] ??=
+      this.build(`standard:${clip}:${shading}`, standardVert, standardFrag, standardHeader(clip, shading)));
   }
 
   glass(model: FresnelModel, outputFresnel: boolean): Program {
-    const header = [`#define FRESNEL_${model.toUpperCase()}`];
-    if (outputFresnel) header.push('#define OUTPUT_FRESNEL');
-    return this.get(`glass:${model}:${outputFresnel}`, glassVert, glassFrag, header);
+    const variants = (this.glasses[model] ??= {});
+    return outputFresnel
+      ? (variants.fresnel ??= this.build(`glass:${model}:true`, glassVert, glassFrag, glassHeader(model, true)))
+      : (variants.colour ??= this.build(`glass:${model}:false`, glassVert, glassFrag, glassHeader(model, false)));
   }
 
   blit(): Program {
-    return this.get('blit', blitVert, blitFrag, []);
+    return (this.blitProgram ??= this.build('blit', blitVert, blitFrag, []));
   }
 
-  private get(key: string, vert: string, frag: string, header: string[]): Program {
-    let p = this.programs.get(key);
-    if (!p) {
-      p = new Program(this.gl, this.counter, key, vert, frag, header);
-      this.programs.set(key, p);
+  private build(key: string, vert: string, frag: string, header: string[]): Program {
+    const known = this.broken.get(key);
+    if (known) throw known;
+    try {
+      const p = new Program(this.gl, this.counter, key, vert, frag, header);
+      this.all.push(p);
+      return p;
+    } catch (e) {
+      if (e instanceof ShaderError) this.broken.set(key, e);
+      throw e;
     }
-    return p;
   }
 
   dispose(): void {
-    for (const p of this.programs.values()) p.dispose();
-    this.programs.clear();
+    for (const p of this.all) p.dispose();
+    this.all.length = 0;
+    this.standards = {};
+    this.glasses = {};
+    this.blitProgram = undefined;
+    this.broken.clear();
   }
 }

@@ -5,6 +5,7 @@ import { RenderTarget } from './gl/render-target';
 import { MultisampleTarget } from './gl/multisample-target';
 import { SphereLod } from './sphere-lod';
 import { glassScreenRect, type ScreenRect } from './glass-bounds';
+import { reflectionScissor, reflectionTargetSide } from './reflection-scissor';
 import { findNonFinite } from './finite-check';
 import { maxTargetSize } from './gl/limits';
 import { ResourceCounter } from './gl/resource-counter';
@@ -20,7 +21,7 @@ import { flatMesh } from '../scene/geometry/flat';
 import { glassMesh } from '../scene/geometry/rectangle';
 import { proceduralTexture } from '../scene/procedural-texture';
 import { CUBE, TEXTURE_SIZE } from '../scene/default-scene';
-import type { FrameReport, FrameState, PassName, RenderStats, RenderView } from './types';
+import type { FrameReport, FrameState, PassName, PassReport, RenderStats, RenderView } from './types';
 
 export interface RendererOptions {
   /** Check gl.getError() after every frame and report through `onError` (tests and debugging). */
@@ -52,6 +53,31 @@ const SKIPPED_BY_VIEW: Record<RenderView, Partial<Record<PassName, string>>> = {
   fresnel: { reflection: 'debug-view fresnel (F needs no reflection)' },
 };
 
+type PassReports = Readonly<Record<PassName, Readonly<PassReport>>>;
+
+/** Frozen reports of the three passes given why each was skipped (absent: it ran). */
+function passReports(skipped: Partial<Record<PassName, string>>): PassReports {
+  const one = (p: PassName): Readonly<PassReport> =>
+    Object.freeze(skipped[p] === undefined ? { ran: true } : { ran: false, reason: skipped[p] });
+  return Object.freeze({ reflection: one('reflection'), scene: one('scene'), glass: one('glass') });
+}
+
+// Every frame's passes are one of these few shared, frozen records: a frame report kept by a
+// listener never changes, and none is built per frame.
+const PASSES_BY_VIEW = Object.fromEntries(
+  Object.entries(SKIPPED_BY_VIEW).map(([view, skipped]) => [view, passReports(skipped)]),
+) as Record<RenderView, PassReports>;
+/** The final view with the glass (and so the reflection) skipped, by reason; filled on first use. */
+const GLASS_SKIPPED = new Map<string, PassReports>();
+
+function setViewport(out: Viewport, x: number, y: number, width: number, height: number): Viewport {
+  out.x = x;
+  out.y = y;
+  out.width = width;
+  out.height = height;
+  return out;
+}
+
 export class Renderer {
   private readonly counter = new ResourceCounter();
   private readonly programs: ProgramCache;
@@ -76,12 +102,15 @@ export class Renderer {
   private readonly ctx: PassContext;
   private readonly report: FrameReport = {
     frame: 0, time: 0, width: 0, height: 0, drawCalls: 0,
-    passes: { reflection: { ran: false }, scene: { ran: false }, glass: { ran: false } },
+    passes: PASSES_BY_VIEW.final,
   };
   /** Why the final view needs neither reflection nor glass this frame, if it does not. */
   private glassSkipReason: string | undefined;
   private readonly glassRect: ScreenRect = { x0: 0, y0: 0, x1: 0, y1: 0, area: 0 };
   private readonly scissor: Viewport = { x: 0, y: 0, width: 0, height: 0 };
+  /** The viewports of this frame's drawing (filled in place: nothing is allocated per frame). */
+  private readonly full: Viewport = { x: 0, y: 0, width: 0, height: 0 };
+  private readonly tile: Viewport = { x: 0, y: 0, width: 0, height: 0 };
   /**
    * Skip the reflection and glass when the glass is not on screen, cull objects beyond the
    * glass from the reflection, scissor it to the glass (SPEC §7). Off only to measure savings.
@@ -119,7 +148,7 @@ export class Renderer {
     };
   }
 
-  /** Draws one frame of `state.view` to the canvas and returns its report (reused object). */
+  /** Draws one frame of `state.view` to the canvas and returns its report (reused object; its `passes` are frozen and shared). */
   render(state: FrameState): FrameReport {
     const drawCalls = this.draw(state, null);
     const r = this.report;
@@ -129,13 +158,15 @@ export class Renderer {
     r.width = state.width;
     r.height = state.height;
     r.drawCalls = drawCalls;
-    const skipped = SKIPPED_BY_VIEW[state.view];
     const glassSkip = state.view === 'final' ? this.glassSkipReason : undefined;
+    let passes = PASSES_BY_VIEW[state.view];
+    if (glassSkip !== undefined) {
+      passes = GLASS_SKIPPED.get(glassSkip) ?? passReports({ reflection: glassSkip, glass: glassSkip });
+      GLASS_SKIPPED.set(glassSkip, passes);
+    }
+    r.passes = passes;
     for (const p of PASSES) {
-      const reason = skipped[p] ?? (p === 'scene' ? undefined : glassSkip);
-      r.passes[p].ran = reason === undefined;
-      r.passes[p].reason = reason;
-      if (reason === undefined) this.counts.passesRun[p]++;
+      if (passes[p].ran) this.counts.passesRun[p]++;
       else this.counts.passesSkipped[p]++;
     }
     if (this.options.checks) this.checkErrors();
@@ -222,26 +253,17 @@ export class Renderer {
     }
     const scale = state.reflectionScale;
     const max = this.maxTargetSize;
-    this.reflection.setSize(
-      Math.max(1, Math.min(max, Math.round(state.width * scale))), Math.max(1, Math.min(max, Math.round(state.height * scale))),
-    );
+    this.reflection.setSize(reflectionTargetSide(state.width, scale, max), reflectionTargetSide(state.height, scale, max));
   }
 
   private samplesFor(state: FrameState): number {
     return Math.min(state.samples, this.maxSamples);
   }
 
-  /** The glass's screen rectangle in reflection texels, one texel wider for bilinear reads. */
+  /** The glass's screen rectangle in reflection texels (of the target as clamped, not as asked). */
   private reflectionScissor(): Viewport {
-    const s = this.ctx.state.reflectionScale;
-    const r = this.glassRect;
-    const { width, height } = this.reflection;
-    const x0 = Math.max(0, Math.floor(r.x0 * s) - 1);
-    const y0 = Math.max(0, Math.floor(r.y0 * s) - 1);
-    const x1 = Math.min(width, Math.ceil(r.x1 * s) + 1);
-    const y1 = Math.min(height, Math.ceil(r.y1 * s) + 1);
-    Object.assign(this.scissor, { x: x0, y: y0, width: Math.max(0, x1 - x0), height: Math.max(0, y1 - y0) });
-    return this.scissor;
+    const { width, height } = this.ctx.state;
+    return reflectionScissor(this.glassRect, width, height, this.reflection.width, this.reflection.height, this.scissor);
   }
 
   /**
@@ -274,7 +296,7 @@ export class Renderer {
 
   /** Draws `state.view` into `framebuffer`; returns the draw calls. */
   private drawView(state: FrameState, framebuffer: WebGLFramebuffer | null): number {
-    const full: Viewport = { x: 0, y: 0, width: state.width, height: state.height };
+    const full = setViewport(this.full, 0, 0, state.width, state.height);
     const ctx = this.ctx;
     switch (state.view) {
       case 'scene':
@@ -305,18 +327,23 @@ export class Renderer {
     return scenePass(this.ctx, true) + glassPass(this.ctx, this.reflection.color, true);
   }
 
-  /** Reflection | scene over fresnel | final, in the four quadrants. */
+  /**
+   * Reflection | scene over fresnel | final, in the four quadrants. On an odd size the right
+   * column and top row of tiles take the extra pixel, so no line between them is left unwritten.
+   */
   private drawTiles(framebuffer: WebGLFramebuffer | null, width: number, height: number): number {
     const ctx = this.ctx;
-    const w = Math.floor(width / 2);
-    const h = Math.floor(height / 2);
-    const top = height - h;
+    const left = Math.floor(width / 2);
+    const right = width - left;
+    const bottom = Math.floor(height / 2);
+    const top = height - bottom;
+    const t = this.tile;
     let n = this.runReflection();
-    n += this.blit(framebuffer, { x: 0, y: top, width: w, height: h });
-    beginTarget(this.gl, framebuffer, { x: width - w, y: top, width: w, height: h });
+    n += this.blit(framebuffer, setViewport(t, 0, bottom, left, top));
+    beginTarget(this.gl, framebuffer, setViewport(t, left, bottom, right, top));
     n += scenePass(ctx);
-    n += this.drawFresnel(framebuffer, { x: 0, y: 0, width: w, height: h });
-    beginTarget(this.gl, framebuffer, { x: width - w, y: 0, width: w, height: h });
+    n += this.drawFresnel(framebuffer, setViewport(t, 0, 0, left, bottom));
+    beginTarget(this.gl, framebuffer, setViewport(t, left, 0, right, bottom));
     n += scenePass(ctx) + glassPass(ctx, this.reflection.color);
     return n;
   }

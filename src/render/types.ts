@@ -36,9 +36,9 @@ export type ReflectionFormat = 'rgba8' | 'rgba16f';
 export type Shading = 'phong' | 'gouraud' | 'flat';
 
 export interface PassReport {
-  ran: boolean;
+  readonly ran: boolean;
   /** Why a pass did not run. */
-  reason?: string;
+  readonly reason?: string;
 }
 
 export interface FrameReport {
@@ -48,7 +48,7 @@ export interface FrameReport {
   time: number;
   width: number;
   height: number;
-  passes: Record<PassName, PassReport>;
+  passes: Readonly<Record<PassName, PassReport>>;
   drawCalls: number;
 }
 

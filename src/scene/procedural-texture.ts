@@ -19,11 +19,8 @@ export function texel(x: number, y: number): number {
   return v < 0 ? 0 : v > 255 ? 255 : v;
 }
 
-let cached: Uint8Array | undefined;
-
-/** RGBA8 pixels, row y = 0 first (the first row uploaded). Built once, shared, read-only. */
-export function proceduralTexture(): Uint8Array {
-  if (cached) return cached;
+/** RGBA8 pixels, row y = 0 first, built afresh (proceduralTexture() keeps one). */
+export function buildProceduralTexture(): Uint8Array {
   const n = TEXTURE_SIZE;
   const data = new Uint8Array(n * n * 4);
   for (let y = 0; y < n; y++) {
@@ -34,6 +31,12 @@ export function proceduralTexture(): Uint8Array {
       data[i + 3] = 255;
     }
   }
-  cached = data;
   return data;
+}
+
+let cached: Uint8Array | undefined;
+
+/** RGBA8 pixels, row y = 0 first (the first row uploaded). Built once, shared, read-only. */
+export function proceduralTexture(): Uint8Array {
+  return (cached ??= buildProceduralTexture());
 }

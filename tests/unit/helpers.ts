@@ -1,6 +1,6 @@
 // Shared assertions for the float64 math tests.
 import { expect } from 'vitest';
-import { vec4, type mat4 } from 'gl-matrix';
+import { mat4, vec4 } from 'gl-matrix';
 
 /** Every component of `actual` within `eps` of `expected` (same length). */
 export function expectClose(actual: ArrayLike<number>, expected: ArrayLike<number>, eps = 1e-12): void {
@@ -14,5 +14,15 @@ export function expectClose(actual: ArrayLike<number>, expected: ArrayLike<numbe
 export function apply(m: ArrayLike<number>, p: ArrayLike<number>): Float64Array {
   const out = new Float64Array(4);
   vec4.transformMat4(out as unknown as vec4, [p[0], p[1], p[2], 1], m as mat4);
+  return out;
+}
+
+/** SPEC §3's view matrix, lookAt(position, position + forward, +Y), for tests that need a whole camera. */
+export function lookAtView(position: readonly [number, number, number] | ArrayLike<number>, yaw: number, pitch: number): Float64Array {
+  const d = Math.PI / 180;
+  const f = [Math.cos(pitch * d) * Math.cos(yaw * d), Math.sin(pitch * d), Math.cos(pitch * d) * Math.sin(yaw * d)];
+  const eye = [position[0], position[1], position[2]] as [number, number, number];
+  const out = new Float64Array(16);
+  mat4.lookAt(out as unknown as mat4, eye, [eye[0] + f[0], eye[1] + f[1], eye[2] + f[2]], [0, 1, 0]);
   return out;
 }

@@ -2,7 +2,7 @@
 import { describe, expect, it } from 'vitest';
 import { apply, expectClose } from './helpers';
 import { mat4, vec4 } from 'gl-matrix';
-import { mirroredView, reflectDirection, reflectionMatrix, reflectPoint, signedDistance, type Plane } from '../../src/math/mirror';
+import { reflectDirection, reflectionMatrix, reflectPoint, signedDistance, type Plane } from '../../src/math/mirror';
 
 const Z0: Plane = [0, 0, 1, 0];
 // Unit normal (0.6, 0, 0.8), points with 0.6x + 0.8z = 2.
@@ -85,34 +85,4 @@ describe('reflectionMatrix', () => {
       expectClose(md.subarray(0, 3), reflectDirection(new Float64Array(3), p, plane));
     });
   }
-});
-
-describe('mirroredView', () => {
-  const view = mat4.lookAt(new Float64Array(16) as unknown as mat4, [3.6, 1.7, 5.2], [1, 0.5, -1], [0, 1, 0]);
-
-  for (const [name, plane] of [['z = 0', Z0], ['oblique', OBLIQUE]] as const) {
-    it(`${name}: a point on the plane lands where the real view puts it`, () => {
-      const mv = mirroredView(new Float64Array(16), view, plane, new Float64Array(16));
-      const onPlane = reflectPoint(new Float64Array(3), [0.7, 1.3, -0.4], plane); // midpoint of p and its mirror is on the plane
-      const mid = [(onPlane[0] + 0.7) / 2, (onPlane[1] + 1.3) / 2, (onPlane[2] - 0.4) / 2];
-      expect(signedDistance(plane, mid)).toBeCloseTo(0, 12);
-      expectClose(apply(mv, mid), apply(view, mid), 1e-12);
-    });
-
-    it(`${name}: mirroredView·p = view·reflectPoint(p)`, () => {
-      const mv = mirroredView(new Float64Array(16), view, plane, new Float64Array(16));
-      for (const p of [[-1, 1, 2.5], [1, 1, -1.5], [10, -3, 7]] as const) {
-        expectClose(apply(mv, p), apply(view, reflectPoint(new Float64Array(3), p, plane)), 1e-12);
-      }
-    });
-  }
-
-  it('works with out aliasing view, and its determinant is −1', () => {
-    const expected = mirroredView(new Float64Array(16), view, OBLIQUE, new Float64Array(16));
-    const v = Float64Array.from(view);
-    const r = mirroredView(v, v, OBLIQUE, new Float64Array(16));
-    expect(r).toBe(v);
-    expectClose(v, expected, 0);
-    expect(mat4.determinant(v as unknown as mat4)).toBeCloseTo(-1, 12);
-  });
 });

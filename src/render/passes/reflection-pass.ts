@@ -3,22 +3,27 @@
 // extension); an object whose bounds lie wholly beyond it is culled, not drawn.
 import { BACKGROUND, CUBE, GLASS, SPHERE } from '../../scene/default-scene';
 import { signedDistance } from '../../math/mirror';
-import { beginTarget, setLighting, setMatrices, type PassContext } from './pass-context';
+import { beginTarget, setLighting, setMatrices, type PassContext, type Viewport } from './pass-context';
 
 const CUBE_BOUND = (Math.sqrt(3) / 2) * CUBE.edge;
 const centre = new Float64Array(3);
+/** The whole target, filled in place each frame. */
+const full: Viewport = { x: 0, y: 0, width: 0, height: 0 };
 
 /** Returns the number of draw calls. */
 export function reflectionPass(ctx: PassContext, framebuffer: WebGLFramebuffer, width: number, height: number): number {
   const { gl, setup, meshes, clipExtension, scissor } = ctx;
-  const full = { x: 0, y: 0, width, height };
+  // First, before any state is set: a variant that fails to compile throws, and the element
+  // draws again later (another variant, a restored context) from clean state.
+  const program = ctx.programs.standard(clipExtension ? 'clip-distance' : 'discard', ctx.state.shading);
+  full.width = width;
+  full.height = height;
   // Scissored to the glass: only texels the glass pass can read are cleared and drawn.
   beginTarget(gl, framebuffer, full, BACKGROUND, scissor ?? full);
   if (scissor) {
     gl.enable(gl.SCISSOR_TEST);
     gl.scissor(scissor.x, scissor.y, scissor.width, scissor.height);
   }
-  const program = ctx.programs.standard(clipExtension ? 'clip-distance' : 'discard', ctx.state.shading);
   let draws = 0;
   gl.enable(gl.DEPTH_TEST);
   gl.enable(gl.CULL_FACE);

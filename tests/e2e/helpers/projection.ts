@@ -48,3 +48,19 @@ export function project(camera: Camera, p: Vec3, width: number, height: number):
 
 /** Mirror image of a point across the glass plane z = 0. */
 export const mirrorZ = (p: Vec3): Vec3 => [p[0], p[1], -p[2]];
+
+/**
+ * The direction (world space, not normalised) of the ray through the centre of pixel (x, y),
+ * counted from the top-left corner like ImageData: the inverse of project().
+ */
+export function pixelRay(camera: Camera, x: number, y: number, width: number, height: number): Vec3 {
+  const f = forward(camera.yaw, camera.pitch);
+  const right = normalize(cross(f, [0, 1, 0]));
+  const up = cross(right, f);
+  const t = Math.tan(((camera.fov ?? 60) * DEG) / 2);
+  const ndcX = ((x + 0.5) / width) * 2 - 1;
+  const ndcY = 1 - ((y + 0.5) / height) * 2;
+  const sx = ndcX * t * (width / height);
+  const sy = ndcY * t;
+  return [f[0] + sx * right[0] + sy * up[0], f[1] + sx * right[1] + sy * up[1], f[2] + sx * right[2] + sy * up[2]];
+}

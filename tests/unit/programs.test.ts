@@ -1,0 +1,89 @@
+// The shader-variant cache: each variant compiled once, on first use; a cached lookup (every
+// frame's) builds nothing.
+import { describe, expect, it } from 'vitest';
+import { ProgramCache, type ClipMode } from '../../src/render/programs';
+import { ResourceCounter } from '../../src/render/gl/resource-counter';
+import { ShaderError } from '../../src/render/gl/program';
+import { FRESNEL_MODELS } from '../../src/math/fresnel';
+import type { Shading } from '../../src/render/types';
+import { fakeGl } from './fake-gl';
+
+const CLIPS: ClipMode[] = ['none', 'clip-distance', 'discard'];
+const SHADINGS: Shading[] = ['phong', 'gouraud', 'flat'];
+
+describe('ProgramCache', () => {
+  it('compiles each variant once and returns the same program after', () => {
+    const { gl, calls } = fakeGl();
+    const cache = new ProgramCache(gl, new ResourceCounter());
+    const first = cache.standard('none', 'phong');
+    expect(cache.standard('none', 'phong')).toBe(first);
+    expect(cache.standard('discard', 'phong')).not.toBe(first);
+    expect(cache.glass('schlick', true)).toBe(cache.glass('schlick', true));
+    expect(cache.glass('schlick', true)).not.toBe(cache.glass('schlick', false));
+    expect(cache.blit()).toBe(cache.blit());
+    expect(cache.size).toBe(5);
+    expect(calls.get('linkProgram')).toBe(5);
+  });
+
+  it('a cached lookup builds no header, key or array (nothing allocated per frame)', () => {
+    const { gl } = fakeGl();
+    const cache = new ProgramCache(gl, new ResourceCounter());
+    const all = () => {
+      for (const c of CLIPS) for (const s of SHADINGS) cache.standard(c, s);
+      for (const m of FRESNEL_MODELS) for (const o of [false, true]) cache.glass(m, o);
+      cache.blit();
+    };
+    all(); // compiles every variant
+    const size = cache.size;
+    // What building a header takes: upper-casing a variant name, pushing #define lines, joining
+    // them. Counted by plain wrappers (a spy would itself push while recording).
+    const counts = { toUpperCase: 0, push: 0, join: 0 };
+    const originals = { toUpperCase: String.prototype.toUpperCase, push: Array.prototype.push, join: Array.prototype.join };
+    String.prototype.toUpperCase = function (this: string) { counts.toUpperCase++; return originals.toUpperCase.call(this); };
+    Array.prototype.push = function (this: unknown[], ...items: unknown[]) { counts.push++; return originals.push.apply(this, items); };
+    Array.prototype.join = function (this: unknown[], sep?: string) { counts.join++; return originals.join.call(this, sep); };
+    try {
+      all();
+    } finally {
+      Object.assign(String.prototype, { toUpperCase: originals.toUpperCase });
+      Object.assign(Array.prototype, { push: originals.push, join: originals.join });
+    }
+    expect(counts, 'calls during cached lookups').toEqual({ toUpperCase: 0, push: 0, join: 0 });
+    expect(cache.size).toBe(size);
+  });
+
+  it('dispose deletes every program and shader', () => {
+    const { gl } = fakeGl();
+    const counter = new ResourceCounter();
+    const cache = new ProgramCache(gl, counter);
+    cache.standard('clip-distance', 'flat');
+    cache.glass('exact', false);
+    expect(counter.counts.programs).toBe(2);
+    cache.dispose();
+    expect(cache.size).toBe(0);
+    expect(counter.total).toBe(0);
+    expect(cache.standard('clip-distance', 'flat')).toBeDefined(); // rebuilt on demand
+    expect(cache.size).toBe(1);
+  });
+});
+
+describe('ProgramCache with a variant that does not compile', () => {
+  it('throws the same error again without compiling again; other variants still compile; dispose forgets it', () => {
+    const fake = fakeGl();
+    fake.failCompile = (src) => src.includes('#define FRESNEL_SCHLICK');
+    const counter = new ResourceCounter();
+    const cache = new ProgramCache(fake.gl, counter);
+    let first: unknown;
+    try { cache.glass('schlick', false); } catch (e) { first = e; }
+    expect(first).toBeInstanceOf(ShaderError);
+    expect((first as Error).message).toMatch(/^glass-plane-scene: .*"glass:schlick:false" failed to compile/);
+    const compiles = fake.calls.get('compileShader');
+    expect(() => cache.glass('schlick', false)).toThrow(first as Error);
+    expect(fake.calls.get('compileShader'), 'not compiled again').toBe(compiles);
+    expect(cache.glass('exact', false)).toBeDefined();
+    expect(counter.counts.shaders, 'the failed shaders were deleted').toBe(2);
+    cache.dispose();
+    fake.failCompile = () => false;
+    expect(cache.glass('schlick', false)).toBeDefined();
+  });
+});
