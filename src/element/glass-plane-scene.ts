@@ -459,7 +459,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     }
     // A broken shader is a bug worth a console line (with the annotated source); a missing
     // WebGL2 or a lost context is a state of the machine, reported through the event only.
-    if (type === 'shader') console.error(`${PREFIX} ${message}`);
+    if (type === 'shader') console.error(message.startsWith(PREFIX) ? message : `${PREFIX} ${message}`);
     queueMicrotask(() => this.dispatchEvent(new CustomEvent('error', { detail: { type, message } })));
   }
 

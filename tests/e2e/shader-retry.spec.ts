@@ -60,6 +60,7 @@ test('after a shader error, an attribute that selects another variant draws agai
   const logged = consoleLog.take('error');
   expect(logged.length, 'one console error with the compile log').toBe(1);
   expect(logged[0]).toMatch(/^glass-plane-scene: .*injected by the test/s);
+  expect(logged[0], 'the prefix once, not twice').not.toMatch(/^glass-plane-scene: glass-plane-scene:/);
 
   // A change that keeps the broken variant: still failed, and not reported again.
   await page.evaluate((s) => document.querySelector(s)!.setAttribute('transparency', '0.7'), selector);
