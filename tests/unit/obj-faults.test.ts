@@ -125,6 +125,17 @@ describe('parseObj: never hangs', { timeout: 30_000 }, () => {
     expect(r.indices.length / 3).toBe(3 * Math.floor(big / 6) - 2);
   });
 
+  it('ear-clips a huge comb-shaped face only up to a work limit, then fans with a warning', () => {
+    // 200k teeth: full ear clipping tests every reflex corner per ear, ~10^10 steps.
+    const n = 200_000;
+    const lines = ['v 0 0 0', `v ${n} 0 0`];
+    for (let i = n; i >= 0; i--) lines.push(`v ${i} ${1 + (i % 2)} 0`);
+    const r = parseObj(`${lines.join('\n')}\nf ${Array.from({ length: n + 3 }, (_, k) => k + 1).join(' ')}\n`);
+    expect(r.indices.length / 3).toBe(n + 1);
+    expect(r.warnings.map((w) => w.line)).toEqual([n + 4]);
+    expect(r.warnings[0].message).toMatch(/too large to ear-clip/);
+  });
+
   it('reads a million line continuations', () => {
     const r = parseObj(`${TRI}f 1 2 ${'\\\n'.repeat(1_000_000)}3\nf 1 2 5\n`);
     expect([...r.indices]).toEqual([0, 1, 2]);

@@ -69,7 +69,9 @@ export function readObj(text: string): ObjRaw {
     for (;;) {
       sc.skipBlank();
       if (sc.atStatementEnd()) return bad ? -1 : n;
+      const before = sc.pos;
       const x = sc.readNumber();
+      if (sc.pos === before) sc.pos++; // never stall on a character no reader consumes
       if (!Number.isFinite(x)) bad = true;
       if (n < 8) values[n] = x;
       n++;
@@ -152,6 +154,10 @@ export function readObj(text: string): ObjRaw {
           t = sc.readIndexField();
           if (sc.skipSlash()) nn = sc.readIndexField();
         }
+        if (sc.pos === tokenStart) {
+          sc.pos++; // never stall on a character no reader consumes
+          if (fault === '') fault = `${shown(text.charAt(tokenStart))} is not a face corner`;
+        }
         if (fault !== '') continue;
         const vi = resolve(v, vCount), ti = t === 0 ? -1 : resolve(t, tCount), ni = nn === 0 ? -1 : resolve(nn, nCount);
         if (v !== v || t !== t || nn !== nn) fault = `${shown(text.slice(tokenStart, sc.tokenEnd()))} is not a face corner`;
@@ -170,7 +176,9 @@ export function readObj(text: string): ObjRaw {
         const start = corners.length / 3;
         for (let k = 0; k < face.length; k++) corners.push(face.data[k]);
         const firstTriangle = triangles.length / 3;
-        triangulate(positions.data, corners.data, start, count, triangles);
+        if (!triangulate(positions.data, corners.data, start, count, triangles)) {
+          warnings.add(line, `face of ${count} vertices too large to ear-clip in time; part of it drawn as a fan`);
+        }
         faces.push3(start, count, firstTriangle);
         faces.push(smooth);
         faces.push(material);

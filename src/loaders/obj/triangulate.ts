@@ -15,14 +15,15 @@ let reflexList = new Int32Array(64);
 
 /**
  * Appends the triangles of the polygon whose corners are `start .. start + count - 1` (global
- * corner numbers) to `out`. `vertexOf(k)` gives the position index of corner `start + k`.
+ * corner numbers) to `out`; corners hold (position, uv, normal) index triples. Returns false
+ * when the polygon was too large to ear-clip within the work limit and its rest was fanned.
  */
 export function triangulate(
   positions: Float64Array, corners: Int32Array, start: number, count: number, out: I32List,
-): void {
+): boolean {
   if (count === 3) {
     out.push3(start, start + 1, start + 2);
-    return;
+    return true;
   }
   // Newell normal: robust for non-planar faces, its length is twice the area.
   let nx = 0, ny = 0, nz = 0;
@@ -38,15 +39,15 @@ export function triangulate(
   }
   if (count === 4) {
     quad(positions, corners, start, nx, ny, nz, out);
-    return;
+    return true;
   }
   const ax = Math.abs(nx), ay = Math.abs(ny), az = Math.abs(nz);
   if (ax + ay + az === 0 || !Number.isFinite(ax + ay + az)) {
     fan(start, 0, count, out);
-    return;
+    return true;
   }
   project(positions, corners, start, count, ax, ay, az, nx, ny, nz);
-  earClip(start, count, out);
+  return earClip(start, count, out);
 }
 
 /** A quad has at most one reflex corner; the diagonal from it is the one that stays inside. */
@@ -89,7 +90,7 @@ function project(
   }
 }
 
-function earClip(s: number, count: number, out: I32List): void {
+function earClip(s: number, count: number, out: I32List): boolean {
   let reflexCount = 0;
   for (let k = 0; k < count; k++) {
     prev[k] = k === 0 ? count - 1 : k - 1;
@@ -104,10 +105,11 @@ function earClip(s: number, count: number, out: I32List): void {
   let i = 0;
   let sinceLastEar = 0;
   while (remaining > 3) {
-    // Convex from here on (no reflex corner left): a fan is exact and linear.
+    // Convex from here on (no reflex corner left): a fan is exact and linear. Past the work
+    // limit or with no ear at all (a self-intersecting polygon) a fan is the fallback.
     if (reflexCount === 0 || work > WORK_LIMIT || sinceLastEar > remaining) {
       fanRemaining(s, i, remaining, out);
-      return;
+      return work <= WORK_LIMIT;
     }
     const a = prev[i], c = next[i];
     let ear = state[i] === 0;
@@ -140,6 +142,7 @@ function earClip(s: number, count: number, out: I32List): void {
     i = a;
   }
   out.push3(s + prev[i], s + i, s + next[i]);
+  return true;
 }
 
 function cross(a: number, b: number, c: number): number {
