@@ -12,7 +12,7 @@ const OBJ_KEYWORDS = new Set([
 ]);
 
 export function sniffModel(input: string | Bytes): ModelFormat {
-  const sample = typeof input === 'string' ? input.slice(0, SAMPLE) : trimCut(decodeText(input, SAMPLE), input);
+  const sample = typeof input === 'string' ? input.slice(0, SAMPLE) : decodeText(input, SAMPLE);
   const text = sample.charCodeAt(0) === 0xfeff ? sample.slice(1) : sample;
   if (looksBinary(text)) return 'binary';
   const start = text.search(/\S/);
@@ -39,7 +39,8 @@ function isCount(token: string): boolean {
 
 /**
  * Many control characters (NUL above all) or undecodable bytes: an image, an archive, a
- * UTF-16 file without its BOM. Text files have none beyond tab, CR, LF and form feed.
+ * UTF-16 file without its BOM. Text files have none beyond tab, CR, LF and form feed. At
+ * least 2 are needed: the sample's end may cut one multi-byte character into a U+FFFD.
  */
 function looksBinary(text: string): boolean {
   let bad = 0;
@@ -48,11 +49,4 @@ function looksBinary(text: string): boolean {
     if ((c < 32 && c !== 9 && c !== 10 && c !== 12 && c !== 13) || c === 0x7f || c === 0xfffd) bad++;
   }
   return bad >= 2 && bad * 50 > text.length;
-}
-
-/** A sample cut in the middle of a multi-byte character ends in U+FFFD that is not the file's. */
-function trimCut(text: string, input: Bytes): string {
-  const length = input instanceof Uint8Array ? input.length : input.byteLength;
-  if (length <= SAMPLE) return text;
-  return text.replace(/\uFFFD{1,3}$/, '');
 }

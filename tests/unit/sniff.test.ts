@@ -40,7 +40,7 @@ describe('sniffModel', () => {
   });
 
   it('does not call a long UTF-8 file binary because the sample cuts a character', () => {
-    const text = `# ${'é'.repeat(3000)}\nv 0 0 0\n`;
+    const text = `#  ${'é'.repeat(3000)}\nv 0 0 0\n`; // 3 ASCII bytes: byte 4096 is mid-'é'
     const bytes = new TextEncoder().encode(text);
     expect(bytes.length).toBeGreaterThan(4096);
     expect(sniffModel(bytes)).toBe('obj');
