@@ -1,0 +1,27 @@
+// The OBJ worker's work as a plain function (testable without a worker): bytes in, result
+// out, with the list of buffers to transfer instead of copy.
+import { LoadError, type LoadErrorDetail } from './load-error';
+import { parseObjBytes, type ObjResult } from './obj';
+
+export interface ObjJobRequest {
+  id: number;
+  url: string;
+  bytes: ArrayBuffer;
+}
+
+export type ObjJobResponse =
+  | { id: number; ok: true; result: ObjResult }
+  | { id: number; ok: false; error: LoadErrorDetail };
+
+export function runObjJob(request: ObjJobRequest): { response: ObjJobResponse; transfer: ArrayBuffer[] } {
+  try {
+    const result = parseObjBytes(request.bytes, { url: request.url });
+    const arrays = [result.positions, result.normals, result.uvs, result.colors, result.indices];
+    const transfer = arrays.flatMap((a) => (a ? [a.buffer as ArrayBuffer] : []));
+    return { response: { id: request.id, ok: true, result }, transfer };
+  } catch (e) {
+    const error: LoadErrorDetail = e instanceof LoadError ? e.detail
+      : { type: 'load', url: request.url, message: e instanceof Error ? e.message : String(e) };
+    return { response: { id: request.id, ok: false, error }, transfer: [] };
+  }
+}

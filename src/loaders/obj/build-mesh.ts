@@ -1,0 +1,158 @@
+// Raw OBJ lists → indexed triangle mesh: one vertex per distinct (position, uv, normal source)
+// corner, generated normals per smoothing group, the index buffer sorted by material.
+import { F64List, I32List } from './growable';
+import { FACE_INTS, type ObjRaw } from './reader';
+import type { Bounds, DrawGroup, ObjResult } from './types';
+
+/** Key tag of a corner whose normal is generated smooth (`k` = smoothing slot)… */
+const SMOOTH = -1;
+/** …or flat (`k` = face number, so no other face shares the vertex). */
+const FLAT_FACE = -2;
+
+export function buildMesh(raw: ObjRaw): Omit<ObjResult, 'warnings'> {
+  const corners = raw.corners.data;
+  const faces = raw.faces.data;
+  const pos = raw.positions.data;
+  const faceCount = raw.faces.length / FACE_INTS;
+  const cornerOut = new Int32Array(raw.corners.length / 3);
+
+  // Vertices sharing a position are chained from head[position]; chains are a few long.
+  const head = new Int32Array(raw.positions.length / 3).fill(-1);
+  const outV = new I32List(), outT = new I32List(), outN = new I32List(), outK = new I32List();
+  const chain = new I32List(), rep = new I32List();
+  const acc = new F64List();
+  let outCount = 0;
+
+  for (let f = 0; f < faceCount; f++) {
+    const first = faces[f * FACE_INTS], count = faces[f * FACE_INTS + 1], smooth = faces[f * FACE_INTS + 3];
+    let nx = 0, ny = 0, nz = 0;
+    let j = 3 * corners[3 * (first + count - 1)];
+    for (let k = 0; k < count; k++) {
+      const i = 3 * corners[3 * (first + k)];
+      // Newell normal, length = twice the face's area: summing it weights faces by area.
+      nx += (pos[j + 1] - pos[i + 1]) * (pos[j + 2] + pos[i + 2]);
+      ny += (pos[j + 2] - pos[i + 2]) * (pos[j] + pos[i]);
+      nz += (pos[j] - pos[i]) * (pos[j + 1] + pos[i + 1]);
+      j = i;
+    }
+    for (let k = 0; k < count; k++) {
+      const c = first + k;
+      const v = corners[3 * c], t = corners[3 * c + 1];
+      let n = corners[3 * c + 2];
+      let key = 0;
+      if (n < 0) {
+        key = smooth >= 0 ? smooth : f;
+        n = smooth >= 0 ? SMOOTH : FLAT_FACE;
+      }
+      let o = head[v];
+      let shared = -1; // a vertex of the same position and smoothing group, maybe another uv
+      while (o >= 0) {
+        if (outN.data[o] === n && outK.data[o] === key) {
+          if (outT.data[o] === t) break;
+          if (shared < 0) shared = rep.data[o];
+        }
+        o = chain.data[o];
+      }
+      if (o < 0) {
+        o = outCount++;
+        outV.push(v);
+        outT.push(t);
+        outN.push(n);
+        outK.push(key);
+        chain.push(head[v]);
+        head[v] = o;
+        rep.push(shared >= 0 ? shared : o);
+        acc.push3(0, 0, 0);
+      }
+      cornerOut[c] = o;
+      if (n < 0) {
+        const r = 3 * rep.data[o];
+        acc.data[r] += nx;
+        acc.data[r + 1] += ny;
+        acc.data[r + 2] += nz;
+      }
+    }
+  }
+
+  const positions = new Float32Array(outCount * 3);
+  const normals = new Float32Array(outCount * 3);
+  const hasUv = outT.data.subarray(0, outCount).some((t) => t >= 0);
+  const uvs = hasUv ? new Float32Array(outCount * 2) : null;
+  const colors = raw.colors ? new Float32Array(outCount * 3) : null;
+  const min: [number, number, number] = [Infinity, Infinity, Infinity];
+  const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
+  for (let o = 0; o < outCount; o++) {
+    const p = 3 * outV.data[o];
+    for (let a = 0; a < 3; a++) {
+      const x = pos[p + a];
+      positions[3 * o + a] = x;
+      if (x < min[a]) min[a] = x;
+      if (x > max[a]) max[a] = x;
+    }
+    const n = outN.data[o];
+    if (n >= 0) writeUnit(normals, o, raw.normals.data, 3 * n);
+    else writeUnit(normals, o, acc.data, 3 * rep.data[o]);
+    if (uvs) {
+      const t = outT.data[o];
+      if (t >= 0) {
+        uvs[2 * o] = raw.uvs.data[2 * t];
+        uvs[2 * o + 1] = raw.uvs.data[2 * t + 1];
+      }
+    }
+    if (colors && raw.colors) colors.set(raw.colors.data.subarray(p, p + 3), 3 * o);
+  }
+  const bounds: Bounds = { min, max };
+  const { indices, groups } = indexByMaterial(raw, cornerOut, outCount);
+  return {
+    positions, normals, uvs, colors, indices, groups, bounds,
+    mtllibs: raw.mtllibs, objects: raw.objects, groupNames: raw.groupNames,
+  };
+}
+
+/** Unit vector of src[s..s+2] into normals[o]; +z for a zero vector (a degenerate face). */
+function writeUnit(normals: Float32Array, o: number, src: Float64Array, s: number): void {
+  const x = src[s], y = src[s + 1], z = src[s + 2];
+  const length = Math.sqrt(x * x + y * y + z * z);
+  if (length > 0 && Number.isFinite(length)) {
+    // `+ 0` turns −0 into 0, so equal normals are equal bit for bit.
+    normals[3 * o] = x / length + 0;
+    normals[3 * o + 1] = y / length + 0;
+    normals[3 * o + 2] = z / length + 0;
+  } else {
+    normals[3 * o + 2] = 1;
+  }
+}
+
+/** The index buffer with each material's triangles contiguous (file order within one). */
+function indexByMaterial(raw: ObjRaw, cornerOut: Int32Array, outCount: number): { indices: Uint16Array | Uint32Array; groups: DrawGroup[] } {
+  const faces = raw.faces.data;
+  const faceCount = raw.faces.length / FACE_INTS;
+  const triangleCount = raw.triangles.length / 3;
+  const materialCount = raw.materials.length;
+  const perMaterial = new Int32Array(materialCount);
+  const order: number[] = [];
+  for (let f = 0; f < faceCount; f++) {
+    const m = faces[f * FACE_INTS + 4];
+    if (perMaterial[m] === 0) order.push(m);
+    perMaterial[m] += faces[f * FACE_INTS + 1] - 2;
+  }
+  const offset = new Int32Array(materialCount);
+  const groups: DrawGroup[] = [];
+  let at = 0;
+  for (const m of order) {
+    offset[m] = at;
+    groups.push({ material: raw.materials[m], start: 3 * at, count: 3 * perMaterial[m] });
+    at += perMaterial[m];
+  }
+  const indices = outCount > 65535 ? new Uint32Array(3 * triangleCount) : new Uint16Array(3 * triangleCount);
+  const tris = raw.triangles.data;
+  for (let f = 0; f < faceCount; f++) {
+    const m = faces[f * FACE_INTS + 4];
+    const firstTriangle = faces[f * FACE_INTS + 2];
+    const n = faces[f * FACE_INTS + 1] - 2;
+    let w = 3 * offset[m];
+    for (let t = 3 * firstTriangle; t < 3 * (firstTriangle + n); t++) indices[w++] = cornerOut[tris[t]];
+    offset[m] += n;
+  }
+  return { indices, groups };
+}

@@ -1,0 +1,63 @@
+// Append-only typed arrays that double when full: no per-element objects, amortised O(1) pushes.
+
+export class F64List {
+  data: Float64Array;
+  length = 0;
+
+  constructor(capacity = 1024) {
+    this.data = new Float64Array(capacity);
+  }
+
+  push(x: number): void {
+    if (this.length === this.data.length) this.grow(this.length + 1);
+    this.data[this.length++] = x;
+  }
+
+  push3(x: number, y: number, z: number): void {
+    if (this.length + 3 > this.data.length) this.grow(this.length + 3);
+    const d = this.data;
+    d[this.length] = x;
+    d[this.length + 1] = y;
+    d[this.length + 2] = z;
+    this.length += 3;
+  }
+
+  private grow(needed: number): void {
+    const next = new Float64Array(Math.max(needed, this.data.length * 2));
+    next.set(this.data);
+    this.data = next;
+  }
+}
+
+export class I32List {
+  data: Int32Array;
+  length = 0;
+
+  constructor(capacity = 1024) {
+    this.data = new Int32Array(capacity);
+  }
+
+  push(x: number): void {
+    if (this.length === this.data.length) this.grow(this.length + 1);
+    this.data[this.length++] = x;
+  }
+
+  push3(x: number, y: number, z: number): void {
+    if (this.length + 3 > this.data.length) this.grow(this.length + 3);
+    const d = this.data;
+    d[this.length] = x;
+    d[this.length + 1] = y;
+    d[this.length + 2] = z;
+    this.length += 3;
+  }
+
+  clear(): void {
+    this.length = 0;
+  }
+
+  private grow(needed: number): void {
+    const next = new Int32Array(Math.max(needed, this.data.length * 2));
+    next.set(this.data);
+    this.data = next;
+  }
+}

@@ -1,0 +1,52 @@
+// Tells the model formats apart by content (SPEC §9: "sniffed from the content, not only the
+// extension"), from the first few KB: an OBJ, a course .byu, or something that is no model.
+import { decodeText, type Bytes } from './decode-text';
+
+export type ModelFormat = 'obj' | 'byu-mesh' | 'byu-bezier' | 'html' | 'binary' | 'unknown';
+
+const SAMPLE = 4096;
+
+/** Statements that open an OBJ file in practice (the geometry ones and the common headers). */
+const OBJ_KEYWORDS = new Set([
+  'v', 'vt', 'vn', 'vp', 'f', 'fo', 'l', 'p', 'o', 'g', 's', 'usemtl', 'mtllib', 'cstype', 'deg', 'curv', 'surf',
+]);
+
+export function sniffModel(input: string | Bytes): ModelFormat {
+  const sample = typeof input === 'string' ? input.slice(0, SAMPLE) : decodeText(input, SAMPLE);
+  const text = sample.charCodeAt(0) === 0xfeff ? sample.slice(1) : sample;
+  if (looksBinary(text)) return 'binary';
+  const start = text.search(/\S/);
+  if (start < 0) return 'unknown';
+  // No OBJ or .byu line starts with '<'; a dev server's 404 page, an XML error or an SVG does.
+  if (text.charCodeAt(start) === 0x3c) return 'html';
+
+  const lines = text.split(/\r\n|\r|\n/).map((l) => l.trim()).filter((l) => l !== '');
+  const first = lines[0].split(/\s+/);
+  if (first.length === 2 && first.every(isCount)) {
+    const second = lines.length > 1 ? lines[1].split(/\s+/) : [];
+    return second.length === 1 && Number.isFinite(Number(second[0])) ? 'byu-bezier' : 'byu-mesh';
+  }
+  for (const line of lines) {
+    if (line.startsWith('#')) continue;
+    return OBJ_KEYWORDS.has(line.split(/\s/, 1)[0]) ? 'obj' : 'unknown';
+  }
+  return 'obj'; // only comments: an OBJ header with nothing after it (the parser says so)
+}
+
+function isCount(token: string): boolean {
+  return /^\d+$/.test(token);
+}
+
+/**
+ * Many control characters (NUL above all) or undecodable bytes: an image, an archive, a
+ * UTF-16 file without its BOM. Text files have none beyond tab, CR, LF and form feed. At
+ * least 2 are needed: the sample's end may cut one multi-byte character into a U+FFFD.
+ */
+function looksBinary(text: string): boolean {
+  let bad = 0;
+  for (let i = 0; i < text.length; i++) {
+    const c = text.charCodeAt(i);
+    if ((c < 32 && c !== 9 && c !== 10 && c !== 12 && c !== 13) || c === 0x7f || c === 0xfffd) bad++;
+  }
+  return bad >= 2 && bad * 50 > text.length;
+}
