@@ -1,0 +1,69 @@
+// GL objects freed on removal (SPEC §8), counted from the context itself: every create*/delete*
+// call goes through a wrapped WebGL2RenderingContext (helpers/gl-census.ts). The element's own
+// `stats.resources` are zeroed when it disposes its renderer, so a resource its dispose() forgets
+// would still read 0 there; the census sees the object that was never deleted.
+import type { Page } from '@playwright/test';
+import { test, expect, mount, openPage, capture, setAttributes, type SceneElement } from './fixtures';
+import { countGlObjects, glCensus, liveTotal, type Census } from './helpers/gl-census';
+
+const SIZE = { width: 160, height: 90 };
+
+test.beforeEach(async ({ page }) => {
+  await page.addInitScript(countGlObjects);
+  await openPage(page);
+});
+
+/** Draws with every resource the renderer can own: MSAA targets, capture target, half-float reflection, more programs. */
+async function exercise(page: Page, selector: string): Promise<void> {
+  await capture(page, 'reflection', selector);
+  await capture(page, 'scene', selector);
+  await capture(page, undefined, selector);
+  await setAttributes(page, selector, { 'debug-view': 'passes', fresnel: 'classic', shading: 'gouraud' });
+  await setAttributes(page, selector, { 'debug-view': null, 'reflection-format': 'rgba16f', tessellation: 24 });
+  await capture(page, 'reflection', selector);
+}
+
+async function remove(page: Page, selector: string): Promise<Census> {
+  await page.evaluate((s) => document.querySelector(s)!.remove(), selector);
+  // One frame later, so nothing deferred is missed.
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r(null))));
+  return (await glCensus(page)).live;
+}
+
+const elementTotal = (page: Page, selector: string) =>
+  page.evaluate((s) => (document.querySelector(s) as SceneElement).stats.resources.total, selector);
+
+test('an element removed from the page deletes every GL object it created, by the context\'s own count', async ({ page }) => {
+  const before = await glCensus(page);
+  expect(liveTotal(before.live), 'no GL object before the first element').toBe(0);
+  const { selector } = await mount(page, { time: 1.25, samples: 4 }, SIZE);
+  await exercise(page, selector);
+  const { live, created } = await glCensus(page);
+  console.log(`live while mounted: ${JSON.stringify(live)}; created: ${JSON.stringify(created)}`);
+  // Not vacuous: the wrapper saw the renderer's objects, of every kind it owns…
+  for (const kind of ['buffers', 'textures', 'framebuffers', 'renderbuffers', 'vertexArrays', 'programs', 'shaders']) {
+    expect(live[kind], `live ${kind} while mounted`).toBeGreaterThan(0);
+  }
+  // …and agrees with the element's bookkeeping while it is alive.
+  expect(liveTotal(live), 'census = stats.resources.total while mounted').toBe(await elementTotal(page, selector));
+  const after = await remove(page, selector);
+  expect(after, 'live GL objects after removal, per kind').toEqual(before.live);
+});
+
+test('mount/remove cycles leave nothing behind; removing one of two elements frees only its own objects', async ({ page }) => {
+  for (let i = 0; i < 3; i++) {
+    const { selector } = await mount(page, { time: 1.25, samples: i % 2 ? 0 : 4 }, SIZE);
+    await capture(page, 'reflection', selector);
+    expect(liveTotal(await remove(page, selector)), `cycle ${i}: live GL objects after removal`).toBe(0);
+  }
+  const a = (await mount(page, { time: 1.25 }, SIZE)).selector;
+  const onlyA = liveTotal((await glCensus(page)).live);
+  const b = (await mount(page, { time: 2, samples: 0 }, SIZE)).selector;
+  await capture(page, undefined, b);
+  const bTotal = await elementTotal(page, b);
+  const afterB = await remove(page, b);
+  expect(liveTotal(afterB), 'after removing b: a\'s objects, no more, no fewer').toBe(onlyA);
+  expect(bTotal).toBeGreaterThan(0);
+  await capture(page, undefined, a);
+  expect(liveTotal(await remove(page, a)), 'after removing both').toBe(0);
+});
