@@ -1,4 +1,5 @@
 // The normative numbers of SPEC §3, in one place: renderer, reference and tests read them here.
+import type { Glass, Light, Material, Scene, Vec3 } from './scene';
 
 export const GLASS = {
   /** Plane z = 0 as [nx, ny, nz, d]; the normal points to +Z. */
@@ -38,3 +39,58 @@ export const MATERIAL = { ks: 0.5, shininess: 32 } as const;
 export const CAMERA = { near: 0.1, far: 100 } as const;
 
 export const TEXTURE_SIZE = 512;
+
+/** The material of SPEC §3's objects: Ka = Kd = albedo (⊙ tex), Ks = 0.5, shininess 32. */
+function defaultMaterial(albedo: Vec3): Material {
+  const ks = MATERIAL.ks;
+  return {
+    ambient: albedo, diffuse: albedo, specular: [ks, ks, ks], shininess: MATERIAL.shininess,
+    opacity: 1, texture: { kind: 'procedural' }, mapping: 'uv',
+  };
+}
+
+const NO_ROTATION: Vec3 = [0, 0, 0];
+const UNIT_SCALE: Vec3 = [1, 1, 1];
+
+/** The glass of SPEC §3 as a scene value. */
+export const DEFAULT_GLASS: Glass = {
+  center: [(GLASS.xMin + GLASS.xMax) / 2, (GLASS.yMin + GLASS.yMax) / 2, 0],
+  normal: [GLASS.plane[0], GLASS.plane[1], GLASS.plane[2]],
+  size: [GLASS.xMax - GLASS.xMin, GLASS.yMax - GLASS.yMin],
+};
+
+/** The light of SPEC §3 as a scene value. */
+export const DEFAULT_LIGHT: Light = {
+  kind: 'directional', vector: LIGHT.direction,
+  ambient: [LIGHT.ambient, LIGHT.ambient, LIGHT.ambient],
+  diffuse: [LIGHT.diffuse, LIGHT.diffuse, LIGHT.diffuse],
+  specular: [LIGHT.specular, LIGHT.specular, LIGHT.specular],
+};
+
+/**
+ * SPEC §3's scene as one value of the scene model: the cube at `cubeDistance` turning at
+ * `spin` rad/s, the sphere behind the glass, one directional light. With no children the
+ * element renders exactly this.
+ */
+export function defaultScene(cubeDistance: number, spin: number): Scene {
+  const half = CUBE.edge / 2;
+  return {
+    glass: DEFAULT_GLASS,
+    objects: [
+      {
+        geometry: { kind: 'box', size: CUBE.edge },
+        transform: { position: [CUBE.x, CUBE.y, cubeDistance], rotation: NO_ROTATION, scale: UNIT_SCALE, spin },
+        material: defaultMaterial(CUBE.albedo),
+        bounds: { center: [0, 0, 0], radius: Math.sqrt(3) * half },
+      },
+      {
+        geometry: { kind: 'sphere', radius: SPHERE.radius },
+        transform: { position: SPHERE.centre, rotation: NO_ROTATION, scale: UNIT_SCALE, spin: 0 },
+        material: defaultMaterial(SPHERE.albedo),
+        bounds: { center: [0, 0, 0], radius: SPHERE.radius },
+      },
+    ],
+    lights: [DEFAULT_LIGHT],
+    background: BACKGROUND,
+  };
+}

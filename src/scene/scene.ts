@@ -1,0 +1,88 @@
+// The scene model of SPEC §9: one plain value (no DOM, no GL) that every renderer and the
+// float64 reference read. The element builds it from its attributes and children; nothing
+// downstream knows what an object is called, only its geometry, transform and material.
+import type { MeshData } from './geometry/mesh-data';
+
+export type Vec3 = readonly [number, number, number];
+
+/** How texture coordinates are made (seed 001). */
+export type Mapping = 'uv' | 'triplanar' | 'cylindrical' | 'spherical';
+export const MAPPINGS: readonly Mapping[] = ['uv', 'triplanar', 'cylindrical', 'spherical'];
+
+/** The seeded checker of SPEC §3, or an image (by URL, decoded by whoever draws it). */
+export type TextureSource = { kind: 'procedural' } | { kind: 'image'; url: string };
+
+/** Blinn-Phong with seed 001's names; the texture multiplies Ka and Kd. */
+export interface Material {
+  ambient: Vec3;
+  diffuse: Vec3;
+  specular: Vec3;
+  shininess: number;
+  /** 1 − kt; below 1 the object is blended over what lies behind it (SPEC §9, §11). */
+  opacity: number;
+  texture: TextureSource;
+  mapping: Mapping;
+}
+
+/** Built-ins are centred on the origin before the transform. */
+export type Geometry =
+  /** Axis-aligned cube of edge `size`, each face UV-mapped over [0, 1]². */
+  | { kind: 'box'; size: number }
+  /** Sphere of `radius`, tessellated by whoever draws it (the GPU by its size on screen). */
+  | { kind: 'sphere'; radius: number }
+  /** Seed 004's y = e^(−x²)·e^(−z²) on x, z ∈ [−2, 2], `resolution` × `resolution` vertices. */
+  | { kind: 'gaussian'; resolution: number }
+  /** A loaded triangle mesh; `key` names its content (URL + options) for sharing. */
+  | { kind: 'mesh'; key: string; data: MeshData };
+
+export interface Transform {
+  position: Vec3;
+  /** Degrees, applied X, then Y, then Z. */
+  rotation: Vec3;
+  scale: Vec3;
+  /** Turning about the object's own Y axis, rad/s, applied before `rotation` (0: still). */
+  spin: number;
+}
+
+/** A sphere containing the geometry in its own (untransformed) frame: culling and LOD. */
+export interface Bounds {
+  center: Vec3;
+  radius: number;
+}
+
+export interface SceneObject {
+  geometry: Geometry;
+  transform: Transform;
+  material: Material;
+  bounds: Bounds;
+}
+
+export interface Light {
+  /** 'directional': `vector` points towards the light; 'point': `vector` is its position. */
+  kind: 'directional' | 'point';
+  vector: Vec3;
+  /** Ia, Id, Is (numbers above 1 allowed). */
+  ambient: Vec3;
+  diffuse: Vec3;
+  specular: Vec3;
+}
+
+export const MAX_LIGHTS = 4;
+
+export interface Glass {
+  center: Vec3;
+  /** Unit normal: the side it points to is "+". */
+  normal: Vec3;
+  /** Width along a = normalize(+Y × n) (+X when n ∥ Y), height along n × a. */
+  size: readonly [number, number];
+}
+
+export interface Scene {
+  /** Null: no glass, hence no glass pass and no reflection pass (a plain model viewer). */
+  glass: Glass | null;
+  objects: readonly SceneObject[];
+  /** 1..MAX_LIGHTS lights. */
+  lights: readonly Light[];
+  /** Clear colour, also of the reflection. */
+  background: Vec3;
+}
