@@ -54,10 +54,11 @@ import type { MeshData } from '../src/scene/geometry/mesh-data';
 import { boxMesh } from '../src/scene/geometry/box';
 import { sphereMesh } from '../src/scene/geometry/sphere';
 import { glassMesh } from '../src/scene/geometry/rectangle';
+import { glassFrame } from '../src/scene/glass-frame';
 import { proceduralTexture } from '../src/scene/procedural-texture';
 import { forwardFromYawPitch } from '../src/math/camera';
 import { signedDistance } from '../src/math/mirror';
-import { BACKGROUND, CAMERA, CUBE, GLASS, LIGHT, MATERIAL, SPHERE, TEXTURE_SIZE } from '../src/scene/default-scene';
+import { BACKGROUND, CAMERA, CUBE, DEFAULT_GLASS, GLASS, LIGHT, MATERIAL, SPHERE, TEXTURE_SIZE } from '../src/scene/default-scene';
 
 export interface PeerOptions {
   /** MSAA samples of the reflection and of the scene (0 = none). */
@@ -277,7 +278,7 @@ export class ThreePeer {
     this.sphere.position.copy(v3(SPHERE.centre));
     this.scene.add(this.cube, this.sphere);
 
-    this.glassGeometry = toGeometry(glassMesh());
+    this.glassGeometry = toGeometry(glassMesh(glassFrame(DEFAULT_GLASS)));
     this.reflector = this.createReflector(DEFAULT_OPTIONS);
     this.scene.add(this.reflector);
 

@@ -30,8 +30,8 @@ const MUTATIONS = [
     name: '1 reflection drawn from the unmirrored camera',
     edits: [{
       file: 'src/render/frame-setup.ts',
-      find: 'this.compose(this.mirrored[name], this.models[name], mirroredEye, this.mirroredViewProjection);',
-      replace: 'this.compose(this.mirrored[name], this.models[name], eye, this.viewProjection);',
+      find: 'this.compose(o.mirrored, o.model, mirroredEye, this.mirroredViewProjection);',
+      replace: 'this.compose(o.mirrored, o.model, eye, this.viewProjection);',
     }],
     tests: [PASSES],
   },
@@ -93,7 +93,7 @@ const MUTATIONS = [
   {
     name: '7b far-side clip removed (uClipPlane zeroed)',
     edits: [{
-      file: 'src/render/passes/reflection-pass.ts',
+      file: 'src/render/passes/draw-objects.ts',
       find: "gl.uniform4fv(program.location('uClipPlane'), setup.clipPlane);",
       replace: "gl.uniform4fv(program.location('uClipPlane'), [0, 0, 0, 0]);",
     }],

@@ -1,19 +1,22 @@
 #version 300 es
-// Ka = Kd = albedo ⊙ tex; the lighting factors come from blinnPhong (lighting.glsl),
-// per fragment (phong), interpolated from the vertices (gouraud), or one per triangle (flat).
+// colour = tex ⊙ Σ(Ka⊙Ia + Kd⊙Id·max(N·L, 0)) + Σ Ks⊙Is·(N·H)^n, alpha = opacity; the light sums
+// come from blinnPhong (lighting.glsl), per fragment (phong), interpolated from the vertices
+// (gouraud), or one per triangle (flat).
 precision highp float;
 
 uniform sampler2D uTexture;
-uniform vec3 uAlbedo;
+uniform float uOpacity;
 
 in vec2 vUv;
 #if defined(SHADING_PHONG)
 in vec3 vRelPos;
 in vec3 vNormal;
 #elif defined(SHADING_FLAT)
-flat in vec2 vLight;
+flat in vec3 vLightA;
+flat in vec3 vLightS;
 #else
-in vec2 vLight;
+in vec3 vLightA;
+in vec3 vLightS;
 #endif
 #if defined(CLIP_PLANE) && !defined(CLIP_DISTANCE)
 in float vClipDistance;
@@ -26,10 +29,11 @@ void main() {
   if (vClipDistance < 0.0) discard;
 #endif
 #if defined(SHADING_PHONG)
-  vec2 light = blinnPhong(normalize(vNormal), normalize(-vRelPos));
+  vec3 v = normalize(-vRelPos);
+  vec3 a, s;
+  blinnPhong(facing(normalize(vNormal), v), v, vRelPos, a, s);
 #else
-  vec2 light = vLight;
+  vec3 a = vLightA, s = vLightS;
 #endif
-  vec3 k = uAlbedo * texture(uTexture, vUv).rgb;
-  outColor = vec4(k * light.x + light.y, 1.0);
+  outColor = vec4(texture(uTexture, vUv).rgb * a + s, uOpacity);
 }

@@ -23,9 +23,11 @@ out vec2 vUv;
 out highp vec3 vRelPos;
 out vec3 vNormal;
 #elif defined(SHADING_FLAT)
-flat out vec2 vLight;
+flat out vec3 vLightA;
+flat out vec3 vLightS;
 #else
-out vec2 vLight;
+out vec3 vLightA;
+out vec3 vLightS;
 #endif
 #if defined(CLIP_PLANE) && !defined(CLIP_DISTANCE)
 out highp float vClipDistance;
@@ -39,9 +41,11 @@ void main() {
   vNormal = uNormalMatrix * aNormal;
 #elif defined(SHADING_FLAT)
   vec3 faceCentre = (uModelRelative * vec4(aCentroid, 1.0)).xyz; // "centroid" is a GLSL ES 3.0 keyword
-  vLight = blinnPhong(normalize(uNormalMatrix * aNormal), normalize(-faceCentre));
+  vec3 v = normalize(-faceCentre);
+  blinnPhong(facing(normalize(uNormalMatrix * aNormal), v), v, faceCentre, vLightA, vLightS);
 #else
-  vLight = blinnPhong(normalize(uNormalMatrix * aNormal), normalize(-rel.xyz));
+  vec3 v = normalize(-rel.xyz);
+  blinnPhong(facing(normalize(uNormalMatrix * aNormal), v), v, rel.xyz, vLightA, vLightS);
 #endif
 #ifdef CLIP_PLANE
   float clipDistance = dot(uClipPlane, vec4(rel.xyz, 1.0));

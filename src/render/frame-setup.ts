@@ -1,9 +1,12 @@
 // Per-frame matrices, composed in float64 on the CPU and stored as float32 for upload.
 // Positions are relative to the eye (camera-relative rendering) so far cameras keep precision.
+// Reads the scene value (SPEC §9): any number of objects, any glass placement, up to 4 lights.
 import { mat3, mat4 } from 'gl-matrix';
 import { projectionMatrix, rotationOnlyView } from '../math/camera';
 import { reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
-import { CAMERA, CUBE, GLASS, SPHERE } from '../scene/default-scene';
+import { CAMERA, DEFAULT_GLASS } from '../scene/default-scene';
+import { glassFrame, type GlassFrame } from '../scene/glass-frame';
+import { MAX_LIGHTS, type Glass, type Scene, type SceneObject } from '../scene/scene';
 import type { FrameState } from './types';
 
 /** What one draw of one object needs, for one eye (real or mirrored). */
@@ -13,23 +16,48 @@ export class DrawMatrices {
   readonly normal = new Float32Array(9);
 }
 
-export type ObjectName = 'cube' | 'sphere' | 'glass';
+/** One object's matrices for both eyes, and its bounding sphere in world space. */
+export class ObjectMatrices {
+  readonly model = new Float64Array(16);
+  readonly main = new DrawMatrices();
+  readonly mirrored = new DrawMatrices();
+  readonly center = new Float64Array(3);
+  radius = 0;
+}
+
+/** Light vectors (xyz; w 0 directional, 1 point) relative to one eye, for upload. */
+export class LightVectors {
+  readonly vectors = new Float32Array(4 * MAX_LIGHTS);
+}
 
 const f64 = (n: number) => new Float64Array(n);
 const TWO_PI = 2 * Math.PI;
-const OBJECTS: readonly ObjectName[] = ['cube', 'sphere', 'glass'];
+const DEG = Math.PI / 180;
 
 export class FrameSetup {
   readonly eye = f64(3);
   readonly mirroredEye = f64(3);
-  /** +1 when the eye is on the +Z side of the glass, −1 otherwise. */
+  /** +1 when the eye is on the side the glass normal points to, −1 otherwise. */
   side = 1;
   /** Signed distance of the eye from the glass plane. */
   eyeDistance = 0;
+  /** The glass this frame (the default one's frame when the scene has none). */
+  glass: GlassFrame = glassFrame(DEFAULT_GLASS);
+  /** Whether the scene has a glass at all. */
+  hasGlass = true;
   readonly projection = f64(16);
-  readonly models: Record<ObjectName, Float64Array> = { cube: f64(16), sphere: f64(16), glass: f64(16) };
-  readonly main: Record<ObjectName, DrawMatrices> = { cube: new DrawMatrices(), sphere: new DrawMatrices(), glass: new DrawMatrices() };
-  readonly mirrored: Record<ObjectName, DrawMatrices> = { cube: new DrawMatrices(), sphere: new DrawMatrices(), glass: new DrawMatrices() };
+  /** Per scene object, in scene order; grows with the scene, never shrinks. */
+  readonly objects: ObjectMatrices[] = [];
+  /** The glass mesh is built in world coordinates: its model matrix is the identity. */
+  readonly glassMain = new DrawMatrices();
+  readonly glassMirrored = new DrawMatrices();
+  readonly lightsMain = new LightVectors();
+  readonly lightsMirrored = new LightVectors();
+  /** Ia, Id, Is of each light (rgb), and how many lights there are. */
+  readonly lightAmbient = new Float32Array(3 * MAX_LIGHTS);
+  readonly lightDiffuse = new Float32Array(3 * MAX_LIGHTS);
+  readonly lightSpecular = new Float32Array(3 * MAX_LIGHTS);
+  lightCount = 0;
   /** The glass projected by the mirrored camera (for the reflection lookup). */
   readonly reflectionViewProjection = new Float32Array(16);
   /** Clip plane in mirrored-eye-relative coordinates; keeps the eye's side. */
@@ -44,48 +72,83 @@ export class FrameSetup {
   private readonly temp = f64(16);
   private readonly normal3 = f64(9);
   private readonly scratch3 = f64(3);
+  private readonly identity = mat4.identity(f64(16) as unknown as mat4) as unknown as Float64Array;
+  private lastGlass: Glass | null | undefined = undefined;
 
-  constructor() {
-    for (const m of [this.models.cube, this.models.sphere, this.models.glass]) mat4.identity(m as unknown as mat4);
-  }
-
-  update(s: FrameState): void {
+  update(s: FrameState, scene: Scene): void {
     const { eye, mirroredEye } = this;
+    if (scene.glass !== this.lastGlass) {
+      this.lastGlass = scene.glass;
+      this.hasGlass = scene.glass !== null;
+      this.glass = glassFrame(scene.glass ?? DEFAULT_GLASS);
+    }
+    const plane = this.glass.plane;
     eye[0] = s.cameraPosition[0]; eye[1] = s.cameraPosition[1]; eye[2] = s.cameraPosition[2];
-    reflectPoint(mirroredEye, eye, GLASS.plane);
-    this.eyeDistance = signedDistance(GLASS.plane, eye);
+    reflectPoint(mirroredEye, eye, plane);
+    this.eyeDistance = signedDistance(plane, eye);
     this.side = this.eyeDistance >= 0 ? 1 : -1;
 
     projectionMatrix(this.projection, s.fov, s.width / Math.max(1, s.height), CAMERA.near, CAMERA.far);
     rotationOnlyView(this.viewRotation, s.yaw, s.pitch, this.scratch3);
     mat4.multiply(this.viewProjection as unknown as mat4, this.projection as unknown as mat4, this.viewRotation as unknown as mat4);
     // Mirrored eye-relative: V·R·x = Vrot·L·(x − mirroredEye), L the plane's linear reflection.
-    reflectionMatrix(this.reflectionLinear, GLASS.plane);
+    reflectionMatrix(this.reflectionLinear, plane);
     this.reflectionLinear[12] = this.reflectionLinear[13] = this.reflectionLinear[14] = 0;
     mat4.multiply(this.mirroredViewProjection as unknown as mat4, this.viewProjection as unknown as mat4, this.reflectionLinear as unknown as mat4);
 
-    const cube = this.models.cube as unknown as mat4;
-    const t = this.scratch3;
-    t[0] = CUBE.x; t[1] = CUBE.y; t[2] = s.cubeDistance;
-    mat4.fromTranslation(cube, t);
-    // spin·time may overflow (both finite, product not): any angle is then as good as another.
-    const angle = s.spin * s.time;
-    mat4.rotateY(cube, cube, Number.isFinite(angle) ? angle % TWO_PI : 0);
-    const sphere = this.models.sphere as unknown as mat4;
-    mat4.fromTranslation(sphere, SPHERE.centre);
-
-    for (const name of OBJECTS) {
-      this.compose(this.main[name], this.models[name], eye, this.viewProjection);
-      this.compose(this.mirrored[name], this.models[name], mirroredEye, this.mirroredViewProjection);
+    const objects = scene.objects;
+    while (this.objects.length < objects.length) this.objects.push(new ObjectMatrices());
+    for (let i = 0; i < objects.length; i++) {
+      const o = this.objects[i];
+      this.modelMatrix(o, objects[i], s.time);
+      this.compose(o.main, o.model, eye, this.viewProjection);
+      this.compose(o.mirrored, o.model, mirroredEye, this.mirroredViewProjection);
     }
-    this.reflectionViewProjection.set(this.mirrored.glass.modelViewProjection);
+    this.compose(this.glassMain, this.identity, eye, this.viewProjection);
+    this.compose(this.glassMirrored, this.identity, mirroredEye, this.mirroredViewProjection);
+    this.reflectionViewProjection.set(this.glassMirrored.modelViewProjection);
+    lightVectors(this.lightsMain, scene, eye);
+    lightVectors(this.lightsMirrored, scene, mirroredEye);
+    this.lightCount = Math.min(scene.lights.length, MAX_LIGHTS);
+    for (let i = 0; i < this.lightCount; i++) {
+      const l = scene.lights[i];
+      for (let c = 0; c < 3; c++) {
+        this.lightAmbient[3 * i + c] = l.ambient[c];
+        this.lightDiffuse[3 * i + c] = l.diffuse[c];
+        this.lightSpecular[3 * i + c] = l.specular[c];
+      }
+    }
 
     // Keep what lies on the eye's side: side·(n·(rel + e′) + d) ≥ 0.
-    const p = GLASS.plane;
+    const p = plane;
     this.clipPlane[0] = this.side * p[0];
     this.clipPlane[1] = this.side * p[1];
     this.clipPlane[2] = this.side * p[2];
     this.clipPlane[3] = this.side * signedDistance(p, mirroredEye);
+  }
+
+  /** T · Rz·Ry·Rx · Ry(spin·t) · S, and the world bounding sphere. */
+  private modelMatrix(out: ObjectMatrices, object: SceneObject, time: number): void {
+    const m = out.model as unknown as mat4;
+    const { position, rotation, scale, spin } = object.transform;
+    mat4.fromTranslation(m, position);
+    if (rotation[2] !== 0) mat4.rotateZ(m, m, rotation[2] * DEG);
+    if (rotation[1] !== 0) mat4.rotateY(m, m, rotation[1] * DEG);
+    if (rotation[0] !== 0) mat4.rotateX(m, m, rotation[0] * DEG);
+    if (spin !== 0) {
+      // spin·time may overflow (both finite, product not): any angle is then as good as another.
+      const angle = spin * time;
+      mat4.rotateY(m, m, Number.isFinite(angle) ? angle % TWO_PI : 0);
+    }
+    if (scale[0] !== 1 || scale[1] !== 1 || scale[2] !== 1) mat4.scale(m, m, scale);
+    const c = object.bounds.center;
+    const t = this.scratch3;
+    t[0] = c[0]; t[1] = c[1]; t[2] = c[2];
+    const mm = out.model;
+    out.center[0] = mm[0] * t[0] + mm[4] * t[1] + mm[8] * t[2] + mm[12];
+    out.center[1] = mm[1] * t[0] + mm[5] * t[1] + mm[9] * t[2] + mm[13];
+    out.center[2] = mm[2] * t[0] + mm[6] * t[1] + mm[10] * t[2] + mm[14];
+    out.radius = object.bounds.radius * Math.max(Math.abs(scale[0]), Math.abs(scale[1]), Math.abs(scale[2]));
   }
 
   private compose(out: DrawMatrices, model: Float64Array, eye: Float64Array, viewProjection: Float64Array): void {
@@ -97,5 +160,22 @@ export class FrameSetup {
     out.modelViewProjection.set(this.temp);
     mat3.normalFromMat4(this.normal3 as unknown as mat3, model as unknown as mat4);
     out.normal.set(this.normal3);
+  }
+}
+
+/** Directional: the unit vector towards the light (w 0). Point: its position relative to `eye` (w 1). */
+function lightVectors(out: LightVectors, scene: Scene, eye: Float64Array): void {
+  const v = out.vectors;
+  v.fill(0);
+  const n = Math.min(scene.lights.length, MAX_LIGHTS);
+  for (let i = 0; i < n; i++) {
+    const l = scene.lights[i];
+    const [x, y, z] = l.vector;
+    if (l.kind === 'point') {
+      v[4 * i] = x - eye[0]; v[4 * i + 1] = y - eye[1]; v[4 * i + 2] = z - eye[2]; v[4 * i + 3] = 1;
+    } else {
+      const len = Math.hypot(x, y, z) || 1;
+      v[4 * i] = x / len; v[4 * i + 1] = y / len; v[4 * i + 2] = z / len;
+    }
   }
 }

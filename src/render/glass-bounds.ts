@@ -1,7 +1,7 @@
 // Where the glass lands on screen: its rectangle clipped to the view frustum in clip space
 // (Sutherland–Hodgman, float64), as a pixel bounding box and an area. The reflection pass is
 // skipped when the area is nil (off screen or edge-on) and scissored to the box otherwise.
-import { GLASS } from '../scene/default-scene';
+import type { Vec3 } from '../scene/scene';
 
 export interface ScreenRect {
   /** Pixel bounds, origin bottom-left, x0 ≤ x < x1. Empty when x1 ≤ x0 or y1 ≤ y0. */
@@ -16,8 +16,6 @@ export interface ScreenRect {
 const MAX = 4 + 6; // a quadrilateral clipped by six planes has at most 10 vertices
 let a = new Float64Array(MAX * 4);
 let b = new Float64Array(MAX * 4);
-const XS = [GLASS.xMin, GLASS.xMax, GLASS.xMax, GLASS.xMin];
-const YS = [GLASS.yMin, GLASS.yMin, GLASS.yMax, GLASS.yMax];
 const SIGNS = [1, -1];
 
 /** Clips the polygon in `src` (n vertices, xyzw) by the plane dot(k, v) ≥ 0 into `dst`. */
@@ -39,14 +37,16 @@ function clip(src: Float64Array, n: number, dst: Float64Array, axis: number, sig
 
 /**
  * `viewProjectionRelative` maps eye-relative world points to clip space (float64);
- * `eye` is the camera position. Writes the glass's screen rectangle into `out`.
+ * `eye` is the camera position, `corners` the glass's. Writes its screen rectangle into `out`.
  */
 export function glassScreenRect(
   viewProjectionRelative: Float64Array, eye: Float64Array, width: number, height: number, out: ScreenRect,
+  corners: readonly Vec3[],
 ): ScreenRect {
   const m = viewProjectionRelative;
   for (let i = 0; i < 4; i++) {
-    const x = XS[i] - eye[0], y = YS[i] - eye[1], z = 0 - eye[2];
+    const c = corners[i];
+    const x = c[0] - eye[0], y = c[1] - eye[1], z = c[2] - eye[2];
     for (let r = 0; r < 4; r++) a[i * 4 + r] = m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r];
   }
   let n = 4;

@@ -13,12 +13,14 @@ import type { ResourceCounter } from './gl/resource-counter';
 
 export type ClipMode = 'none' | 'clip-distance' | 'discard';
 
-function standardHeader(clip: ClipMode, shading: Shading): string[] {
-  const header =
+function standardHeader(clip: ClipMode, shading: Shading, twoSided: boolean): string[] {
+  const header: string[] =
     clip === 'none' ? [] :
     clip === 'clip-distance' ? ['#extension GL_ANGLE_clip_cull_distance : require', '#define CLIP_PLANE', '#define CLIP_DISTANCE'] :
     ['#define CLIP_PLANE'];
-  header.push(`#define SHADING_${shading.toUpperCase()}`, lighting);
+  header.push(`#define SHADING_${shading.toUpperCase()}`);
+  if (twoSided) header.push('#define TWO_SIDED');
+  header.push(lighting);
   return header;
 }
 
@@ -33,7 +35,8 @@ export class ProgramCache {
   private readonly all: Program[] = [];
   // Found by their variant's parts, so a frame that compiles nothing builds no key, header or
   // array: those are made only on a miss.
-  private standards: Partial<Record<ClipMode, Partial<Record<Shading, Program>>>> = {};
+  /** [clip][shading][one-sided 0 | two-sided 1] */
+  private standards: Partial<Record<ClipMode, Partial<Record<Shading, [Program?, Program?]>>>> = {};
   private glasses: Partial<Record<FresnelModel, { colour?: Program; fresnel?: Program }>> = {};
   private blitProgram: Program | undefined;
   /**
@@ -48,9 +51,13 @@ export class ProgramCache {
     return this.all.length;
   }
 
-  standard(clip: ClipMode, shading: Shading): Program {
-    return ((this.standards[clip] ??= {})[shading] ??=
-      this.build(`standard:${clip}:${shading}`, standardVert, standardFrag, standardHeader(clip, shading)));
+  /** `twoSided`: lit on the side facing the viewer (meshes from files, SPEC §9). */
+  standard(clip: ClipMode, shading: Shading, twoSided = false): Program {
+    const sides = ((this.standards[clip] ??= {})[shading] ??= []);
+    const i = twoSided ? 1 : 0;
+    return (sides[i] ??= this.build(
+      `standard:${clip}:${shading}${twoSided ? ':two-sided' : ''}`, standardVert, standardFrag, standardHeader(clip, shading, twoSided),
+    ));
   }
 
   glass(model: FresnelModel, outputFresnel: boolean): Program {

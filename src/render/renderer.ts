@@ -3,7 +3,7 @@
 import { Mesh } from './gl/mesh';
 import { RenderTarget } from './gl/render-target';
 import { MultisampleTarget } from './gl/multisample-target';
-import { SphereLod } from './sphere-lod';
+import { ObjectMeshes } from './object-meshes';
 import { glassScreenRect, type ScreenRect } from './glass-bounds';
 import { reflectionScissor, reflectionTargetSide } from './reflection-scissor';
 import { findNonFinite } from './finite-check';
@@ -16,11 +16,11 @@ import { beginTarget, type PassContext, type Viewport } from './passes/pass-cont
 import { reflectionPass } from './passes/reflection-pass';
 import { scenePass } from './passes/scene-pass';
 import { glassPass } from './passes/glass-pass';
-import { boxMesh } from '../scene/geometry/box';
-import { flatMesh } from '../scene/geometry/flat';
 import { glassMesh } from '../scene/geometry/rectangle';
 import { proceduralTexture } from '../scene/procedural-texture';
-import { CUBE, TEXTURE_SIZE } from '../scene/default-scene';
+import { defaultScene, TEXTURE_SIZE } from '../scene/default-scene';
+import type { GlassFrame } from '../scene/glass-frame';
+import type { Scene } from '../scene/scene';
 import type { FrameReport, FrameState, PassName, PassReport, RenderStats, RenderView } from './types';
 
 export interface RendererOptions {
@@ -81,17 +81,18 @@ function setViewport(out: Viewport, x: number, y: number, width: number, height:
 export class Renderer {
   private readonly counter = new ResourceCounter();
   private readonly programs: ProgramCache;
-  private readonly meshes: PassContext['meshes'];
+  private readonly objectMeshes: ObjectMeshes;
+  private glassMesh: Mesh;
+  /** The glass frame `glassMesh` was built for. */
+  private glassMeshFrame: GlassFrame | null = null;
+  /** SPEC §3's scene for callers that pass none (the bench, tests), rebuilt only when it changes. */
+  private defaultScene: { cubeDistance: number; spin: number; scene: Scene } | null = null;
   private readonly texture: Texture;
   private reflection: RenderTarget;
   private captureTarget: RenderTarget | null = null;
   /** Multisampled stand-ins, created only when `samples` > 0. */
   private reflectionMsaa: MultisampleTarget | null = null;
   private mainMsaa: MultisampleTarget | null = null;
-  private readonly sphere: SphereLod;
-  /** The cube as smooth (per-vertex normal) and, once flat shading is asked for, per-face mesh. */
-  private readonly cubeSmooth: Mesh;
-  private cubeFlat: Mesh | null = null;
   private readonly maxSamples: number;
   /** Can the context render to RGBA16F (EXT_color_buffer_float)? */
   private readonly canHalfFloat: boolean;
@@ -125,13 +126,9 @@ export class Renderer {
   constructor(readonly gl: WebGL2RenderingContext, private readonly options: RendererOptions = {}) {
     const c = this.counter;
     this.programs = new ProgramCache(gl, c);
-    this.sphere = new SphereLod(gl, c);
-    this.cubeSmooth = new Mesh(gl, c, boxMesh(CUBE.edge));
-    this.meshes = {
-      cube: this.cubeSmooth,
-      sphere: null as unknown as Mesh, // chosen per frame by the sphere's LOD
-      glass: new Mesh(gl, c, glassMesh()),
-    };
+    this.objectMeshes = new ObjectMeshes(gl, c);
+    this.glassMesh = new Mesh(gl, c, glassMesh(this.setup.glass));
+    this.glassMeshFrame = this.setup.glass;
     this.maxSamples = gl.getParameter(gl.MAX_SAMPLES) as number;
     this.maxTargetSize = maxTargetSize(gl);
     this.texture = new Texture(gl, c, { width: TEXTURE_SIZE, height: TEXTURE_SIZE, data: proceduralTexture(), mipmap: true, repeat: true });
@@ -140,8 +137,8 @@ export class Renderer {
     this.blitVao = gl.createVertexArray()!;
     c.add('vertexArrays');
     this.ctx = {
-      gl, programs: this.programs, meshes: this.meshes, texture: this.texture, setup: this.setup,
-      state: undefined as unknown as FrameState,
+      gl, programs: this.programs, objectMeshes: this.objectMeshes, glassMesh: this.glassMesh, texture: this.texture,
+      setup: this.setup, state: undefined as unknown as FrameState, scene: undefined as unknown as Scene,
       clipExtension: gl.getExtension('WEBGL_clip_cull_distance') as { CLIP_DISTANCE0_WEBGL: number } | null,
       cull: true,
       scissor: null,
@@ -149,7 +146,8 @@ export class Renderer {
   }
 
   /** Draws one frame of `state.view` to the canvas and returns its report (reused object; its `passes` are frozen and shared). */
-  render(state: FrameState): FrameReport {
+  render(state: FrameState, scene?: Scene): FrameReport {
+    this.ctx.scene = scene ?? this.defaultSceneFor(state);
     const drawCalls = this.draw(state, null);
     const r = this.report;
     this.counts.frames++;
@@ -177,7 +175,8 @@ export class Renderer {
    * Pixels of `state` as drawn: 'screen' redraws the canvas and reads it back (the drawing
    * buffer is not preserved between frames); the others draw one pass off screen.
    */
-  read(source: ReadbackSource, state: FrameState): Pixels {
+  read(source: ReadbackSource, state: FrameState, scene?: Scene): Pixels {
+    this.ctx.scene = scene ?? this.defaultSceneFor(state);
     const gl = this.gl;
     if (source === 'screen') {
       this.draw(state, null);
@@ -199,7 +198,7 @@ export class Renderer {
     return {
       frames: this.counts.frames,
       programs: this.programs.size,
-      sphereSegments: this.sphere.segments,
+      sphereSegments: this.objectMeshes.sphereSegments,
       passesRun: { ...this.counts.passesRun },
       passesSkipped: { ...this.counts.passesSkipped },
       drawCalls: this.report.drawCalls,
@@ -210,14 +209,11 @@ export class Renderer {
   dispose(): void {
     const gl = this.gl;
     this.programs.dispose();
-    this.cubeSmooth.dispose();
-    this.cubeFlat?.dispose();
-    this.cubeFlat = null;
-    this.sphere.dispose();
+    this.objectMeshes.dispose();
     this.reflectionMsaa?.dispose();
     this.mainMsaa?.dispose();
     this.reflectionMsaa = this.mainMsaa = null;
-    this.meshes.glass.dispose();
+    this.glassMesh.dispose();
     this.texture.dispose();
     this.reflection.dispose();
     this.captureTarget?.dispose();
@@ -228,17 +224,22 @@ export class Renderer {
 
   private prepare(state: FrameState): void {
     this.ctx.state = state;
-    this.setup.update(state);
+    const scene = this.ctx.scene;
+    this.setup.update(state, scene);
+    this.objectMeshes.trim(scene.objects.length);
+    if (this.setup.glass !== this.glassMeshFrame) {
+      this.glassMesh.dispose();
+      this.glassMesh = this.ctx.glassMesh = new Mesh(this.gl, this.counter, glassMesh(this.setup.glass));
+      this.glassMeshFrame = this.setup.glass;
+    }
     if (this.options.checks) this.checkFinite(state);
-    const rect = glassScreenRect(this.setup.viewProjection, this.setup.eye, state.width, state.height, this.glassRect);
-    this.glassSkipReason = !this.optimize ? undefined
+    const rect = glassScreenRect(this.setup.viewProjection, this.setup.eye, state.width, state.height, this.glassRect, this.setup.glass.corners);
+    this.glassSkipReason = !this.setup.hasGlass ? 'no glass'
+      : !this.optimize ? undefined
       : rect.x1 <= rect.x0 || rect.y1 <= rect.y0 ? 'glass off screen'
       : rect.area < MIN_GLASS_AREA ? (Math.abs(this.setup.eyeDistance) < EDGE_ON_DISTANCE ? 'glass edge-on' : 'glass too small')
       : undefined;
     this.ctx.cull = this.optimize;
-    this.meshes.sphere = this.sphere.update(state);
-    this.meshes.cube = state.shading !== 'flat' ? this.cubeSmooth
-      : (this.cubeFlat ??= new Mesh(this.gl, this.counter, flatMesh(boxMesh(CUBE.edge))));
     // Clamped like the canvas: the glass reads it with normalised coordinates, so a smaller
     // target still lines up.
     // rgba16f: at grazing incidence F nears 1 and an 8-bit reflection's rounding shows through
@@ -254,6 +255,13 @@ export class Renderer {
     const scale = state.reflectionScale;
     const max = this.maxTargetSize;
     this.reflection.setSize(reflectionTargetSide(state.width, scale, max), reflectionTargetSide(state.height, scale, max));
+  }
+
+  private defaultSceneFor(state: FrameState): Scene {
+    const d = this.defaultScene;
+    if (d && Object.is(d.cubeDistance, state.cubeDistance) && Object.is(d.spin, state.spin)) return d.scene;
+    this.defaultScene = { cubeDistance: state.cubeDistance, spin: state.spin, scene: defaultScene(state.cubeDistance, state.spin) };
+    return this.defaultScene.scene;
   }
 
   private samplesFor(state: FrameState): number {
@@ -300,7 +308,7 @@ export class Renderer {
     const ctx = this.ctx;
     switch (state.view) {
       case 'scene':
-        beginTarget(this.gl, framebuffer, full);
+        beginTarget(this.gl, framebuffer, full, this.ctx.scene.background);
         return scenePass(ctx);
       case 'fresnel':
         return this.drawFresnel(framebuffer, full);
@@ -312,11 +320,11 @@ export class Renderer {
         return this.drawTiles(framebuffer, state.width, state.height);
       default: {
         if (this.glassSkipReason !== undefined) {
-          beginTarget(this.gl, framebuffer, full);
+          beginTarget(this.gl, framebuffer, full, this.ctx.scene.background);
           return scenePass(ctx);
         }
         const n = this.runReflection(true);
-        beginTarget(this.gl, framebuffer, full);
+        beginTarget(this.gl, framebuffer, full, this.ctx.scene.background);
         return n + scenePass(ctx) + glassPass(ctx, this.reflection.color);
       }
     }
@@ -340,17 +348,17 @@ export class Renderer {
     const t = this.tile;
     let n = this.runReflection();
     n += this.blit(framebuffer, setViewport(t, 0, bottom, left, top));
-    beginTarget(this.gl, framebuffer, setViewport(t, left, bottom, right, top));
+    beginTarget(this.gl, framebuffer, setViewport(t, left, bottom, right, top), this.ctx.scene.background);
     n += scenePass(ctx);
     n += this.drawFresnel(framebuffer, setViewport(t, 0, 0, left, bottom));
-    beginTarget(this.gl, framebuffer, setViewport(t, left, 0, right, bottom));
+    beginTarget(this.gl, framebuffer, setViewport(t, left, 0, right, bottom), this.ctx.scene.background);
     n += scenePass(ctx) + glassPass(ctx, this.reflection.color);
     return n;
   }
 
   private blit(framebuffer: WebGLFramebuffer | null, vp: Viewport): number {
     const gl = this.gl;
-    beginTarget(gl, framebuffer, vp);
+    beginTarget(gl, framebuffer, vp, this.ctx.scene.background);
     const p = this.programs.blit();
     p.use();
     gl.uniform1i(p.location('uSource'), 0);
@@ -384,7 +392,7 @@ export class Renderer {
   }
 
   private checkFinite(state: FrameState): void {
-    const bad = findNonFinite(this.setup, state);
+    const bad = findNonFinite(this.setup, state, this.ctx.scene.objects.length);
     if (bad) console.error(`glass-plane-scene: non-finite uniform ${bad} in frame ${this.counts.frames + 1}`);
   }
 

@@ -1,10 +1,9 @@
-// The sphere's mesh at the tessellation asked for, or at 'auto': enough segments that the
+// A sphere's mesh at the tessellation asked for, or at 'auto': enough segments that the
 // silhouette error r(1 − cos(π/N)) stays under a quarter pixel at its current size on screen.
 import { Mesh } from './gl/mesh';
 import type { ResourceCounter } from './gl/resource-counter';
 import { segmentsForScreenRadius, sphereMesh } from '../scene/geometry/sphere';
 import { flatMesh } from '../scene/geometry/flat';
-import { SPHERE } from '../scene/default-scene';
 import type { FrameState } from './types';
 
 const DEG = Math.PI / 180;
@@ -16,15 +15,17 @@ const DEG = Math.PI / 180;
  */
 export const AUTO_SILHOUETTE_ERROR_PX = 0.25;
 
-/** Radius in pixels of the sphere seen from `state`'s camera (its largest on-screen extent). */
-export function sphereScreenRadius(state: FrameState): number {
+/**
+ * Radius in pixels of a sphere (world `centre`, `radius`) seen from `state`'s camera: its
+ * largest on-screen extent.
+ */
+export function sphereScreenRadius(state: FrameState, centre: ArrayLike<number>, radius: number): number {
   const [x, y, z] = state.cameraPosition;
-  const c = SPHERE.centre;
-  const d = Math.hypot(c[0] - x, c[1] - y, c[2] - z);
+  const d = Math.hypot(centre[0] - x, centre[1] - y, centre[2] - z);
   const focal = state.height / 2 / Math.tan((state.fov * DEG) / 2);
-  if (d <= SPHERE.radius * 1.0001) return Number.POSITIVE_INFINITY; // inside it
+  if (d <= radius * 1.0001) return Number.POSITIVE_INFINITY; // inside it
   // Silhouette of a sphere: angular radius asin(r/d).
-  return focal * Math.tan(Math.asin(SPHERE.radius / d));
+  return focal * Math.tan(Math.asin(radius / d));
 }
 
 export class SphereLod {
@@ -32,14 +33,18 @@ export class SphereLod {
   segments = 0;
   /** Whether `mesh` is the per-face mesh of flat shading. */
   private flat = false;
+  private radius = 0;
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter) {}
 
-  /** Returns the mesh to draw this frame; rebuilds only when the segment count must change. */
-  update(state: FrameState): Mesh {
+  /**
+   * The mesh to draw this frame for a sphere of `radius` (its own frame) whose world bounds are
+   * `centre`, `worldRadius`; rebuilt only when the segment count, radius or shading must change.
+   */
+  update(state: FrameState, centre: ArrayLike<number>, worldRadius: number, radius: number): Mesh {
     let wanted: number;
     if (state.tessellation === 'auto') {
-      wanted = segmentsForScreenRadius(Math.min(sphereScreenRadius(state), 1e6), AUTO_SILHOUETTE_ERROR_PX);
+      wanted = segmentsForScreenRadius(Math.min(sphereScreenRadius(state, centre, worldRadius), 1e6), AUTO_SILHOUETTE_ERROR_PX);
       // Hysteresis: keep a finer mesh until it is twice what is needed, so a camera moving
       // back and forth does not rebuild the mesh every frame.
       if (this.mesh && this.segments >= wanted && this.segments <= 2 * wanted) wanted = this.segments;
@@ -47,12 +52,13 @@ export class SphereLod {
       wanted = state.tessellation;
     }
     const flat = state.shading === 'flat';
-    if (!this.mesh || wanted !== this.segments || flat !== this.flat) {
+    if (!this.mesh || wanted !== this.segments || flat !== this.flat || radius !== this.radius) {
       this.mesh?.dispose();
-      const data = sphereMesh(SPHERE.radius, wanted);
+      const data = sphereMesh(radius, wanted);
       this.mesh = new Mesh(this.gl, this.counter, flat ? flatMesh(data) : data);
       this.segments = wanted;
       this.flat = flat;
+      this.radius = radius;
     }
     return this.mesh;
   }

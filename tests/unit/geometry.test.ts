@@ -3,6 +3,8 @@ import { describe, expect, it } from 'vitest';
 import { boxMesh } from '../../src/scene/geometry/box';
 import { MAX_SEGMENTS, MIN_SEGMENTS, segmentsForScreenRadius, sphereMesh } from '../../src/scene/geometry/sphere';
 import { glassMesh } from '../../src/scene/geometry/rectangle';
+import { glassFrame } from '../../src/scene/glass-frame';
+import { DEFAULT_GLASS } from '../../src/scene/default-scene';
 import type { MeshData } from '../../src/scene/geometry/mesh-data';
 
 type V = [number, number, number];
@@ -178,7 +180,7 @@ describe('segmentsForScreenRadius', () => {
 });
 
 describe('glassMesh', () => {
-  const g = glassMesh();
+  const g = glassMesh(glassFrame(DEFAULT_GLASS));
 
   it('spans x ∈ [−4, 4], y ∈ [−1, 3] on z = 0 with u = (x+4)/8, v = (y+1)/4', () => {
     expect(g.positions.length).toBe(12);

@@ -3,6 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { ATTRIBUTE_BY_NAME } from '../../src/element/attributes';
 import { segmentsForScreenRadius, MAX_SEGMENTS, MIN_SEGMENTS } from '../../src/scene/geometry/sphere';
 import { sphereScreenRadius } from '../../src/render/sphere-lod';
+import { SPHERE } from '../../src/scene/default-scene';
 import type { FrameState } from '../../src/render/types';
 
 const parse = (attr: string, raw: string | null) => ATTRIBUTE_BY_NAME.get(attr)!.parse(raw);
@@ -76,14 +77,15 @@ describe('auto tessellation', () => {
   });
 
   it('measures the sphere on screen: nearer and taller buffers make it bigger', () => {
-    const far = sphereScreenRadius(state(10));
-    const near = sphereScreenRadius(state(2));
+    const at = (s: FrameState) => sphereScreenRadius(s, SPHERE.centre, SPHERE.radius);
+    const far = at(state(10));
+    const near = at(state(2));
     expect(near).toBeGreaterThan(far);
-    expect(sphereScreenRadius(state(10, 720))).toBeCloseTo(2 * far, 6);
+    expect(at(state(10, 720))).toBeCloseTo(2 * far, 6);
     // Distance 11.5 from the centre, radius 0.75, fov 60 at 360 px: focal = 180/tan 30°.
     const focal = 180 / Math.tan(Math.PI / 6);
     expect(far).toBeCloseTo(focal * Math.tan(Math.asin(0.75 / 11.5)), 9);
-    expect(sphereScreenRadius(state(-1.5))).toBe(Number.POSITIVE_INFINITY); // inside
+    expect(at(state(-1.5))).toBe(Number.POSITIVE_INFINITY); // inside
   });
 
   it('keeps the silhouette error under half a pixel, within the segment bounds', () => {

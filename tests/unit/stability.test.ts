@@ -11,7 +11,7 @@ import { fresnel, FRESNEL_MODELS } from '../../src/math/fresnel';
 import { ATTRIBUTE_BY_NAME } from '../../src/element/attributes';
 import { MAX_SEGMENTS, MIN_SEGMENTS, segmentsForScreenRadius, sphereMesh } from '../../src/scene/geometry/sphere';
 import { sphereScreenRadius } from '../../src/render/sphere-lod';
-import { SPHERE } from '../../src/scene/default-scene';
+import { defaultScene, SPHERE } from '../../src/scene/default-scene';
 import { renderReference } from '../../src/reference';
 import { project, type Vec3 } from '../e2e/helpers/projection';
 import { lookAt } from '../e2e/helpers/stability';
@@ -31,8 +31,15 @@ function state(overrides: Partial<FrameState> = {}): FrameState {
 
 function setupFor(overrides: Partial<FrameState>): FrameSetup {
   const setup = new FrameSetup();
-  setup.update(state(overrides));
+  const s = state(overrides);
+  setup.update(s, defaultScene(s.cubeDistance, s.spin));
   return setup;
+}
+
+/** The default scene's draws by name: object 0 is the cube, object 1 the sphere. */
+function draw(setup: FrameSetup, eye: 'main' | 'mirrored', obj: 'cube' | 'sphere' | 'glass'): DrawMatrices {
+  if (obj === 'glass') return eye === 'main' ? setup.glassMain : setup.glassMirrored;
+  return setup.objects[obj === 'cube' ? 0 : 1][eye];
 }
 
 /** Every float array FrameSetup hands to the GPU, by uniform-ish name. */
@@ -40,7 +47,7 @@ function uploads(setup: FrameSetup): [string, Float32Array][] {
   const out: [string, Float32Array][] = [];
   for (const eye of ['main', 'mirrored'] as const) {
     for (const obj of ['cube', 'sphere', 'glass'] as const) {
-      const m: DrawMatrices = setup[eye][obj];
+      const m: DrawMatrices = draw(setup, eye, obj);
       out.push([`${eye}.${obj}.modelViewProjection`, m.modelViewProjection]);
       out.push([`${eye}.${obj}.modelRelative`, m.modelRelative]);
       out.push([`${eye}.${obj}.normal`, m.normal]);
@@ -102,7 +109,7 @@ function cubeProjectionError(eye: Vec3, d: number): { centre: number; offset: nu
   const { yaw, pitch } = lookAt(eye, target);
   const setup = setupFor({ cameraPosition: eye, yaw, pitch, cubeDistance: d });
   expectAllFinite(setup, `eye ${eye.join(' ')}, cube-distance ${d}`);
-  const mvp = setup.main.cube.modelViewProjection;
+  const mvp = draw(setup, 'main', 'cube').modelViewProjection;
   const camera = { position: eye, yaw, pitch };
   const centre32 = toPixels(transformF32(mvp, [0, 0, 0]));
   const centre64 = project(camera, target, W, H);
@@ -137,7 +144,7 @@ describe('far from the origin (1e5, 1e6, 1e7): camera-relative float32 matrices'
         expect(e.offset, 'corner offsets, relative').toBeLessThan(1e-4);
         // The eye-relative model matrix (lighting's view vector) holds centre − eye as well.
         const { yaw, pitch } = lookAt(eye, c);
-        const rel = setupFor({ cameraPosition: eye, yaw, pitch, cubeDistance: d }).main.cube.modelRelative;
+        const rel = draw(setupFor({ cameraPosition: eye, yaw, pitch, cubeDistance: d }), 'main', 'cube').modelRelative;
         for (let i = 0; i < 3; i++) expect(Math.abs(rel[12 + i] - (c[i] - eye[i])), `modelRelative[${12 + i}]`).toBeLessThan(1e-6);
       });
     }
@@ -197,7 +204,7 @@ describe('camera on the glass plane and 1e-7 off it', () => {
     for (const z of [1e-3, 1e-7, 0, -1e-7]) {
       const setup = setupFor({ ...at(z), cameraPosition: [3.5, 1.2, z + 0.5] }); // see the glass at ~80°
       for (const p of [[0, 1, 0], [-3, 2, 0], [2, -0.5, 0]] as Vec3[]) {
-        const a = transform64(setup.main.glass.modelViewProjection, p);
+        const a = transform64(draw(setup, 'main', 'glass').modelViewProjection, p);
         const b = transform64(setup.reflectionViewProjection, p);
         expect(Math.abs(a[0] / a[3] - b[0] / b[3]), `x of ${p} at z ${z}`).toBeLessThan(1e-5);
         expect(Math.abs(a[1] / a[3] - b[1] / b[3]), `y of ${p} at z ${z}`).toBeLessThan(1e-5);
@@ -286,7 +293,7 @@ describe('forward parallel to up', () => {
       const a = setupFor({ cameraPosition: [0, 6, 1], pitch: 90 * sign, yaw: -90 });
       const b = setupFor({ cameraPosition: [0, 6, 1], pitch: 89.9 * sign, yaw: -90 });
       expectAllFinite(a, `pitch ${90 * sign}`);
-      expect(Array.from(a.main.glass.modelViewProjection)).toEqual(Array.from(b.main.glass.modelViewProjection));
+      expect(Array.from(draw(a, 'main', 'glass').modelViewProjection)).toEqual(Array.from(draw(b, 'main', 'glass').modelViewProjection));
     }
   });
 
@@ -382,7 +389,7 @@ describe('tessellation at its bounds', () => {
       expect(Number.isInteger(n) && n >= MIN_SEGMENTS && n <= MAX_SEGMENTS, `radius ${r} px → ${n}`).toBe(true);
     }
     for (const cameraPosition of [[1, 1, -1.5], [1e7, 1e7, 1e7], [1, 1.75, -1.5]] as Vec3[]) {
-      const r = sphereScreenRadius(state({ cameraPosition }));
+      const r = sphereScreenRadius(state({ cameraPosition }), SPHERE.centre, SPHERE.radius);
       expect(Number.isNaN(r), `screen radius from ${cameraPosition}`).toBe(false);
       const n = segmentsForScreenRadius(Math.min(r, 1e6));
       expect(n >= MIN_SEGMENTS && n <= MAX_SEGMENTS).toBe(true);

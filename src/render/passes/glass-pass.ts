@@ -21,7 +21,7 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
   }
   try {
     program.use();
-    setMatrices(gl, program, setup.main.glass);
+    setMatrices(gl, program, setup.glassMain);
     gl.uniformMatrix4fv(program.location('uReflectionViewProjection'), false, setup.reflectionViewProjection);
     gl.uniform1f(program.location('uTransparency'), state.transparency);
     gl.uniform1f(program.location('uIor'), state.ior);
@@ -31,7 +31,7 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
     ctx.texture.bind(0);
     gl.activeTexture(gl.TEXTURE1);
     gl.bindTexture(gl.TEXTURE_2D, reflection);
-    ctx.meshes.glass.draw();
+    ctx.glassMesh.draw();
   } finally {
     gl.bindTexture(gl.TEXTURE_2D, null);
     gl.activeTexture(gl.TEXTURE0);

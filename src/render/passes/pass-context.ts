@@ -1,17 +1,13 @@
-// What every pass reads: the GL context, compiled variants, meshes, texture and this frame's matrices.
+// What every pass reads: the GL context, compiled variants, meshes, texture, the scene and
+// this frame's matrices.
 import type { Mesh } from '../gl/mesh';
 import type { Program } from '../gl/program';
 import type { Texture } from '../gl/texture';
-import type { DrawMatrices, FrameSetup } from '../frame-setup';
+import type { DrawMatrices, FrameSetup, LightVectors } from '../frame-setup';
+import type { ObjectMeshes } from '../object-meshes';
 import type { ProgramCache } from '../programs';
 import type { FrameState } from '../types';
-import { BACKGROUND, LIGHT, MATERIAL } from '../../scene/default-scene';
-
-export interface SceneMeshes {
-  cube: Mesh;
-  sphere: Mesh;
-  glass: Mesh;
-}
+import type { Material, Scene } from '../../scene/scene';
 
 /** A rectangle of the bound framebuffer, in pixels, origin bottom-left. */
 export interface Viewport {
@@ -24,10 +20,14 @@ export interface Viewport {
 export interface PassContext {
   gl: WebGL2RenderingContext;
   programs: ProgramCache;
-  meshes: SceneMeshes;
+  /** The mesh of each scene object, by index. */
+  objectMeshes: ObjectMeshes;
+  /** The glass rectangle, in world coordinates. */
+  glassMesh: Mesh;
   texture: Texture;
   setup: FrameSetup;
   state: FrameState;
+  scene: Scene;
   /** The WEBGL_clip_cull_distance extension, or null (then the shader discards). */
   clipExtension: { CLIP_DISTANCE0_WEBGL: number } | null;
   /** Cull objects beyond the glass from the reflection (off only to measure what it saves). */
@@ -38,7 +38,7 @@ export interface PassContext {
 
 /** Binds `framebuffer`, sets the viewport and clears it (scissored, so tiles clear only themselves). */
 export function beginTarget(
-  gl: WebGL2RenderingContext, framebuffer: WebGLFramebuffer | null, vp: Viewport, clear: readonly number[] = BACKGROUND,
+  gl: WebGL2RenderingContext, framebuffer: WebGLFramebuffer | null, vp: Viewport, clear: readonly number[],
   scissor: Viewport = vp,
 ): void {
   gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
@@ -51,12 +51,23 @@ export function beginTarget(
   gl.disable(gl.SCISSOR_TEST);
 }
 
-/** Light and material uniforms shared by every opaque draw. */
-export function setLighting(gl: WebGL2RenderingContext, p: Program): void {
+/** The lights (vectors relative to the eye drawn from) shared by every object of a pass. */
+export function setLights(gl: WebGL2RenderingContext, p: Program, setup: FrameSetup, vectors: LightVectors): void {
   gl.uniform1i(p.location('uTexture'), 0);
-  gl.uniform3fv(p.location('uLightDirection'), LIGHT.direction);
-  gl.uniform3f(p.location('uLightIntensity'), LIGHT.ambient, LIGHT.diffuse, LIGHT.specular);
-  gl.uniform2f(p.location('uSpecular'), MATERIAL.ks, MATERIAL.shininess);
+  gl.uniform1i(p.location('uLightCount'), setup.lightCount);
+  gl.uniform4fv(p.location('uLightVector'), vectors.vectors);
+  gl.uniform3fv(p.location('uLightAmbient'), setup.lightAmbient);
+  gl.uniform3fv(p.location('uLightDiffuse'), setup.lightDiffuse);
+  gl.uniform3fv(p.location('uLightSpecular'), setup.lightSpecular);
+}
+
+export function setMaterial(gl: WebGL2RenderingContext, p: Program, m: Material): void {
+  const { ambient: a, diffuse: d, specular: s } = m;
+  gl.uniform3f(p.location('uKa'), a[0], a[1], a[2]);
+  gl.uniform3f(p.location('uKd'), d[0], d[1], d[2]);
+  gl.uniform3f(p.location('uKs'), s[0], s[1], s[2]);
+  gl.uniform1f(p.location('uShininess'), m.shininess);
+  gl.uniform1f(p.location('uOpacity'), m.opacity);
 }
 
 export function setMatrices(gl: WebGL2RenderingContext, p: Program, m: DrawMatrices): void {
@@ -64,3 +75,6 @@ export function setMatrices(gl: WebGL2RenderingContext, p: Program, m: DrawMatri
   gl.uniformMatrix4fv(p.location('uModelRelative'), false, m.modelRelative);
   gl.uniformMatrix3fv(p.location('uNormalMatrix'), false, m.normal);
 }
+
+/** Built-ins are closed and wound outwards (back faces culled); meshes from files are neither. */
+export const isTwoSided = (kind: string): boolean => kind === 'mesh' || kind === 'gaussian';

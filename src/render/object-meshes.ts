@@ -1,0 +1,115 @@
+// The mesh each scene object draws with this frame: built-ins from their generators, spheres at
+// the tessellation their size on screen needs, loaded meshes as given, per face when flat.
+// Objects of the same content share one mesh (reference-counted); nothing is built or looked
+// up by name in a frame where no object changed.
+import { Mesh } from './gl/mesh';
+import type { ResourceCounter } from './gl/resource-counter';
+import { SphereLod } from './sphere-lod';
+import { boxMesh } from '../scene/geometry/box';
+import { gaussianMesh } from '../scene/geometry/gaussian';
+import { flatMesh } from '../scene/geometry/flat';
+import type { MeshData } from '../scene/geometry/mesh-data';
+import type { Geometry } from '../scene/scene';
+import type { ObjectMatrices } from './frame-setup';
+import type { FrameState } from './types';
+
+interface Slot {
+  geometry: Geometry | null;
+  flat: boolean;
+  key: string | null;
+  mesh: Mesh | null;
+  lod: SphereLod | null;
+}
+
+interface Shared {
+  mesh: Mesh;
+  users: number;
+}
+
+function contentKey(g: Geometry, flat: boolean): string {
+  const f = flat ? ':flat' : '';
+  switch (g.kind) {
+    case 'box': return `box:${g.size}${f}`;
+    case 'gaussian': return `gaussian:${g.resolution}${f}`;
+    case 'mesh': return `mesh:${g.key}${f}`;
+    default: return `sphere:${g.radius}${f}`;
+  }
+}
+
+function build(g: Geometry): MeshData {
+  switch (g.kind) {
+    case 'box': return boxMesh(g.size);
+    case 'gaussian': return gaussianMesh(g.resolution);
+    case 'mesh': return g.data;
+    default: throw new Error(`glass-plane-scene: no static mesh for geometry "${g.kind}"`);
+  }
+}
+
+export class ObjectMeshes {
+  private readonly slots: Slot[] = [];
+  private readonly shared = new Map<string, Shared>();
+
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter) {}
+
+  /** Segments of the first sphere drawn (stats), 0 without one. */
+  get sphereSegments(): number {
+    for (const s of this.slots) if (s.lod) return s.lod.segments;
+    return 0;
+  }
+
+  /** The mesh object `i` (geometry `g`, world bounds in `m`) draws with this frame. */
+  get(i: number, g: Geometry, m: ObjectMatrices, state: FrameState): Mesh {
+    const slot = (this.slots[i] ??= { geometry: null, flat: false, key: null, mesh: null, lod: null });
+    const flat = state.shading === 'flat';
+    if (g.kind === 'sphere') {
+      this.release(slot);
+      slot.geometry = g;
+      return (slot.lod ??= new SphereLod(this.gl, this.counter)).update(state, m.center, m.radius, g.radius);
+    }
+    if (slot.geometry === g && slot.flat === flat && slot.mesh) return slot.mesh;
+    slot.lod?.dispose();
+    slot.lod = null;
+    const key = contentKey(g, flat);
+    if (key !== slot.key) {
+      this.release(slot);
+      let entry = this.shared.get(key);
+      if (!entry) {
+        const data = build(g);
+        entry = { mesh: new Mesh(this.gl, this.counter, flat ? flatMesh(data) : data), users: 0 };
+        this.shared.set(key, entry);
+      }
+      entry.users++;
+      slot.key = key;
+      slot.mesh = entry.mesh;
+    }
+    slot.geometry = g;
+    slot.flat = flat;
+    return slot.mesh!;
+  }
+
+  /** Frees what objects past `count` held (the scene lost objects). */
+  trim(count: number): void {
+    while (this.slots.length > count) {
+      const slot = this.slots.pop()!;
+      this.release(slot);
+      slot.lod?.dispose();
+    }
+  }
+
+  dispose(): void {
+    this.trim(0);
+    for (const e of this.shared.values()) e.mesh.dispose();
+    this.shared.clear();
+  }
+
+  private release(slot: Slot): void {
+    if (slot.key === null) return;
+    const entry = this.shared.get(slot.key);
+    if (entry && --entry.users === 0) {
+      entry.mesh.dispose();
+      this.shared.delete(slot.key);
+    }
+    slot.key = null;
+    slot.mesh = null;
+  }
+}

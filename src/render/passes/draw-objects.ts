@@ -1,0 +1,67 @@
+// The scene's objects drawn with the standard program, from the real eye (pass 2) or the
+// mirrored one (pass 1): opaque ones first, then those with opacity < 1 blended over them
+// (depth-tested, no depth write), as SPEC §9 and seed 002 ask.
+import { signedDistance } from '../../math/mirror';
+import type { Program } from '../gl/program';
+import type { ClipMode } from '../programs';
+import { isTwoSided, setLights, setMaterial, setMatrices, type PassContext } from './pass-context';
+
+/**
+ * Compiles (or finds) every variant the objects need before the caller touches GL state:
+ * a variant that fails to compile throws, and the element draws again later from clean state.
+ */
+export function prepareObjectPrograms(ctx: PassContext, clip: ClipMode): void {
+  let one = false, two = false;
+  for (const o of ctx.scene.objects) {
+    if (isTwoSided(o.geometry.kind)) two = true;
+    else one = true;
+  }
+  if (one) ctx.programs.standard(clip, ctx.state.shading, false);
+  if (two) ctx.programs.standard(clip, ctx.state.shading, true);
+}
+
+/**
+ * Draws into the bound framebuffer; depth test on, blending and culling as each object needs.
+ * `mirrored`: pass 1 (mirrored matrices and lights, the clip plane, objects wholly beyond
+ * the glass culled). Returns the draw calls.
+ */
+export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean): number {
+  const { gl, setup, scene } = ctx;
+  const objects = scene.objects;
+  let draws = 0;
+  let current: Program | null = null;
+  for (let pass = 0; pass < 2; pass++) {
+    const transparent = pass === 1;
+    for (let i = 0; i < objects.length; i++) {
+      const o = objects[i];
+      if ((o.material.opacity < 1) !== transparent) continue;
+      const m = setup.objects[i];
+      // Culling, not selection (SPEC §4): bounds wholly beyond the glass cannot be reflected.
+      if (mirrored && ctx.cull && setup.side * signedDistance(setup.glass.plane, m.center) <= -m.radius) continue;
+      const twoSided = isTwoSided(o.geometry.kind);
+      const program = ctx.programs.standard(clip, ctx.state.shading, twoSided);
+      if (program !== current) {
+        current = program;
+        program.use();
+        setLights(gl, program, setup, mirrored ? setup.lightsMirrored : setup.lightsMain);
+        if (mirrored) gl.uniform4fv(program.location('uClipPlane'), setup.clipPlane);
+      }
+      if (twoSided) gl.disable(gl.CULL_FACE);
+      else gl.enable(gl.CULL_FACE);
+      if (transparent) {
+        gl.enable(gl.BLEND);
+        // Straight alpha over what is drawn; the target's alpha stays 1 for the glass pass.
+        gl.blendFuncSeparate(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA, gl.ZERO, gl.ONE);
+        gl.depthMask(false);
+      }
+      setMatrices(gl, program, mirrored ? m.mirrored : m.main);
+      setMaterial(gl, program, o.material);
+      ctx.objectMeshes.get(i, o.geometry, m, ctx.state).draw();
+      draws++;
+    }
+  }
+  gl.disable(gl.BLEND);
+  gl.depthMask(true);
+  gl.disable(gl.CULL_FACE);
+  return draws;
+}
