@@ -6,6 +6,7 @@ precision highp float;
 
 uniform sampler2D uTexture;
 uniform float uOpacity;
+uniform float uImageTexture;   // 1: an image, read at (u, 1 − v) (OBJ: v = 0 is its bottom row)
 
 in vec2 vUv;
 #if defined(SHADING_PHONG)
@@ -35,5 +36,6 @@ void main() {
 #else
   vec3 a = vLightA, s = vLightS;
 #endif
-  outColor = vec4(texture(uTexture, vUv).rgb * a + s, uOpacity);
+  vec2 uv = uImageTexture > 0.5 ? vec2(vUv.x, 1.0 - vUv.y) : vUv;
+  outColor = vec4(texture(uTexture, uv).rgb * a + s, uOpacity);
 }

@@ -10,6 +10,7 @@ import { findNonFinite } from './finite-check';
 import { maxTargetSize } from './gl/limits';
 import { ResourceCounter } from './gl/resource-counter';
 import { Texture } from './gl/texture';
+import { TextureCache } from './texture-cache';
 import { FrameSetup } from './frame-setup';
 import { ProgramCache } from './programs';
 import { beginTarget, type PassContext, type Viewport } from './passes/pass-context';
@@ -88,6 +89,7 @@ export class Renderer {
   /** SPEC §3's scene for callers that pass none (the bench, tests), rebuilt only when it changes. */
   private defaultScene: { cubeDistance: number; spin: number; scene: Scene } | null = null;
   private readonly texture: Texture;
+  private readonly textures: TextureCache;
   private reflection: RenderTarget;
   private captureTarget: RenderTarget | null = null;
   /** Multisampled stand-ins, created only when `samples` > 0. */
@@ -132,12 +134,13 @@ export class Renderer {
     this.maxSamples = gl.getParameter(gl.MAX_SAMPLES) as number;
     this.maxTargetSize = maxTargetSize(gl);
     this.texture = new Texture(gl, c, { width: TEXTURE_SIZE, height: TEXTURE_SIZE, data: proceduralTexture(), mipmap: true, repeat: true });
+    this.textures = new TextureCache(gl, c, this.texture);
     this.canHalfFloat = gl.getExtension('EXT_color_buffer_float') !== null;
     this.reflection = new RenderTarget(gl, c);
     this.blitVao = gl.createVertexArray()!;
     c.add('vertexArrays');
     this.ctx = {
-      gl, programs: this.programs, objectMeshes: this.objectMeshes, glassMesh: this.glassMesh, texture: this.texture,
+      gl, programs: this.programs, objectMeshes: this.objectMeshes, glassMesh: this.glassMesh, texture: this.texture, textures: this.textures,
       setup: this.setup, state: undefined as unknown as FrameState, scene: undefined as unknown as Scene,
       clipExtension: gl.getExtension('WEBGL_clip_cull_distance') as { CLIP_DISTANCE0_WEBGL: number } | null,
       cull: true,
@@ -193,6 +196,14 @@ export class Renderer {
     return this.readFramebuffer(target.framebuffer, target.width, target.height);
   }
 
+  /**
+   * Gives the renderer the decoded image of a texture URL a scene names (null frees it).
+   * Until then objects naming it draw with the procedural texture.
+   */
+  setImage(url: string, image: TexImageSource | null): void {
+    this.textures.setImage(url, image);
+  }
+
   get stats(): RenderStats {
     const counts = { ...this.counter.counts };
     return {
@@ -214,6 +225,7 @@ export class Renderer {
     this.mainMsaa?.dispose();
     this.reflectionMsaa = this.mainMsaa = null;
     this.glassMesh.dispose();
+    this.textures.dispose();
     this.texture.dispose();
     this.reflection.dispose();
     this.captureTarget?.dispose();

@@ -1,10 +1,13 @@
-// An RGBA8 2D texture from pixels (row 0 uploaded first), optionally mipmapped and repeating.
+// An RGBA8 2D texture from pixels (row 0 uploaded first) or a decoded image (its top row
+// first), optionally mipmapped and repeating.
 import type { ResourceCounter } from './resource-counter';
 
 export interface TextureOptions {
   width: number;
   height: number;
   data: Uint8Array | null;
+  /** A decoded image instead of `data` (width and height are then the image's). */
+  image?: TexImageSource;
   mipmap?: boolean;
   repeat?: boolean;
 }
@@ -17,7 +20,14 @@ export class Texture {
     counter.add('textures');
     gl.bindTexture(gl.TEXTURE_2D, t);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
-    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, o.width, o.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, o.data);
+    if (o.image) {
+      // No flip on upload (ImageBitmaps ignore UNPACK_FLIP_Y_WEBGL): the shader reads images at
+      // (u, 1 − v), which puts OBJ's v = 0 on the image's bottom row.
+      gl.pixelStorei(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL, false);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, o.image);
+    } else {
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, o.width, o.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, o.data);
+    }
     const wrap = o.repeat ? gl.REPEAT : gl.CLAMP_TO_EDGE;
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, wrap);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, wrap);

@@ -3,6 +3,7 @@
 // (depth-tested, no depth write), as SPEC §9 and seed 002 ask.
 import { signedDistance } from '../../math/mirror';
 import type { Program } from '../gl/program';
+import type { Texture } from '../gl/texture';
 import type { ClipMode } from '../programs';
 import { isTwoSided, setLights, setMaterial, setMatrices, type PassContext } from './pass-context';
 
@@ -30,6 +31,7 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean)
   const objects = scene.objects;
   let draws = 0;
   let current: Program | null = null;
+  let texture: Texture | null = null;
   for (let pass = 0; pass < 2; pass++) {
     const transparent = pass === 1;
     for (let i = 0; i < objects.length; i++) {
@@ -40,11 +42,18 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean)
       if (mirrored && ctx.cull && setup.side * signedDistance(setup.glass.plane, m.center) <= -m.radius) continue;
       const twoSided = isTwoSided(o.geometry.kind);
       const program = ctx.programs.standard(clip, ctx.state.shading, twoSided);
-      if (program !== current) {
+      const switched = program !== current;
+      if (switched) {
         current = program;
         program.use();
         setLights(gl, program, setup, mirrored ? setup.lightsMirrored : setup.lightsMain);
         if (mirrored) gl.uniform4fv(program.location('uClipPlane'), setup.clipPlane);
+      }
+      const t = ctx.textures.textureFor(o.material.texture);
+      if (switched || t !== texture) {
+        if (t !== texture) t.bind(0);
+        texture = t;
+        gl.uniform1f(program.location('uImageTexture'), ctx.textures.isImage(t) ? 1 : 0);
       }
       if (twoSided) gl.disable(gl.CULL_FACE);
       else gl.enable(gl.CULL_FACE);

@@ -3,6 +3,7 @@
 import type { Mesh } from '../gl/mesh';
 import type { Program } from '../gl/program';
 import type { Texture } from '../gl/texture';
+import type { TextureCache } from '../texture-cache';
 import type { DrawMatrices, FrameSetup, LightVectors } from '../frame-setup';
 import type { ObjectMeshes } from '../object-meshes';
 import type { ProgramCache } from '../programs';
@@ -24,7 +25,9 @@ export interface PassContext {
   objectMeshes: ObjectMeshes;
   /** The glass rectangle, in world coordinates. */
   glassMesh: Mesh;
+  /** The procedural texture (the glass's, and objects' without an image). */
   texture: Texture;
+  textures: TextureCache;
   setup: FrameSetup;
   state: FrameState;
   scene: Scene;

@@ -26,7 +26,6 @@ export function reflectionPass(ctx: PassContext, framebuffer: WebGLFramebuffer, 
   gl.frontFace(gl.CW); // the mirror flips winding
   if (clipExtension) gl.enable(clipExtension.CLIP_DISTANCE0_WEBGL);
   try {
-    ctx.texture.bind(0);
     return drawObjects(ctx, clip, true);
   } finally {
     gl.disable(gl.SCISSOR_TEST);

@@ -10,7 +10,6 @@ export function scenePass(ctx: PassContext, depthOnly = false): number {
   gl.enable(gl.DEPTH_TEST);
   if (depthOnly) gl.colorMask(false, false, false, false);
   try {
-    ctx.texture.bind(0);
     return drawObjects(ctx, 'none', false);
   } finally {
     if (depthOnly) gl.colorMask(true, true, true, true);

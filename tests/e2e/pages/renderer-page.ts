@@ -1,0 +1,51 @@
+// Draws a Scene value with the WebGL Renderer and reads the pixels back: the scene-model tests
+// use it to test what the renderer does with scenes the element cannot describe yet. Scenes
+// arrive as JSON; a mesh's typed arrays as plain arrays (see tests/e2e/helpers/scene-json.ts).
+import { Renderer } from '../../../src/render/renderer';
+import type { FrameState } from '../../../src/render/types';
+import type { Scene } from '../../../src/scene/scene';
+import type { MeshData } from '../../../src/scene/geometry/mesh-data';
+
+interface JsonMesh { positions: number[]; normals: number[]; uvs: number[]; indices: number[] }
+
+const canvas = document.getElementById('c') as HTMLCanvasElement;
+const gl = canvas.getContext('webgl2', {
+  alpha: true, antialias: false, depth: true, stencil: false, premultipliedAlpha: true, preserveDrawingBuffer: false,
+})!;
+const renderer = new Renderer(gl, { checks: true });
+
+function revive(scene: Scene): Scene {
+  return {
+    ...scene,
+    objects: scene.objects.map((o) => {
+      if (o.geometry.kind !== 'mesh') return o;
+      const j = o.geometry.data as unknown as JsonMesh;
+      const data: MeshData = {
+        positions: new Float32Array(j.positions), normals: new Float32Array(j.normals), uvs: new Float32Array(j.uvs),
+        indices: new Uint32Array(j.indices),
+      };
+      return { ...o, geometry: { ...o.geometry, data } };
+    }),
+  };
+}
+
+function toBase64(bytes: Uint8ClampedArray): string {
+  let s = '';
+  for (let i = 0; i < bytes.length; i += 0x8000) s += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+  return btoa(s);
+}
+
+const api = {
+  /** RGBA8 of `state.view` of `scene`, top row first, base64. */
+  draw(state: FrameState, scene: Scene, images: Record<string, { width: number; height: number; rgba: number[] }> = {}): string {
+    canvas.width = state.width;
+    canvas.height = state.height;
+    for (const [url, img] of Object.entries(images)) {
+      renderer.setImage(url, new ImageData(new Uint8ClampedArray(img.rgba), img.width, img.height));
+    }
+    const source = state.view === 'final' || state.view === 'scene' || state.view === 'reflection' ? state.view : 'final';
+    return toBase64(renderer.read(source, state, revive(scene)).data);
+  },
+};
+
+(window as unknown as { __renderer: typeof api }).__renderer = api;

@@ -1,0 +1,133 @@
+// The WebGL renderer drawing scene values (SPEC §9) other than the default one, through the
+// renderer page (no element): glass anywhere, objects placed by transforms, point lights,
+// materials, opacity, image textures, no glass. Properties checked from geometry, not goldens.
+import { test, expect, mount, openPage, capture } from './fixtures';
+import { drawScene, openRendererPage } from './helpers/scene-json';
+import { dominant, dominantPixels } from './helpers/pixels';
+import { compareImages } from './helpers/golden';
+import { project, type Vec3 } from './helpers/projection';
+import { lookAt } from './helpers/stability';
+import { defaultScene, DEFAULT_LIGHT } from '../../src/scene/default-scene';
+import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
+import type { Light, Material, Scene, SceneObject } from '../../src/scene/scene';
+import type { FrameState } from '../../src/render/types';
+import type { RgbaImage } from './helpers/golden';
+
+const W = 320, H = 180;
+
+function state(position: Vec3, target: Vec3, view: FrameState['view'] = 'final'): FrameState {
+  const { yaw, pitch } = lookAt(position, target);
+  return {
+    width: W, height: H, time: 0, spin: 0, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: 'exact',
+    fov: 60, cameraPosition: position, yaw, pitch, view, reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 64,
+    reflectionFormat: 'rgba8',
+  };
+}
+
+const grey = (x: number): Vec3 => [x, x, x];
+function material(diffuse: Vec3, extra: Partial<Material> = {}): Material {
+  return {
+    ambient: diffuse, diffuse, specular: grey(0), shininess: 32, opacity: 1, texture: { kind: 'procedural' }, mapping: 'uv', ...extra,
+  };
+}
+function box(position: Vec3, diffuse: Vec3, extra: Partial<Material> = {}, size = 1): SceneObject {
+  return {
+    geometry: { kind: 'box', size },
+    transform: { position, rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
+    material: material(diffuse, extra),
+    bounds: { center: [0, 0, 0], radius: (Math.sqrt(3) / 2) * size },
+  };
+}
+function scene(objects: SceneObject[], extra: Partial<Scene> = {}): Scene {
+  return { glass: null, objects, lights: [DEFAULT_LIGHT], background: grey(0.1), ...extra };
+}
+const sum = (img: RgbaImage) => img.data.reduce((s, v, i) => (i % 4 === 3 ? s : s + v), 0);
+
+test.beforeEach(async ({ page }) => {
+  await openRendererPage(page);
+});
+
+test('the default scene value draws what the element draws', async ({ page }) => {
+  const s: FrameState = {
+    ...state(DEFAULT_CAMERA_POSITION, [0, 0, 0]), yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
+    time: 1.25, spin: 0.8, samples: 4, tessellation: 'auto',
+  };
+  const fromValue = await drawScene(page, s, defaultScene(DEFAULT_CUBE_DISTANCE, 0.8));
+  await openPage(page);
+  await mount(page, { time: 1.25 }, { width: W, height: H });
+  const { differing } = compareImages(fromValue, await capture(page));
+  expect(differing, 'pixels differing between the scene value and the element').toBeLessThanOrEqual(Math.floor(W * H * 0.001));
+});
+
+test('a glass floor reflects a cube above it: the reflection pass is the mirrored cube seen from the eye', async ({ page }) => {
+  // Low over the floor: the glass at ~75° where F ≈ 0.25, and the cube's lit +Z face in the mirror.
+  const eye: Vec3 = [0, 0.6, 6];
+  const s = state(eye, [0, 0, 0]);
+  const floor = scene([box([0, 1, 0], [0.8, 0.2, 0.2])], { glass: { center: [0, 0, 0], normal: [0, 1, 0], size: [8, 8] } });
+  // The mirror identity, with the floor as the mirror: what the mirrored eye sees of the cube
+  // (pass 1, screen-aligned) is where the eye sees the cube mirrored to (0, −1, 0).
+  // Lighting differs (the mirrored cube is lit from the unmirrored light), so any red excess
+  // counts: even an unlit face (ambient only) has red 4× its green.
+  const RED = 5;
+  const reflection = dominantPixels(await drawScene(page, { ...s, view: 'reflection' }, floor), 'r', RED);
+  const mirrored = dominantPixels(await drawScene(page, { ...s, view: 'scene' }, scene([box([0, -1, 0], [0.8, 0.2, 0.2])])), 'r', RED);
+  expect(mirrored.length, 'red pixels of the mirrored cube').toBeGreaterThan(500);
+  const a = new Set(reflection), both = mirrored.filter((p) => a.has(p)).length;
+  expect(both / (reflection.length + mirrored.length - both), 'overlap (intersection over union)').toBeGreaterThan(0.97);
+  // And the final frame shows it where the mirrored cube projects: redder than with no reflection.
+  const final = await drawScene(page, s, floor);
+  const none = await drawScene(page, { ...s, ior: 1 }, floor);
+  const m = project({ position: eye, yaw: s.yaw, pitch: s.pitch }, [0, -1, 0], W, H);
+  const i = (Math.round(m.y) * W + Math.round(m.x)) * 4;
+  expect(final.data[i] - none.data[i], 'red the reflection adds where it lands (measured 9)').toBeGreaterThan(5);
+});
+
+test('a point light lights what faces it; a second light adds', async ({ page }) => {
+  const eye: Vec3 = [0, 1, 6];
+  const s = state(eye, [0, 0, 0]);
+  const point = (p: Vec3): Light => ({ kind: 'point', vector: p, ambient: grey(0), diffuse: grey(0.9), specular: grey(0) });
+  const dark = { background: grey(0) } as const;
+  const one = await drawScene(page, s, scene([box([0, 0, 0], grey(0.8), {}, 2)], { ...dark, lights: [point([-3, 0, 4])] }));
+  const both = await drawScene(page, s, scene([box([0, 0, 0], grey(0.8), {}, 2)], { ...dark, lights: [point([-3, 0, 4]), point([3, 0, 4])] }));
+  // Front face (+Z) is lit by both at the same angle; pixel columns left and right of centre.
+  const at = (img: RgbaImage, x: number) => img.data[(Math.round(H / 2) * W + x) * 4];
+  // Symmetric lights on a symmetric view: twice the light (within rounding).
+  expect(sum(both) / sum(one), 'two lights give twice the light of one').toBeCloseTo(2, 1);
+  // A point light's direction varies over the face: the side nearer the light is brighter.
+  expect(at(one, Math.round(W / 2) - 30), 'nearer the left light').toBeGreaterThan(at(one, Math.round(W / 2) + 30) + 3);
+});
+
+test('an object with opacity 0.5 blends over what is behind it', async ({ page }) => {
+  const s = state([0, 0, 6], [0, 0, 0]);
+  const flatLight: Light = { kind: 'directional', vector: [0, 0, 1], ambient: grey(0), diffuse: grey(1), specular: grey(0) };
+  const uniform = { texture: { kind: 'image', url: 'white' } } as const;
+  const white = { white: { width: 1, height: 1, rgba: [255, 255, 255, 255] } };
+  const behind = box([0, 0, -2], [1, 0, 0], uniform, 3);
+  const front = box([0, 0, 0], [0, 0, 1], { ...uniform, opacity: 0.5 }, 1);
+  const img = await drawScene(page, s, scene([front, behind], { lights: [flatLight] }), white);
+  const i = (Math.round(H / 2) * W + Math.round(W / 2)) * 4;
+  // Listed first, drawn after the opaque one: blue·0.5 + red·0.5.
+  expect(Math.abs(img.data[i] - 128), 'red half').toBeLessThanOrEqual(2);
+  expect(Math.abs(img.data[i + 2] - 128), 'blue half').toBeLessThanOrEqual(2);
+});
+
+test('image textures follow the OBJ convention: v = 0 is the bottom row of the image', async ({ page }) => {
+  const s = state([0, 0, 3], [0, 0, 0]);
+  const flatLight: Light = { kind: 'directional', vector: [0, 0, 1], ambient: grey(0), diffuse: grey(1), specular: grey(0) };
+  // Top row red, bottom row blue; the box's +Z face has v growing along +Y.
+  const img = { rb: { width: 1, height: 2, rgba: [255, 0, 0, 255, 0, 0, 255, 255] } };
+  const out = await drawScene(page, s, scene([box([0, 0, 0], grey(1), { texture: { kind: 'image', url: 'rb' } })], { lights: [flatLight] }), img);
+  const px = (y: number) => out.data.subarray((y * W + W / 2) * 4, (y * W + W / 2) * 4 + 3);
+  const upper = px(Math.round(H / 2) - 15), lower = px(Math.round(H / 2) + 15);
+  expect(upper[0], 'upper half red').toBeGreaterThan(upper[2] + 100);
+  expect(lower[2], 'lower half blue').toBeGreaterThan(lower[0] + 100);
+});
+
+test('with no glass the final image is the scene pass alone', async ({ page }) => {
+  const s = state([2, 2, 5], [0, 0, 0]);
+  const sc = scene([box([0, 0, 0], [0.2, 0.7, 0.3])]);
+  const final = await drawScene(page, s, sc);
+  const scenePass = await drawScene(page, { ...s, view: 'scene' }, sc);
+  expect(compareImages(final, scenePass).differing).toBe(0);
+  expect(dominant(final, 'g').count, 'the object is drawn').toBeGreaterThan(500);
+});
