@@ -131,3 +131,33 @@ test('with no glass the final image is the scene pass alone', async ({ page }) =
   expect(compareImages(final, scenePass).differing).toBe(0);
   expect(dominant(final, 'g').count, 'the object is drawn').toBeGreaterThan(500);
 });
+
+test('flat shading lights each triangle once, from its face normal (a coarse Gaussian surface)', async ({ page }) => {
+  // resolution 5: vertices every 1.0 over [−2, 2]²; triangle (0,0)-(0,1)-(1,0) of the grid's
+  // centre cell: a = (0, 1, 0), c = (0, e⁻¹, 1), b = (1, e⁻¹, 0).
+  const e1 = Math.exp(-1);
+  const a: Vec3 = [0, 1, 0], b: Vec3 = [1, e1, 0], c: Vec3 = [0, e1, 1];
+  const u = [c[0] - a[0], c[1] - a[1], c[2] - a[2]], v = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+  const n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+  const nl = Math.hypot(n[0], n[1], n[2]);
+  const L = [0.3, 1, 0.2].map((x) => x / Math.hypot(0.3, 1, 0.2));
+  const expected = 255 * Math.max(0, (n[0] * L[0] + n[1] * L[1] + n[2] * L[2]) / nl);
+  const centroid: Vec3 = [(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, (a[2] + b[2] + c[2]) / 3];
+  const eye: Vec3 = [0.3, 4, 0.4];
+  const s = { ...state(eye, centroid), shading: 'flat' as const };
+  const surface: SceneObject = {
+    geometry: { kind: 'gaussian', resolution: 5 },
+    transform: { position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
+    material: material(grey(1), { ambient: grey(0), texture: { kind: 'image', url: 'white' } }),
+    bounds: { center: [0, 0.5, 0], radius: 3 },
+  };
+  const light: Light = { kind: 'directional', vector: [0.3, 1, 0.2], ambient: grey(0), diffuse: grey(1), specular: grey(0) };
+  const white = { white: { width: 1, height: 1, rgba: [255, 255, 255, 255] } };
+  const img = await drawScene(page, s, scene([surface], { lights: [light] }), white);
+  const p = project({ position: eye, yaw: s.yaw, pitch: s.pitch }, centroid, W, H);
+  // Every pixel around the centroid (well inside the triangle) has the face's one colour.
+  for (const [dx, dy] of [[0, 0], [-3, 0], [3, 0], [0, -3], [0, 3]]) {
+    const i = ((Math.round(p.y) + dy) * W + Math.round(p.x) + dx) * 4;
+    expect(Math.abs(img.data[i] - expected), `pixel (${dx}, ${dy}) from the centroid: ${img.data[i]} vs ${expected.toFixed(1)}`).toBeLessThanOrEqual(1);
+  }
+});
