@@ -163,3 +163,26 @@ test('flat shading lights each triangle once, from its face normal (a coarse Gau
     expect(Math.abs(img.data[i] - expected), `pixel (${dx}, ${dy}) from the centroid: ${img.data[i]} vs ${expected.toFixed(1)}`).toBeLessThanOrEqual(1);
   }
 });
+
+test('meshes from files are drawn from both sides and lit on the side facing the viewer', async ({ page }) => {
+  const s = state([0, 0, 3], [0, 0, 0]);
+  // One big triangle wound clockwise seen from the camera, its normals pointing away (−Z).
+  const tri: SceneObject = {
+    geometry: {
+      kind: 'mesh', key: 'test:back-facing-triangle',
+      data: {
+        positions: new Float32Array([-1, -1, 0, 0, 1, 0, 1, -1, 0]), normals: new Float32Array([0, 0, -1, 0, 0, -1, 0, 0, -1]),
+        uvs: new Float32Array(6), indices: new Uint32Array([0, 1, 2]),
+      },
+    },
+    transform: { position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
+    material: material(grey(1), { ambient: grey(0), texture: { kind: 'image', url: 'white' } }),
+    bounds: { center: [0, 0, 0], radius: 1.5 },
+  };
+  const light: Light = { kind: 'directional', vector: [0, 0, 1], ambient: grey(0), diffuse: grey(1), specular: grey(0) };
+  const white = { white: { width: 1, height: 1, rgba: [255, 255, 255, 255] } };
+  const img = await drawScene(page, s, scene([tri], { lights: [light] }), white);
+  const i = (Math.round(H / 2 + 10) * W + Math.round(W / 2)) * 4;
+  // Not culled, and N turned towards the viewer: N·L = 1, full white (unlit it would be black).
+  expect(img.data[i], 'the triangle, lit from the viewer\u2019s side').toBeGreaterThanOrEqual(254);
+});
