@@ -2,6 +2,7 @@
 // Parsing, property reflection, README and fuzz tests all read it; nothing here throws.
 import { FRESNEL_MODELS, type FresnelModel } from '../math/fresnel';
 import { clampPitch } from '../math/camera';
+import { browserCssColor, parseCssColor } from './css-color';
 
 export const DEBUG_VIEWS = ['none', 'reflection', 'scene', 'fresnel', 'passes'] as const;
 export type DebugView = (typeof DEBUG_VIEWS)[number];
@@ -38,6 +39,14 @@ export interface SceneAttributes {
   pixelRatio: number | 'auto';
   /** Storage of the reflection framebuffer. */
   reflectionFormat: 'rgba8' | 'rgba16f';
+  /** Centre of the glass rectangle. */
+  glassCenter: Vec3Tuple;
+  /** Unit normal of the glass. */
+  glassNormal: Vec3Tuple;
+  /** Width and height of the glass; a zero side means no glass. */
+  glassSize: [number, number];
+  /** Clear colour (also of the reflection), RGB in 0..1. */
+  background: Vec3Tuple;
 }
 
 export type AttributeName = keyof SceneAttributes;
@@ -154,6 +163,33 @@ function tupleParse(raw: string, n: number): number[] | undefined {
 // useful is visible; the bound keeps every derived uniform finite.
 const MAX_COORD = 1e7;
 
+/** A tuple of `n` finite numbers; `check` may reject or adjust it (returning a problem). */
+function tupleSpec<K extends AttributeName>(
+  property: K, attribute: string, def: number[], form: string, doc: string,
+  check: (xs: number[]) => Parsed<number[]> = (xs) => ({ value: xs }),
+): AttributeSpec<K> {
+  const fallback = () => [...def] as SceneAttributes[K];
+  return {
+    property, attribute, default: def as SceneAttributes[K], doc,
+    parse(raw) {
+      if (raw === null) return { value: fallback() };
+      const xs = tupleParse(raw, def.length);
+      if (!xs) return { value: fallback(), problem: `expected ${form}, using "${def.join(' ')}"` };
+      const c = check(xs);
+      return { value: c.value as SceneAttributes[K], problem: c.problem };
+    },
+    format: (v) => (v as number[]).join(' '),
+  };
+}
+
+const clampCoords = (xs: number[]): Parsed<number[]> => {
+  const c = xs.map((x) => Math.max(-MAX_COORD, Math.min(MAX_COORD, x)));
+  return c.some((x, i) => x !== xs[i]) ? { value: c, problem: `coordinates clamped to ±${MAX_COORD}` } : { value: c };
+};
+
+/** "rgb(25.5 25.5 25.5)": exactly the 0.1 grey of SPEC §3. */
+export const DEFAULT_BACKGROUND = 'rgb(25.5 25.5 25.5)';
+
 export const ATTRIBUTES: readonly AttributeSpec[] = [
   numberSpec('transparency', 'transparency', 0.5, 0, 1, 'T in the glass equation; 1 = clear glass'),
   finiteSpec('cubeDistance', 'cube-distance', DEFAULT_CUBE_DISTANCE, "z of the cube's centre (signed distance from the glass)", MAX_COORD),
@@ -224,6 +260,28 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
   autoOrNumberSpec('tessellation', 'tessellation', 4, 512, true, "sphere segments 4..512, or auto (from the sphere's size on screen)"),
   autoOrNumberSpec('pixelRatio', 'pixel-ratio', 0.25, 4, false, 'drawing-buffer pixels per CSS pixel, or auto (devicePixelRatio)'),
   keywordSpec('reflectionFormat', 'reflection-format', ['rgba8', 'rgba16f'], 'reflection storage: rgba8, or rgba16f (half float, where supported)'),
+  tupleSpec('glassCenter', 'glass-center', [0, 1, 0], '"x y z"', 'centre of the glass rectangle', clampCoords),
+  tupleSpec('glassNormal', 'glass-normal', [0, 0, 1], '"x y z"', 'normal of the glass (normalised); "0 1 0" makes a glass floor', (xs) => {
+    const l = Math.hypot(xs[0], xs[1], xs[2]);
+    if (!(l > 0) || !Number.isFinite(l)) return { value: [0, 0, 1], problem: 'not a usable direction, using "0 0 1"' };
+    return { value: xs.map((x) => x / l) };
+  }),
+  tupleSpec('glassSize', 'glass-size', [8, 4], '"w h"', 'width and height of the glass; "0 0" means no glass', (xs) => {
+    if (xs.some((x) => x < 0)) return { value: xs.map((x) => Math.max(0, x)), problem: 'negative size clamped to 0' };
+    const c = xs.map((x) => Math.min(MAX_COORD, x));
+    return c.some((x, i) => x !== xs[i]) ? { value: c, problem: `size clamped to ${MAX_COORD}` } : { value: c };
+  }),
+  {
+    property: 'background', attribute: 'background', default: [0.1, 0.1, 0.1],
+    doc: 'any CSS colour (or "r g b" in 0..1): the clear colour, also of the reflection',
+    parse(raw) {
+      if (raw === null) return { value: [0.1, 0.1, 0.1] };
+      const rgb = parseCssColor(raw) ?? browserCssColor(raw);
+      if (!rgb) return { value: [0.1, 0.1, 0.1], problem: `not a CSS colour, using ${DEFAULT_BACKGROUND}` };
+      return { value: rgb };
+    },
+    format: (v) => v.join(' '),
+  } satisfies AttributeSpec<'background'>,
 ] as AttributeSpec[];
 
 export const ATTRIBUTE_BY_NAME: ReadonlyMap<string, AttributeSpec> = new Map(ATTRIBUTES.map((s) => [s.attribute, s]));

@@ -13,6 +13,9 @@ import { Renderer, type ReadbackSource } from '../render/renderer';
 import { ShaderError } from '../render/gl/program';
 import type { FrameReport, FrameState, RenderStats } from '../render/types';
 import type { CapturePass, ErrorType, GlassPlaneSceneEventMap } from './types';
+import { SceneSource } from './scene-source';
+import { composeScene } from './compose-scene';
+import type { Scene } from '../scene/scene';
 
 const CAPTURE_SOURCES: Record<CapturePass, ReadbackSource> = { reflection: 'reflection', scene: 'scene', final: 'final' };
 const DEFAULT_LABEL = 'A dark glass plane reflecting a cube, with a sphere behind it';
@@ -53,6 +56,10 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private readonly flyby = new FlybyController();
   private readonly input: FlybyInput;
   private readonly warnings = new AttributeWarnings();
+  /** The light-DOM children (<glass-object>, <glass-light>) as parts of the scene. */
+  private readonly source = new SceneSource(this, () => this.sceneChanged());
+  /** The scene value, built on demand and kept until an attribute or a child changes. */
+  private sceneValue: Scene | null = null;
   private shared: SharedContext | null = null;
   private output: Presenter | null = null;
   private renderer: Renderer | null = null;
@@ -128,6 +135,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     document.addEventListener('visibilitychange', this.onVisibility);
     this.reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
     this.reducedMotion?.addEventListener('change', this.onMotionPreference);
+    this.source.connect();
     this.start();
   }
 
@@ -139,6 +147,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     document.removeEventListener('visibilitychange', this.onVisibility);
     this.reducedMotion?.removeEventListener('change', this.onMotionPreference);
     this.reducedMotion = null;
+    this.source.disconnect();
     this.input.detach();
     this.disposeRenderer();
     this.shared?.release(this);
@@ -156,6 +165,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     const parsed = spec.parse(raw);
     if (parsed.problem) this.warnings.report(spec, raw ?? '', parsed.problem);
     (this.values as unknown as Record<string, unknown>)[spec.property] = parsed.value;
+    this.sceneValue = null;
     // The pose written back at rest is the one just drawn: nothing to move, nothing to draw.
     if (this.writingBack) return;
     if (spec.property === 'cameraPosition' || spec.property === 'cameraRotation') {
@@ -180,6 +190,18 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   set alt(value: string) {
     this.setAttribute('alt', String(value));
+  }
+
+  /**
+   * The scene as one value (SPEC §9): the glass and background from the attributes, the
+   * children's objects and lights, or SPEC §3's defaults where there are none. Read-only; a
+   * new value after every change (the same object until then).
+   */
+  get scene(): Scene {
+    return (this.sceneValue ??= composeScene(
+      { ...this.values, spin: this.effectiveSpin() },
+      this.source.current(),
+    ));
   }
 
   /** Draws a frame on the next animation frame, even when nothing changed. */
@@ -334,6 +356,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     let report: FrameReport;
     try {
       this.shared!.reserve(width, height);
+      // TODO(scene): renderer.render(state, this.scene) once the renderer reads the scene (main).
       report = renderer.render(state);
       this.output!.present(width, height);
     } catch (e) {
@@ -356,7 +379,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       frame: this.frames, time: report.time, width: report.width, height: report.height,
       drawCalls: report.drawCalls, passes: report.passes,
     });
-    if (!this.readyFired) {
+    // `ready` waits for the models of the children: loaded or failed (SPEC §2).
+    if (!this.readyFired && !this.source.loading) {
       this.readyFired = true;
       this.dispatchEvent(new CustomEvent('ready', { detail }));
     }
@@ -433,8 +457,15 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   };
 
   private readonly onMotionPreference = (): void => {
+    this.sceneValue = null;
     this.requestRender();
   };
+
+  /** A child was added, removed, reordered, changed, upgraded, or its model arrived. */
+  private sceneChanged(): void {
+    this.sceneValue = null;
+    this.requestRender();
+  }
 
   // ---- failures ----------------------------------------------------------------------------
 

@@ -12,12 +12,12 @@ export class AttributeWarnings {
   private readonly warned = new Set<string>();
 
   /** Warns about `raw` for `spec` unless that pair was reported before (or the cap is hit). */
-  report(spec: AttributeSpec, raw: string, problem: string): void {
+  report(spec: Pick<AttributeSpec, 'attribute'>, raw: string, problem: string, element?: string): void {
     const key = `${spec.attribute}\u0000${raw}`;
     if (this.warned.has(key) || this.warned.size >= MAX_WARNINGS) return;
     this.warned.add(key);
     const shown = raw.length > 40 ? `${raw.slice(0, 40)}…` : raw;
-    warn(`${spec.attribute}=${JSON.stringify(shown)}: ${problem}`);
+    warn(`${element ? `<${element}> ` : ''}${spec.attribute}=${JSON.stringify(shown)}: ${problem}`);
     if (this.warned.size === MAX_WARNINGS) warn('further attribute warnings are suppressed');
   }
 }

@@ -48,9 +48,9 @@ describe('defaults', () => {
     const names = ATTRIBUTES.map((s) => s.attribute);
     expect(new Set(names).size).toBe(names.length);
     expect([...names].sort()).toEqual([
-      'camera-position', 'camera-rotation', 'controls', 'cube-distance', 'debug-view', 'fov',
-      'fresnel', 'ior', 'pixel-ratio', 'reflection-format', 'reflection-scale', 'samples', 'shading', 'spin',
-      'tessellation', 'time', 'transparency',
+      'background', 'camera-position', 'camera-rotation', 'controls', 'cube-distance', 'debug-view', 'fov',
+      'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'reflection-format',
+      'reflection-scale', 'samples', 'shading', 'spin', 'tessellation', 'time', 'transparency',
     ]);
     for (const s of ATTRIBUTES) {
       expect(s.attribute.replace(/-([a-z])/g, (_, c: string) => c.toUpperCase())).toBe(s.property);
@@ -248,6 +248,15 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
             expect(v).toHaveLength(3);
             for (const x of v as number[]) expect(Math.abs(x)).toBeLessThanOrEqual(1e7);
             break;
+          case 'glassCenter': case 'glassNormal': case 'glassSize': case 'background': {
+            const xs = v as number[];
+            expect(xs).toHaveLength(s.property === 'glassSize' ? 2 : 3);
+            for (const x of xs) expect(Number.isFinite(x)).toBe(true);
+            if (s.property === 'glassNormal') expect(Math.hypot(...xs)).toBeCloseTo(1, 12);
+            if (s.property === 'glassSize') for (const x of xs) expect(x).toBeGreaterThanOrEqual(0);
+            if (s.property === 'background') for (const x of xs) expect(x >= 0 && x <= 1).toBe(true);
+            break;
+          }
           case 'cameraRotation': {
             const [yaw, pitch] = v as number[];
             expect(Number.isFinite(yaw)).toBe(true);
@@ -274,5 +283,51 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
     expectFallback('transparency', '0x10', 1);
     expect(parse('cube-distance', '-0').value).toBe(-0);
     expect(parse('camera-rotation', '-0 -0').value).toEqual([0, -0]);
+  });
+});
+
+describe('glass and background (SPEC §2)', () => {
+  it('defaults to the glass and background of SPEC §3', () => {
+    const d = defaultAttributes();
+    expect(d.glassCenter).toEqual([0, 1, 0]);
+    expect(d.glassNormal).toEqual([0, 0, 1]);
+    expect(d.glassSize).toEqual([8, 4]);
+    // Exactly 0.1, not the 26/255 an 8-bit round trip would give.
+    expect(d.background).toEqual([0.1, 0.1, 0.1]);
+    expectOk('background', 'rgb(25.5 25.5 25.5)', [0.1, 0.1, 0.1]);
+  });
+
+  it('normalises glass-normal; a zero or unusable vector falls back to +Z', () => {
+    expectOk('glass-normal', '0 2 0', [0, 1, 0]);
+    const r = parse('glass-normal', '3 0 4').value as number[];
+    expect(r[0]).toBeCloseTo(0.6, 15);
+    expect(r[2]).toBeCloseTo(0.8, 15);
+    expectFallback('glass-normal', '0 0 0', [0, 0, 1]);
+    expectFallback('glass-normal', '1 2', [0, 0, 1]);
+  });
+
+  it('reads glass-size "0 0" as a size (no glass), clamps negative sides to 0', () => {
+    expectOk('glass-size', '0 0', [0, 0]);
+    expectOk('glass-size', '2.5 1', [2.5, 1]);
+    expectFallback('glass-size', '-1 3', [0, 3]);
+    expectFallback('glass-size', '8', [8, 4]);
+  });
+
+  it('clamps glass-center like the camera position', () => {
+    expectOk('glass-center', '1, 2, 3', [1, 2, 3]);
+    expectFallback('glass-center', '1e9 0 0', [1e7, 0, 0]);
+    expectFallback('glass-center', 'a b c', [0, 1, 0]);
+  });
+
+  it('parses the CSS colour forms without a canvas, and "r g b" in 0..1', () => {
+    expectOk('background', '#fff', [1, 1, 1]);
+    expectOk('background', '#FF000080', [1, 0, 0]);
+    expectOk('background', 'rgba(0, 51, 255, 0.5)', [0, 0.2, 1]);
+    expectOk('background', 'rgb(50% 0% 100% / 0.3)', [0.5, 0, 1]);
+    expectOk('background', '0.25 0.5 1', [0.25, 0.5, 1]);
+    // In Node there is no canvas: named colours are not known here (the browser knows them).
+    expectFallback('background', 'not-a-colour', [0.1, 0.1, 0.1]);
+    expectFallback('background', '#12', [0.1, 0.1, 0.1]);
+    expectFallback('background', 'rgb(1 2)', [0.1, 0.1, 0.1]);
   });
 });

@@ -1,0 +1,147 @@
+// <glass-object>: one object of the scene (SPEC §9): a built-in shape, or a model loaded from
+// `src`. Fires `progress`, `load` and `error` (bubbling, composed); never throws. A changed or
+// removed `src` aborts the old load, whose result is never shown.
+import { normalizeObj } from '../../loaders/obj';
+import type { SceneObject, Transform } from '../../scene/scene';
+import { builtinShape } from './builtin-shapes';
+import { ChildElement, defineChildProperties } from './child-element';
+import { acquireModel, loadErrorDetail, type ModelHandle } from './model-cache';
+import type { LoadedModel } from './model-loader';
+import { meshParts, type MeshPart } from './mesh-parts';
+import { defaultObjectAttributes, OBJECT_ATTRIBUTES, type ObjectAttributes } from './object-attributes';
+import { resolveMaterial } from './object-material';
+
+export const OBJECT_TAG = 'glass-object';
+
+/** Parts per loaded model, raw and normalised: shared by every element showing it. */
+const partsCache = new WeakMap<LoadedModel, { raw?: MeshPart[]; normalized?: MeshPart[] }>();
+
+function partsOf(model: LoadedModel, normalize: boolean): MeshPart[] {
+  let entry = partsCache.get(model);
+  if (!entry) partsCache.set(model, (entry = {}));
+  if (normalize) return (entry.normalized ??= meshParts(normalizeObj(model.obj), `${model.url}#normalized`));
+  return (entry.raw ??= meshParts(model.obj, model.url));
+}
+
+/** Resolves against the document; null for a URL that cannot be one. */
+function absolute(url: string | null): string | null {
+  if (url === null) return null;
+  try {
+    return new URL(url, document.baseURI).href;
+  } catch {
+    return null;
+  }
+}
+
+export interface GlassObject extends ObjectAttributes {}
+
+export class GlassObject extends ChildElement<ObjectAttributes> {
+  static get observedAttributes(): string[] {
+    return OBJECT_ATTRIBUTES.map((a) => a.attribute);
+  }
+
+  private handle: ModelHandle | null = null;
+  /** The URL being loaded or shown. */
+  private loadingUrl: string | null = null;
+  private model: LoadedModel | null = null;
+  private pending = false;
+
+  constructor() {
+    super(OBJECT_TAG, OBJECT_ATTRIBUTES, defaultObjectAttributes());
+  }
+
+  override connectedCallback(): void {
+    this.updateLoad();
+    super.connectedCallback();
+  }
+
+  override disconnectedCallback(): void {
+    // A move (removed and inserted in one task) keeps its load; a removal aborts it.
+    queueMicrotask(() => {
+      if (!this.isConnected) this.stopLoad();
+    });
+  }
+
+  protected override attributeParsed(property: string): void {
+    if (property === 'src') this.updateLoad();
+    super.attributeParsed(property);
+  }
+
+  /** True while a model is being fetched or parsed. */
+  get loading(): boolean {
+    return this.pending;
+  }
+
+  /** The object as scene parts: one per material of a model; none while it loads or after it failed. */
+  toSceneObjects(): SceneObject[] {
+    const v = this.values;
+    const transform: Transform = { position: v.position, rotation: v.rotation, scale: v.scale, spin: 0 };
+    const texture = absolute(v.texture);
+    if (v.src !== null) {
+      if (!this.model) return [];
+      const model = this.model;
+      return partsOf(model, v.normalizeModel).map((part) => ({
+        geometry: part.geometry,
+        transform,
+        material: resolveMaterial(v, part.material === null ? undefined : model.materials.get(part.material), part.hasUvs, texture),
+        bounds: part.bounds,
+      }));
+    }
+    const { geometry, bounds } = builtinShape(v.shape ?? 'cube', v.resolution);
+    return [{ geometry, transform, material: resolveMaterial(v, undefined, true, texture), bounds }];
+  }
+
+  /** The first scene part (a built-in shape is one), or null while no model is shown. */
+  toSceneObject(): SceneObject | null {
+    return this.toSceneObjects()[0] ?? null;
+  }
+
+  private updateLoad(): void {
+    const url = this.isConnected ? absolute(this.values.src) : null;
+    if (url === this.loadingUrl && (url !== null || this.values.src === null)) return;
+    this.stopLoad();
+    if (this.values.src === null || !this.isConnected) return;
+    if (url === null) {
+      this.pending = false;
+      this.fire('error', { type: 'load', url: this.values.src, message: 'not a usable URL' });
+      return;
+    }
+    this.loadingUrl = url;
+    this.pending = true;
+    const handle = acquireModel(url, (p) => {
+      if (this.handle === handle) this.fire('progress', p);
+    });
+    this.handle = handle;
+    handle.promise.then(
+      (model) => {
+        if (this.handle !== handle) return; // superseded: never shown
+        this.model = model;
+        this.pending = false;
+        this.changed();
+        this.fire('load', { url, warnings: [...model.warnings] });
+      },
+      (e) => {
+        if (this.handle !== handle) return;
+        this.pending = false;
+        this.changed();
+        this.fire('error', loadErrorDetail(url, e));
+      },
+    );
+  }
+
+  private stopLoad(): void {
+    const hadModel = this.model !== null || this.pending;
+    this.handle?.release();
+    this.handle = null;
+    this.loadingUrl = null;
+    this.model = null;
+    this.pending = false;
+    if (hadModel) this.changed();
+  }
+
+  private fire(type: string, detail: unknown): void {
+    this.dispatchEvent(new CustomEvent(type, { detail, bubbles: true, composed: true }));
+  }
+}
+
+defineChildProperties(GlassObject.prototype, OBJECT_ATTRIBUTES);

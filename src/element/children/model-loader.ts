@@ -1,0 +1,52 @@
+// One model's whole load: fetch (with progress), sniff and parse, then its MTL files resolved
+// against the model's URL. A missing or broken MTL is a warning, not an error: the model
+// still shows, with attribute and default materials.
+import { LoadError, warningText } from '../../loaders/load-error';
+import { parseMtlBytes } from '../../loaders/mtl';
+import type { ObjResult } from '../../loaders/obj';
+import { fetchBytes, type Progress } from './model-fetch';
+import { parseModelBytes } from './model-parse';
+import type { MtlValues } from './object-material';
+
+export interface LoadedModel {
+  url: string;
+  obj: ObjResult;
+  /** By material name; the first MTL file that defines a name gives it. */
+  materials: Map<string, MtlValues>;
+  /** Console-ready text (prefix, URL and line), as in the `load` event's detail. */
+  warnings: string[];
+}
+
+export async function loadModel(url: string, signal: AbortSignal, onProgress: (p: Progress) => void): Promise<LoadedModel> {
+  const bytes = await fetchBytes(url, signal, onProgress);
+  const obj = await parseModelBytes(bytes, url);
+  signal.throwIfAborted();
+  const warnings = obj.warnings.map((w) => warningText(url, w));
+  const materials = new Map<string, MtlValues>();
+  for (const name of obj.mtllibs) {
+    let mtlUrl: string;
+    try {
+      mtlUrl = new URL(name.replace(/\\/g, '/'), url).href;
+    } catch {
+      warnings.push(`glass-plane-scene: ${url}: mtllib ${JSON.stringify(name)} is not a usable URL; ignored`);
+      continue;
+    }
+    try {
+      const mtl = parseMtlBytes(await fetchBytes(mtlUrl, signal), { url: mtlUrl });
+      for (const w of mtl.warnings) warnings.push(warningText(mtlUrl, w));
+      for (const [key, m] of mtl.materials) {
+        if (materials.has(key)) continue;
+        const map = m.diffuseMap ?? m.ambientMap;
+        materials.set(key, {
+          ambient: m.ambient, diffuse: m.diffuse, specular: m.specular, shininess: m.shininess, opacity: m.opacity,
+          texture: map ? new URL(map.path, mtlUrl).href : undefined,
+        });
+      }
+    } catch (e) {
+      if (signal.aborted) throw e;
+      const why = e instanceof LoadError ? e.detail.message : e instanceof Error ? e.message : String(e);
+      warnings.push(`glass-plane-scene: ${mtlUrl}: material library not loaded (${why}); using attributes and defaults`);
+    }
+  }
+  return { url, obj, materials, warnings };
+}

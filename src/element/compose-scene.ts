@@ -1,0 +1,29 @@
+// The scene value from the scene element's attributes and its children's parts (SPEC §9):
+// children's objects replace the default cube and sphere, children's lights the default light,
+// and with neither it is SPEC §3's default scene exactly. Pure: no DOM.
+import { defaultScene } from '../scene/default-scene';
+import type { Glass, Light, Scene, SceneObject } from '../scene/scene';
+import type { SceneAttributes } from './attributes';
+
+export type SceneInputs = Pick<SceneAttributes, 'cubeDistance' | 'glassCenter' | 'glassNormal' | 'glassSize' | 'background'> & {
+  /** The cube's spin as drawn (0 under reduced motion unless `spin` is set). */
+  spin: number;
+};
+
+/** Children's contributions; null where the element has no such child (the default is used). */
+export interface ChildParts {
+  objects: readonly SceneObject[] | null;
+  lights: readonly Light[] | null;
+}
+
+export function composeScene(v: SceneInputs, parts: ChildParts): Scene {
+  const base = defaultScene(v.cubeDistance, v.spin);
+  const [w, h] = v.glassSize;
+  const glass: Glass | null = w > 0 && h > 0 ? { center: [...v.glassCenter], normal: [...v.glassNormal], size: [w, h] } : null;
+  return {
+    glass,
+    objects: parts.objects ?? base.objects,
+    lights: parts.lights ?? base.lights,
+    background: [...v.background],
+  };
+}

@@ -1,0 +1,99 @@
+// Watches the scene element's light-DOM children and gathers their parts of the scene:
+// a MutationObserver for children added, removed or reordered, the children's own change
+// notices for their attributes and loads, and whenDefined for children upgraded later.
+import { MAX_LIGHTS, type Light, type SceneObject } from '../scene/scene';
+import type { ChildParts } from './compose-scene';
+import { CHILD_CHANGE } from './children/child-element';
+import { LIGHT_TAG, type GlassLight } from './children/glass-light';
+import { OBJECT_TAG, type GlassObject } from './children/glass-object';
+import { warn } from './warnings';
+
+export class SceneSource {
+  private observer: MutationObserver | null = null;
+  private parts: ChildParts | null = null;
+  private warnedLights = false;
+  private readonly awaiting = new Set<string>();
+
+  constructor(private readonly host: HTMLElement, private readonly onChange: () => void) {}
+
+  connect(): void {
+    if (this.observer) return;
+    this.observer = new MutationObserver(this.invalidate);
+    this.observer.observe(this.host, { childList: true });
+    this.host.addEventListener(CHILD_CHANGE, this.onChildChange);
+    this.invalidate();
+  }
+
+  disconnect(): void {
+    this.observer?.disconnect();
+    this.observer = null;
+    this.host.removeEventListener(CHILD_CHANGE, this.onChildChange);
+  }
+
+  /** True while a direct <glass-object> child is fetching or parsing its model. */
+  get loading(): boolean {
+    for (const child of this.host.children) if (child.localName === OBJECT_TAG && (child as GlassObject).loading === true) return true;
+    return false;
+  }
+
+  /** The children's objects and lights (null: none of that kind, use the default). Cached. */
+  current(): ChildParts {
+    return (this.parts ??= this.gather());
+  }
+
+  private gather(): ChildParts {
+    let objects: SceneObject[] | null = null;
+    let lights: Light[] | null = null;
+    let extra = 0;
+    for (const child of this.host.children) {
+      const name = child.localName;
+      if (name !== OBJECT_TAG && name !== LIGHT_TAG) continue;
+      // Duck-typed, not instanceof: another copy of this package may have defined the tags.
+      const object = child as Partial<GlassObject>, light = child as Partial<GlassLight>;
+      if (typeof object.toSceneObjects !== 'function' && typeof light.toLight !== 'function') {
+        this.awaitDefinition(name); // not upgraded yet: counts once it is
+        continue;
+      }
+      if (name === OBJECT_TAG) {
+        (objects ??= []).push(...safely(() => object.toSceneObjects!(), []));
+      } else if ((lights ??= []).length < MAX_LIGHTS) {
+        const l = safely(() => light.toLight!(), null);
+        if (l) lights.push(l);
+      } else extra++;
+    }
+    if (extra > 0 && !this.warnedLights) {
+      this.warnedLights = true;
+      warn(`at most ${MAX_LIGHTS} <glass-light> children are used; ${extra} more ignored`);
+    }
+    return { objects, lights };
+  }
+
+  private awaitDefinition(name: string): void {
+    if (this.awaiting.has(name) || typeof customElements === 'undefined' || customElements.get(name)) return;
+    this.awaiting.add(name);
+    customElements.whenDefined(name).then(() => {
+      this.awaiting.delete(name);
+      this.invalidate();
+    }, () => {});
+  }
+
+  private readonly invalidate = (): void => {
+    this.parts = null;
+    this.onChange();
+  };
+
+  private readonly onChildChange = (e: Event): void => {
+    if ((e.target as Element).parentElement !== this.host) return;
+    this.invalidate();
+  };
+}
+
+/** A child's bug must not take the scene down: its part is left out. */
+function safely<T>(f: () => T, fallback: T): T {
+  try {
+    return f();
+  } catch (e) {
+    warn(`a child could not describe its part of the scene: ${e instanceof Error ? e.message : String(e)}`);
+    return fallback;
+  }
+}

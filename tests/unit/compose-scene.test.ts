@@ -1,0 +1,33 @@
+// The scene value from attributes and children: with no children it is SPEC §3's default
+// scene exactly; children's objects and lights replace the defaults; "0 0" removes the glass.
+import { describe, expect, it } from 'vitest';
+import { composeScene, type SceneInputs } from '../../src/element/compose-scene';
+import { defaultAttributes } from '../../src/element/attributes';
+import { defaultScene, DEFAULT_LIGHT } from '../../src/scene/default-scene';
+import type { SceneObject } from '../../src/scene/scene';
+
+const inputs = (over: Partial<SceneInputs> = {}): SceneInputs => ({ ...defaultAttributes(), spin: 0.8, ...over });
+
+describe('composeScene', () => {
+  it('is the default scene with the default attributes and no children', () => {
+    expect(composeScene(inputs({ cubeDistance: 0.5, spin: 0.3 }), { objects: null, lights: null })).toEqual(defaultScene(0.5, 0.3));
+  });
+
+  it('replaces the default objects and light by the children\'s, even by none', () => {
+    const object = defaultScene(0, 0).objects[1] as SceneObject;
+    const light = { ...DEFAULT_LIGHT, kind: 'point' as const, vector: [1, 2, 3] as const };
+    const s = composeScene(inputs(), { objects: [object], lights: [light] });
+    expect(s.objects).toEqual([object]);
+    expect(s.lights).toEqual([light]);
+    // A <glass-object> whose model is still loading contributes nothing, and still replaces the defaults.
+    expect(composeScene(inputs(), { objects: [], lights: null }).objects).toEqual([]);
+  });
+
+  it('takes the glass and background from the attributes; a zero side means no glass', () => {
+    const s = composeScene(inputs({ glassCenter: [0, 0, 0], glassNormal: [0, 1, 0], glassSize: [6, 6], background: [1, 0, 0] }), { objects: null, lights: null });
+    expect(s.glass).toEqual({ center: [0, 0, 0], normal: [0, 1, 0], size: [6, 6] });
+    expect(s.background).toEqual([1, 0, 0]);
+    expect(composeScene(inputs({ glassSize: [0, 0] }), { objects: null, lights: null }).glass).toBeNull();
+    expect(composeScene(inputs({ glassSize: [3, 0] }), { objects: null, lights: null }).glass).toBeNull();
+  });
+});
