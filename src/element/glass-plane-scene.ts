@@ -222,7 +222,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     if (!(pass in CAPTURE_SOURCES)) warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
     try {
       this.shared!.reserve(this.canvas.width, this.canvas.height);
-      const px = this.renderer.read(source, this.lastState ?? this.frameState(performance.now()));
+      const px = this.renderer.read(source, this.lastState ?? this.frameState(performance.now()), this.scene);
       return new ImageData(px.data, px.width, px.height);
     } catch (e) {
       this.handleRenderError(e);
@@ -356,8 +356,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     let report: FrameReport;
     try {
       this.shared!.reserve(width, height);
-      // TODO(scene): renderer.render(state, this.scene) once the renderer reads the scene (main).
-      report = renderer.render(state);
+      report = renderer.render(state, this.scene);
       this.output!.present(width, height);
     } catch (e) {
       this.handleRenderError(e);

@@ -1,7 +1,7 @@
 // <glass-object>: one object of the scene (SPEC §9): a built-in shape, or a model loaded from
 // `src`. Fires `progress`, `load` and `error` (bubbling, composed); never throws. A changed or
 // removed `src` aborts the old load, whose result is never shown.
-import { normalizeObj } from '../../loaders/obj';
+import { normalizeObj } from '../../loaders/obj-normalize';
 import type { SceneObject, Transform } from '../../scene/scene';
 import { builtinShape } from './builtin-shapes';
 import { ChildElement, defineChildProperties } from './child-element';

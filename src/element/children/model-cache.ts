@@ -2,7 +2,7 @@
 // result. Each user holds a reference; when the last one lets go of a load still under way,
 // it is aborted. A failed load is forgotten, so setting the URL again later tries again.
 import { LoadError, type LoadErrorDetail } from '../../loaders/load-error';
-import { loadModel, type LoadedModel } from './model-loader';
+import type { LoadedModel } from './model-loader';
 import type { Progress } from './model-fetch';
 
 interface Entry {
@@ -31,10 +31,11 @@ export function loadErrorDetail(url: string, e: unknown): LoadErrorDetail {
 function start(url: string): Entry {
   const controller = new AbortController();
   const entry: Entry = { promise: null!, controller, refs: 0, settled: false, listeners: new Set(), last: null };
-  entry.promise = loadModel(url, controller.signal, (p) => {
+  // The loaders are a chunk of their own, fetched when a page first asks for a model (SPEC §12).
+  entry.promise = import('./model-loader').then(({ loadModel }) => loadModel(url, controller.signal, (p) => {
     entry.last = p;
     for (const l of entry.listeners) l(p);
-  });
+  }));
   entry.promise.then(
     (model) => {
       entry.settled = true;
