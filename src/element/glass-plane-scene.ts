@@ -14,6 +14,7 @@ import { ShaderError } from '../render/gl/program';
 import type { FrameReport, FrameState, RenderStats } from '../render/types';
 import type { CapturePass, ErrorType, GlassPlaneSceneEventMap } from './types';
 import { SceneSource } from './scene-source';
+import { TextureImages } from './texture-images';
 import { composeScene } from './compose-scene';
 import type { Scene } from '../scene/scene';
 
@@ -58,6 +59,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private readonly warnings = new AttributeWarnings();
   /** The light-DOM children (<glass-object>, <glass-light>) as parts of the scene. */
   private readonly source = new SceneSource(this, () => this.sceneChanged());
+  /** Image textures the scene names, decoded once per URL per page, given to the renderer. */
+  private readonly images = new TextureImages(() => this.requestRender());
   /** The scene value, built on demand and kept until an attribute or a child changes. */
   private sceneValue: Scene | null = null;
   private shared: SharedContext | null = null;
@@ -289,6 +292,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.output ??= this.shared.presenterFor(this.canvas);
     try {
       this.renderer = new Renderer(this.shared.gl, { checks: checksEnabled() });
+      this.images.attach(this.renderer);
     } catch (e) {
       this.handleRenderError(e);
       return;
@@ -303,6 +307,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.renderer.dispose();
     this.totals.resources = emptyStats().resources;
     this.renderer = null;
+    this.images.attach(null);
   }
 
   // ---- frames ------------------------------------------------------------------------------
@@ -356,7 +361,9 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     let report: FrameReport;
     try {
       this.shared!.reserve(width, height);
-      report = renderer.render(state, this.scene);
+      const scene = this.scene;
+      this.images.sync(scene);
+      report = renderer.render(state, scene);
       this.output!.present(width, height);
     } catch (e) {
       this.handleRenderError(e);

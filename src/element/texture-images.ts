@@ -1,0 +1,63 @@
+// Image textures named by a scene (`texture`, an MTL's map_Kd): fetched and decoded once per URL
+// per page, handed to the element's renderer when ready. Until then, or when an image fails
+// (one warning per URL), the object keeps the procedural texture and the scene keeps drawing.
+import type { Scene } from '../scene/scene';
+import { warn } from './warnings';
+
+const decoded = new Map<string, Promise<ImageBitmap | null>>();
+
+function decode(url: string): Promise<ImageBitmap | null> {
+  let p = decoded.get(url);
+  if (!p) {
+    p = fetch(url)
+      .then((r) => {
+        if (!r.ok) throw new Error(`HTTP ${r.status}`);
+        return r.blob();
+      })
+      .then((blob) => createImageBitmap(blob))
+      .catch((e: unknown) => {
+        warn(`texture "${url}" could not be loaded (${e instanceof Error ? e.message : String(e)}); using the procedural texture`);
+        return null;
+      });
+    decoded.set(url, p);
+  }
+  return p;
+}
+
+export interface ImageSink {
+  setImage(url: string, image: TexImageSource | null): void;
+}
+
+export class TextureImages {
+  private readonly ready = new Map<string, ImageBitmap>();
+  private readonly asked = new Set<string>();
+  private lastScene: Scene | null = null;
+  private sink: ImageSink | null = null;
+
+  /** `loaded` is called when an image arrives (to draw again). */
+  constructor(private readonly loaded: () => void) {}
+
+  /** A renderer to feed (null while there is none): it gets every image decoded so far. */
+  attach(sink: ImageSink | null): void {
+    this.sink = sink;
+    if (sink) for (const [url, image] of this.ready) sink.setImage(url, image);
+  }
+
+  /** Asks for the images `scene` names; a new scene value only (nothing to do per frame). */
+  sync(scene: Scene): void {
+    if (scene === this.lastScene) return;
+    this.lastScene = scene;
+    for (const o of scene.objects) {
+      const t = o.material.texture;
+      if (t.kind !== 'image' || this.asked.has(t.url)) continue;
+      const url = t.url;
+      this.asked.add(url);
+      void decode(url).then((image) => {
+        if (!image) return;
+        this.ready.set(url, image);
+        this.sink?.setImage(url, image);
+        this.loaded();
+      });
+    }
+  }
+}
