@@ -82,9 +82,11 @@ varying vec2 vUv;
 varying vec3 vWorldPosition;
 varying vec3 vNormal;
 #elif defined(SHADING_FLAT)
-flat varying vec2 vLight;
+flat varying vec3 vLightA;
+flat varying vec3 vLightS;
 #else
-varying vec2 vLight;
+varying vec3 vLightA;
+varying vec3 vLightS;
 #endif
 `;
 
@@ -99,7 +101,8 @@ void main() {
   vWorldPosition = world.xyz;
   vNormal = n;
 #else
-  vLight = blinnPhong(normalize(n), normalize(cameraPosition - world.xyz));
+  // One directional light: the position argument (for point lights) is not read.
+  blinnPhong(normalize(n), normalize(cameraPosition - world.xyz), world.xyz, vLightA, vLightS);
 #endif
   gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
 }
@@ -109,15 +112,14 @@ const OBJECT_FRAGMENT = /* glsl */ `
 ${BLINN_PHONG}
 ${LIGHTING_VARYINGS}
 uniform sampler2D uTexture;
-uniform vec3 uAlbedo;
 void main() {
 #if defined(SHADING_PHONG)
-  vec2 light = blinnPhong(normalize(vNormal), normalize(cameraPosition - vWorldPosition));
+  vec3 a, s;
+  blinnPhong(normalize(vNormal), normalize(cameraPosition - vWorldPosition), vWorldPosition, a, s);
 #else
-  vec2 light = vLight;
+  vec3 a = vLightA, s = vLightS;
 #endif
-  vec3 k = uAlbedo * texture2D(uTexture, vUv).rgb;
-  gl_FragColor = vec4(k * light.x + light.y, 1.0);
+  gl_FragColor = vec4(texture2D(uTexture, vUv).rgb * a + s, 1.0);
 }
 `;
 
@@ -434,10 +436,15 @@ export class ThreePeer {
       defines: shadingDefines('phong'),
       uniforms: {
         uTexture: { value: this.texture },
-        uAlbedo: { value: v3(albedo) },
-        uLightDirection: { value: v3(LIGHT.direction) },
-        uLightIntensity: { value: new THREE.Vector3(LIGHT.ambient, LIGHT.diffuse, LIGHT.specular) },
-        uSpecular: { value: new THREE.Vector2(MATERIAL.ks, MATERIAL.shininess) },
+        uKa: { value: v3(albedo) },
+        uKd: { value: v3(albedo) },
+        uKs: { value: new THREE.Vector3(MATERIAL.ks, MATERIAL.ks, MATERIAL.ks) },
+        uShininess: { value: MATERIAL.shininess },
+        uLightCount: { value: 1 },
+        uLightVector: { value: [new THREE.Vector4(...LIGHT.direction, 0), ...[1, 2, 3].map(() => new THREE.Vector4())] },
+        uLightAmbient: { value: [new THREE.Vector3().setScalar(LIGHT.ambient), ...[1, 2, 3].map(() => new THREE.Vector3())] },
+        uLightDiffuse: { value: [new THREE.Vector3().setScalar(LIGHT.diffuse), ...[1, 2, 3].map(() => new THREE.Vector3())] },
+        uLightSpecular: { value: [new THREE.Vector3().setScalar(LIGHT.specular), ...[1, 2, 3].map(() => new THREE.Vector3())] },
       },
     });
   }
