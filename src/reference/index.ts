@@ -1,8 +1,11 @@
 // The float64 CPU reference renderer: the image the GPU path approximates, and how far off it is.
-export { renderReference, type ReferenceImage, type ReferenceOptions } from './reference-renderer';
+export { renderReference, renderScene, type ReferenceImage, type ReferenceOptions } from './reference-renderer';
 export { compareImages, REGION_NAMES, type CompareOptions, type ImageComparison, type PerRegion, type RegionName } from './metrics';
 export {
-  REGION_BACKGROUND, REGION_CUBE, REGION_EDGE, REGION_GLASS, REGION_SPHERE, glassReflectsCube, regionOfKey, type Region,
+  REGION_BACKGROUND, REGION_CUBE, REGION_EDGE, REGION_GLASS, REGION_SPHERE, glassReflectsCube, glassReflectsObject,
+  regionOfKey, type Region,
 } from './regions';
-export type { ReferenceState } from './reference-state';
+export type { ReferenceState, ViewState } from './reference-state';
+export type { DecodedImage } from './image-texture';
+export { SurfaceCodes } from './surface-codes';
 export type { TextureFilter } from './sample-tracer';

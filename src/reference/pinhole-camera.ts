@@ -2,7 +2,7 @@
 import { projectionMatrix, rotationOnlyView } from '../math/camera';
 import { CAMERA } from '../scene/default-scene';
 import type { Ray } from './ray';
-import type { ReferenceState } from './reference-state';
+import type { ViewState } from './reference-state';
 
 /**
  * Built from the same `rotationOnlyView` and `projectionMatrix` the renderer uploads, so
@@ -21,7 +21,7 @@ export class PinholeCamera {
   private readonly projection = new Float64Array(16);
   private readonly scratch = new Float64Array(3);
 
-  constructor(state: ReferenceState) {
+  constructor(state: ViewState) {
     const p = state.cameraPosition;
     this.eye[0] = p[0]; this.eye[1] = p[1]; this.eye[2] = p[2];
     const v = rotationOnlyView(this.view, state.yaw, state.pitch, this.scratch);

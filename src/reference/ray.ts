@@ -1,6 +1,5 @@
 // A ray with its screen-space differentials: the one mutable value every reference stage passes along.
-import { reflectDirection, reflectPoint } from '../math/mirror';
-import { GLASS } from '../scene/default-scene';
+import { reflectDirection, reflectPoint, type Plane } from '../math/mirror';
 
 /**
  * origin + t·direction. `direction` is not normalised: the camera scales it so that
@@ -16,12 +15,12 @@ export class Ray {
   readonly ddx = new Float64Array(3);
   readonly ddy = new Float64Array(3);
 
-  /** this = `r` mirrored across the glass plane: origin, direction and differentials. */
-  mirrorOf(r: Ray): this {
-    reflectPoint(this.origin, r.origin, GLASS.plane);
-    reflectDirection(this.direction, r.direction, GLASS.plane);
-    reflectDirection(this.ddx, r.ddx, GLASS.plane);
-    reflectDirection(this.ddy, r.ddy, GLASS.plane);
+  /** this = `r` mirrored across the (glass) plane: origin, direction and differentials. */
+  mirrorOf(r: Ray, plane: Plane): this {
+    reflectPoint(this.origin, r.origin, plane);
+    reflectDirection(this.direction, r.direction, plane);
+    reflectDirection(this.ddx, r.ddx, plane);
+    reflectDirection(this.ddy, r.ddy, plane);
     return this;
   }
 }

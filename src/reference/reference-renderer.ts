@@ -1,7 +1,11 @@
 // The float64 CPU reference image of a frame: stratified samples per pixel, box-filtered, plus regions.
+import { defaultScene } from '../scene/default-scene';
+import type { Scene } from '../scene/scene';
+import type { DecodedImage } from './image-texture';
+import { regionMap, regionOfCodes } from './regions';
+import type { ReferenceState, ViewState } from './reference-state';
 import { SampleTracer, type TextureFilter } from './sample-tracer';
-import { regionMap } from './regions';
-import type { ReferenceState } from './reference-state';
+import type { SurfaceCodes } from './surface-codes';
 
 export interface ReferenceOptions {
   /**
@@ -18,33 +22,49 @@ export interface ReferenceOptions {
    * 'box' when supersampling.
    */
   textureFilter?: TextureFilter;
+  /**
+   * Decoded pixels of the scene's image textures, by URL (RGBA8, top row first). A material
+   * whose image is missing here is drawn with the procedural texture.
+   */
+  images?: ReadonlyMap<string, DecodedImage>;
 }
 
 export interface ReferenceImage {
   width: number;
   height: number;
-  view: ReferenceState['view'];
+  view: ViewState['view'];
   samplesPerAxis: number;
   textureFilter: TextureFilter;
   /** RGBA8, top row first, round(c·255), alpha 255 — comparable with `capture()`. */
   rgba: Uint8ClampedArray;
   /** RGB in 0..1, float64, top row first: the reference itself, before quantisation. */
   rgb: Float64Array;
-  /** Per pixel: 0 background, 1 cube, 2 sphere, 3 glass, 4 edge band (regions.ts). */
+  /**
+   * Per pixel: 0 background, 1 cube (any box), 2 sphere (any other object), 3 glass, 4 edge
+   * band (regions.ts).
+   */
   regions: Uint8Array;
   /**
    * Per pixel, the key of its first sample: the surfaces it saw, primary + 9·behind +
-   * 81·reflected (sample-tracer.ts). Geometry, not colour: `reflectsCube` reads it.
+   * 81·reflected in the default scene (sample-tracer.ts; `codes.base` in general). Geometry,
+   * not colour: `glassReflectsCube` reads it.
    */
   keys: Int32Array;
+  /** The surface codes the keys are written in: which object each code names (renderScene sets it). */
+  codes?: SurfaceCodes;
+}
+
+/** renderScene of SPEC §3's default scene with the cube at `state.cubeDistance`, turning at `state.spin`. */
+export function renderReference(state: ReferenceState, options: ReferenceOptions = {}): ReferenceImage {
+  return renderScene(defaultScene(state.cubeDistance, state.spin), state, options);
 }
 
 /**
- * Renders `state.view` ('final', 'scene', 'reflection' or 'fresnel') of the default scene
- * as the GPU path would with exact geometry, shading and texture filtering. Pure: no DOM,
- * no Node APIs; runs in a browser, a worker or Node.
+ * Renders `state.view` ('final', 'scene', 'reflection' or 'fresnel') of `scene` as the GPU
+ * path would with exact geometry, shading and texture filtering. Pure: no DOM, no Node APIs;
+ * runs in a browser, a worker or Node.
  */
-export function renderReference(state: ReferenceState, options: ReferenceOptions = {}): ReferenceImage {
+export function renderScene(scene: Scene, state: ViewState, options: ReferenceOptions = {}): ReferenceImage {
   if (state.view === 'passes') {
     throw new Error('glass-plane-scene: the reference renderer draws one view at a time, not "passes"');
   }
@@ -52,7 +72,8 @@ export function renderReference(state: ReferenceState, options: ReferenceOptions
   const textureFilter = options.textureFilter ?? (n === 1 ? 'point' : 'box');
   const width = Math.max(0, Math.floor(state.width));
   const height = Math.max(0, Math.floor(state.height));
-  const tracer = new SampleTracer(state, textureFilter);
+  const tracer = new SampleTracer(scene, state, textureFilter, options.images);
+  const codes = tracer.scene.codes;
   const rgb = new Float64Array(width * height * 3);
   const rgba = new Uint8ClampedArray(width * height * 4);
   const keys = new Int32Array(width * height);
@@ -89,6 +110,6 @@ export function renderReference(state: ReferenceState, options: ReferenceOptions
   }
   return {
     width, height, view: state.view, samplesPerAxis: n, textureFilter,
-    rgba, rgb, regions: regionMap(keys, mixed, width, height), keys,
+    rgba, rgb, regions: regionMap(keys, mixed, width, height, regionOfCodes(scene, codes)), keys, codes,
   };
 }

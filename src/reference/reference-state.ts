@@ -1,13 +1,15 @@
-// What the reference renderer reads from a frame: the scene-defining part of the GPU's FrameState.
+// What the reference renderer reads from a frame: the image-defining part of the GPU's FrameState.
 import type { FrameState } from '../render/types';
 
 /**
- * The fields of `FrameState` that define the image. Quality knobs (reflection scale, MSAA,
- * shading, tessellation) are the GPU's approximations; the reference has none, so any
- * FrameState is accepted as it is.
+ * The view of a scene: canvas size, clock, glass optics, camera and which view to draw. Quality
+ * knobs (reflection scale, MSAA, shading, tessellation) are the GPU's approximations; the
+ * reference has none, so any FrameState is accepted as it is.
  */
-export type ReferenceState = Pick<
+export type ViewState = Pick<
   FrameState,
-  'width' | 'height' | 'time' | 'spin' | 'cubeDistance' | 'transparency' | 'ior' | 'fresnel'
-  | 'fov' | 'cameraPosition' | 'yaw' | 'pitch' | 'view'
+  'width' | 'height' | 'time' | 'transparency' | 'ior' | 'fresnel' | 'fov' | 'cameraPosition' | 'yaw' | 'pitch' | 'view'
 >;
+
+/** A view of the default scene (SPEC §3): the view plus the cube's distance and spin. */
+export type ReferenceState = ViewState & Pick<FrameState, 'spin' | 'cubeDistance'>;

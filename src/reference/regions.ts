@@ -1,6 +1,7 @@
 // The per-pixel region map: what a pixel shows, or the edge band where its error is dominated by edges.
-import { isCube, SURFACE_GLASS, SURFACE_SPHERE } from './ray-scene';
+import type { Scene } from '../scene/scene';
 import { KEY_BASE } from './sample-tracer';
+import type { SurfaceCodes } from './surface-codes';
 
 export const REGION_BACKGROUND = 0;
 export const REGION_CUBE = 1;
@@ -10,7 +11,12 @@ export const REGION_EDGE = 4;
 
 export type Region = 0 | 1 | 2 | 3 | 4;
 
-/** The region of the first visible surface named by a sample key. */
+/** The default scene's codes (SurfaceCodes of SPEC §3's scene): cube faces 1..6, sphere 7, glass 8. */
+const SURFACE_SPHERE = 7;
+const SURFACE_GLASS = 8;
+const isCube = (surface: number): boolean => surface >= 1 && surface <= 6;
+
+/** The region of the first visible surface named by a sample key of the default scene. */
 export function regionOfKey(key: number): Region {
   const primary = key % KEY_BASE;
   if (isCube(primary)) return REGION_CUBE;
@@ -27,7 +33,24 @@ export function regionOfKey(key: number): Region {
  * texture footprint was singular: grazing incidence, the sphere's poles). The edge band is the
  * boundary pixels grown by one pixel: every pixel within about 1.5 px of a boundary.
  */
-export function regionMap(keys: Int32Array, mixed: Uint8Array, width: number, height: number): Uint8Array {
+/**
+ * regionOfKey for any scene: boxes count as the cube region, every other object as the sphere
+ * region (both are 'objects' to the metrics), the glass as glass. For the default scene it is
+ * regionOfKey.
+ */
+export function regionOfCodes(scene: Scene, codes: SurfaceCodes): (key: number) => Region {
+  return (key) => {
+    const primary = key % codes.base;
+    if (primary === codes.glass) return REGION_GLASS;
+    const object = codes.objectOfCode(primary);
+    if (object < 0) return REGION_BACKGROUND;
+    return scene.objects[object].geometry.kind === 'box' ? REGION_CUBE : REGION_SPHERE;
+  };
+}
+
+export function regionMap(
+  keys: Int32Array, mixed: Uint8Array, width: number, height: number, regionOf: (key: number) => Region = regionOfKey,
+): Uint8Array {
   const boundary = new Uint8Array(width * height);
   for (let y = 0; y < height; y++) {
     for (let x = 0; x < width; x++) {
@@ -39,7 +62,7 @@ export function regionMap(keys: Int32Array, mixed: Uint8Array, width: number, he
   for (let y = 0; y < height; y++) {
     for (let x = 0; x < width; x++) {
       const i = y * width + x;
-      regions[i] = anyNear(boundary, width, height, x, y) ? REGION_EDGE : regionOfKey(keys[i]);
+      regions[i] = anyNear(boundary, width, height, x, y) ? REGION_EDGE : regionOf(keys[i]);
     }
   }
   return regions;
@@ -67,9 +90,16 @@ function anyNear(flags: Uint8Array, width: number, height: number, x: number, y:
 }
 
 /**
- * Is this a pixel where the glass reflects the cube? Read from a sample key (the geometry the
- * sample's rays hit), never from colours: primary surface the glass, mirrored ray on the cube.
+ * Is this a pixel where the glass reflects the cube? Read from a sample key of the default
+ * scene (the geometry the sample's rays hit), never from colours: primary surface the glass,
+ * mirrored ray on the cube. For any scene: glassReflectsObject.
  */
 export function glassReflectsCube(key: number): boolean {
   return key % KEY_BASE === SURFACE_GLASS && isCube(Math.floor(key / (KEY_BASE * KEY_BASE)) % KEY_BASE);
+}
+
+/** Is this a pixel where the glass reflects object `index` of the scene the codes were made for? */
+export function glassReflectsObject(key: number, codes: SurfaceCodes, index: number): boolean {
+  const [primary, , reflected] = codes.digits(key);
+  return primary === codes.glass && codes.objectOfCode(reflected) === index;
 }

@@ -1,58 +1,85 @@
 // One sample of one view: primary ray, what lies behind the glass (B), the mirror ray (R), composited.
-import { reflectPoint, signedDistance } from '../math/mirror';
-import { BACKGROUND, CAMERA, CUBE, GLASS, SPHERE, TEXTURE_SIZE } from '../scene/default-scene';
+import { reflectPoint, signedDistance, type Plane } from '../math/mirror';
+import type { Scene } from '../scene/scene';
+import { visible } from './clip';
+import type { DecodedImage } from './image-texture';
 import { PinholeCamera } from './pinhole-camera';
 import { Ray } from './ray';
-import { RayScene, SurfaceHit, SURFACE_GLASS, SURFACE_NONE, isCube } from './ray-scene';
-import { clamp01, composeGlass, glassFresnel, shadeObject } from './shade';
-import { TextureSampler } from './texture-sampler';
-import type { ReferenceState } from './reference-state';
+import { RayScene } from './ray-scene';
+import type { ViewState } from './reference-state';
+import { clamp01, composeGlass, glassFresnel, prepareLight, shadeObject, type PreparedLight } from './shade';
+import type { SurfaceCodes } from './surface-codes';
+import { SurfaceHit, SURFACE_NONE } from './surface-hit';
+import { SurfaceTexture, type TextureFilter } from './surface-texture';
 
-/** 'point': bilinear at the sample's UV (GL LINEAR at mip 0). 'box': exact mean over its footprint. */
-export type TextureFilter = 'point' | 'box';
+export { MAX_FOOTPRINT_TEXELS, type TextureFilter } from './surface-texture';
 
-/** Longest footprint edge, in texels: beyond it (grazing angles, sphere poles) it is shortened. */
-export const MAX_FOOTPRINT_TEXELS = 64;
-
-/** Surfaces per key digit (0 none, 1..6 cube faces, 7 sphere, 8 glass). */
+/** Surfaces per key digit in the default scene (0 none, 1..6 cube faces, 7 sphere, 8 glass). */
 export const KEY_BASE = 9;
-/** Added to a key when a texture footprint had to be shortened (a singular mapping). */
-export const KEY_SINGULAR = KEY_BASE ** 3;
 
-const { near: NEAR, far: FAR } = CAMERA;
+/** Surfaces one ray passes through at most: the last one is taken as opaque. */
+export const MAX_LAYERS = 16;
+
+/** Per transparency layer, for one path (direct or mirrored): its hits and colour buffers. */
+class Layer {
+  readonly a = new SurfaceHit();
+  readonly b = new SurfaceHit();
+  readonly glass = new SurfaceHit();
+  /** The colour of this layer's ray segment (written by the layer above). */
+  readonly colour = new Float64Array(3);
+  readonly behind = new Float64Array(3);
+  readonly reflection = new Float64Array(3);
+  readonly tex = new Float64Array(3);
+}
 
 /**
- * Traces samples of one frame. A sample returns its colour and a key naming every surface
- * it saw — primary + 9·behind + 81·reflected, + KEY_SINGULAR when a texture footprint was
- * shortened (grazing incidence, the sphere's poles, where the linearised footprint is not
- * to be trusted) — so pixels whose samples disagree, or whose neighbours do, can be told
- * apart as edges (regions.ts).
+ * Traces samples of one frame. A sample returns its colour and a key naming what it saw:
+ * primary + base·behind + base²·reflected (the surface codes of SurfaceCodes: behind is the
+ * first surface past a glass or transparent primary, reflected the first surface the glass
+ * mirrors), + base³ when a texture footprint was shortened (grazing incidence, the sphere's
+ * poles, where the linearised footprint is not to be trusted), so pixels whose samples
+ * disagree, or whose neighbours do, can be told apart as edges (regions.ts).
+ *
+ * Order of transparency: an object of opacity α < 1 gives colour·α + behind·(1 − α), behind =
+ * the colour along the same ray past it (the next surface: another object, the glass, or the
+ * background), each step clamped as an 8-bit target holds it — the sorted back-to-front blend
+ * of SPEC §11's formula, whatever the draw order. The glass takes part in that order too: a
+ * transparent object in front of the glass is blended over the glass's result.
  */
 export class SampleTracer {
+  readonly scene: RayScene;
   private readonly camera: PinholeCamera;
-  private readonly scene: RayScene;
-  private readonly sampler = new TextureSampler();
+  private readonly lights: readonly PreparedLight[];
+  private readonly texture: SurfaceTexture;
+  private readonly plane: Plane | null;
+  private readonly codes: SurfaceCodes;
   private readonly primary = new Ray();
   private readonly mirrored = new Ray();
   // Direct and mirrored paths keep their own hits: B is still in use when R is traced.
-  private readonly cubeHit = new SurfaceHit();
-  private readonly sphereHit = new SurfaceHit();
-  private readonly mirroredCubeHit = new SurfaceHit();
-  private readonly mirroredSphereHit = new SurfaceHit();
-  private readonly glassHit = new SurfaceHit();
+  private readonly direct: Layer[] = [];
+  private readonly mirror: Layer[] = [];
   private readonly mirroredEye = new Float64Array(3);
-  /** +1 when the eye is on the +Z side of the glass (z = 0 counts as +), else −1. */
+  /** +1 when the eye is on the side the glass normal points to (on the plane counts as +), else −1. */
   private readonly side: number;
-  private readonly behind = new Float64Array(3);
-  private readonly reflection = new Float64Array(3);
-  /** Set by textureAt when it shortened a footprint during the current sample. */
-  private singular = false;
+  /** The first glass reflection's code in the current sample. */
+  private reflected = SURFACE_NONE;
 
-  constructor(private readonly state: ReferenceState, private readonly filter: TextureFilter) {
-    this.camera = new PinholeCamera(state);
-    this.scene = new RayScene(state);
-    this.side = signedDistance(GLASS.plane, this.camera.eye) >= 0 ? 1 : -1;
-    reflectPoint(this.mirroredEye, this.camera.eye, GLASS.plane);
+  constructor(
+    scene: Scene, private readonly view: ViewState, filter: TextureFilter,
+    images?: ReadonlyMap<string, DecodedImage>,
+  ) {
+    this.camera = new PinholeCamera(view);
+    this.scene = new RayScene(scene, view.time);
+    this.codes = this.scene.codes;
+    this.lights = scene.lights.map(prepareLight);
+    this.texture = new SurfaceTexture(filter, images);
+    this.plane = this.scene.glass === null ? null : this.scene.glass.plane;
+    this.side = this.plane === null || signedDistance(this.plane, this.camera.eye) >= 0 ? 1 : -1;
+    if (this.plane !== null) reflectPoint(this.mirroredEye, this.camera.eye, this.plane);
+    for (let i = 0; i <= MAX_LAYERS; i++) {
+      this.direct.push(new Layer());
+      this.mirror.push(new Layer());
+    }
   }
 
   /**
@@ -60,34 +87,50 @@ export class SampleTracer {
    * (x, y) whose footprint is fx × fy NDC units, into `out`; returns its key.
    */
   sample(x: number, y: number, fx: number, fy: number, out: Float64Array): number {
-    this.singular = false;
+    this.texture.singular = false;
+    this.reflected = SURFACE_NONE;
     const key = this.trace(x, y, fx, fy, out);
-    return this.singular ? key + KEY_SINGULAR : key;
+    const b = this.codes.base;
+    return this.texture.singular ? key + b * b * b : key;
   }
 
   private trace(x: number, y: number, fx: number, fy: number, out: Float64Array): number {
     const ray = this.camera.rayThrough(this.primary, x, y, fx, fy);
-    const view = this.state.view;
-    if (view === 'reflection') return this.traceReflection(ray, out);
-    const object = this.nearestObject(ray, 0, this.cubeHit, this.sphereHit);
-    const glass = view !== 'scene' && this.scene.hitGlass(ray, this.glassHit) && visible(this.glassHit.t)
-      && (object === null || this.glassHit.t < object.t) ? this.glassHit : null;
+    const view = this.view.view;
+    if (view === 'reflection') return this.reflectionAlong(ray, out);
+    if (view === 'fresnel') return this.fresnelAlong(ray, out);
+    const b = this.codes.base;
+    const second = this.along(ray, -Infinity, 0, view !== 'scene', out);
+    return this.first + b * second + b * b * this.reflected;
+  }
+
+  /** The primary code found by the last `along` at level 0. */
+  private first = SURFACE_NONE;
+
+  /**
+   * The colour along the direct `ray` past depth `tMin` into `out`; sets `first` to the code
+   * of the surface it meets and returns the code of the one after it (for glass or a
+   * transparent surface), else SURFACE_NONE.
+   */
+  private along(ray: Ray, tMin: number, level: number, glassOn: boolean, out: Float64Array): number {
+    const layer = this.direct[level];
+    const object = this.nearest(ray, tMin, 0, layer);
+    const g = layer.glass;
+    const glass = glassOn && this.scene.hitGlass(ray, g) && g.t > tMin && visible(g.t)
+      && (object === null || g.t < object.t) ? g : null;
     if (glass === null) {
-      if (view === 'fresnel') out.fill(0);
-      else this.shade(object, ray, this.camera.eye, out);
-      return object ? object.surface : SURFACE_NONE;
+      const next = this.shadeChain(object, ray, this.camera.eye, 0, level, glassOn, out);
+      this.first = object ? object.surface : SURFACE_NONE;
+      return next;
     }
-    const { fresnel: model, ior, transparency } = this.state;
+    const { fresnel: model, ior, transparency } = this.view;
     const f = glassFresnel(model, ior, glass, ray.direction);
-    if (view === 'fresnel') {
-      out.fill(f);
-      return SURFACE_GLASS;
-    }
     const behind = object ? object.surface : SURFACE_NONE;
-    this.shade(object, ray, this.camera.eye, this.behind);
-    const reflected = this.traceReflection(this.primary, this.reflection);
-    composeGlass(model, f, transparency, this.textureAt(glass, ray), this.reflection, this.behind, out);
-    return SURFACE_GLASS + KEY_BASE * behind + KEY_BASE * KEY_BASE * reflected;
+    this.shadeChain(object, ray, this.camera.eye, 0, level, false, layer.behind);
+    this.reflected = this.reflectionAlong(ray, layer.reflection);
+    composeGlass(model, f, transparency, this.texture.glassTexture(glass, ray), layer.reflection, layer.behind, out);
+    this.first = glass.surface;
+    return behind;
   }
 
   /**
@@ -96,86 +139,99 @@ export class SampleTracer {
    * only what lies on the eye's side (the clip plane), at view depth t ∈ [near, far], shaded
    * with V towards the mirrored eye. Returns the surface code.
    */
-  private traceReflection(ray: Ray, out: Float64Array): number {
-    const m = this.mirrored.mirrorOf(ray);
-    const object = this.nearestObject(m, this.side, this.mirroredCubeHit, this.mirroredSphereHit);
-    this.shade(object, m, this.mirroredEye, out);
+  private reflectionAlong(ray: Ray, out: Float64Array): number {
+    if (this.plane === null) {
+      this.background(out);
+      return SURFACE_NONE;
+    }
+    return this.mirroredAlong(this.mirrored.mirrorOf(ray, this.plane), -Infinity, 0, out);
+  }
+
+  private mirroredAlong(m: Ray, tMin: number, level: number, out: Float64Array): number {
+    const object = this.nearest(m, tMin, this.side, this.mirror[level]);
+    this.shadeChain(object, m, this.mirroredEye, this.side, level, false, out);
     return object ? object.surface : SURFACE_NONE;
   }
 
-  /**
-   * The nearest object whose front face the ray enters at a depth the GPU keeps: the cube
-   * and sphere are drawn with back faces culled, so an entry point outside [near, far]
-   * (or on the clipped side, when `clipSide` ≠ 0) hides that object entirely.
-   */
-  private nearestObject(ray: Ray, clipSide: number, cubeHit: SurfaceHit, sphereHit: SurfaceHit): SurfaceHit | null {
-    const cube = this.scene.hitCube(ray, cubeHit) && kept(cubeHit, clipSide) ? cubeHit : null;
-    const sphere = this.scene.hitSphere(ray, sphereHit) && kept(sphereHit, clipSide) ? sphereHit : null;
-    if (cube === null) return sphere;
-    return sphere === null || cube.t <= sphere.t ? cube : sphere;
+  /** debug-view fresnel: F on glass not hidden by an opaque object, black elsewhere. */
+  private fresnelAlong(ray: Ray, out: Float64Array): number {
+    const layer = this.direct[0];
+    let object = this.nearest(ray, -Infinity, 0, layer);
+    const code = object ? object.surface : SURFACE_NONE;
+    while (object !== null && this.opacity(object) < 1) object = this.nearest(ray, object.t, 0, layer);
+    const g = layer.glass;
+    if (this.scene.hitGlass(ray, g) && visible(g.t) && (object === null || g.t < object.t)) {
+      out.fill(glassFresnel(this.view.fresnel, this.view.ior, g, ray.direction));
+      return g.surface;
+    }
+    out.fill(0);
+    return code;
   }
 
-  /** Object colour (or the background when `hit` is null), clamped to [0, 1]. */
-  private shade(hit: SurfaceHit | null, ray: Ray, eye: Float64Array, out: Float64Array): void {
+  /**
+   * `hit` shaded (the background when null) into `out`; a transparent hit is blended over
+   * what lies past it on the same path. Returns the code of that next surface, if one was traced.
+   */
+  private shadeChain(
+    hit: SurfaceHit | null, ray: Ray, eye: Float64Array, clipSide: number, level: number, glassOn: boolean, out: Float64Array,
+  ): number {
     if (hit === null) {
-      out[0] = BACKGROUND[0]; out[1] = BACKGROUND[1]; out[2] = BACKGROUND[2];
-      return;
+      this.background(out);
+      return SURFACE_NONE;
     }
-    const albedo = isCube(hit.surface) ? CUBE.albedo : SPHERE.albedo;
-    shadeObject(hit, albedo, this.textureAt(hit, ray), eye, out);
+    this.shade(hit, ray, eye, clipSide === 0 ? this.direct[level] : this.mirror[level], out);
+    const alpha = clamp01(this.opacity(hit));
+    if (alpha >= 1 || level + 1 >= MAX_LAYERS) return SURFACE_NONE;
+    let next: number;
+    let behind: Float64Array;
+    if (clipSide === 0) {
+      behind = this.direct[level + 1].colour;
+      this.along(ray, hit.t, level + 1, glassOn, behind);
+      next = this.first;
+    } else {
+      behind = this.mirror[level + 1].colour;
+      next = this.mirroredAlong(ray, hit.t, level + 1, behind);
+    }
+    for (let k = 0; k < 3; k++) out[k] = clamp01(out[k] * alpha + behind[k] * (1 - alpha));
+    return next;
+  }
+
+  private opacity(hit: SurfaceHit): number {
+    return this.scene.scene.objects[hit.object].material.opacity;
+  }
+
+  /**
+   * The nearest kept object hit: entry points of boxes and spheres (they are drawn with back
+   * faces culled, so an entry point outside [near, far], on the clipped side when `clipSide` ≠ 0,
+   * or not past `tMin` hides that object entirely), the nearest triangle of a mesh in the
+   * kept interval. On a tie the earlier object wins.
+   */
+  private nearest(ray: Ray, tMin: number, clipSide: number, layer: Layer): SurfaceHit | null {
+    const tracers = this.scene.tracers;
+    const plane = this.plane;
+    let best: SurfaceHit | null = null;
+    let spare = layer.a;
+    for (let i = 0; i < tracers.length; i++) {
+      if (!tracers[i].hit(ray, tMin, clipSide, plane, spare)) continue;
+      if (best === null || spare.t < best.t) {
+        const free: SurfaceHit = best ?? (spare === layer.a ? layer.b : layer.a);
+        best = spare;
+        spare = free;
+      }
+    }
+    return best;
+  }
+
+  private background(out: Float64Array): void {
+    const bg = this.scene.scene.background;
+    out[0] = bg[0]; out[1] = bg[1]; out[2] = bg[2];
+  }
+
+  /** Object colour, clamped to [0, 1]. */
+  private shade(hit: SurfaceHit, ray: Ray, eye: Float64Array, layer: Layer, out: Float64Array): void {
+    const object = this.scene.scene.objects[hit.object];
+    const tex = this.texture.objectTexture(hit, ray, object.material, object.bounds, layer.tex);
+    shadeObject(hit, object.material, tex, this.lights, eye, out);
     out[0] = clamp01(out[0]); out[1] = clamp01(out[1]); out[2] = clamp01(out[2]);
   }
-
-  /** The texture at a hit: a bilinear point sample, or its mean over the sample's footprint. */
-  private textureAt(hit: SurfaceHit, ray: Ray): number {
-    if (this.filter === 'point') return this.sampler.bilinear(hit.u, hit.v);
-    const d = ray.direction, n = hit.n, t = hit.t;
-    const dn = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
-    if (dn === 0) {
-      this.singular = true;
-      return this.sampler.bilinear(hit.u, hit.v);
-    }
-    // ∂p = t·∂d − t(∂d·n)/(d·n)·d: the differential moved onto the tangent plane at the hit.
-    const a = FOOTPRINT_1, b = FOOTPRINT_2;
-    if (footprintEdge(ray.ddx, d, n, dn, t, hit, a)) this.singular = true;
-    if (footprintEdge(ray.ddy, d, n, dn, t, hit, b)) this.singular = true;
-    return this.sampler.boxFilter(hit.u, hit.v, a[0], a[1], b[0], b[1]);
-  }
-}
-
-const FOOTPRINT_1 = new Float64Array(2);
-const FOOTPRINT_2 = new Float64Array(2);
-
-function visible(t: number): boolean {
-  return t >= NEAR && t <= FAR;
-}
-
-/** Inside the depth range and, for the mirrored pass, on the kept side of the glass plane. */
-function kept(hit: SurfaceHit, clipSide: number): boolean {
-  return visible(hit.t) && clipSide * signedDistance(GLASS.plane, hit.p) >= 0;
-}
-
-/** One footprint edge in texels (s, t) into `out`; true when it had to be shortened to MAX_FOOTPRINT_TEXELS. */
-function footprintEdge(
-  dd: Float64Array, d: Float64Array, n: Float64Array, dn: number, t: number, hit: SurfaceHit, out: Float64Array,
-): boolean {
-  const k = (t * (dd[0] * n[0] + dd[1] * n[1] + dd[2] * n[2])) / dn;
-  let es = 0, et = 0;
-  for (let i = 0; i < 3; i++) {
-    const dp = t * dd[i] - k * d[i];
-    es += hit.gu[i] * dp;
-    et += hit.gv[i] * dp;
-  }
-  es *= TEXTURE_SIZE;
-  et *= TEXTURE_SIZE;
-  const len = Math.hypot(es, et);
-  if (len <= MAX_FOOTPRINT_TEXELS) {
-    out[0] = es;
-    out[1] = et;
-    return false;
-  }
-  // NaN/Infinity (a degenerate mapping) end up as NaN, which boxFilter treats as zero area.
-  out[0] = (es * MAX_FOOTPRINT_TEXELS) / len;
-  out[1] = (et * MAX_FOOTPRINT_TEXELS) / len;
-  return true;
 }

@@ -1,34 +1,83 @@
-// Per-sample shading in float64: Blinn-Phong for the objects (SPEC §3) and the glass equation (SPEC §4).
+// Per-sample shading in float64: Blinn-Phong for the objects (SPEC §3, §9) and the glass equation (SPEC §4).
 import { fresnel, type FresnelModel } from '../math/fresnel';
-import { GLASS, LIGHT, MATERIAL } from '../scene/default-scene';
-import type { SurfaceHit } from './ray-scene';
+import { GLASS } from '../scene/default-scene';
+import type { Light, Material } from '../scene/scene';
+import type { SurfaceHit } from './surface-hit';
 
-const [LX, LY, LZ] = LIGHT.direction;
 const BODY = GLASS.tint.map((c) => c * GLASS.darkness);
 
 export const clamp01 = (x: number): number => (x < 0 ? 0 : x > 1 ? 1 : x);
 
+/** A light with its vector ready: a unit direction towards it, or its position. */
+export interface PreparedLight {
+  point: boolean;
+  x: number;
+  y: number;
+  z: number;
+  ambient: readonly number[];
+  diffuse: readonly number[];
+  specular: readonly number[];
+}
+
+export function prepareLight(light: Light): PreparedLight {
+  let [x, y, z] = light.vector;
+  if (light.kind === 'directional') {
+    const len = Math.hypot(x, y, z);
+    if (len > 0) { x /= len; y /= len; z /= len; }
+  }
+  return { point: light.kind === 'point', x, y, z, ambient: light.ambient, diffuse: light.diffuse, specular: light.specular };
+}
+
+const sums = new Float64Array(9);
+
 /**
- * out = albedo ⊙ tex · (Ia + Id·max(N·L, 0)) + (N·L > 0 ? Ks·Is·max(N·H, 0)^32 : 0), unclamped,
- * with V = normalize(eye − p), H = normalize(L + V): the GPU's per-fragment (phong) shading.
- * `eye` is the real eye for direct views and the mirrored eye for what the glass reflects.
+ * out = Σ over lights of Ka⊙tex⊙Ia + Kd⊙tex⊙Id·max(N·L, 0) + (N·L > 0 ? Ks⊙Is·max(N·H, 0)^n : 0),
+ * unclamped, with V = normalize(eye − p), H = normalize(L + V), L the unit vector towards a
+ * directional light or normalize(P − p) for a point light (no distance attenuation: SPEC §9
+ * names none): the GPU's per-fragment (phong) shading. `eye` is the real eye for direct views
+ * and the mirrored eye for what the glass reflects. Where Ka = Kd (SPEC §3's objects) the sum
+ * is formed as Kd⊙tex⊙(ΣIa + ΣId·max): the same value with fewer roundings.
  */
 export function shadeObject(
-  hit: SurfaceHit, albedo: readonly number[], tex: number, eye: Float64Array, out: Float64Array,
+  hit: SurfaceHit, material: Material, tex: Float64Array, lights: readonly PreparedLight[], eye: Float64Array, out: Float64Array,
 ): Float64Array {
   const n = hit.n, p = hit.p;
-  const nl = n[0] * LX + n[1] * LY + n[2] * LZ;
-  const diffuse = LIGHT.ambient + LIGHT.diffuse * Math.max(nl, 0);
-  let specular = 0;
-  if (nl > 0) {
-    let vx = eye[0] - p[0], vy = eye[1] - p[1], vz = eye[2] - p[2];
-    const vl = Math.hypot(vx, vy, vz);
-    vx /= vl; vy /= vl; vz /= vl;
-    const hx = LX + vx, hy = LY + vy, hz = LZ + vz;
-    const nh = (n[0] * hx + n[1] * hy + n[2] * hz) / Math.hypot(hx, hy, hz);
-    specular = MATERIAL.ks * LIGHT.specular * Math.max(nh, 0) ** MATERIAL.shininess;
+  sums.fill(0); // ambient 0..2, diffuse 3..5, specular 6..8
+  let vx = 0, vy = 0, vz = 0, haveV = false;
+  const ks = material.specular;
+  for (const light of lights) {
+    let lx = light.x, ly = light.y, lz = light.z;
+    if (light.point) {
+      lx -= p[0]; ly -= p[1]; lz -= p[2];
+      const len = Math.hypot(lx, ly, lz);
+      if (len > 0) { lx /= len; ly /= len; lz /= len; }
+    }
+    const nl = n[0] * lx + n[1] * ly + n[2] * lz;
+    const m = Math.max(nl, 0);
+    for (let k = 0; k < 3; k++) {
+      sums[k] += light.ambient[k];
+      sums[3 + k] += light.diffuse[k] * m;
+    }
+    if (nl > 0) {
+      if (!haveV) {
+        vx = eye[0] - p[0]; vy = eye[1] - p[1]; vz = eye[2] - p[2];
+        const vl = Math.hypot(vx, vy, vz);
+        vx /= vl; vy /= vl; vz /= vl;
+        haveV = true;
+      }
+      const hx = lx + vx, hy = ly + vy, hz = lz + vz;
+      const nh = (n[0] * hx + n[1] * hy + n[2] * hz) / Math.hypot(hx, hy, hz);
+      const s = Math.max(nh, 0) ** material.shininess;
+      for (let k = 0; k < 3; k++) sums[6 + k] += ks[k] * light.specular[k] * s;
+    }
   }
-  for (let k = 0; k < 3; k++) out[k] = albedo[k] * tex * diffuse + specular;
+  const ka = material.ambient, kd = material.diffuse;
+  for (let k = 0; k < 3; k++) {
+    const lit = ka[k] === kd[k]
+      ? kd[k] * tex[k] * (sums[k] + sums[3 + k])
+      : ka[k] * tex[k] * sums[k] + kd[k] * tex[k] * sums[3 + k];
+    out[k] = lit + sums[6 + k];
+  }
   return out;
 }
 

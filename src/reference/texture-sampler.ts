@@ -1,42 +1,58 @@
-// The procedural texture as a continuous function: bilinear point samples, or its exact box filter.
+// A one-channel texture as a continuous function: bilinear point samples, or its exact box filter.
 import { proceduralTexture } from '../scene/procedural-texture';
 import { TEXTURE_SIZE } from '../scene/default-scene';
 
-const N = TEXTURE_SIZE;
-const WRAP = N - 1; // REPEAT by masking: TEXTURE_SIZE is a power of two
-
 /**
- * The texture is the bilinear reconstruction of the 512×512 texels (what GL LINEAR shows
- * when magnified), repeating. Coordinates here are "texel-centre space": σ = u·512 − ½,
- * τ = v·512 − ½, so texel (i, j) sits at (i, j) and each unit cell [i, i+1]×[j, j+1] holds
- * one bilinear patch a + b·x + c·y + d·xy of its four corner texels.
+ * The texture is the bilinear reconstruction of its W×H texels (what GL LINEAR shows when
+ * magnified), repeating; by default the 512×512 procedural texture of SPEC §3. Coordinates
+ * here are "texel-centre space": σ = u·W − ½, τ = v·H − ½, so texel (i, j) sits at (i, j) and
+ * each unit cell [i, i+1]×[j, j+1] holds one bilinear patch a + b·x + c·y + d·xy of its four
+ * corner texels. Row j = 0 is the first row uploaded (v = 0).
  *
  * `boxFilter` integrates that function exactly over a parallelogram (the sample's footprint
  * mapped to texture space) by clipping it against every cell it covers and integrating the
  * patch over each piece with Green's theorem. Values are grey levels in 0..1 (R = G = B).
  */
 export class TextureSampler {
-  private readonly grey = new Float64Array(N * N);
+  private readonly grey: Float64Array;
+  readonly width: number;
+  readonly height: number;
+  /** W − 1 and H − 1 when powers of two (REPEAT by masking), else −1 (REPEAT by remainder). */
+  private readonly maskX: number;
+  private readonly maskY: number;
   // Clip buffers (x, y interleaved): a parallelogram clipped by two slabs has ≤ 8 vertices.
   private readonly polygon = new Float64Array(16);
   private readonly strip = new Float64Array(24);
   private readonly half = new Float64Array(24);
   private readonly piece = new Float64Array(24);
 
-  constructor() {
-    const rgba = proceduralTexture();
-    for (let i = 0; i < N * N; i++) this.grey[i] = rgba[i * 4] / 255;
+  /** `grey`: W×H values in 0..1, row by row; absent, the procedural texture's grey levels. */
+  constructor(grey?: Float64Array, width = TEXTURE_SIZE, height = TEXTURE_SIZE) {
+    if (grey === undefined) {
+      const rgba = proceduralTexture();
+      grey = new Float64Array(TEXTURE_SIZE * TEXTURE_SIZE);
+      for (let i = 0; i < grey.length; i++) grey[i] = rgba[i * 4] / 255;
+      width = height = TEXTURE_SIZE;
+    }
+    this.grey = grey;
+    this.width = width;
+    this.height = height;
+    this.maskX = (width & (width - 1)) === 0 ? width - 1 : -1;
+    this.maskY = (height & (height - 1)) === 0 ? height - 1 : -1;
   }
 
   /** Texel (x, y) wrapped, 0..1. */
   texel(x: number, y: number): number {
-    return this.grey[(y & WRAP) * N + (x & WRAP)];
+    const W = this.width, H = this.height;
+    const i = this.maskX >= 0 ? x & this.maskX : ((x % W) + W) % W;
+    const j = this.maskY >= 0 ? y & this.maskY : ((y % H) + H) % H;
+    return this.grey[j * W + i];
   }
 
   /** GL LINEAR at mip 0 with REPEAT, in float64. */
   bilinear(u: number, v: number): number {
-    const s = u * N - 0.5;
-    const t = v * N - 0.5;
+    const s = u * this.width - 0.5;
+    const t = v * this.height - 0.5;
     const i = Math.floor(s);
     const j = Math.floor(t);
     const x = s - i;
@@ -52,8 +68,8 @@ export class TextureSampler {
    */
   boxFilter(u: number, v: number, e1s: number, e1t: number, e2s: number, e2t: number): number {
     const area = e1s * e2t - e1t * e2s; // signed: clipping keeps the orientation
-    const cs = u * N - 0.5;
-    const ct = v * N - 0.5;
+    const cs = u * this.width - 0.5;
+    const ct = v * this.height - 0.5;
     if (!(Math.abs(area) > 1e-12)) return this.bilinear(u, v);
     const hs1 = e1s / 2, ht1 = e1t / 2, hs2 = e2s / 2, ht2 = e2t / 2;
     const p = this.polygon;

@@ -1,0 +1,40 @@
+// Which hits the GPU keeps: view depth within [near, far] and, for the mirrored pass, the eye's side of the glass.
+import { signedDistance, type Plane } from '../math/mirror';
+import { CAMERA } from '../scene/default-scene';
+import type { Ray } from './ray';
+import type { SurfaceHit } from './surface-hit';
+
+export const { near: NEAR, far: FAR } = CAMERA;
+
+export function visible(t: number): boolean {
+  return t >= NEAR && t <= FAR;
+}
+
+/**
+ * A hit at depth t is kept when t > tMin (what lies beyond a transparent surface), within
+ * [near, far], and, when `clipSide` ≠ 0 (the mirrored pass), on that side of the glass plane.
+ */
+export function kept(hit: SurfaceHit, tMin: number, clipSide: number, plane: Plane | null): boolean {
+  return hit.t > tMin && visible(hit.t) && (clipSide === 0 || clipSide * signedDistance(plane!, hit.p) >= 0);
+}
+
+/**
+ * The same rule as an interval of t along `ray`, for surfaces searched by nearest hit (meshes),
+ * into out = [lo, hi] (tMin exclusive, the rest inclusive; the difference is measure zero).
+ * Returns false when the interval is empty.
+ */
+export function keptInterval(ray: Ray, tMin: number, clipSide: number, plane: Plane | null, out: Float64Array): boolean {
+  let lo = Math.max(tMin, NEAR);
+  let hi: number = FAR;
+  if (clipSide !== 0) {
+    const o = ray.origin, d = ray.direction;
+    const s0 = clipSide * signedDistance(plane!, o);
+    const s1 = clipSide * (plane![0] * d[0] + plane![1] * d[1] + plane![2] * d[2]);
+    if (s1 > 0) lo = Math.max(lo, -s0 / s1);
+    else if (s1 < 0) hi = Math.min(hi, -s0 / s1);
+    else if (!(s0 >= 0)) return false;
+  }
+  out[0] = lo;
+  out[1] = hi;
+  return lo <= hi;
+}

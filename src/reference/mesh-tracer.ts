@@ -1,0 +1,103 @@
+// Triangle meshes (the Gaussian surface, loaded models) through a BVH built once per mesh, in object space.
+import type { Plane } from '../math/mirror';
+import type { MeshData } from '../scene/geometry/mesh-data';
+import type { ObjectTracer } from './analytic-tracers';
+import { Bvh, BvhHit } from './bvh';
+import { keptInterval } from './clip';
+import type { ObjectFrame } from './object-frame';
+import type { Ray } from './ray';
+import type { SurfaceHit } from './surface-hit';
+
+/** A mesh without (enough) UVs reads (0, 0) everywhere; its mapping should not be 'uv'. */
+const NO_UVS = new Float32Array(2);
+
+/** BVHs by mesh: a mesh shared by many objects, or rendered many times, is built once. */
+const BVHS = new WeakMap<MeshData, Bvh>();
+
+export function bvhOf(mesh: MeshData): Bvh {
+  let bvh = BVHS.get(mesh);
+  if (bvh === undefined) {
+    bvh = new Bvh(mesh.positions, mesh.indices);
+    BVHS.set(mesh, bvh);
+  }
+  return bvh;
+}
+
+/**
+ * Nearest triangle in the kept interval, both faces (user meshes are not back-face culled).
+ * Normals and UVs are interpolated with the barycentric weights; the shading normal is then
+ * turned towards the viewer (two-sided lighting, SPEC §9): it faces against the ray.
+ */
+export class MeshTracer implements ObjectTracer {
+  private readonly bvh: Bvh;
+  private readonly o = new Float64Array(3);
+  private readonly d = new Float64Array(3);
+  private readonly range = new Float64Array(2);
+  private readonly found = new BvhHit();
+  private readonly g = new Float64Array(3);
+
+  constructor(
+    readonly frame: ObjectFrame, private readonly mesh: MeshData, private readonly object: number, private readonly code: number,
+  ) {
+    this.bvh = bvhOf(mesh);
+  }
+
+  hit(ray: Ray, tMin: number, clipSide: number, plane: Plane | null, out: SurfaceHit): boolean {
+    const { o, d, range, found, frame } = this;
+    if (!keptInterval(ray, tMin, clipSide, plane, range)) return false;
+    frame.pointToObject(o, ray.origin);
+    frame.directionToObject(d, ray.direction);
+    if (!this.bvh.intersect(o[0], o[1], o[2], d[0], d[1], d[2], range[0], range[1], found)) return false;
+    this.fill(ray, found, out);
+    return true;
+  }
+
+  private fill(ray: Ray, found: BvhHit, hit: SurfaceHit): void {
+    const { o, d, g, frame } = this;
+    const { normals, uvs, indices, positions } = this.mesh;
+    const t = found.t, w1 = found.b1, w2 = found.b2, w0 = 1 - w1 - w2;
+    const i0 = indices[3 * found.triangle], i1 = indices[3 * found.triangle + 1], i2 = indices[3 * found.triangle + 2];
+    hit.surface = this.code;
+    hit.object = this.object;
+    hit.frame = frame;
+    hit.t = t;
+    const ro = ray.origin, rd = ray.direction;
+    for (let k = 0; k < 3; k++) {
+      hit.p[k] = ro[k] + t * rd[k];
+      hit.q[k] = o[k] + t * d[k];
+    }
+    // Geometric normal (object e1 × e2) and the UV gradients over the triangle's plane.
+    const e1x = positions[i1 * 3] - positions[i0 * 3], e1y = positions[i1 * 3 + 1] - positions[i0 * 3 + 1], e1z = positions[i1 * 3 + 2] - positions[i0 * 3 + 2];
+    const e2x = positions[i2 * 3] - positions[i0 * 3], e2y = positions[i2 * 3 + 1] - positions[i0 * 3 + 1], e2z = positions[i2 * 3 + 2] - positions[i0 * 3 + 2];
+    const nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
+    g[0] = nx; g[1] = ny; g[2] = nz;
+    frame.normalToWorld(hit.ng, g);
+    // Shading normal: interpolated, or the face's where the corners' normals cancel out.
+    const nq = hit.nq;
+    const vertices = positions.length / 3;
+    for (let k = 0; k < 3; k++) {
+      nq[k] = normals.length >= 3 * vertices
+        ? w0 * normals[i0 * 3 + k] + w1 * normals[i1 * 3 + k] + w2 * normals[i2 * 3 + k] : 0;
+    }
+    let len = Math.hypot(nq[0], nq[1], nq[2]);
+    if (!(len > 0)) { nq[0] = nx; nq[1] = ny; nq[2] = nz; len = Math.hypot(nx, ny, nz) || 1; }
+    nq[0] /= len; nq[1] /= len; nq[2] /= len;
+    frame.normalToWorld(hit.n, nq);
+    const n = hit.n;
+    if (n[0] * rd[0] + n[1] * rd[1] + n[2] * rd[2] > 0) { n[0] = -n[0]; n[1] = -n[1]; n[2] = -n[2]; }
+    // UVs and their gradients: ∇β = (e2 × N)/|N|², ∇γ = (N × e1)/|N|² for p = p0 + β·e1 + γ·e2.
+    const uv = uvs.length >= 2 * vertices ? uvs : NO_UVS;
+    const j0 = uv === NO_UVS ? 0 : i0, j1 = uv === NO_UVS ? 0 : i1, j2 = uv === NO_UVS ? 0 : i2;
+    const u0 = uv[j0 * 2], v0 = uv[j0 * 2 + 1];
+    const du1 = uv[j1 * 2] - u0, dv1 = uv[j1 * 2 + 1] - v0, du2 = uv[j2 * 2] - u0, dv2 = uv[j2 * 2 + 1] - v0;
+    hit.u = u0 + w1 * du1 + w2 * du2;
+    hit.v = v0 + w1 * dv1 + w2 * dv2;
+    const nn = nx * nx + ny * ny + nz * nz || 1;
+    const bx = (e2y * nz - e2z * ny) / nn, by = (e2z * nx - e2x * nz) / nn, bz = (e2x * ny - e2y * nx) / nn;
+    const cx = (ny * e1z - nz * e1y) / nn, cy = (nz * e1x - nx * e1z) / nn, cz = (nx * e1y - ny * e1x) / nn;
+    g[0] = du1 * bx + du2 * cx; g[1] = du1 * by + du2 * cy; g[2] = du1 * bz + du2 * cz;
+    frame.gradientToWorld(hit.gu, g);
+    g[0] = dv1 * bx + dv2 * cx; g[1] = dv1 * by + dv2 * cy; g[2] = dv1 * bz + dv2 * cz;
+    frame.gradientToWorld(hit.gv, g);
+  }
+}

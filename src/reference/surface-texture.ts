@@ -1,0 +1,179 @@
+// The texture value at a hit: which texture, which mapping, and a point sample or its footprint's mean.
+import { cylindricalUV, sphericalUV, triplanarUV, boundsScale } from '../scene/mapping';
+import type { Bounds, Material } from '../scene/scene';
+import { imageTexture, type ChannelTexture, type DecodedImage } from './image-texture';
+import type { Ray } from './ray';
+import type { SurfaceHit } from './surface-hit';
+import { TextureSampler } from './texture-sampler';
+
+/** 'point': bilinear at the sample's UV (GL LINEAR at mip 0). 'box': exact mean over its footprint. */
+export type TextureFilter = 'point' | 'box';
+
+/** Longest footprint edge, in texels: beyond it (grazing angles, sphere poles) it is shortened. */
+export const MAX_FOOTPRINT_TEXELS = 64;
+
+const TWO_PI = 2 * Math.PI;
+
+/**
+ * Samples textures for one frame. `singular` is set when a footprint had to be shortened (or
+ * could not be formed): the caller marks the sample's key so the region map treats it as an edge.
+ */
+export class SurfaceTexture {
+  singular = false;
+  readonly procedural: ChannelTexture;
+  private readonly images = new Map<string, ChannelTexture | null>();
+  private readonly edge1 = new Float64Array(2);
+  private readonly edge2 = new Float64Array(2);
+  private readonly uv = new Float64Array(2);
+  private readonly uvs = new Float64Array(6);
+  private readonly weights = new Float64Array(3);
+  private readonly gObj1 = new Float64Array(3);
+  private readonly gObj2 = new Float64Array(3);
+  private readonly gu = new Float64Array(3);
+  private readonly gv = new Float64Array(3);
+  private readonly part = new Float64Array(3);
+
+  constructor(private readonly filter: TextureFilter, private readonly decoded: ReadonlyMap<string, DecodedImage> = new Map()) {
+    const sampler = new TextureSampler();
+    this.procedural = { channels: [sampler], width: sampler.width, height: sampler.height };
+  }
+
+  /** An image texture by URL, decoded once; the procedural texture when it is missing or malformed. */
+  textureOf(material: Material): ChannelTexture {
+    const source = material.texture;
+    if (source.kind !== 'image') return this.procedural;
+    let tex = this.images.get(source.url);
+    if (tex === undefined) {
+      const image = this.decoded.get(source.url);
+      tex = image === undefined ? null : imageTexture(image);
+      this.images.set(source.url, tex);
+    }
+    return tex ?? this.procedural;
+  }
+
+  /** The texture (RGB, 0..1) of `material` at an object hit, through its mapping, into `out`. */
+  objectTexture(hit: SurfaceHit, ray: Ray, material: Material, bounds: Bounds, out: Float64Array): Float64Array {
+    const tex = this.textureOf(material);
+    const frame = hit.frame!;
+    const { uv, gObj1: g1, gObj2: g2, gu, gv } = this;
+    switch (material.mapping) {
+      case 'uv':
+        return this.sample(tex, hit.u, hit.v, hit.gu, hit.gv, hit, ray, out);
+      case 'cylindrical': {
+        cylindricalUV(uv, hit.q, bounds);
+        if (this.filter === 'box') {
+          const c = bounds.center, x = hit.q[0] - c[0], z = hit.q[2] - c[2];
+          const rho2 = x * x + z * z;
+          g1[0] = z / (TWO_PI * rho2); g1[1] = 0; g1[2] = -x / (TWO_PI * rho2);
+          g2[0] = 0; g2[1] = 1 / (2 * boundsScale(bounds)); g2[2] = 0;
+          frame.gradientToWorld(gu, g1);
+          frame.gradientToWorld(gv, g2);
+        }
+        return this.sample(tex, uv[0], uv[1], gu, gv, hit, ray, out);
+      }
+      case 'spherical': {
+        sphericalUV(uv, hit.q, bounds);
+        if (this.filter === 'box') {
+          const c = bounds.center;
+          const dx = hit.q[0] - c[0], dy = hit.q[1] - c[1], dz = hit.q[2] - c[2];
+          const rho2 = dx * dx + dz * dz, r2 = rho2 + dy * dy, rho = Math.sqrt(rho2);
+          // ∂u/∂q = (dz, 0, −dx)/(2π ρ²); ∂v/∂q = (e_y − (d.y/|d|²)·d)/(π ρ).
+          g1[0] = dz / (TWO_PI * rho2); g1[1] = 0; g1[2] = -dx / (TWO_PI * rho2);
+          const k = dy / r2;
+          g2[0] = -k * dx / (Math.PI * rho); g2[1] = (1 - k * dy) / (Math.PI * rho); g2[2] = -k * dz / (Math.PI * rho);
+          frame.gradientToWorld(gu, g1);
+          frame.gradientToWorld(gv, g2);
+        }
+        return this.sample(tex, uv[0], uv[1], gu, gv, hit, ray, out);
+      }
+      case 'triplanar': {
+        const { uvs, weights: w, part } = this;
+        triplanarUV(w, uvs, hit.q, hit.nq, bounds);
+        const s = 1 / (2 * boundsScale(bounds));
+        out[0] = out[1] = out[2] = 0;
+        // Projection i reads (q[A[i]], q[B[i]]): its gradients are the constant axes e_A/2r, e_B/2r.
+        for (let i = 0; i < 3; i++) {
+          if (!(w[i] > 0)) continue;
+          g1.fill(0); g2.fill(0);
+          g1[TRI_U[i]] = s; g2[TRI_V[i]] = s;
+          frame.gradientToWorld(gu, g1);
+          frame.gradientToWorld(gv, g2);
+          this.sample(tex, uvs[2 * i], uvs[2 * i + 1], gu, gv, hit, ray, part);
+          for (let k = 0; k < 3; k++) out[k] += w[i] * part[k];
+        }
+        return out;
+      }
+    }
+  }
+
+  /** The procedural grey at the glass's own UV (SPEC §3: the glass is textured too). */
+  glassTexture(hit: SurfaceHit, ray: Ray): number {
+    return this.sample(this.procedural, hit.u, hit.v, hit.gu, hit.gv, hit, ray, this.part)[0];
+  }
+
+  /**
+   * `tex` at (u, v) with world gradients gu, gv: a bilinear point sample, or the exact mean over
+   * the sample's footprint (its ray differentials moved onto the tangent plane at the hit).
+   */
+  private sample(
+    tex: ChannelTexture, u: number, v: number, gu: Float64Array, gv: Float64Array, hit: SurfaceHit, ray: Ray, out: Float64Array,
+  ): Float64Array {
+    const channels = tex.channels;
+    if (this.filter === 'point') return bilinearInto(channels, u, v, out);
+    const d = ray.direction, n = hit.ng, t = hit.t;
+    const dn = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+    if (dn === 0) {
+      this.singular = true;
+      return bilinearInto(channels, u, v, out);
+    }
+    // ∂p = t·∂d − t(∂d·n)/(d·n)·d: the differential moved onto the tangent plane at the hit.
+    const a = this.edge1, b = this.edge2;
+    if (footprintEdge(ray.ddx, d, n, dn, t, gu, gv, tex, a)) this.singular = true;
+    if (footprintEdge(ray.ddy, d, n, dn, t, gu, gv, tex, b)) this.singular = true;
+    if (channels.length === 1) {
+      out[0] = out[1] = out[2] = channels[0].boxFilter(u, v, a[0], a[1], b[0], b[1]);
+    } else {
+      for (let k = 0; k < 3; k++) out[k] = channels[k].boxFilter(u, v, a[0], a[1], b[0], b[1]);
+    }
+    return out;
+  }
+}
+
+/** Triplanar projection i: the object axes its u and v run along (see triplanarUV). */
+const TRI_U = [2, 0, 0];
+const TRI_V = [1, 2, 1];
+
+function bilinearInto(channels: readonly TextureSampler[], u: number, v: number, out: Float64Array): Float64Array {
+  if (channels.length === 1) {
+    out[0] = out[1] = out[2] = channels[0].bilinear(u, v);
+  } else {
+    for (let k = 0; k < 3; k++) out[k] = channels[k].bilinear(u, v);
+  }
+  return out;
+}
+
+/** One footprint edge in texels (s, t) into `out`; true when it had to be shortened to MAX_FOOTPRINT_TEXELS. */
+function footprintEdge(
+  dd: Float64Array, d: Float64Array, n: Float64Array, dn: number, t: number,
+  gu: Float64Array, gv: Float64Array, tex: ChannelTexture, out: Float64Array,
+): boolean {
+  const k = (t * (dd[0] * n[0] + dd[1] * n[1] + dd[2] * n[2])) / dn;
+  let es = 0, et = 0;
+  for (let i = 0; i < 3; i++) {
+    const dp = t * dd[i] - k * d[i];
+    es += gu[i] * dp;
+    et += gv[i] * dp;
+  }
+  es *= tex.width;
+  et *= tex.height;
+  const len = Math.hypot(es, et);
+  if (len <= MAX_FOOTPRINT_TEXELS) {
+    out[0] = es;
+    out[1] = et;
+    return false;
+  }
+  // NaN/Infinity (a degenerate mapping) end up as NaN, which boxFilter treats as zero area.
+  out[0] = (es * MAX_FOOTPRINT_TEXELS) / len;
+  out[1] = (et * MAX_FOOTPRINT_TEXELS) / len;
+  return true;
+}
