@@ -7,8 +7,12 @@ precision highp float;
 uniform sampler2D uTexture;
 uniform float uOpacity;
 uniform float uImageTexture;   // 1: an image, read at (u, 1 − v) (OBJ: v = 0 is its bottom row)
+uniform int uMapping;          // 0 uv, 1 triplanar, 2 cylindrical, 3 spherical
+uniform vec4 uBounds;          // the object's bounding sphere (object space): centre, radius
 
 in vec2 vUv;
+in vec3 vObjPos;
+in vec3 vObjNormal;
 #if defined(SHADING_PHONG)
 in vec3 vRelPos;
 in vec3 vNormal;
@@ -25,6 +29,32 @@ in float vClipDistance;
 
 out vec4 outColor;
 
+const float PI = 3.141592653589793;
+
+vec3 tex(vec2 uv) {
+  return texture(uTexture, uImageTexture > 0.5 ? vec2(uv.x, 1.0 - uv.y) : uv).rgb;
+}
+
+/** Seed 001's mappings, formula for formula as src/scene/mapping.ts writes them. */
+vec3 surfaceTexture() {
+  if (uMapping == 0) return tex(vUv);
+  float r = uBounds.w > 0.0 ? uBounds.w : 1.0;
+  vec3 q = vObjPos - uBounds.xyz;
+  if (uMapping == 1) {
+    float len = length(vObjNormal);
+    vec3 n = len > 0.0 ? abs(vObjNormal / len) : vec3(1.0);
+    vec3 w = n * n * n * n; // TRIPLANAR_SHARPNESS = 4
+    w /= (w.x + w.y + w.z);
+    vec3 s = 0.5 + q / (2.0 * r);
+    return w.x * tex(s.zy) + w.y * tex(s.xz) + w.z * tex(s.xy);
+  }
+  float u = 0.5 + atan(q.x, q.z) / (2.0 * PI);
+  if (uMapping == 2) return tex(vec2(u, 0.5 + q.y / (2.0 * r)));
+  float len = length(q);
+  float ny = len > 0.0 ? q.y / len : 0.0;
+  return tex(vec2(u, acos(clamp(-ny, -1.0, 1.0)) / PI));
+}
+
 void main() {
 #if defined(CLIP_PLANE) && !defined(CLIP_DISTANCE)
   if (vClipDistance < 0.0) discard;
@@ -36,6 +66,5 @@ void main() {
 #else
   vec3 a = vLightA, s = vLightS;
 #endif
-  vec2 uv = uImageTexture > 0.5 ? vec2(vUv.x, 1.0 - vUv.y) : vUv;
-  outColor = vec4(texture(uTexture, uv).rgb * a + s, uOpacity);
+  outColor = vec4(surfaceTexture() * a + s, uOpacity);
 }

@@ -19,6 +19,8 @@ uniform highp vec4 uClipPlane;
 #endif
 
 out vec2 vUv;
+out vec3 vObjPos;     // object space, for the texture mappings (standard.frag)
+out vec3 vObjNormal;
 #if defined(SHADING_PHONG)
 out highp vec3 vRelPos;
 out vec3 vNormal;
@@ -36,6 +38,8 @@ out highp float vClipDistance;
 void main() {
   vec4 rel = uModelRelative * vec4(aPosition, 1.0);
   vUv = aUv;
+  vObjPos = aPosition;
+  vObjNormal = aNormal;
 #if defined(SHADING_PHONG)
   vRelPos = rel.xyz;
   vNormal = uNormalMatrix * aNormal;

@@ -64,7 +64,7 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean)
         gl.depthMask(false);
       }
       setMatrices(gl, program, mirrored ? m.mirrored : m.main);
-      setMaterial(gl, program, o.material);
+      setMaterial(gl, program, o);
       ctx.objectMeshes.get(i, o.geometry, m, ctx.state).draw();
       draws++;
     }

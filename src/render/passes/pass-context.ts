@@ -8,7 +8,9 @@ import type { DrawMatrices, FrameSetup, LightVectors } from '../frame-setup';
 import type { ObjectMeshes } from '../object-meshes';
 import type { ProgramCache } from '../programs';
 import type { FrameState } from '../types';
-import type { Material, Scene } from '../../scene/scene';
+import type { Mapping, Material, Scene, SceneObject } from '../../scene/scene';
+
+const MAPPING_CODE: Record<Mapping, number> = { uv: 0, triplanar: 1, cylindrical: 2, spherical: 3 };
 
 /** A rectangle of the bound framebuffer, in pixels, origin bottom-left. */
 export interface Viewport {
@@ -64,8 +66,12 @@ export function setLights(gl: WebGL2RenderingContext, p: Program, setup: FrameSe
   gl.uniform3fv(p.location('uLightSpecular'), setup.lightSpecular);
 }
 
-export function setMaterial(gl: WebGL2RenderingContext, p: Program, m: Material): void {
+export function setMaterial(gl: WebGL2RenderingContext, p: Program, o: SceneObject): void {
+  const m: Material = o.material;
   const { ambient: a, diffuse: d, specular: s } = m;
+  const c = o.bounds.center;
+  gl.uniform1i(p.location('uMapping'), MAPPING_CODE[m.mapping] ?? 0);
+  gl.uniform4f(p.location('uBounds'), c[0], c[1], c[2], o.bounds.radius);
   gl.uniform3f(p.location('uKa'), a[0], a[1], a[2]);
   gl.uniform3f(p.location('uKd'), d[0], d[1], d[2]);
   gl.uniform3f(p.location('uKs'), s[0], s[1], s[2]);
