@@ -4,8 +4,10 @@ import { Renderer } from '../src/render/renderer';
 import { DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
 import type { FrameState } from '../src/render/types';
 import { ThreePeer } from './three-peer';
-import type { Knobs } from './configs';
+import { DEFAULTS, type Knobs } from './configs';
 import type { BenchView } from './views';
+import { BENCH_SCENES } from './scenes';
+import type { Shading } from '../src/render/types';
 
 export interface Scene {
   width: number;
@@ -138,6 +140,30 @@ const api = {
     }
     resize(oursCanvas, s);
     const px = renderer.read('screen', s);
+    return { width: px.width, height: px.height, data: toBase64(px.data) };
+  },
+
+  /**
+   * Issue 9's scenes (bench/scenes.ts) at the default knobs with `shading`: ms per frame over
+   * `frames` frames ('final', or 'scene' for the scene pass alone), after `warmup` frames.
+   */
+  sceneTime(index: number, shading: Shading, size: Scene, mode: 'final' | 'scene', frames: number, warmup: number): number {
+    const b = BENCH_SCENES[index];
+    const s = { ...frameState(size, { ...DEFAULTS, shading }, b.view, mode) };
+    resize(oursCanvas, s);
+    for (let i = 0; i < warmup; i++) renderer.render(s, b.scene);
+    finish(gl);
+    const t0 = performance.now();
+    for (let i = 0; i < frames; i++) renderer.render(s, b.scene);
+    finish(gl);
+    return (performance.now() - t0) / frames;
+  },
+
+  scenePixels(index: number, shading: Shading, size: Scene): { width: number; height: number; data: string } {
+    const b = BENCH_SCENES[index];
+    const s = frameState(size, { ...DEFAULTS, shading }, b.view);
+    resize(oursCanvas, s);
+    const px = renderer.read('screen', s, b.scene);
     return { width: px.width, height: px.height, data: toBase64(px.data) };
   },
 

@@ -1,0 +1,81 @@
+// `npm run bench`, issue 9's rows: seed 004's Gaussian at 40² and 400² under flat, Gouraud and
+// Phong (ms/frame and PSNR against the float64 reference), and a ~100k-triangle mesh over a glass
+// floor, full frame against the scene pass alone (the reflection's overhead). Writes
+// bench/scenes.md; BENCH_SMOKE=1 runs one small row so the pipeline cannot rot.
+import { writeFileSync } from 'node:fs';
+import { test, expect } from '../tests/e2e/fixtures';
+import { renderScene, compareImages, type ReferenceImage } from '../src/reference';
+import type { FrameState, Shading } from '../src/render/types';
+import { BENCH_SCENES } from './scenes';
+import { summary, shuffled } from './stats';
+import type { Scene } from './bench-page';
+
+const SMOKE = process.env.BENCH_SMOKE === '1';
+const SIZE: Scene = SMOKE ? { width: 160, height: 90, time: 0 } : { width: 640, height: 360, time: 0 };
+const SPP_AXIS = SMOKE ? 1 : 4;
+const REPETITIONS = SMOKE ? 1 : 5;
+const FRAMES = SMOKE ? 2 : 6;
+const WARMUP = SMOKE ? 0 : 2;
+const SHADINGS: readonly Shading[] = ['flat', 'gouraud', 'phong'];
+
+type Page = import('@playwright/test').Page;
+interface SceneBench {
+  bench: {
+    sceneTime(i: number, shading: Shading, size: Scene, mode: 'final' | 'scene', frames: number, warmup: number): number;
+    scenePixels(i: number, shading: Shading, size: Scene): { width: number; height: number; data: string };
+  };
+}
+
+function reference(i: number): ReferenceImage {
+  const b = BENCH_SCENES[i];
+  const view: FrameState = {
+    width: SIZE.width, height: SIZE.height, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
+    fov: 60, cameraPosition: b.view.cameraPosition, yaw: b.view.yaw, pitch: b.view.pitch, view: 'final',
+    reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
+  };
+  return renderScene(b.scene, view, { samplesPerAxis: SPP_AXIS });
+}
+
+async function time(page: Page, i: number, shading: Shading, mode: 'final' | 'scene'): Promise<number> {
+  return page.evaluate(([i, shading, size, mode, frames, warmup]) =>
+    (window as unknown as SceneBench).bench.sceneTime(i, shading, size, mode, frames, warmup), [i, shading, SIZE, mode, FRAMES, WARMUP] as const);
+}
+
+test('bench: scenes of issue 9', async ({ page }) => {
+  test.setTimeout(30 * 60_000);
+  await page.goto('/bench/page.html');
+  await page.waitForFunction(() => 'bench' in window);
+  const indices = SMOKE ? [0] : BENCH_SCENES.map((_, i) => i);
+  const shadings = SMOKE ? (['phong'] as const) : SHADINGS;
+  const jobs = indices.flatMap((i) => shadings.flatMap((shading) => (['final', 'scene'] as const).map((mode) => ({ i, shading, mode }))));
+  const ms = new Map<string, number[]>();
+  for (let rep = 0; rep < REPETITIONS; rep++) {
+    for (const j of shuffled(jobs, 77 + rep)) {
+      const k = `${j.i}|${j.shading}|${j.mode}`;
+      ms.set(k, [...(ms.get(k) ?? []), await time(page, j.i, j.shading, j.mode)]);
+    }
+  }
+  const lines = [
+    '# Bench: scenes of issue 9', '',
+    `${SIZE.width}×${SIZE.height}, default knobs (samples 4, reflection-scale 1) but for shading; ${REPETITIONS} repetitions × ${FRAMES} frames, shuffled; ` +
+      `PSNR against the float64 reference (renderScene) at ${SPP_AXIS ** 2} spp, per-pixel Phong: the ideal each shading mode approximates.`, '',
+    '| scene | triangles | shading | ms/frame median [IQR] | scene pass alone, ms | full ÷ scene-only | PSNR dB all / objects / edges | max err |',
+    '|---|---|---|---|---|---|---|---|',
+  ];
+  for (const i of indices) {
+    const b = BENCH_SCENES[i];
+    const ref = reference(i);
+    for (const shading of shadings) {
+      const full = summary(ms.get(`${i}|${shading}|final`)!);
+      const sceneOnly = summary(ms.get(`${i}|${shading}|scene`)!);
+      const px = await page.evaluate(([i, shading, size]) => (window as unknown as SceneBench).bench.scenePixels(i, shading, size), [i, shading, SIZE] as const);
+      const c = compareImages(ref, new Uint8Array(Buffer.from(px.data, 'base64')));
+      expect(Number.isFinite(c.psnr.all), `${b.name} ${shading} PSNR`).toBe(true);
+      lines.push(`| ${b.name} | ${b.triangles.toLocaleString('en')} | ${shading} | ${full.median.toFixed(2)} [${full.iqr.toFixed(2)}] | ${sceneOnly.median.toFixed(2)} | ` +
+        `${(full.median / sceneOnly.median).toFixed(2)}× | ${c.psnr.all.toFixed(1)} / ${c.psnr.objects.toFixed(1)} / ${c.psnr.edges.toFixed(1)} | ${c.maxError.toFixed(0)} |`);
+    }
+  }
+  const md = lines.join('\n') + '\n';
+  console.log('\n' + md);
+  if (!SMOKE) writeFileSync(new URL('./scenes.md', import.meta.url), md);
+});
