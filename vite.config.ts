@@ -2,6 +2,7 @@
 //   `vite build`                    ESM, gl-matrix left as a dependency
 //   `vite build --mode standalone`  one self-contained minified file for <script type="module">
 import { defineConfig, type Plugin } from 'vite';
+import { demoModels } from './demo/demo-models.ts';
 
 /** `/` opens the demo, so `npm run demo` lands on it. */
 const demoAtRoot: Plugin = {
@@ -22,7 +23,7 @@ const demoAtRoot: Plugin = {
 export default defineConfig(({ mode }) => {
   const standalone = mode === 'standalone';
   return {
-    plugins: [demoAtRoot],
+    plugins: [demoAtRoot, demoModels()],
     appType: 'mpa',
     server: { host: '127.0.0.1', port: 5173 },
     build: {

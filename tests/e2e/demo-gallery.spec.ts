@@ -1,0 +1,52 @@
+// The demo's model gallery (issue 9): three textured models over a glass floor, switchable, each
+// control writing an attribute of the children, the controls following attribute changes.
+import { test, expect, capture } from './fixtures';
+import { compareImages, writePng, OUTPUT_DIR } from './helpers/golden';
+import path from 'node:path';
+
+const settle = (page: import('@playwright/test').Page, ms = 400) =>
+  page.evaluate((ms) => new Promise((r) => setTimeout(() => requestAnimationFrame(() => requestAnimationFrame(() => r(null))), ms)), ms);
+
+async function loaded(page: import('@playwright/test').Page, change: () => Promise<void>): Promise<string> {
+  const done = page.evaluate(() => new Promise<string>((resolve, reject) => {
+    const m = document.getElementById('model')!;
+    m.addEventListener('load', (e) => resolve((e as CustomEvent).detail.url), { once: true });
+    m.addEventListener('error', (e) => reject(new Error((e as unknown as CustomEvent).detail.message)), { once: true });
+  }));
+  await change();
+  return done;
+}
+
+test('three textured models over a glass floor, switchable; sliders write the children\u2019s attributes', async ({ page }) => {
+  test.setTimeout(90_000);
+  await page.setViewportSize({ width: 1000, height: 640 });
+  // The first model's load, caught from the start (it may load before any evaluate runs).
+  await page.addInitScript(() => {
+    (window as unknown as { __firstLoad: Promise<string> }).__firstLoad = new Promise((resolve) => {
+      document.addEventListener('load', (e) => { if (e instanceof CustomEvent) resolve(e.detail.url); }, { capture: true });
+    });
+  });
+  await page.goto('/demo/gallery.html');
+  expect(await page.evaluate(() => (window as unknown as { __firstLoad: Promise<string> }).__firstLoad)).toMatch(/bunny\.obj$/);
+  await settle(page);
+  const shots = [await capture(page, undefined, '#scene')];
+  for (const name of ['dragon', 'torus']) {
+    const url = await loaded(page, () => page.selectOption('#model-select', name).then(() => undefined));
+    expect(url).toMatch(new RegExp(`${name}\\.obj$`));
+    await settle(page);
+    shots.push(await capture(page, undefined, '#scene'));
+  }
+  for (let i = 0; i < shots.length; i++) writePng(path.join(OUTPUT_DIR, `gallery-${i}.png`), shots[i]);
+  expect(compareImages(shots[0], shots[1]).differing, 'bunny vs dragon').toBeGreaterThan(2000);
+  expect(compareImages(shots[1], shots[2]).differing, 'dragon vs torus').toBeGreaterThan(2000);
+
+  // A slider writes its attribute (Kd as "x x x") and the picture changes.
+  const before = await capture(page, undefined, '#scene');
+  await page.locator('input[data-target="model"][data-attr="diffuse"]').fill('0.2');
+  expect(await page.getAttribute('#model', 'diffuse')).toBe('0.2 0.2 0.2');
+  await settle(page, 100);
+  expect(compareImages(before, await capture(page, undefined, '#scene')).differing, 'Kd 0.8 → 0.2').toBeGreaterThan(1000);
+  // And follows an attribute set elsewhere.
+  await page.evaluate(() => document.getElementById('light')!.setAttribute('specular', '1.7 1.7 1.7'));
+  await expect(page.locator('input[data-target="light"][data-attr="specular"]')).toHaveValue('1.7');
+});
