@@ -55,7 +55,7 @@ const MUTATIONS = [
   },
   {
     name: '4 dispose() skips the texture',
-    edits: [{ file: 'src/render/renderer.ts', find: '    this.texture.dispose();\n', replace: '' }],
+    edits: [{ file: 'src/render/gl/shared-resources.ts', find: '    this.procedural?.dispose();\n', replace: '' }],
     tests: [LEAKS],
   },
   {

@@ -1,9 +1,11 @@
 // The mesh each scene object draws with this frame: built-ins from their generators, spheres at
 // the tessellation their size on screen needs, loaded meshes as given, per face when flat.
-// Objects of the same content share one mesh (reference-counted); nothing is built or looked
-// up by name in a frame where no object changed.
+// Objects of the same content share one mesh, across every renderer on the context
+// (SharedResources, reference-counted); nothing is built or looked up by name in a frame where
+// no object changed.
 import { Mesh } from './gl/mesh';
 import type { ResourceCounter } from './gl/resource-counter';
+import type { SharedResources } from './gl/shared-resources';
 import { SphereLod } from './sphere-lod';
 import { boxMesh } from '../scene/geometry/box';
 import { gaussianMesh } from '../scene/geometry/gaussian';
@@ -19,11 +21,6 @@ interface Slot {
   key: string | null;
   mesh: Mesh | null;
   lod: SphereLod | null;
-}
-
-interface Shared {
-  mesh: Mesh;
-  users: number;
 }
 
 function contentKey(g: Geometry, flat: boolean): string {
@@ -47,9 +44,9 @@ function build(g: Geometry): MeshData {
 
 export class ObjectMeshes {
   private readonly slots: Slot[] = [];
-  private readonly shared = new Map<string, Shared>();
-
-  constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter) {}
+  constructor(
+    private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, private readonly shared: SharedResources,
+  ) {}
 
   /** Segments of the first sphere drawn (stats), 0 without one. */
   get sphereSegments(): number {
@@ -72,15 +69,11 @@ export class ObjectMeshes {
     const key = contentKey(g, flat);
     if (key !== slot.key) {
       this.release(slot);
-      let entry = this.shared.get(key);
-      if (!entry) {
+      slot.mesh = this.shared.mesh(key, (counter) => {
         const data = build(g);
-        entry = { mesh: new Mesh(this.gl, this.counter, flat ? flatMesh(data) : data), users: 0 };
-        this.shared.set(key, entry);
-      }
-      entry.users++;
+        return new Mesh(this.gl, counter, flat ? flatMesh(data) : data);
+      });
       slot.key = key;
-      slot.mesh = entry.mesh;
     }
     slot.geometry = g;
     slot.flat = flat;
@@ -98,17 +91,11 @@ export class ObjectMeshes {
 
   dispose(): void {
     this.trim(0);
-    for (const e of this.shared.values()) e.mesh.dispose();
-    this.shared.clear();
   }
 
   private release(slot: Slot): void {
     if (slot.key === null) return;
-    const entry = this.shared.get(slot.key);
-    if (entry && --entry.users === 0) {
-      entry.mesh.dispose();
-      this.shared.delete(slot.key);
-    }
+    this.shared.releaseMesh(slot.key);
     slot.key = null;
     slot.mesh = null;
   }

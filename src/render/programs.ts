@@ -9,7 +9,7 @@ import lighting from '../../shaders/lighting.glsl?raw';
 import type { FresnelModel } from '../math/fresnel';
 import type { Shading } from './types';
 import { Program, ShaderError } from './gl/program';
-import type { ResourceCounter } from './gl/resource-counter';
+import type { SharedResources } from './gl/shared-resources';
 
 export type ClipMode = 'none' | 'clip-distance' | 'discard';
 
@@ -30,8 +30,12 @@ function glassHeader(model: FresnelModel, outputFresnel: boolean): string[] {
   return header;
 }
 
+/**
+ * The variants one renderer uses, found without building a key in a frame that compiles
+ * nothing. The programs themselves are compiled once per context and shared (SharedResources).
+ */
 export class ProgramCache {
-  /** Every program compiled, in order (for size and dispose). */
+  /** Every program this renderer uses, in order of first use (for size and dispose). */
   private readonly all: Program[] = [];
   // Found by their variant's parts, so a frame that compiles nothing builds no key, header or
   // array: those are made only on a miss.
@@ -45,7 +49,7 @@ export class ProgramCache {
    */
   private readonly broken = new Map<string, ShaderError>();
 
-  constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter) {}
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly shared: SharedResources) {}
 
   get size(): number {
     return this.all.length;
@@ -75,7 +79,7 @@ export class ProgramCache {
     const known = this.broken.get(key);
     if (known) throw known;
     try {
-      const p = new Program(this.gl, this.counter, key, vert, frag, header);
+      const p = this.shared.program(key, (counter) => new Program(this.gl, counter, key, vert, frag, header));
       this.all.push(p);
       return p;
     } catch (e) {
@@ -85,7 +89,7 @@ export class ProgramCache {
   }
 
   dispose(): void {
-    for (const p of this.all) p.dispose();
+    for (const p of this.all) this.shared.releaseProgram(p.name);
     this.all.length = 0;
     this.standards = {};
     this.glasses = {};

@@ -11,6 +11,7 @@ import { maxTargetSize } from './gl/limits';
 import { ResourceCounter } from './gl/resource-counter';
 import { Texture } from './gl/texture';
 import { TextureCache } from './texture-cache';
+import { SharedResources } from './gl/shared-resources';
 import { FrameSetup } from './frame-setup';
 import { ProgramCache } from './programs';
 import { beginTarget, type PassContext, type Viewport } from './passes/pass-context';
@@ -18,8 +19,7 @@ import { reflectionPass } from './passes/reflection-pass';
 import { scenePass } from './passes/scene-pass';
 import { glassPass } from './passes/glass-pass';
 import { glassMesh } from '../scene/geometry/rectangle';
-import { proceduralTexture } from '../scene/procedural-texture';
-import { defaultScene, TEXTURE_SIZE } from '../scene/default-scene';
+import { defaultScene } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
 import type { Scene } from '../scene/scene';
 import type { FrameReport, FrameState, PassName, PassReport, RenderStats, RenderView } from './types';
@@ -88,6 +88,8 @@ export class Renderer {
   private glassMeshFrame: GlassFrame | null = null;
   /** SPEC §3's scene for callers that pass none (the bench, tests), rebuilt only when it changes. */
   private defaultScene: { cubeDistance: number; spin: number; scene: Scene } | null = null;
+  /** Programs, the procedural texture and meshes, shared with every renderer on this context. */
+  private readonly shared: SharedResources;
   private readonly texture: Texture;
   private readonly textures: TextureCache;
   private reflection: RenderTarget;
@@ -127,13 +129,14 @@ export class Renderer {
 
   constructor(readonly gl: WebGL2RenderingContext, private readonly options: RendererOptions = {}) {
     const c = this.counter;
-    this.programs = new ProgramCache(gl, c);
-    this.objectMeshes = new ObjectMeshes(gl, c);
+    this.shared = SharedResources.acquire(gl);
+    this.programs = new ProgramCache(gl, this.shared);
+    this.objectMeshes = new ObjectMeshes(gl, c, this.shared);
     this.glassMesh = new Mesh(gl, c, glassMesh(this.setup.glass));
     this.glassMeshFrame = this.setup.glass;
     this.maxSamples = gl.getParameter(gl.MAX_SAMPLES) as number;
     this.maxTargetSize = maxTargetSize(gl);
-    this.texture = new Texture(gl, c, { width: TEXTURE_SIZE, height: TEXTURE_SIZE, data: proceduralTexture(), mipmap: true, repeat: true });
+    this.texture = this.shared.texture;
     this.textures = new TextureCache(gl, c, this.texture);
     this.canHalfFloat = gl.getExtension('EXT_color_buffer_float') !== null;
     this.reflection = new RenderTarget(gl, c);
@@ -205,7 +208,10 @@ export class Renderer {
   }
 
   get stats(): RenderStats {
+    // What this element's frames hold live: its own objects and the context's shared ones.
     const counts = { ...this.counter.counts };
+    const shared = this.shared.counter.counts;
+    for (const k in counts) counts[k as keyof typeof counts] += shared[k as keyof typeof counts];
     return {
       frames: this.counts.frames,
       programs: this.programs.size,
@@ -213,7 +219,7 @@ export class Renderer {
       passesRun: { ...this.counts.passesRun },
       passesSkipped: { ...this.counts.passesSkipped },
       drawCalls: this.report.drawCalls,
-      resources: { ...counts, total: this.counter.total },
+      resources: { ...counts, total: this.counter.total + this.shared.counter.total },
     };
   }
 
@@ -226,7 +232,7 @@ export class Renderer {
     this.reflectionMsaa = this.mainMsaa = null;
     this.glassMesh.dispose();
     this.textures.dispose();
-    this.texture.dispose();
+    this.shared.release();
     this.reflection.dispose();
     this.captureTarget?.dispose();
     this.captureTarget = null;

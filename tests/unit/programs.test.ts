@@ -2,7 +2,7 @@
 // frame's) builds nothing.
 import { describe, expect, it } from 'vitest';
 import { ProgramCache, type ClipMode } from '../../src/render/programs';
-import { ResourceCounter } from '../../src/render/gl/resource-counter';
+import { SharedResources } from '../../src/render/gl/shared-resources';
 import { ShaderError } from '../../src/render/gl/program';
 import { FRESNEL_MODELS } from '../../src/math/fresnel';
 import type { Shading } from '../../src/render/types';
@@ -14,7 +14,7 @@ const SHADINGS: Shading[] = ['phong', 'gouraud', 'flat'];
 describe('ProgramCache', () => {
   it('compiles each variant once and returns the same program after', () => {
     const { gl, calls } = fakeGl();
-    const cache = new ProgramCache(gl, new ResourceCounter());
+    const cache = new ProgramCache(gl, SharedResources.acquire(gl));
     const first = cache.standard('none', 'phong');
     expect(cache.standard('none', 'phong')).toBe(first);
     expect(cache.standard('discard', 'phong')).not.toBe(first);
@@ -27,7 +27,7 @@ describe('ProgramCache', () => {
 
   it('a cached lookup builds no header, key or array (nothing allocated per frame)', () => {
     const { gl } = fakeGl();
-    const cache = new ProgramCache(gl, new ResourceCounter());
+    const cache = new ProgramCache(gl, SharedResources.acquire(gl));
     const all = () => {
       for (const c of CLIPS) for (const s of SHADINGS) cache.standard(c, s);
       for (const m of FRESNEL_MODELS) for (const o of [false, true]) cache.glass(m, o);
@@ -54,8 +54,9 @@ describe('ProgramCache', () => {
 
   it('dispose deletes every program and shader', () => {
     const { gl } = fakeGl();
-    const counter = new ResourceCounter();
-    const cache = new ProgramCache(gl, counter);
+    const shared = SharedResources.acquire(gl);
+    const counter = shared.counter;
+    const cache = new ProgramCache(gl, shared);
     cache.standard('clip-distance', 'flat');
     cache.glass('exact', false);
     expect(counter.counts.programs).toBe(2);
@@ -71,8 +72,9 @@ describe('ProgramCache with a variant that does not compile', () => {
   it('throws the same error again without compiling again; other variants still compile; dispose forgets it', () => {
     const fake = fakeGl();
     fake.failCompile = (src) => src.includes('#define FRESNEL_SCHLICK');
-    const counter = new ResourceCounter();
-    const cache = new ProgramCache(fake.gl, counter);
+    const shared = SharedResources.acquire(fake.gl);
+    const counter = shared.counter;
+    const cache = new ProgramCache(fake.gl, shared);
     let first: unknown;
     try { cache.glass('schlick', false); } catch (e) { first = e; }
     expect(first).toBeInstanceOf(ShaderError);
@@ -85,5 +87,20 @@ describe('ProgramCache with a variant that does not compile', () => {
     cache.dispose();
     fake.failCompile = () => false;
     expect(cache.glass('schlick', false)).toBeDefined();
+  });
+
+  it('renderers on one context share each compiled program; the last to let go deletes it', () => {
+    const { gl, calls } = fakeGl();
+    const a = new ProgramCache(gl, SharedResources.acquire(gl));
+    const sharedB = SharedResources.acquire(gl);
+    const b = new ProgramCache(gl, sharedB);
+    expect(b.standard('none', 'phong')).toBe(a.standard('none', 'phong'));
+    expect(calls.get('linkProgram'), 'compiled once for both').toBe(1);
+    expect([a.size, b.size], 'each counts what it uses').toEqual([1, 1]);
+    a.dispose();
+    expect(calls.get('deleteProgram') ?? 0, 'still used by b').toBe(0);
+    b.dispose();
+    expect(calls.get('deleteProgram'), 'freed with its last user').toBe(1);
+    sharedB.release();
   });
 });
