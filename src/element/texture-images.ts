@@ -6,7 +6,8 @@ import { warn } from './warnings';
 
 const decoded = new Map<string, Promise<ImageBitmap | null>>();
 
-function decode(url: string): Promise<ImageBitmap | null> {
+/** The decoded image of `url` (null when it failed, with one warning); fetched once per page. */
+export function decodeImage(url: string): Promise<ImageBitmap | null> {
   let p = decoded.get(url);
   if (!p) {
     p = fetch(url)
@@ -52,7 +53,7 @@ export class TextureImages {
       if (t.kind !== 'image' || this.asked.has(t.url)) continue;
       const url = t.url;
       this.asked.add(url);
-      void decode(url).then((image) => {
+      void decodeImage(url).then((image) => {
         if (!image) return;
         this.ready.set(url, image);
         this.sink?.setImage(url, image);

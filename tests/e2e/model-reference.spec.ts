@@ -19,12 +19,17 @@ interface JsonObject extends Omit<SceneObject, 'geometry'> {
 
 test('a textured OBJ with MTL, a concave n-gon and negative indices matches the reference', async ({ page }) => {
   await openPage(page);
+  // The image arrives late (a slow server): `load`, hence `ready`, must still wait for it.
+  await page.route('**/models/checker.png', async (route) => {
+    await new Promise((r) => setTimeout(r, 600));
+    await route.continue();
+  });
   await mountHtml(page, `<glass-plane-scene time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
     <glass-object src="/tests/e2e/pages/models/ngon-textured.obj" position="-1.5 0 1"></glass-object>
     <glass-light direction="0.3 0.8 1"></glass-light>
   </glass-plane-scene>`);
-  // The texture decodes after the model: wait until the image is on screen (frames settle).
-  await page.evaluate(() => new Promise((r) => setTimeout(r, 400)));
+  // `ready` waits for the model's load, which waits for its map_Kd image: one frame later the
+  // image is on screen (no timeout; without the wait the frame shows the procedural checker).
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r(null)))));
   const image = await capture(page);
 

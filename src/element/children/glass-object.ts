@@ -10,6 +10,7 @@ import type { LoadedModel } from './model-loader';
 import { meshParts, type MeshPart } from './mesh-parts';
 import { defaultObjectAttributes, OBJECT_ATTRIBUTES, type ObjectAttributes } from './object-attributes';
 import { resolveMaterial } from './object-material';
+import { decodeImage } from '../texture-images';
 
 export const OBJECT_TAG = 'glass-object';
 
@@ -116,9 +117,17 @@ export class GlassObject extends ChildElement<ObjectAttributes> {
       (model) => {
         if (this.handle !== handle) return; // superseded: never shown
         this.model = model;
-        this.pending = false;
         this.changed();
-        this.fire('load', { url, warnings: [...model.warnings] });
+        // `load` when the object can be drawn with its textures (SPEC §9): after its images
+        // decode (or fail, with a warning), the scene element draws them on its next frame.
+        const images = new Set<string>();
+        for (const o of this.toSceneObjects()) if (o.material.texture.kind === 'image') images.add(o.material.texture.url);
+        void Promise.all([...images].map(decodeImage)).then(() => {
+          if (this.handle !== handle) return;
+          this.pending = false;
+          this.changed();
+          this.fire('load', { url, warnings: [...model.warnings] });
+        });
       },
       (e) => {
         if (this.handle !== handle) return;
