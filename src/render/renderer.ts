@@ -254,8 +254,11 @@ export class Renderer {
     const rect = glassScreenRect(this.setup.viewProjection, this.setup.eye, state.width, state.height, this.glassRect, this.setup.glass.corners);
     this.glassSkipReason = !this.setup.hasGlass ? 'no glass'
       : !this.optimize ? undefined
+      // An eye in the plane sees the glass as a line, which can round to an empty rectangle:
+      // that is edge-on, not off screen.
+      : rect.area < MIN_GLASS_AREA && Math.abs(this.setup.eyeDistance) < EDGE_ON_DISTANCE ? 'glass edge-on'
       : rect.x1 <= rect.x0 || rect.y1 <= rect.y0 ? 'glass off screen'
-      : rect.area < MIN_GLASS_AREA ? (Math.abs(this.setup.eyeDistance) < EDGE_ON_DISTANCE ? 'glass edge-on' : 'glass too small')
+      : rect.area < MIN_GLASS_AREA ? 'glass too small'
       : undefined;
     this.ctx.cull = this.optimize;
     // Clamped like the canvas: the glass reads it with normalised coordinates, so a smaller

@@ -56,3 +56,18 @@ test('every attribute of SPEC §9 changes the picture', async ({ page, consoleLo
   // position with direction set: a point light, and one warning saying so (SPEC §2's rule).
   expect(consoleLog.take('warning').filter((w) => !w.includes('position is set too'))).toEqual([]);
 });
+
+test('SPEC §7 skips hold for any glass placement: a glass floor out of view, seen edge-on, or absent', async ({ page }) => {
+  await openPage(page);
+  await mountHtml(page, `<glass-plane-scene time="0" spin="0" glass-normal="0 1 0" glass-center="0 0 0" glass-size="6 6"
+      camera-position="0 2 5" camera-rotation="-90 -20"><glass-object shape="cube" position="0 1 0"></glass-object></glass-plane-scene>`);
+  const reflection = (attrs: Record<string, string>) => page.evaluate((attrs) => new Promise<{ ran: boolean; reason?: string }>((resolve) => {
+    const el = document.querySelector('glass-plane-scene')!;
+    el.addEventListener('frame', (e) => resolve((e as CustomEvent).detail.passes.reflection), { once: true });
+    for (const [k, v] of Object.entries(attrs)) el.setAttribute(k, v);
+  }), attrs);
+  expect(await reflection({ 'camera-rotation': '-90 -21' }), 'looking down at the floor').toEqual({ ran: true, reason: undefined });
+  expect((await reflection({ 'camera-rotation': '-90 60' })).reason, 'looking up, the floor out of view').toBe('glass off screen');
+  expect((await reflection({ 'camera-position': '0 0 5', 'camera-rotation': '-90 0' })).reason, 'the eye in the floor plane').toBe('glass edge-on');
+  expect((await reflection({ 'camera-position': '0 2 5', 'camera-rotation': '-90 -20', 'glass-size': '0 0' })).reason, 'no glass').toBe('no glass');
+});
