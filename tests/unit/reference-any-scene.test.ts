@@ -1,15 +1,13 @@
 // The reference renders any Scene value: transforms, meshes, lights, opacity, images, glass anywhere, no glass.
 import { describe, expect, it } from 'vitest';
 import { createHash } from 'node:crypto';
-import { vec4, type mat4 } from 'gl-matrix';
 import {
   glassReflectsCube, glassReflectsObject, renderReference, renderScene, type ReferenceImage, type ReferenceOptions, type ReferenceState, type ViewState,
 } from '../../src/reference';
-import { projectionMatrix } from '../../src/math/camera';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { Geometry, Light, Material, Scene, SceneObject, Vec3 } from '../../src/scene/scene';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION } from '../../src/element/attributes';
-import { lookAtView } from './helpers';
+import { projectToPixels } from './helpers';
 
 const DEFAULT_VIEW: ReferenceState = {
   width: 96, height: 54, time: 1.25, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
@@ -52,14 +50,7 @@ function quad(w: number, h: number, normal: Vec3 = [0, 0, 1]): Geometry {
     },
   };
 }
-function project(s: ViewState, p: readonly number[]): [number, number] {
-  const view = lookAtView(s.cameraPosition, s.yaw, s.pitch);
-  const proj = projectionMatrix(new Float64Array(16), s.fov, s.width / s.height, 0.1, 100);
-  const c = new Float64Array(4);
-  vec4.transformMat4(c as unknown as vec4, [p[0], p[1], p[2], 1], view as unknown as mat4);
-  vec4.transformMat4(c as unknown as vec4, c as unknown as vec4, proj as unknown as mat4);
-  return [((c[0] / c[3] + 1) / 2) * s.width, ((1 - c[1] / c[3]) / 2) * s.height];
-}
+const project = projectToPixels;
 const pixel = (img: { rgb: Float64Array; width: number }, x: number, y: number): number[] =>
   Array.from(img.rgb.subarray(3 * (y * img.width + x), 3 * (y * img.width + x) + 3));
 /** Bounding box [x0, y0, x1, y1] (pixel edges) of the pixels whose key is not the background. */

@@ -1,13 +1,11 @@
 // Whole-image properties of the reference: the mirror identity, clear glass, clipping, regions, extremes, speed.
 import { describe, expect, it } from 'vitest';
-import { vec4, type mat4 } from 'gl-matrix';
 import {
   renderReference, REGION_BACKGROUND, REGION_CUBE, REGION_EDGE, REGION_GLASS, REGION_SPHERE,
   type ReferenceImage, type ReferenceState,
 } from '../../src/reference';
-import { projectionMatrix } from '../../src/math/camera';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
-import { lookAtView } from './helpers';
+import { projectToPixels } from './helpers';
 
 const STATE: ReferenceState = {
   width: 320, height: 180, time: 0, spin: 0, cubeDistance: 2.5, transparency: 0.5, ior: 1.5,
@@ -25,15 +23,7 @@ function cubeMask(img: ReferenceImage): Uint8Array {
   return m;
 }
 
-/** Pixel coordinates (x right, y down, pixel centres at +0.5) where the camera projects `p`. */
-function project(s: ReferenceState, p: [number, number, number]): [number, number] {
-  const view = lookAtView(s.cameraPosition, s.yaw, s.pitch);
-  const proj = projectionMatrix(new Float64Array(16), s.fov, s.width / s.height, 0.1, 100);
-  const c = new Float64Array(4);
-  vec4.transformMat4(c as unknown as vec4, [p[0], p[1], p[2], 1], view as unknown as mat4);
-  vec4.transformMat4(c as unknown as vec4, c as unknown as vec4, proj as unknown as mat4);
-  return [((c[0] / c[3] + 1) / 2) * s.width, ((1 - c[1] / c[3]) / 2) * s.height];
-}
+const project = projectToPixels;
 
 describe('the mirror identity', () => {
   it('the reflection pass shows the cube exactly where a cube mirrored to z = −d is seen directly', () => {

@@ -1,4 +1,6 @@
 // Append-only typed arrays that double when full: no per-element objects, amortised O(1) pushes.
+// Two classes, not one generic over the array type, on purpose: each keeps its `data` of one
+// kind, so the parser's hot loops stay monomorphic in the JIT.
 
 export class F64List {
   data: Float64Array;
