@@ -204,8 +204,9 @@ function toGeometry(m: MeshData): THREE.BufferGeometry {
 
 type Defines = Record<string, string>;
 
+/** Our lighting.glsl's variant for the peer's scene: one light. */
 function shadingDefines(shading: FrameState['shading']): Defines {
-  return { [shading === 'flat' ? 'SHADING_FLAT' : shading === 'gouraud' ? 'SHADING_GOURAUD' : 'SHADING_PHONG']: '' };
+  return { [shading === 'flat' ? 'SHADING_FLAT' : shading === 'gouraud' ? 'SHADING_GOURAUD' : 'SHADING_PHONG']: '', LIGHT_COUNT: '1', LIGHT0_POINT: 'false' };
 }
 
 function fresnelDefines(fresnel: FrameState['fresnel']): Defines {
@@ -440,7 +441,6 @@ export class ThreePeer {
         uKd: { value: v3(albedo) },
         uKs: { value: new THREE.Vector3(MATERIAL.ks, MATERIAL.ks, MATERIAL.ks) },
         uShininess: { value: MATERIAL.shininess },
-        uLightCount: { value: 1 },
         uLightVector: { value: [new THREE.Vector4(...LIGHT.direction, 0), ...[1, 2, 3].map(() => new THREE.Vector4())] },
         uLightAmbient: { value: [new THREE.Vector3().setScalar(LIGHT.ambient), ...[1, 2, 3].map(() => new THREE.Vector3())] },
         uLightDiffuse: { value: [new THREE.Vector3().setScalar(LIGHT.diffuse), ...[1, 2, 3].map(() => new THREE.Vector3())] },

@@ -7,12 +7,15 @@ precision highp float;
 uniform sampler2D uTexture;
 uniform float uOpacity;
 uniform float uImageTexture;   // 1: an image, read at (u, 1 − v) (OBJ: v = 0 is its bottom row)
-uniform int uMapping;          // 0 uv, 1 triplanar, 2 cylindrical, 3 spherical
+#ifndef MAPPING_UV
 uniform vec4 uBounds;          // the object's bounding sphere (object space): centre, radius
+#endif
 
 in vec2 vUv;
+#ifndef MAPPING_UV
 in vec3 vObjPos;
 in vec3 vObjNormal;
+#endif
 #if defined(SHADING_PHONG)
 in vec3 vRelPos;
 in vec3 vNormal;
@@ -35,24 +38,31 @@ vec3 tex(vec2 uv) {
   return texture(uTexture, uImageTexture > 0.5 ? vec2(uv.x, 1.0 - uv.y) : uv).rgb;
 }
 
-/** Seed 001's mappings, formula for formula as src/scene/mapping.ts writes them. */
+/** Seed 001's mappings (one per variant), formula for formula as src/scene/mapping.ts writes them. */
 vec3 surfaceTexture() {
-  if (uMapping == 0) return tex(vUv);
+#if defined(MAPPING_UV)
+  return tex(vUv);
+#else
   float r = uBounds.w > 0.0 ? uBounds.w : 1.0;
   vec3 q = vObjPos - uBounds.xyz;
-  if (uMapping == 1) {
-    float len = length(vObjNormal);
-    vec3 n = len > 0.0 ? abs(vObjNormal / len) : vec3(1.0);
-    vec3 w = n * n * n * n; // TRIPLANAR_SHARPNESS = 4
-    w /= (w.x + w.y + w.z);
-    vec3 s = 0.5 + q / (2.0 * r);
-    return w.x * tex(s.zy) + w.y * tex(s.xz) + w.z * tex(s.xy);
-  }
+#if defined(MAPPING_TRIPLANAR)
+  float len = length(vObjNormal);
+  vec3 n = len > 0.0 ? abs(vObjNormal / len) : vec3(1.0);
+  vec3 w = n * n * n * n; // TRIPLANAR_SHARPNESS = 4
+  w /= (w.x + w.y + w.z);
+  vec3 s = 0.5 + q / (2.0 * r);
+  return w.x * tex(s.zy) + w.y * tex(s.xz) + w.z * tex(s.xy);
+#else
   float u = 0.5 + atan(q.x, q.z) / (2.0 * PI);
-  if (uMapping == 2) return tex(vec2(u, 0.5 + q.y / (2.0 * r)));
+#if defined(MAPPING_CYLINDRICAL)
+  return tex(vec2(u, 0.5 + q.y / (2.0 * r)));
+#else
   float len = length(q);
   float ny = len > 0.0 ? q.y / len : 0.0;
   return tex(vec2(u, acos(clamp(-ny, -1.0, 1.0)) / PI));
+#endif
+#endif
+#endif
 }
 
 void main() {

@@ -19,8 +19,10 @@ uniform highp vec4 uClipPlane;
 #endif
 
 out vec2 vUv;
-out vec3 vObjPos;     // object space, for the texture mappings (standard.frag)
+#ifndef MAPPING_UV
+out vec3 vObjPos;     // object space, for the computed texture mappings (standard.frag)
 out vec3 vObjNormal;
+#endif
 #if defined(SHADING_PHONG)
 out highp vec3 vRelPos;
 out vec3 vNormal;
@@ -38,8 +40,10 @@ out highp float vClipDistance;
 void main() {
   vec4 rel = uModelRelative * vec4(aPosition, 1.0);
   vUv = aUv;
+#ifndef MAPPING_UV
   vObjPos = aPosition;
   vObjNormal = aNormal;
+#endif
 #if defined(SHADING_PHONG)
   vRelPos = rel.xyz;
   vNormal = uNormalMatrix * aNormal;

@@ -58,6 +58,8 @@ export class FrameSetup {
   readonly lightDiffuse = new Float32Array(3 * MAX_LIGHTS);
   readonly lightSpecular = new Float32Array(3 * MAX_LIGHTS);
   lightCount = 0;
+  /** Bit i set: light i is a point light. */
+  pointMask = 0;
   /** The glass projected by the mirrored camera (for the reflection lookup). */
   readonly reflectionViewProjection = new Float32Array(16);
   /** Clip plane in mirrored-eye-relative coordinates; keeps the eye's side. */
@@ -110,8 +112,10 @@ export class FrameSetup {
     lightVectors(this.lightsMain, scene, eye);
     lightVectors(this.lightsMirrored, scene, mirroredEye);
     this.lightCount = Math.min(scene.lights.length, MAX_LIGHTS);
+    this.pointMask = 0;
     for (let i = 0; i < this.lightCount; i++) {
       const l = scene.lights[i];
+      if (l.kind === 'point') this.pointMask |= 1 << i;
       for (let c = 0; c < 3; c++) {
         this.lightAmbient[3 * i + c] = l.ambient[c];
         this.lightDiffuse[3 * i + c] = l.diffuse[c];

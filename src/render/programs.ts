@@ -8,18 +8,32 @@ import blitFrag from '../../shaders/blit.frag?raw';
 import lighting from '../../shaders/lighting.glsl?raw';
 import type { FresnelModel } from '../math/fresnel';
 import type { Shading } from './types';
+import { MAPPINGS, MAX_LIGHTS, type Mapping } from '../scene/scene';
 import { Program, ShaderError } from './gl/program';
 import type { SharedResources } from './gl/shared-resources';
 
 export type ClipMode = 'none' | 'clip-distance' | 'discard';
 
-function standardHeader(clip: ClipMode, shading: Shading, twoSided: boolean): string[] {
+/** What an object's draw needs beyond clip and shading; each a #define (SPEC §7: only what is in use). */
+export interface ObjectVariant {
+  /** Lit on the side facing the viewer (meshes from files, SPEC §9). */
+  twoSided: boolean;
+  /** 1..MAX_LIGHTS. */
+  lights: number;
+  /** Bit i set: light i is a point light (else directional). */
+  pointMask: number;
+  mapping: Mapping;
+}
+
+function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant): string[] {
   const header: string[] =
     clip === 'none' ? [] :
     clip === 'clip-distance' ? ['#extension GL_ANGLE_clip_cull_distance : require', '#define CLIP_PLANE', '#define CLIP_DISTANCE'] :
     ['#define CLIP_PLANE'];
   header.push(`#define SHADING_${shading.toUpperCase()}`);
-  if (twoSided) header.push('#define TWO_SIDED');
+  if (v.twoSided) header.push('#define TWO_SIDED');
+  header.push(`#define LIGHT_COUNT ${v.lights}`, `#define MAPPING_${v.mapping.toUpperCase()}`);
+  for (let i = 0; i < MAX_LIGHTS; i++) header.push(`#define LIGHT${i}_POINT ${(v.pointMask >> i) & 1 ? 'true' : 'false'}`);
   header.push(lighting);
   return header;
 }
@@ -39,8 +53,8 @@ export class ProgramCache {
   private readonly all: Program[] = [];
   // Found by their variant's parts, so a frame that compiles nothing builds no key, header or
   // array: those are made only on a miss.
-  /** [clip][shading][one-sided 0 | two-sided 1] */
-  private standards: Partial<Record<ClipMode, Partial<Record<Shading, [Program?, Program?]>>>> = {};
+  /** [clip][shading][variantIndex(v)] */
+  private standards: Partial<Record<ClipMode, Partial<Record<Shading, (Program | undefined)[]>>>> = {};
   private glasses: Partial<Record<FresnelModel, { colour?: Program; fresnel?: Program }>> = {};
   private blitProgram: Program | undefined;
   /**
@@ -55,12 +69,15 @@ export class ProgramCache {
     return this.all.length;
   }
 
-  /** `twoSided`: lit on the side facing the viewer (meshes from files, SPEC §9). */
-  standard(clip: ClipMode, shading: Shading, twoSided = false): Program {
-    const sides = ((this.standards[clip] ??= {})[shading] ??= []);
-    const i = twoSided ? 1 : 0;
-    return (sides[i] ??= this.build(
-      `standard:${clip}:${shading}${twoSided ? ':two-sided' : ''}`, standardVert, standardFrag, standardHeader(clip, shading, twoSided),
+  /** The standard program for one object's draw. A cached lookup builds no key, header or array. */
+  standard(clip: ClipMode, shading: Shading, v: ObjectVariant): Program {
+    const variants = ((this.standards[clip] ??= {})[shading] ??= []);
+    const lights = Math.max(1, Math.min(MAX_LIGHTS, v.lights));
+    const points = v.pointMask & ((1 << lights) - 1);
+    const i = (v.twoSided ? 1 : 0) + 2 * (lights - 1 + MAX_LIGHTS * (points + (1 << MAX_LIGHTS) * MAPPINGS.indexOf(v.mapping)));
+    return (variants[i] ??= this.build(
+      `standard:${clip}:${shading}${v.twoSided ? ':two-sided' : ''}:lights${lights}/${points}:${v.mapping}`,
+      standardVert, standardFrag, standardHeader(clip, shading, { ...v, lights, pointMask: points }),
     ));
   }
 

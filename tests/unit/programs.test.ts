@@ -1,7 +1,7 @@
 // The shader-variant cache: each variant compiled once, on first use; a cached lookup (every
 // frame's) builds nothing.
 import { describe, expect, it } from 'vitest';
-import { ProgramCache, type ClipMode } from '../../src/render/programs';
+import { ProgramCache, type ClipMode, type ObjectVariant } from '../../src/render/programs';
 import { SharedResources } from '../../src/render/gl/shared-resources';
 import { ShaderError } from '../../src/render/gl/program';
 import { FRESNEL_MODELS } from '../../src/math/fresnel';
@@ -10,14 +10,16 @@ import { fakeGl } from './fake-gl';
 
 const CLIPS: ClipMode[] = ['none', 'clip-distance', 'discard'];
 const SHADINGS: Shading[] = ['phong', 'gouraud', 'flat'];
+/** The default scene's draws: one-sided, one light, UV mapping. */
+const V: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv' };
 
 describe('ProgramCache', () => {
   it('compiles each variant once and returns the same program after', () => {
     const { gl, calls } = fakeGl();
     const cache = new ProgramCache(gl, SharedResources.acquire(gl));
-    const first = cache.standard('none', 'phong');
-    expect(cache.standard('none', 'phong')).toBe(first);
-    expect(cache.standard('discard', 'phong')).not.toBe(first);
+    const first = cache.standard('none', 'phong', V);
+    expect(cache.standard('none', 'phong', V)).toBe(first);
+    expect(cache.standard('discard', 'phong', V)).not.toBe(first);
     expect(cache.glass('schlick', true)).toBe(cache.glass('schlick', true));
     expect(cache.glass('schlick', true)).not.toBe(cache.glass('schlick', false));
     expect(cache.blit()).toBe(cache.blit());
@@ -29,7 +31,7 @@ describe('ProgramCache', () => {
     const { gl } = fakeGl();
     const cache = new ProgramCache(gl, SharedResources.acquire(gl));
     const all = () => {
-      for (const c of CLIPS) for (const s of SHADINGS) cache.standard(c, s);
+      for (const c of CLIPS) for (const s of SHADINGS) cache.standard(c, s, V);
       for (const m of FRESNEL_MODELS) for (const o of [false, true]) cache.glass(m, o);
       cache.blit();
     };
@@ -57,13 +59,13 @@ describe('ProgramCache', () => {
     const shared = SharedResources.acquire(gl);
     const counter = shared.counter;
     const cache = new ProgramCache(gl, shared);
-    cache.standard('clip-distance', 'flat');
+    cache.standard('clip-distance', 'flat', V);
     cache.glass('exact', false);
     expect(counter.counts.programs).toBe(2);
     cache.dispose();
     expect(cache.size).toBe(0);
     expect(counter.total).toBe(0);
-    expect(cache.standard('clip-distance', 'flat')).toBeDefined(); // rebuilt on demand
+    expect(cache.standard('clip-distance', 'flat', V)).toBeDefined(); // rebuilt on demand
     expect(cache.size).toBe(1);
   });
 });
@@ -94,7 +96,7 @@ describe('ProgramCache with a variant that does not compile', () => {
     const a = new ProgramCache(gl, SharedResources.acquire(gl));
     const sharedB = SharedResources.acquire(gl);
     const b = new ProgramCache(gl, sharedB);
-    expect(b.standard('none', 'phong')).toBe(a.standard('none', 'phong'));
+    expect(b.standard('none', 'phong', V)).toBe(a.standard('none', 'phong', V));
     expect(calls.get('linkProgram'), 'compiled once for both').toBe(1);
     expect([a.size, b.size], 'each counts what it uses').toEqual([1, 1]);
     a.dispose();

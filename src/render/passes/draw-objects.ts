@@ -4,7 +4,8 @@
 import { signedDistance } from '../../math/mirror';
 import type { Program } from '../gl/program';
 import type { Texture } from '../gl/texture';
-import type { ClipMode } from '../programs';
+import type { ClipMode, ObjectVariant } from '../programs';
+import type { SceneObject } from '../../scene/scene';
 import { isTwoSided, setLights, setMaterial, setMatrices, type PassContext } from './pass-context';
 
 /**
@@ -12,13 +13,17 @@ import { isTwoSided, setLights, setMaterial, setMatrices, type PassContext } fro
  * a variant that fails to compile throws, and the element draws again later from clean state.
  */
 export function prepareObjectPrograms(ctx: PassContext, clip: ClipMode): void {
-  let one = false, two = false;
-  for (const o of ctx.scene.objects) {
-    if (isTwoSided(o.geometry.kind)) two = true;
-    else one = true;
-  }
-  if (one) ctx.programs.standard(clip, ctx.state.shading, false);
-  if (two) ctx.programs.standard(clip, ctx.state.shading, true);
+  for (const o of ctx.scene.objects) ctx.programs.standard(clip, ctx.state.shading, variantOf(ctx, o));
+}
+
+/** The object's variant, filled in place (no allocation per draw). */
+const variant: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv' };
+function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
+  variant.twoSided = isTwoSided(o.geometry.kind);
+  variant.lights = ctx.setup.lightCount;
+  variant.pointMask = ctx.setup.pointMask;
+  variant.mapping = o.material.mapping;
+  return variant;
 }
 
 /**
@@ -41,7 +46,7 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean)
       // Culling, not selection (SPEC §4): bounds wholly beyond the glass cannot be reflected.
       if (mirrored && ctx.cull && setup.side * signedDistance(setup.glass.plane, m.center) <= -m.radius) continue;
       const twoSided = isTwoSided(o.geometry.kind);
-      const program = ctx.programs.standard(clip, ctx.state.shading, twoSided);
+      const program = ctx.programs.standard(clip, ctx.state.shading, variantOf(ctx, o));
       const switched = program !== current;
       if (switched) {
         current = program;

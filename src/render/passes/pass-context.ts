@@ -8,9 +8,7 @@ import type { DrawMatrices, FrameSetup, LightVectors } from '../frame-setup';
 import type { ObjectMeshes } from '../object-meshes';
 import type { ProgramCache } from '../programs';
 import type { FrameState } from '../types';
-import type { Mapping, Material, Scene, SceneObject } from '../../scene/scene';
-
-const MAPPING_CODE: Record<Mapping, number> = { uv: 0, triplanar: 1, cylindrical: 2, spherical: 3 };
+import type { Material, Scene, SceneObject } from '../../scene/scene';
 
 /** A rectangle of the bound framebuffer, in pixels, origin bottom-left. */
 export interface Viewport {
@@ -59,7 +57,6 @@ export function beginTarget(
 /** The lights (vectors relative to the eye drawn from) shared by every object of a pass. */
 export function setLights(gl: WebGL2RenderingContext, p: Program, setup: FrameSetup, vectors: LightVectors): void {
   gl.uniform1i(p.location('uTexture'), 0);
-  gl.uniform1i(p.location('uLightCount'), setup.lightCount);
   gl.uniform4fv(p.location('uLightVector'), vectors.vectors);
   gl.uniform3fv(p.location('uLightAmbient'), setup.lightAmbient);
   gl.uniform3fv(p.location('uLightDiffuse'), setup.lightDiffuse);
@@ -70,7 +67,6 @@ export function setMaterial(gl: WebGL2RenderingContext, p: Program, o: SceneObje
   const m: Material = o.material;
   const { ambient: a, diffuse: d, specular: s } = m;
   const c = o.bounds.center;
-  gl.uniform1i(p.location('uMapping'), MAPPING_CODE[m.mapping] ?? 0);
   gl.uniform4f(p.location('uBounds'), c[0], c[1], c[2], o.bounds.radius);
   gl.uniform3f(p.location('uKa'), a[0], a[1], a[2]);
   gl.uniform3f(p.location('uKd'), d[0], d[1], d[2]);
