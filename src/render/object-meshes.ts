@@ -21,6 +21,8 @@ interface Slot {
   key: string | null;
   mesh: Mesh | null;
   lod: SphereLod | null;
+  /** The frame `lod` was last updated in: both passes of a frame draw the same tessellation. */
+  lodFrame: number;
 }
 
 function contentKey(g: Geometry, flat: boolean): string {
@@ -44,6 +46,13 @@ function build(g: Geometry): MeshData {
 
 export class ObjectMeshes {
   private readonly slots: Slot[] = [];
+  private frame = 0;
+
+  /** A new frame: spheres choose their tessellation again (once, not once per pass). */
+  beginFrame(): void {
+    this.frame++;
+  }
+
   constructor(
     private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, private readonly shared: SharedResources,
   ) {}
@@ -56,12 +65,15 @@ export class ObjectMeshes {
 
   /** The mesh object `i` (geometry `g`, world bounds in `m`) draws with this frame. */
   get(i: number, g: Geometry, m: ObjectMatrices, state: FrameState): Mesh {
-    const slot = (this.slots[i] ??= { geometry: null, flat: false, key: null, mesh: null, lod: null });
+    const slot = (this.slots[i] ??= { geometry: null, flat: false, key: null, mesh: null, lod: null, lodFrame: -1 });
     const flat = state.shading === 'flat';
     if (g.kind === 'sphere') {
       this.release(slot);
       slot.geometry = g;
-      return (slot.lod ??= new SphereLod(this.gl, this.counter)).update(state, m.center, m.radius, g.radius);
+      const lod = (slot.lod ??= new SphereLod(this.gl, this.counter));
+      if (slot.lodFrame === this.frame && lod.mesh) return lod.mesh;
+      slot.lodFrame = this.frame;
+      return lod.update(state, m.center, m.radius, g.radius);
     }
     if (slot.geometry === g && slot.flat === flat && slot.mesh) return slot.mesh;
     slot.lod?.dispose();

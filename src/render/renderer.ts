@@ -245,6 +245,7 @@ export class Renderer {
     const scene = this.ctx.scene;
     this.setup.update(state, scene);
     this.objectMeshes.trim(scene.objects.length);
+    this.objectMeshes.beginFrame();
     if (this.setup.glass !== this.glassMeshFrame) {
       this.glassMesh.dispose();
       this.glassMesh = this.ctx.glassMesh = new Mesh(this.gl, this.counter, glassMesh(this.setup.glass));
