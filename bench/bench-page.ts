@@ -147,9 +147,9 @@ const api = {
    * Issue 9's scenes (bench/scenes.ts) at the default knobs with `shading`: ms per frame over
    * `frames` frames ('final', or 'scene' for the scene pass alone), after `warmup` frames.
    */
-  sceneTime(index: number, shading: Shading, size: Scene, mode: 'final' | 'scene', frames: number, warmup: number): number {
+  sceneTime(index: number, shading: Shading, size: Scene, mode: 'final' | 'scene', frames: number, warmup: number, knobs: Partial<Knobs> = {}): number {
     const b = BENCH_SCENES[index];
-    const s = { ...frameState(size, { ...DEFAULTS, shading }, b.view, mode) };
+    const s = { ...frameState(size, { ...DEFAULTS, ...knobs, shading }, b.view, mode) };
     resize(oursCanvas, s);
     for (let i = 0; i < warmup; i++) renderer.render(s, b.scene);
     finish(gl);
@@ -159,9 +159,9 @@ const api = {
     return (performance.now() - t0) / frames;
   },
 
-  scenePixels(index: number, shading: Shading, size: Scene): { width: number; height: number; data: string } {
+  scenePixels(index: number, shading: Shading, size: Scene, knobs: Partial<Knobs> = {}): { width: number; height: number; data: string } {
     const b = BENCH_SCENES[index];
-    const s = frameState(size, { ...DEFAULTS, shading }, b.view);
+    const s = frameState(size, { ...DEFAULTS, ...knobs, shading }, b.view);
     resize(oursCanvas, s);
     const px = renderer.read('screen', s, b.scene);
     return { width: px.width, height: px.height, data: toBase64(px.data) };

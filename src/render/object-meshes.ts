@@ -10,6 +10,9 @@ import { SphereLod } from './sphere-lod';
 import { boxMesh } from '../scene/geometry/box';
 import { gaussianMesh } from '../scene/geometry/gaussian';
 import { flatMesh } from '../scene/geometry/flat';
+import { clusterMesh, meshExtent } from '../scene/geometry/cluster';
+import { GAUSSIAN_EXTENT } from '../scene/geometry/gaussian';
+import { REFLECTION_MAX_FRACTION, reflectionGrid } from './reflection-lod';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import type { Geometry } from '../scene/scene';
 import type { ObjectMatrices } from './frame-setup';
@@ -23,6 +26,28 @@ interface Slot {
   lod: SphereLod | null;
   /** The frame `lod` was last updated in: both passes of a frame draw the same tessellation. */
   lodFrame: number;
+  /**
+   * The reflection's clustered meshes of `key`'s content, by grid, built when first needed and
+   * kept (shared) until the content changes; null where clustering saved too little.
+   */
+  reflection: Map<number, { key: string; mesh: Mesh } | null>;
+}
+
+/** Largest side of a static geometry's own box, computed once per mesh. */
+const extents = new WeakMap<object, number>();
+function extentOf(g: Geometry): number {
+  if (g.kind === 'gaussian') return 2 * GAUSSIAN_EXTENT;
+  if (g.kind !== 'mesh') return 0;
+  let e = extents.get(g.data);
+  if (e === undefined) extents.set(g.data, (e = meshExtent(g.data.positions)));
+  return e;
+}
+
+/** Largest scale of a model matrix's linear part (column lengths). */
+function maxScale(m: Float64Array): number {
+  return Math.sqrt(Math.max(
+    m[0] * m[0] + m[1] * m[1] + m[2] * m[2], m[4] * m[4] + m[5] * m[5] + m[6] * m[6], m[8] * m[8] + m[9] * m[9] + m[10] * m[10],
+  ));
 }
 
 function contentKey(g: Geometry, flat: boolean): string {
@@ -65,7 +90,7 @@ export class ObjectMeshes {
 
   /** The mesh object `i` (geometry `g`, world bounds in `m`) draws with this frame. */
   get(i: number, g: Geometry, m: ObjectMatrices, state: FrameState): Mesh {
-    const slot = (this.slots[i] ??= { geometry: null, flat: false, key: null, mesh: null, lod: null, lodFrame: -1 });
+    const slot = (this.slots[i] ??= { geometry: null, flat: false, key: null, mesh: null, lod: null, lodFrame: -1, reflection: new Map() });
     const flat = state.shading === 'flat';
     if (g.kind === 'sphere') {
       this.release(slot);
@@ -92,6 +117,36 @@ export class ObjectMeshes {
     return slot.mesh!;
   }
 
+  /**
+   * The mesh object `i` draws with in the reflection: with tessellation 'auto', a mesh or
+   * Gaussian seen at `pixelsPerUnit` pixels per world unit (at its centre, from the mirrored
+   * eye, in the reflection target) draws a clustered copy whose cells span a few pixels
+   * (reflection-lod.ts); anything else draws what `get` gives the scene pass.
+   */
+  mirrored(i: number, g: Geometry, m: ObjectMatrices, state: FrameState, pixelsPerUnit: number): Mesh {
+    const full = this.get(i, g, m, state);
+    if (state.tessellation !== 'auto' || (g.kind !== 'mesh' && g.kind !== 'gaussian')) return full;
+    const grid = reflectionGrid(extentOf(g) * maxScale(m.model), pixelsPerUnit);
+    if (grid === 0) return full;
+    const slot = this.slots[i];
+    let entry = slot.reflection.get(grid);
+    if (entry === undefined) {
+      const key = `${slot.key}:cluster${grid}`;
+      const flat = slot.flat;
+      const mesh = this.shared.mesh(key, (counter) => {
+        const data = clusterMesh(build(g), grid);
+        return new Mesh(this.gl, counter, flat ? flatMesh(data) : data);
+      });
+      entry = { key, mesh };
+      if (mesh.count > REFLECTION_MAX_FRACTION * full.count) {
+        this.shared.releaseMesh(key);
+        entry = null;
+      }
+      slot.reflection.set(grid, entry);
+    }
+    return entry ? entry.mesh : full;
+  }
+
   /** Frees what objects past `count` held (the scene lost objects). */
   trim(count: number): void {
     while (this.slots.length > count) {
@@ -106,6 +161,8 @@ export class ObjectMeshes {
   }
 
   private release(slot: Slot): void {
+    for (const entry of slot.reflection.values()) if (entry) this.shared.releaseMesh(entry.key);
+    slot.reflection.clear();
     if (slot.key === null) return;
     this.shared.releaseMesh(slot.key);
     slot.key = null;

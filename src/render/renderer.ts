@@ -148,6 +148,7 @@ export class Renderer {
       clipExtension: gl.getExtension('WEBGL_clip_cull_distance') as { CLIP_DISTANCE0_WEBGL: number } | null,
       cull: true,
       scissor: null,
+      triangles: { scene: 0, reflection: 0 },
     };
   }
 
@@ -219,6 +220,7 @@ export class Renderer {
       passesRun: { ...this.counts.passesRun },
       passesSkipped: { ...this.counts.passesSkipped },
       drawCalls: this.report.drawCalls,
+      triangles: { ...this.ctx.triangles },
       resources: { ...counts, total: this.counter.total + this.shared.counter.total },
     };
   }
@@ -246,6 +248,7 @@ export class Renderer {
     this.setup.update(state, scene);
     this.objectMeshes.trim(scene.objects.length);
     this.objectMeshes.beginFrame();
+    this.ctx.triangles.scene = this.ctx.triangles.reflection = 0;
     if (this.setup.glass !== this.glassMeshFrame) {
       this.glassMesh.dispose();
       this.glassMesh = this.ctx.glassMesh = new Mesh(this.gl, this.counter, glassMesh(this.setup.glass));

@@ -72,6 +72,12 @@ export interface RenderStats {
   passesSkipped: Record<PassName, number>;
   /** Draw calls of the last frame. */
   drawCalls: number;
+  /**
+   * Triangles the last frame submitted from each eye. With tessellation 'auto' the reflection
+   * of a dense mesh draws a coarser copy (cells of a few reflection pixels), so `reflection`
+   * can be well below `scene`.
+   */
+  triangles: { scene: number; reflection: number };
   /** Live GL objects owned by this element; all zero after it is removed. */
   resources: ResourceCounts & { total: number };
 }

@@ -97,6 +97,32 @@ test('a point light lights what faces it; a second light adds', async ({ page })
   expect(at(one, Math.round(W / 2) - 30), 'nearer the left light').toBeGreaterThan(at(one, Math.round(W / 2) + 30) + 3);
 });
 
+test('tessellation auto: the reflection of a dense mesh draws a clustered copy, a number draws it whole', async ({ page }) => {
+  const eye: Vec3 = [4, 2.2, 5];
+  const gaussian = (resolution: number): SceneObject => ({
+    geometry: { kind: 'gaussian', resolution }, transform: { position: [0, 0.4, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
+    material: material([0.2, 0.5, 0.9]), bounds: { center: [0, 0.5, 0], radius: 2.9 },
+  });
+  const floor = (o: SceneObject) => scene([o], { glass: { center: [0, 0, 0], normal: [0, 1, 0], size: [8, 8] } });
+  const triangles = async (s: FrameState, sc: Scene) => {
+    await drawScene(page, s, sc);
+    return page.evaluate(() => (window as unknown as { __renderer: { stats(): { triangles: { scene: number; reflection: number } } } }).__renderer.stats().triangles);
+  };
+  const dense = await triangles({ ...state(eye, [0, 0.4, 0]), tessellation: 'auto' }, floor(gaussian(225)));
+  expect(dense.scene).toBe(100_352);
+  // 320×180, the mesh 4 units wide ~7 units from the mirrored eye: ~22 px per unit, the 32 grid.
+  expect(dense.reflection, 'reflection triangles, clustered').toBeLessThan(dense.scene / 10);
+  expect(dense.reflection).toBeGreaterThan(1000);
+  const whole = await triangles({ ...state(eye, [0, 0.4, 0]), tessellation: 64 }, floor(gaussian(225)));
+  expect(whole).toEqual({ scene: 100_352, reflection: 100_352 });
+  // A mesh already about as coarse as its cells: clustering would save too little, drawn whole.
+  const coarse = await triangles({ ...state(eye, [0, 0.4, 0]), tessellation: 'auto' }, floor(gaussian(24)));
+  expect(coarse.reflection).toBe(coarse.scene);
+  // Nearer, larger on screen: a finer grid.
+  const near = await triangles({ ...state([1.6, 1.2, 2], [0, 0.4, 0]), tessellation: 'auto' }, floor(gaussian(225)));
+  expect(near.reflection).toBeGreaterThan(dense.reflection);
+});
+
 test('an object with opacity 0.5 blends over what is behind it', async ({ page }) => {
   const s = state([0, 0, 6], [0, 0, 0]);
   const flatLight: Light = { kind: 'directional', vector: [0, 0, 1], ambient: grey(0), diffuse: grey(1), specular: grey(0) };

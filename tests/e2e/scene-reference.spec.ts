@@ -49,6 +49,12 @@ const CASES: Case[] = [
     state: state([4, 2.2, 5], [0.5, 0.3, 0]),
   },
   {
+    // Tessellation 'auto': the reflection draws a vertex-clustered copy (~2.7k of 100k triangles here).
+    name: 'a dense Gaussian (225², 100k triangles) over a glass floor, its reflection from the clustered copy',
+    scene: { glass: floor, objects: [gaussian(225, [0, 0.4, 0])], lights: [DEFAULT_LIGHT], background: grey(0.1) },
+    state: state([4, 2.2, 5], [0, 0.4, 0]),
+  },
+  {
     name: 'two point lights',
     scene: {
       glass: null, objects: [box([-0.8, 0, 0], grey(0.8)), box([0.8, 0, 0], [0.3, 0.8, 0.3])],

@@ -29,10 +29,13 @@ function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
 /**
  * Draws into the bound framebuffer; depth test on, blending and culling as each object needs.
  * `mirrored`: pass 1 (mirrored matrices and lights, the clip plane, objects wholly beyond
- * the glass culled). Returns the draw calls.
+ * the glass culled). `targetHeight`: the height in pixels of the target drawn into, which sets
+ * how coarse a dense mesh's reflection may be (reflection-lod.ts). Returns the draw calls.
  */
-export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean): number {
+export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean, targetHeight: number): number {
   const { gl, setup, scene } = ctx;
+  const eye = setup.mirroredEye;
+  const focal = targetHeight / (2 * Math.tan((ctx.state.fov * Math.PI) / 360));
   const objects = scene.objects;
   let draws = 0;
   let current: Program | null = null;
@@ -70,7 +73,16 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean)
       }
       setMatrices(gl, program, mirrored ? m.mirrored : m.main);
       setMaterial(gl, program, o);
-      ctx.objectMeshes.get(i, o.geometry, m, ctx.state).draw();
+      if (mirrored) {
+        const d = Math.hypot(m.center[0] - eye[0], m.center[1] - eye[1], m.center[2] - eye[2]);
+        const mesh = ctx.objectMeshes.mirrored(i, o.geometry, m, ctx.state, focal / d);
+        mesh.draw();
+        ctx.triangles.reflection += mesh.count / 3;
+      } else {
+        const mesh = ctx.objectMeshes.get(i, o.geometry, m, ctx.state);
+        mesh.draw();
+        ctx.triangles.scene += mesh.count / 3;
+      }
       draws++;
     }
   }

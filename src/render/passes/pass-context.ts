@@ -37,6 +37,8 @@ export interface PassContext {
   cull: boolean;
   /** Pass 1 draws only inside this rectangle of its target, or everywhere when null. */
   scissor: Viewport | null;
+  /** Triangles submitted since the frame began, by the eye they were drawn from. */
+  triangles: { scene: number; reflection: number };
 }
 
 /** Binds `framebuffer`, sets the viewport and clears it (scissored, so tiles clear only themselves). */

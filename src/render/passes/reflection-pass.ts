@@ -26,7 +26,7 @@ export function reflectionPass(ctx: PassContext, framebuffer: WebGLFramebuffer, 
   gl.frontFace(gl.CW); // the mirror flips winding
   if (clipExtension) gl.enable(clipExtension.CLIP_DISTANCE0_WEBGL);
   try {
-    return drawObjects(ctx, clip, true);
+    return drawObjects(ctx, clip, true, height);
   } finally {
     gl.disable(gl.SCISSOR_TEST);
     if (clipExtension) gl.disable(clipExtension.CLIP_DISTANCE0_WEBGL);

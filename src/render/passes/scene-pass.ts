@@ -10,7 +10,7 @@ export function scenePass(ctx: PassContext, depthOnly = false): number {
   gl.enable(gl.DEPTH_TEST);
   if (depthOnly) gl.colorMask(false, false, false, false);
   try {
-    return drawObjects(ctx, 'none', false);
+    return drawObjects(ctx, 'none', false, ctx.state.height);
   } finally {
     if (depthOnly) gl.colorMask(true, true, true, true);
     gl.disable(gl.DEPTH_TEST);

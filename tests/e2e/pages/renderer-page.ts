@@ -46,6 +46,10 @@ const api = {
     const source = state.view === 'final' || state.view === 'scene' || state.view === 'reflection' ? state.view : 'final';
     return toBase64(renderer.read(source, state, revive(scene)).data);
   },
+  /** The renderer's stats after the last draw. */
+  stats() {
+    return renderer.stats;
+  },
 };
 
 (window as unknown as { __renderer: typeof api }).__renderer = api;
