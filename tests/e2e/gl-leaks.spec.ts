@@ -85,3 +85,32 @@ test('elements on one context share programs, the procedural texture and meshes:
   expect(await capture(page, undefined, b)).toBeTruthy();
   expect(liveTotal(await remove(page, b)), 'nothing left after both').toBe(0);
 });
+
+test('the clustered copies a dense mesh\'s reflection draws are freed with the element, at every grid it used', async ({ page }) => {
+  // Another element keeps the context's shared resources alive: a copy left referenced would stay.
+  const other = (await mount(page, { time: 1.25 }, SIZE)).selector;
+  await capture(page, undefined, other);
+  const onlyOther = liveTotal((await glCensus(page)).live);
+  const { selector } = await mount(page, {
+    time: 0, 'glass-center': '0 -1 0', 'glass-normal': '0 1 0', 'glass-size': '8 8', 'camera-position': '3 1.6 4', 'camera-rotation': '-126.87 -17.74',
+  }, SIZE);
+  const trianglesAt = async (position: string) => {
+    await setAttributes(page, selector, { 'camera-position': position });
+    await capture(page, undefined, selector);
+    return page.evaluate((s) => (document.querySelector(s) as SceneElement).stats.triangles, selector);
+  };
+  await page.evaluate((s) => {
+    const o = document.createElement('glass-object');
+    o.setAttribute('shape', 'gaussian');
+    o.setAttribute('resolution', '225');
+    document.querySelector(s)!.append(o);
+  }, selector);
+  const far = await trianglesAt('3 1.6 4');
+  const near = await trianglesAt('1.5 0.8 2');
+  // Not vacuous: two different clustered copies were drawn, both coarser than the mesh.
+  expect(far.reflection).toBeLessThan(far.scene / 2);
+  expect(near.reflection).toBeLessThan(near.scene);
+  expect(near.reflection).not.toBe(far.reflection);
+  expect(liveTotal(await remove(page, selector)), 'live GL objects after removal: the other element\'s only').toBe(onlyOther);
+  expect(liveTotal(await remove(page, other)), 'after both').toBe(0);
+});
