@@ -12,6 +12,10 @@ export type Shading = (typeof SHADINGS)[number];
 export const SAMPLE_COUNTS = [0, 2, 4] as const;
 
 export type Vec3Tuple = [number, number, number];
+
+export const CONTROLS_MODES = ['flyby', 'orbit', 'trackball'] as const;
+/** Which input the element listens to (SPEC §10); the bare `controls` attribute means flyby. */
+export type ControlsMode = (typeof CONTROLS_MODES)[number];
 export type YawPitch = [number, number];
 
 /** Every attribute's parsed value, by property name. */
@@ -23,7 +27,10 @@ export interface SceneAttributes {
   cameraPosition: Vec3Tuple;
   cameraRotation: YawPitch;
   fov: number;
-  controls: boolean;
+  /** The input mode, or null without the attribute (no input). */
+  controls: ControlsMode | null;
+  /** The point the camera looks at (overriding camera-rotation) and orbit turns about, or null. */
+  cameraTarget: Vec3Tuple | null;
   spin: number;
   /** Fixed scene clock in seconds, or null for the live clock. */
   time: number | null;
@@ -223,11 +230,29 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
   } satisfies AttributeSpec<'cameraRotation'>,
   numberSpec('fov', 'fov', 60, 1, 179, 'vertical field of view in degrees'),
   {
-    property: 'controls', attribute: 'controls', default: false,
-    doc: 'boolean: keyboard and mouse flyby',
-    parse: (raw) => ({ value: raw !== null }),
-    format: (v) => (v ? '' : null),
+    property: 'controls', attribute: 'controls', default: null,
+    doc: 'flyby, orbit or trackball (the bare attribute: flyby); absent: no input',
+    parse(raw) {
+      if (raw === null) return { value: null };
+      const w = raw.trim().toLowerCase();
+      if (w === '' || w === 'true') return { value: 'flyby' };
+      if ((CONTROLS_MODES as readonly string[]).includes(w)) return { value: w as ControlsMode };
+      return { value: 'flyby', problem: `expected one of ${CONTROLS_MODES.join(', ')}; using flyby` };
+    },
+    format: (v) => v ?? null,
   } satisfies AttributeSpec<'controls'>,
+  {
+    property: 'cameraTarget', attribute: 'camera-target', default: null,
+    doc: '"x y z" the camera looks at (overrides camera-rotation); orbit turns about it',
+    parse(raw) {
+      if (raw === null) return { value: null };
+      const xs = tupleParse(raw, 3);
+      if (!xs) return { value: null, problem: 'expected "x y z", using no target' };
+      const c = clampCoords(xs);
+      return { value: c.value as Vec3Tuple, problem: c.problem };
+    },
+    format: (v) => (v ? v.join(' ') : null),
+  } satisfies AttributeSpec<'cameraTarget'>,
   finiteSpec('spin', 'spin', 0.8, "the cube's spin about its Y axis, rad/s; 0 stops it"),
   {
     property: 'time', attribute: 'time', default: null,
@@ -298,7 +323,7 @@ export function defaultAttributes(): SceneAttributes {
  */
 export function propertyToRaw(spec: AttributeSpec, value: unknown): string | null {
   if (value === null || value === undefined) return null;
-  if (spec.property === 'controls') return value ? '' : null;
+  if (spec.property === 'controls' && typeof value === 'boolean') return value ? '' : null;
   if (Array.isArray(value)) return value.map((x) => String(x)).join(' ');
   if (typeof value === 'number' || typeof value === 'string' || typeof value === 'boolean') return String(value);
   return '\u0000invalid'; // objects, symbols, functions: never usable

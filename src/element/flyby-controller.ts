@@ -12,6 +12,9 @@ export interface FlybyOptions {
   maxDt?: number;
 }
 
+/** The most one mouse event turns the camera, degrees (SPEC §10). */
+export const MAX_LOOK_STEP = 5;
+
 const DEFAULTS: Required<FlybyOptions> = {
   speed: 3,
   sensitivity: 0.002 * (180 / Math.PI),
@@ -87,10 +90,20 @@ export class FlybyController {
     return true;
   }
 
-  /** Pointer-lock movement in CSS pixels: yaw += dx·sens, pitch −= dy·sens. True if the pose changed. */
+  /**
+   * Pointer-lock movement in CSS pixels: yaw += dx·sens, pitch −= dy·sens, at most
+   * MAX_LOOK_STEP degrees per event (SPEC §10: no single event turns the camera more than 5°).
+   * True if the pose changed.
+   */
   look(dx: number, dy: number): boolean {
     if (!Number.isFinite(dx) || !Number.isFinite(dy)) return false;
-    return this.rotate(dx * this.sensitivity, -dy * this.sensitivity);
+    let yaw = dx * this.sensitivity, pitch = -dy * this.sensitivity;
+    const m = Math.hypot(yaw, pitch);
+    if (m > MAX_LOOK_STEP) {
+      yaw *= MAX_LOOK_STEP / m;
+      pitch *= MAX_LOOK_STEP / m;
+    }
+    return this.rotate(yaw, pitch);
   }
 
   /** Drops every held key (on blur, so a key released elsewhere does not stick). */

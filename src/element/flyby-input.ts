@@ -29,6 +29,7 @@ export class FlybyInput {
     this.host.addEventListener('blur', this.onBlur);
     this.canvas.addEventListener('click', this.onClick);
     this.canvas.addEventListener('mousemove', this.onMouseMove);
+    document.addEventListener('pointerlockchange', this.onLockChange);
   }
 
   detach(): void {
@@ -37,6 +38,7 @@ export class FlybyInput {
     this.host.removeEventListener('blur', this.onBlur);
     this.canvas.removeEventListener('click', this.onClick);
     this.canvas.removeEventListener('mousemove', this.onMouseMove);
+    document.removeEventListener('pointerlockchange', this.onLockChange);
     this.flyby.releaseAll();
   }
 
@@ -75,8 +77,21 @@ export class FlybyInput {
     } catch { /* pointer lock unavailable */ }
   };
 
+  /**
+   * The first movement after entering pointer lock carries the jump from where the pointer was
+   * to the lock's centre (Chrome has reported (−528, −377) px): it is dropped, not turned by.
+   */
+  private skipNext = false;
+  private readonly onLockChange = (): void => {
+    this.skipNext = true;
+  };
+
   private readonly onMouseMove = (e: MouseEvent): void => {
     if (!this.hooks.enabled() || !this.locked()) return;
+    if (this.skipNext) {
+      this.skipNext = false;
+      return;
+    }
     if (this.flyby.look(e.movementX, e.movementY)) this.hooks.moved(true);
   };
 }

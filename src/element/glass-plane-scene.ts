@@ -6,13 +6,15 @@ import { defineAttributeProperties, upgradeProperties, type AttributeHost } from
 import { AttributeWarnings, PREFIX, warn } from './warnings';
 import { FlybyController } from './flyby-controller';
 import { FlybyInput } from './flyby-input';
+import { PointerControls, type PointerMode } from './controls/pointer-controls';
+import { boundsCenter, rotateScene } from '../scene/group-rotation';
 import { applyStyle } from './element-style';
 import { readCanvas } from './canvas-readback';
 import { SharedContext, type ContextClient, type Presenter } from './shared-context';
 import { Renderer, type ReadbackSource } from '../render/renderer';
 import { ShaderError } from '../render/gl/program';
 import type { FrameReport, FrameState, RenderStats } from '../render/types';
-import type { CapturePass, ErrorType, GlassPlaneSceneEventMap } from './types';
+import type { CameraChangeDetail, CapturePass, ErrorType, GlassPlaneSceneEventMap } from './types';
 import { SceneSource } from './scene-source';
 import { TextureImages } from './texture-images';
 import { composeScene } from './compose-scene';
@@ -56,6 +58,14 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private readonly message: HTMLElement;
   private readonly flyby = new FlybyController();
   private readonly input: FlybyInput;
+  /** orbit and trackball input, and the trackball's rotations. */
+  private readonly pointerControls: PointerControls;
+  /** rAF time of the last frame, for the motion after release (0: none yet). */
+  private lastFrameNow = 0;
+  /** The flyby's mouse look ends 150 ms after its last movement. */
+  private lookTimer: ReturnType<typeof setTimeout> | undefined;
+  /** A camera attribute set by the page: one camera-change after the current task. */
+  private cameraChangeQueued = false;
   private readonly warnings = new AttributeWarnings();
   /** The light-DOM children (<glass-object>, <glass-light>) as parts of the scene. */
   private readonly source = new SceneSource(this, () => this.sceneChanged());
@@ -84,6 +94,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private totals = emptyStats();
   private frames = 0;
   private cameraDirty = false;
+  /** The flyby's keys moved the camera since the last write-back (their gesture ends when it stops). */
+  private flybyMoved = false;
   /** True while reflectCamera() sets the camera attributes. */
   private writingBack = false;
   private readonly state: FrameState = {
@@ -105,9 +117,13 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     root.append(this.canvas, this.message);
     this.flyby.setPose(this.values.cameraPosition, this.values.cameraRotation[0], this.values.cameraRotation[1]);
     this.input = new FlybyInput(this, this.canvas, this.flyby, {
-      enabled: () => this.values.controls,
+      enabled: () => this.values.controls === 'flyby',
       moved: (byMouse) => {
-        if (byMouse) this.cameraMoved();
+        if (byMouse) {
+          this.cameraDirty = true;
+          clearTimeout(this.lookTimer);
+          this.lookTimer = setTimeout(() => this.gestureEnd(), 150);
+        }
         // Motion starts now, not at the next frame: on a busy page that frame may come after
         // the key is released already, and a first step of dt = 0 would lose the press.
         else if (this.lastNow === 0) this.lastNow = performance.now();
@@ -121,6 +137,18 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
         this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length];
       },
     });
+    this.pointerControls = new PointerControls(this, this.canvas, {
+      mode: () => (this.values.controls === 'orbit' || this.values.controls === 'trackball' ? this.values.controls as PointerMode : null),
+      pose: () => this.flyby.pose,
+      target: () => this.values.cameraTarget ?? boundsCenter(this.scene.objects),
+      fov: () => this.values.fov,
+      changed: () => {
+        this.cameraDirty = true;
+        this.sceneValue = null;
+        this.requestRender();
+      },
+      gestureEnd: () => this.gestureEnd(),
+    });
   }
 
   // ---- lifecycle -------------------------------------------------------------------------
@@ -131,6 +159,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     if (!this.hasAttribute('role')) this.setAttribute('role', 'img');
     if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', this.alt);
     this.input.attach();
+    this.pointerControls.attach();
     this.resizeObserver = new ResizeObserver(this.onResize);
     this.resizeObserver.observe(this);
     this.intersectionObserver = new IntersectionObserver(this.onIntersection, { rootMargin: VIEW_MARGIN });
@@ -152,6 +181,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.reducedMotion = null;
     this.source.disconnect();
     this.input.detach();
+    this.pointerControls.detach();
+    clearTimeout(this.lookTimer);
     this.disposeRenderer();
     this.shared?.release(this);
     this.shared = null;
@@ -171,10 +202,13 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.sceneValue = null;
     // The pose written back at rest is the one just drawn: nothing to move, nothing to draw.
     if (this.writingBack) return;
-    if (spec.property === 'cameraPosition' || spec.property === 'cameraRotation') {
+    if (spec.property === 'cameraPosition' || spec.property === 'cameraRotation' || spec.property === 'cameraTarget') {
       const [yaw, pitch] = this.values.cameraRotation;
       this.flyby.setPose(this.values.cameraPosition, yaw, pitch);
+      this.aimAtTarget();
+      this.queueCameraChange();
     }
+    if (spec.property === 'controls') this.pointerControls.cancel();
     // Resize only: drawing here, mid-way through a script's batch of attribute changes, would
     // show a frame with half of them applied (the next animation frame comes before paint).
     if (spec.property === 'pixelRatio') this.resizeCanvas();
@@ -201,10 +235,33 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
    * new value after every change (the same object until then).
    */
   get scene(): Scene {
-    return (this.sceneValue ??= composeScene(
-      { ...this.values, spin: this.effectiveSpin() },
-      this.source.current(),
+    return (this.sceneValue ??= rotateScene(
+      composeScene({ ...this.values, spin: this.effectiveSpin() }, this.source.current()),
+      this.pointerControls.objectRotation, this.pointerControls.lightRotation,
     ));
+  }
+
+  /**
+   * The trackball's rotation of the objects about the centre of their bounds, a unit quaternion
+   * [x, y, z, w] (identity [0, 0, 0, 1]). Never written to an attribute; settable (normalised;
+   * a value that is not four finite numbers, or zero, is ignored with a warning).
+   */
+  get objectRotation(): [number, number, number, number] {
+    const q = this.pointerControls.objectRotation;
+    return [q[0], q[1], q[2], q[3]];
+  }
+
+  set objectRotation(value: ArrayLike<number>) {
+    const q = Array.from(value ?? [], Number);
+    const len = Math.hypot(...q);
+    if (q.length !== 4 || !Number.isFinite(len) || len === 0) {
+      warn(`objectRotation: expected a quaternion [x, y, z, w], ignoring ${JSON.stringify(value)?.slice(0, 60)}`);
+      return;
+    }
+    const r = this.pointerControls.objectRotation;
+    for (let i = 0; i < 4; i++) r[i] = q[i] / len;
+    this.sceneValue = null;
+    this.requestRender();
   }
 
   /** Draws a frame on the next animation frame, even when nothing changed. */
@@ -323,6 +380,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     cancelAnimationFrame(this.rafId);
     this.rafId = 0;
     this.lastNow = 0;
+    this.lastFrameNow = 0;
   }
 
   /**
@@ -335,7 +393,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     const dt = this.lastNow ? (t - this.lastNow) / 1000 : 0;
     this.lastNow = t;
     if (this.flyby.update(dt)) {
-      this.cameraMoved();
+      this.cameraDirty = true;
+      this.flybyMoved = true;
       this.dirty = true;
     }
   }
@@ -344,11 +403,19 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.rafId = 0;
     if (!this.renderer || this.failed) return;
     this.advanceFlyby();
+    // The motion after release, by the frames' own clock (exact for any frame time).
+    const dt = this.lastFrameNow ? (now - this.lastFrameNow) / 1000 : 0;
+    this.lastFrameNow = now;
+    if (this.pointerControls.update(dt)) {
+      this.sceneValue = null;
+      this.cameraDirty = true;
+    }
     this.draw(now);
     if (this.animating()) this.scheduleFrame();
     else {
       this.lastNow = 0;
-      if (this.cameraDirty) this.reflectCamera();
+      this.lastFrameNow = 0;
+      if (this.cameraDirty && this.flybyMoved) this.gestureEnd();
     }
   };
 
@@ -399,7 +466,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   }
 
   private animating(): boolean {
-    return (this.effectiveSpin() !== 0 && this.values.time === null) || this.flyby.active;
+    return (this.effectiveSpin() !== 0 && this.values.time === null) || this.flyby.active || this.pointerControls.active;
   }
 
   private frameState(now: number): FrameState {
@@ -502,23 +569,57 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   // ---- camera ------------------------------------------------------------------------------
 
-  private cameraMoved(): void {
-    this.cameraDirty = true;
-    const { position, yaw, pitch } = this.flyby.pose;
-    this.dispatchEvent(new CustomEvent('camera-change', { detail: { position: [...position], rotation: [yaw, pitch] } }));
+  /** With `camera-target`, the camera looks at it (SPEC §2): yaw and pitch from position → target. */
+  private aimAtTarget(): void {
+    const t = this.values.cameraTarget;
+    if (!t) return;
+    const p = this.flyby.pose.position;
+    const dx = t[0] - p[0], dy = t[1] - p[1], dz = t[2] - p[2];
+    const d = Math.hypot(dx, dy, dz);
+    if (!(d > 0)) return; // at the target: keep camera-rotation
+    this.flyby.setPose(p, Math.atan2(dz, dx) * (180 / Math.PI), Math.asin(dy / d) * (180 / Math.PI));
   }
 
-  /** Writes the flown pose back to camera-position / camera-rotation once movement stops. */
-  private reflectCamera(): void {
+  private cameraDetail(): CameraChangeDetail {
+    const { position, yaw, pitch } = this.flyby.pose;
+    const t = this.values.cameraTarget;
+    return t ? { position: [...position], rotation: [yaw, pitch], target: [...t] } : { position: [...position], rotation: [yaw, pitch] };
+  }
+
+  /** The page changed a camera attribute: one camera-change after its batch of changes. */
+  private queueCameraChange(): void {
+    if (this.cameraChangeQueued || !this.isConnected) return;
+    this.cameraChangeQueued = true;
+    queueMicrotask(() => {
+      this.cameraChangeQueued = false;
+      if (this.isConnected) this.dispatchEvent(new CustomEvent('camera-change', { detail: this.cameraDetail() }));
+    });
+  }
+
+  /**
+   * A gesture ended (SPEC §10): the camera attributes are written once (camera-target too when
+   * a pan moved it) and one camera-change is fired; the write-back itself fires none.
+   */
+  private gestureEnd(): void {
+    clearTimeout(this.lookTimer);
+    this.lookTimer = undefined;
+    this.flybyMoved = false;
+    if (!this.cameraDirty) return;
     this.cameraDirty = false;
     const { position, yaw, pitch } = this.flyby.pose;
     this.writingBack = true;
     try {
       this.setAttribute('camera-position', `${position[0]} ${position[1]} ${position[2]}`);
       this.setAttribute('camera-rotation', `${yaw} ${pitch}`);
+      // A pan moves what the camera looks at: with camera-target set, the target moves with it.
+      if (this.pointerControls.takePanned() && this.values.cameraTarget) {
+        const t = this.pointerControls.orbitTarget;
+        this.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);
+      }
     } finally {
       this.writingBack = false;
     }
+    this.dispatchEvent(new CustomEvent('camera-change', { detail: this.cameraDetail() }));
   }
 }
 

@@ -15,6 +15,8 @@ export interface GlassPlaneSceneErrorDetail {
 export interface CameraChangeDetail {
   position: [number, number, number];
   rotation: [number, number];
+  /** `camera-target`, when it is set. */
+  target?: [number, number, number];
 }
 
 export interface GlassPlaneSceneEventMap extends Omit<HTMLElementEventMap, 'error'> {

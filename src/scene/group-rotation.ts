@@ -1,0 +1,81 @@
+// The trackball's rotation of the scene (SPEC §10): every object turned as a group about the
+// centre of their bounds, and the first light turned about the same centre. Applied to the
+// scene value, so every renderer and the reference see it as ordinary transforms. Pure math.
+import { mat3, quat, vec3, type ReadonlyQuat } from 'gl-matrix';
+import type { Light, Scene, SceneObject, Vec3 } from './scene';
+
+const DEG = Math.PI / 180;
+
+/** Rz·Ry·Rx of Euler degrees (x applied first), as the renderers build it. */
+export function eulerToQuat(out: quat, rotation: readonly number[]): quat {
+  const qx = quat.setAxisAngle((new Float64Array([0, 0, 0, 1]) as unknown as quat), [1, 0, 0], rotation[0] * DEG);
+  const qy = quat.setAxisAngle((new Float64Array([0, 0, 0, 1]) as unknown as quat), [0, 1, 0], rotation[1] * DEG);
+  const qz = quat.setAxisAngle((new Float64Array([0, 0, 0, 1]) as unknown as quat), [0, 0, 1], rotation[2] * DEG);
+  quat.multiply(out, qz, qy);
+  return quat.multiply(out, out, qx);
+}
+
+/** Euler degrees [x, y, z] with Rz·Ry·Rx = the rotation of `q`; x = 0 at gimbal lock. */
+export function quatToEuler(q: ReadonlyQuat): Vec3 {
+  const m = mat3.fromQuat((new Float64Array(9) as unknown as mat3), q); // column-major: m[c*3 + r]
+  const r20 = m[2], r21 = m[5], r22 = m[8], r10 = m[1], r00 = m[0], r01 = m[3], r11 = m[4];
+  const y = Math.asin(Math.max(-1, Math.min(1, -r20)));
+  if (Math.abs(r20) < 0.9999999) return [Math.atan2(r21, r22) / DEG, y / DEG, Math.atan2(r10, r00) / DEG];
+  return [0, y / DEG, Math.atan2(-r01, r11) / DEG];
+}
+
+/** Centre of the box around the objects' world bounding spheres (their spin aside); the origin for none. */
+export function boundsCenter(objects: readonly SceneObject[]): Vec3 {
+  if (objects.length === 0) return [0, 0, 0];
+  const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+  const q = (new Float64Array([0, 0, 0, 1]) as unknown as quat), c = (new Float64Array(3) as unknown as vec3);
+  for (const o of objects) {
+    const { position, rotation, scale } = o.transform;
+    vec3.multiply(c, o.bounds.center as vec3, scale as vec3);
+    vec3.transformQuat(c, c, eulerToQuat(q, rotation));
+    vec3.add(c, c, position as vec3);
+    const r = o.bounds.radius * Math.max(Math.abs(scale[0]), Math.abs(scale[1]), Math.abs(scale[2]));
+    for (let i = 0; i < 3; i++) {
+      lo[i] = Math.min(lo[i], c[i] - r);
+      hi[i] = Math.max(hi[i], c[i] + r);
+    }
+  }
+  const mid = (i: number) => (Number.isFinite(lo[i] + hi[i]) ? (lo[i] + hi[i]) / 2 : 0);
+  return [mid(0), mid(1), mid(2)];
+}
+
+const isIdentity = (q: ReadonlyQuat) => q[0] === 0 && q[1] === 0 && q[2] === 0;
+
+/** The objects turned by `q` about `center`: position c + q·(p − c), rotation q·R. */
+export function rotateObjects(objects: readonly SceneObject[], q: ReadonlyQuat, center: Vec3): readonly SceneObject[] {
+  if (isIdentity(q)) return objects;
+  const r = (new Float64Array([0, 0, 0, 1]) as unknown as quat), p = (new Float64Array(3) as unknown as vec3);
+  return objects.map((o) => {
+    vec3.subtract(p, o.transform.position as vec3, center as vec3);
+    vec3.transformQuat(p, p, q);
+    vec3.add(p, p, center as vec3);
+    quat.multiply(r, q, eulerToQuat(r, o.transform.rotation));
+    return { ...o, transform: { ...o.transform, position: [p[0], p[1], p[2]], rotation: quatToEuler(r) } };
+  });
+}
+
+/** A light turned by `q` about `center`: a point light's position, a directional light's direction. */
+export function rotateLight(light: Light, q: ReadonlyQuat, center: Vec3): Light {
+  if (isIdentity(q)) return light;
+  const v = (Float64Array.from(light.vector) as unknown as vec3);
+  if (light.kind === 'point') vec3.subtract(v, v, center as vec3);
+  vec3.transformQuat(v, v, q);
+  if (light.kind === 'point') vec3.add(v, v, center as vec3);
+  return { ...light, vector: [v[0], v[1], v[2]] };
+}
+
+/** `scene` with the trackball's object and light rotations applied about the objects' centre. */
+export function rotateScene(scene: Scene, objects: ReadonlyQuat, light: ReadonlyQuat): Scene {
+  if (isIdentity(objects) && isIdentity(light)) return scene;
+  const center = boundsCenter(scene.objects);
+  return {
+    ...scene,
+    objects: rotateObjects(scene.objects, objects, center),
+    lights: scene.lights.map((l, i) => (i === 0 ? rotateLight(l, light, center) : l)),
+  };
+}
