@@ -107,7 +107,7 @@ test.describe('trackball', () => {
     const after = await capture(page, undefined, selector);
     expect(compareImages(before, after).differing, 'pixels changed by the drag').toBeGreaterThan(500);
     await setAttributes(page, selector, { controls: null });
-    await page.evaluate(([s, q]) => { (document.querySelector(s as string) as unknown as ControlsElement).objectRotation = [0, 0, 0, 1]; }, [selector, q] as const);
+    await page.evaluate((s) => { (document.querySelector(s) as unknown as ControlsElement).objectRotation = [0, 0, 0, 1]; }, selector);
     await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
     expect(compareImages(before, await capture(page, undefined, selector)).differing, 'identity rotation: the first picture again').toBe(0);
     await page.evaluate(([s, q]) => { (document.querySelector(s as string) as unknown as ControlsElement).objectRotation = q as Quat; }, [selector, q] as const);
