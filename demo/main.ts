@@ -15,6 +15,17 @@ for (const input of document.querySelectorAll<HTMLInputElement | HTMLSelectEleme
   show();
 }
 
+// What the chosen controls mode does, under the scene.
+const HELP: Record<string, string> = {
+  orbit: 'Drag to turn around the scene, right-drag or two fingers to pan, wheel or pinch to zoom; arrow keys and +/− while focused.',
+  trackball: 'Drag to turn the objects (they keep spinning when flicked), right- or Shift-drag to move the light, wheel or pinch to zoom.',
+  flyby: 'Click the scene, then fly: W A S D move, Space/Shift up/down, mouse or arrow keys look, F cycles the debug view, Esc releases the mouse.',
+};
+const help = document.getElementById('help')!;
+const showHelp = () => { help.textContent = HELP[scene.getAttribute('controls') || 'flyby'] ?? ''; };
+new MutationObserver(showHelp).observe(scene, { attributes: true, attributeFilter: ['controls'] });
+showHelp();
+
 // Keep the debug-view menu in step when the F key changes it inside the element.
 const debugSelect = document.querySelector<HTMLSelectElement>('[data-attr="debug-view"]')!;
 let frames = 0;

@@ -50,3 +50,24 @@ test('three textured models over a glass floor, switchable; sliders write the ch
   await page.evaluate(() => document.getElementById('light')!.setAttribute('specular', '1.7 1.7 1.7'));
   await expect(page.locator('input[data-target="light"][data-attr="specular"]')).toHaveValue('1.7');
 });
+
+test('the demo takes orbit input by default and offers controls and projection menus; the gallery\'s drag turns the model (trackball)', async ({ page }) => {
+  await page.goto('/demo/');
+  await page.waitForFunction(() => (document.getElementById('scene') as unknown as { stats: { frames: number } }).stats.frames > 0);
+  expect(await page.evaluate(() => (document.getElementById('scene') as unknown as { controls: string }).controls)).toBe('orbit');
+  expect(await page.locator('select[data-attr="projection"] option').allTextContents()).toEqual(['perspective', 'orthographic']);
+  await page.selectOption('select[data-attr="controls"]', 'trackball');
+  expect(await page.evaluate(() => document.getElementById('scene')!.getAttribute('controls'))).toBe('trackball');
+  await expect(page.locator('#help')).toContainText('turn the objects');
+
+  await page.goto('/demo/gallery.html');
+  await page.waitForFunction(() => (document.getElementById('scene') as unknown as { stats: { frames: number } }).stats.frames > 0);
+  const r = await page.locator('#scene').boundingBox();
+  await page.mouse.move(r!.x + r!.width / 2, r!.y + r!.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(r!.x + r!.width / 2 + 60, r!.y + r!.height / 2, { steps: 12 });
+  await page.waitForTimeout(150); // rest: no spin after release
+  await page.mouse.up();
+  const q = await page.evaluate(() => (document.getElementById('scene') as unknown as { objectRotation: number[] }).objectRotation);
+  expect(2 * Math.acos(Math.min(1, Math.abs(q[3]))) * (180 / Math.PI), 'degrees the drag turned the model').toBeGreaterThan(5);
+});
