@@ -23,6 +23,7 @@ const LOG_DIR = path.join(ROOT, 'test-results', 'mutations');
 
 const PASSES = 'tests/e2e/passes.spec.ts';
 const LEAKS = 'tests/e2e/gl-leaks.spec.ts';
+const CONTROLS = 'tests/e2e/controls.spec.ts';
 
 /** { name, edits: [{ file, find, replace }], tests: spec (Playwright) or test (vitest) files }. */
 const MUTATIONS = [
@@ -103,6 +104,26 @@ const MUTATIONS = [
     name: '8 F forced to 0',
     edits: [{ file: 'shaders/glass.frag', find: 'float f = fresnel(c);', replace: 'float f = 0.0;' }],
     tests: [PASSES],
+  },
+  {
+    name: '9 inertia stepped by Euler (frame-rate dependent)',
+    edits: [{ file: 'src/element/controls/inertia.ts', find: '    const f = INERTIA_TAU * (1 - k);', replace: '    const f = t;' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: '10 touch-action none without controls',
+    edits: [{ file: 'src/element/element-style.ts', find: 'canvas { display: block; width: 100%; height: 100%; }', replace: 'canvas { display: block; width: 100%; height: 100%; touch-action: none; }' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: '11 pointer-lock entry movement turned by',
+    edits: [{ file: 'src/element/flyby-input.ts', find: '    this.skipNext = true;', replace: '' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: '12 a dense mesh\'s clustered reflection copies never released',
+    edits: [{ file: 'src/render/object-meshes.ts', find: '    for (const entry of slot.reflection.values()) if (entry) this.shared.releaseMesh(entry.key);\n', replace: '' }],
+    tests: [LEAKS],
   },
 ];
 

@@ -308,3 +308,26 @@ test.describe('touch, focus and jumps', () => {
     expect(Math.hypot(yaw, pitch)).toBeGreaterThan(4.9);
   });
 });
+
+test('camera-change: one per batch of camera attributes set by the page, none for the element\'s own write-back', async ({ page }) => {
+  await openPage(page);
+  const { selector } = await mount(page, { time: 0, spin: 0, controls: 'orbit' }, SIZE);
+  const changes = await recordCameraChanges(page, selector);
+  await page.evaluate((s) => {
+    const el = document.querySelector(s)!;
+    el.setAttribute('camera-position', '0 1 6');
+    el.setAttribute('camera-target', '0 0 0');
+  }, selector);
+  await expect.poll(async () => (await changes()).length).toBe(1);
+  const [d] = (await changes()) as { position: number[]; rotation: number[]; target: number[] }[];
+  expect(d.position).toEqual([0, 1, 6]);
+  expect(d.target).toEqual([0, 0, 0]);
+  expect(d.rotation[0]).toBeCloseTo(-90, 9); // looking at the target: down −Z
+  expect(d.rotation[1]).toBeCloseTo(-Math.atan2(1, 6) * DEG, 9);
+  // A gesture: its write-back sets the attributes, and only the gesture's own event is fired.
+  await page.focus(selector);
+  await page.keyboard.press('ArrowLeft');
+  await expect.poll(async () => (await changes()).length).toBe(2);
+  await page.waitForTimeout(100);
+  expect((await changes()).length).toBe(2);
+});
