@@ -145,3 +145,20 @@ test('a bad projection warns once, falls back to perspective, and rendering goes
   await page.evaluate((s) => { (document.querySelector(s) as unknown as { projection: string }).projection = 'Orthographic'; }, selector);
   expect(await property()).toBe('orthographic');
 });
+
+test('skip rules (SPEC §7) in orthographic: edge-on is the view direction in the glass plane, not the eye on it', async ({ page }) => {
+  // The eye exactly on the glass plane, looking at the glass 80° off its normal: a perspective
+  // eye sees the glass as a line (edge-on); an orthographic camera sees it at that angle.
+  const onPlane = { 'camera-position': '3.6 2.4 0', 'camera-rotation': DEFAULT_CAMERA_ROTATION.join(' '), time: TIME };
+  const { selector } = await mount(page, onPlane, { width: 160, height: 90 });
+  const perspective = await setAttributes(page, selector, { projection: 'perspective' });
+  expect(perspective.passes.reflection).toEqual({ ran: false, reason: 'glass edge-on' });
+  const ortho = await setAttributes(page, selector, { projection: 'orthographic' });
+  expect(ortho.passes.reflection.ran, 'an orthographic eye on the plane still sees the glass').toBe(true);
+  expect(ortho.passes.glass.ran).toBe(true);
+  // Looking along −X from 3 in front of the glass: the view direction lies in the glass plane.
+  const along = await setAttributes(page, selector, { 'camera-position': '6 1 3', 'camera-rotation': '180 0' });
+  expect(along.passes.reflection).toEqual({ ran: false, reason: 'glass edge-on' });
+  const perspectiveAlong = await setAttributes(page, selector, { projection: 'perspective' });
+  expect(perspectiveAlong.passes.reflection.ran, 'the same pose in perspective sees the glass beside it').toBe(true);
+});
