@@ -95,7 +95,7 @@ describe('viewerSide', () => {
 });
 
 /** Clip coordinates of world point `p` through one eye's glass matrices (the glass model is the identity). */
-function clip(setup: FrameSetup, eye: 'main' | 'mirrored', p: readonly number[]): Float64Array {
+function clip(setup: FrameSetup, eye: 'main' | 'mirrored', p: ArrayLike<number>): Float64Array {
   const m = eye === 'main' ? setup.glassMain : setup.glassMirrored;
   return apply(m.modelViewProjection, p);
 }
