@@ -1,12 +1,15 @@
 // The bench's camera views: incidences on the glass from near-normal to grazing, a camera
 // almost on the glass plane, one far away, and the element's default view.
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION } from '../src/element/attributes';
+import type { Projection } from '../src/render/types';
 
 export interface BenchView {
   name: string;
   cameraPosition: [number, number, number];
   yaw: number;
   pitch: number;
+  /** Absent: perspective (bench/projection.spec.ts sets orthographic). */
+  projection?: Projection;
 }
 
 const DEG = 180 / Math.PI;

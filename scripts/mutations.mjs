@@ -49,8 +49,8 @@ const MUTATIONS = [
     name: '3 abs() removed from cosθ',
     edits: [{
       file: 'shaders/glass.frag',
-      find: 'float c = clamp(abs(dot(normalize(vNormal), normalize(-vRelPos))), 0.0, 1.0);',
-      replace: 'float c = clamp(dot(normalize(vNormal), normalize(-vRelPos)), 0.0, 1.0);',
+      find: 'float c = clamp(abs(dot(normalize(vNormal), v)), 0.0, 1.0);',
+      replace: 'float c = clamp(dot(normalize(vNormal), v), 0.0, 1.0);',
     }],
     tests: [PASSES],
   },

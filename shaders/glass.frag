@@ -8,6 +8,7 @@ uniform sampler2D uReflection;
 uniform float uTransparency;
 uniform float uIor;
 uniform vec3 uBodyTint;         // tint ⊙ darkness
+uniform vec4 uViewVector;       // V = normalize(xyz − w·relPos): perspective (0,0,0,1), orthographic (−forward, 0)
 
 in highp vec3 vRelPos;
 in vec3 vNormal;
@@ -34,7 +35,8 @@ float fresnel(float c) {
 
 void main() {
   // Two-sided: |N·V|, clamped because a normalised dot can exceed 1 by an ulp.
-  float c = clamp(abs(dot(normalize(vNormal), normalize(-vRelPos))), 0.0, 1.0);
+  vec3 v = normalize(uViewVector.xyz - uViewVector.w * vRelPos);
+  float c = clamp(abs(dot(normalize(vNormal), v)), 0.0, 1.0);
   float f = fresnel(c);
 #ifdef OUTPUT_FRESNEL
   outColor = vec4(f, f, f, 1.0);

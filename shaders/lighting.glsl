@@ -14,6 +14,13 @@ uniform vec3 uKa;
 uniform vec3 uKd;
 uniform vec3 uKs;
 uniform float uShininess;
+// V = normalize(xyz − w·relPos): (0, 0, 0, 1) for a perspective eye (towards the eye), or
+// (towards the viewer, 0) for an orthographic one, whose view vector is constant (SPEC §10).
+uniform vec4 uViewVector;
+
+vec3 viewVector(vec3 relPos) {
+  return normalize(uViewVector.xyz - uViewVector.w * relPos);
+}
 
 void addLight(vec3 l, vec3 ia, vec3 id, vec3 is, vec3 n, vec3 v, inout vec3 a, inout vec3 s) {
   float nl = dot(n, l);

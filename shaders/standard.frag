@@ -70,7 +70,7 @@ void main() {
   if (vClipDistance < 0.0) discard;
 #endif
 #if defined(SHADING_PHONG)
-  vec3 v = normalize(-vRelPos);
+  vec3 v = viewVector(vRelPos);
   vec3 a, s;
   blinnPhong(facing(normalize(vNormal), v), v, vRelPos, a, s);
 #else

@@ -49,10 +49,10 @@ void main() {
   vNormal = uNormalMatrix * aNormal;
 #elif defined(SHADING_FLAT)
   vec3 faceCentre = (uModelRelative * vec4(aCentroid, 1.0)).xyz; // "centroid" is a GLSL ES 3.0 keyword
-  vec3 v = normalize(-faceCentre);
+  vec3 v = viewVector(faceCentre);
   blinnPhong(facing(normalize(uNormalMatrix * aNormal), v), v, faceCentre, vLightA, vLightS);
 #else
-  vec3 v = normalize(-rel.xyz);
+  vec3 v = viewVector(rel.xyz);
   blinnPhong(facing(normalize(uNormalMatrix * aNormal), v), v, rel.xyz, vLightA, vLightS);
 #endif
 #ifdef CLIP_PLANE

@@ -1,7 +1,7 @@
 // THE attribute table: name, type, default, range and fallback of every attribute (SPEC §2).
 // Parsing, property reflection, README and fuzz tests all read it; nothing here throws.
 import { FRESNEL_MODELS, type FresnelModel } from '../math/fresnel';
-import { clampPitch } from '../math/camera';
+import { clampPitch, type Projection } from '../math/camera';
 import { browserCssColor, parseCssColor } from './css-color';
 
 export const DEBUG_VIEWS = ['none', 'reflection', 'scene', 'fresnel', 'passes'] as const;
@@ -10,6 +10,7 @@ export type DebugView = (typeof DEBUG_VIEWS)[number];
 export const SHADINGS = ['phong', 'gouraud', 'flat'] as const;
 export type Shading = (typeof SHADINGS)[number];
 export const SAMPLE_COUNTS = [0, 2, 4] as const;
+export const PROJECTIONS: readonly Projection[] = ['perspective', 'orthographic'];
 
 export type Vec3Tuple = [number, number, number];
 
@@ -27,6 +28,8 @@ export interface SceneAttributes {
   cameraPosition: Vec3Tuple;
   cameraRotation: YawPitch;
   fov: number;
+  /** Perspective, or orthographic sized at the target or glass centre (SPEC §10). */
+  projection: Projection;
   /** The input mode, or null without the attribute (no input). */
   controls: ControlsMode | null;
   /** The point the camera looks at (overriding camera-rotation) and orbit turns about, or null. */
@@ -229,6 +232,8 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
     format: (v) => v.join(' '),
   } satisfies AttributeSpec<'cameraRotation'>,
   numberSpec('fov', 'fov', 60, 1, 179, 'vertical field of view in degrees'),
+  keywordSpec('projection', 'projection', PROJECTIONS,
+    'perspective, or orthographic: the size the perspective view had at the target (or the glass centre), with a working reflection'),
   {
     property: 'controls', attribute: 'controls', default: null,
     doc: 'flyby, orbit or trackball (the bare attribute: flyby); absent: no input',

@@ -102,6 +102,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     width: 1, height: 1, time: 0, spin: 0, cubeDistance: 0, transparency: 0, ior: 1, fresnel: 'exact',
     fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final',
     reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
+    projection: 'perspective', target: null,
   };
 
   constructor() {
@@ -491,6 +492,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     s.shading = v.shading;
     s.tessellation = v.tessellation;
     s.reflectionFormat = v.reflectionFormat;
+    s.projection = v.projection;
+    s.target = v.cameraTarget; // the orthographic size is taken there (else at the glass centre)
     return s;
   }
 

@@ -1,6 +1,8 @@
-// Flyby camera pose → forward vector, view and projection matrices (float64, SPEC §3).
+// Flyby camera pose → forward vector, view and projection matrices (float64, SPEC §3, §10).
 import { mat4 } from 'gl-matrix';
 import type { ReadonlyVec3 } from 'gl-matrix';
+import { signedDistance, type Plane } from './mirror';
+import { CAMERA } from '../scene/default-scene';
 
 export const PITCH_LIMIT = 89.9;
 const DEG = Math.PI / 180;
@@ -46,4 +48,60 @@ export function projectionMatrix<T extends Float64Array | number[]>(
   out: T, fovDeg: number, aspect: number, near: number, far: number,
 ): T {
   return mat4.perspectiveNO(out as mat4, fovDeg * DEG, aspect, near, far) as T;
+}
+
+export type Projection = 'perspective' | 'orthographic';
+
+/** The part of a frame's state the orthographic size depends on. */
+export interface OrthoView {
+  cameraPosition: readonly [number, number, number];
+  yaw: number;
+  pitch: number;
+  fov: number;
+  target?: readonly [number, number, number] | null;
+}
+
+/**
+ * Smallest depth the orthographic size is taken at: the near distance (SPEC §3), the nearest
+ * slice the perspective view draws. A target at or behind the eye would otherwise give a
+ * zero or negative size (a singular projection).
+ */
+export const MIN_ORTHO_DEPTH = CAMERA.near;
+
+/**
+ * Half-height of the orthographic view (SPEC §10): depth·tan(fov/2), the depth of the target
+ * (or else the glass centre, or else the origin) measured along the view direction, so the
+ * orthographic view keeps there the size the perspective view had.
+ */
+export function orthoHalfHeight(state: OrthoView, glassCenter: ReadonlyVec3 | null): number {
+  const y = state.yaw * DEG;
+  const p = clampPitch(state.pitch) * DEG;
+  const point = state.target ?? glassCenter ?? ORIGIN;
+  const e = state.cameraPosition;
+  const depth = (point[0] - e[0]) * Math.cos(p) * Math.cos(y) + (point[1] - e[1]) * Math.sin(p)
+    + (point[2] - e[2]) * Math.cos(p) * Math.sin(y);
+  return Math.max(depth, MIN_ORTHO_DEPTH) * Math.tan((state.fov * DEG) / 2);
+}
+
+/** out = orthographic projection of half-height `halfHeight` (width by `aspect`), OpenGL clip depth. */
+export function orthographicMatrix<T extends Float64Array | number[]>(
+  out: T, halfHeight: number, aspect: number, near: number, far: number,
+): T {
+  const hw = halfHeight * aspect;
+  return mat4.orthoNO(out as mat4, -hw, hw, -halfHeight, halfHeight, near, far) as T;
+}
+
+/**
+ * +1 when the camera sees the side of `plane` its normal points to, −1 otherwise. A perspective
+ * eye sees the side it stands on (on the plane counts as +). An orthographic camera sees the
+ * side its view direction comes from, wherever its eye is: every ray is parallel to `forward`,
+ * so a ray meeting the plane meets it from the side −forward points to; with forward in the
+ * plane (edge-on) the eye's side decides, as for perspective.
+ */
+export function viewerSide(plane: Plane, eye: ReadonlyVec3, forward: ReadonlyVec3, projection: Projection): number {
+  if (projection === 'orthographic') {
+    const c = plane[0] * forward[0] + plane[1] * forward[1] + plane[2] * forward[2];
+    if (c !== 0) return c < 0 ? 1 : -1;
+  }
+  return signedDistance(plane, eye) >= 0 ? 1 : -1;
 }

@@ -1,9 +1,10 @@
 // One sample of one view: primary ray, what lies behind the glass (B), the mirror ray (R), composited.
-import { reflectPoint, signedDistance, type Plane } from '../math/mirror';
+import { viewerSide } from '../math/camera';
+import { reflectPoint, type Plane } from '../math/mirror';
 import type { Scene } from '../scene/scene';
 import { visible } from './clip';
 import type { DecodedImage } from './image-texture';
-import { PinholeCamera } from './pinhole-camera';
+import { ViewCamera } from './view-camera';
 import { Ray } from './ray';
 import { RayScene } from './ray-scene';
 import type { ViewState } from './reference-state';
@@ -48,7 +49,7 @@ class Layer {
  */
 export class SampleTracer {
   readonly scene: RayScene;
-  private readonly camera: PinholeCamera;
+  private readonly camera: ViewCamera;
   private readonly lights: readonly PreparedLight[];
   private readonly texture: SurfaceTexture;
   private readonly plane: Plane | null;
@@ -59,7 +60,10 @@ export class SampleTracer {
   private readonly direct: Layer[] = [];
   private readonly mirror: Layer[] = [];
   private readonly mirroredEye = new Float64Array(3);
-  /** +1 when the eye is on the side the glass normal points to (on the plane counts as +), else −1. */
+  /**
+   * +1 when the camera sees the side the glass normal points to, else −1: the eye's side in
+   * perspective (on the plane counts as +), the side the view comes from in orthographic.
+   */
   private readonly side: number;
   /** The first glass reflection's code in the current sample. */
   private reflected = SURFACE_NONE;
@@ -68,13 +72,14 @@ export class SampleTracer {
     scene: Scene, private readonly view: ViewState, filter: TextureFilter,
     images?: ReadonlyMap<string, DecodedImage>,
   ) {
-    this.camera = new PinholeCamera(view);
+    this.camera = new ViewCamera(view, scene.glass?.center ?? null);
     this.scene = new RayScene(scene, view.time);
     this.codes = this.scene.codes;
     this.lights = scene.lights.map(prepareLight);
     this.texture = new SurfaceTexture(filter, images);
     this.plane = this.scene.glass === null ? null : this.scene.glass.plane;
-    this.side = this.plane === null || signedDistance(this.plane, this.camera.eye) >= 0 ? 1 : -1;
+    this.side = this.plane === null ? 1
+      : viewerSide(this.plane, this.camera.eye, this.camera.forward, view.projection ?? 'perspective');
     if (this.plane !== null) reflectPoint(this.mirroredEye, this.camera.eye, this.plane);
     for (let i = 0; i <= MAX_LAYERS; i++) {
       this.direct.push(new Layer());
@@ -227,11 +232,21 @@ export class SampleTracer {
     out[0] = bg[0]; out[1] = bg[1]; out[2] = bg[2];
   }
 
+  private readonly viewVector = new Float64Array(3);
+
+  /** An orthographic camera's constant view vector along `ray` (the mirrored one for a mirrored ray): −direction, unit. */
+  private towardsViewer(ray: Ray): Float64Array {
+    const d = ray.direction, v = this.viewVector;
+    const len = Math.hypot(d[0], d[1], d[2]);
+    v[0] = -d[0] / len; v[1] = -d[1] / len; v[2] = -d[2] / len;
+    return v;
+  }
+
   /** Object colour, clamped to [0, 1]. */
   private shade(hit: SurfaceHit, ray: Ray, eye: Float64Array, layer: Layer, out: Float64Array): void {
     const object = this.scene.scene.objects[hit.object];
     const tex = this.texture.objectTexture(hit, ray, object.material, object.bounds, layer.tex);
-    shadeObject(hit, object.material, tex, this.lights, eye, out);
+    shadeObject(hit, object.material, tex, this.lights, eye, out, this.camera.orthographic ? this.towardsViewer(ray) : null);
     out[0] = clamp01(out[0]); out[1] = clamp01(out[1]); out[2] = clamp01(out[2]);
   }
 }

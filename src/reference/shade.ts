@@ -35,11 +35,13 @@ const sums = new Float64Array(9);
  * unclamped, with V = normalize(eye − p), H = normalize(L + V), L the unit vector towards a
  * directional light or normalize(P − p) for a point light (no distance attenuation: SPEC §9
  * names none): the GPU's per-fragment (phong) shading. `eye` is the real eye for direct views
- * and the mirrored eye for what the glass reflects. Where Ka = Kd (SPEC §3's objects) the sum
+ * and the mirrored eye for what the glass reflects; `towardsViewer`, when given, is V instead
+ * (an orthographic camera's constant view vector, SPEC §10). Where Ka = Kd (SPEC §3's objects) the sum
  * is formed as Kd⊙tex⊙(ΣIa + ΣId·max): the same value with fewer roundings.
  */
 export function shadeObject(
   hit: SurfaceHit, material: Material, tex: Float64Array, lights: readonly PreparedLight[], eye: Float64Array, out: Float64Array,
+  towardsViewer: Float64Array | null = null,
 ): Float64Array {
   const n = hit.n, p = hit.p;
   sums.fill(0); // ambient 0..2, diffuse 3..5, specular 6..8
@@ -59,7 +61,10 @@ export function shadeObject(
       sums[3 + k] += light.diffuse[k] * m;
     }
     if (nl > 0) {
-      if (!haveV) {
+      if (!haveV && towardsViewer) {
+        vx = towardsViewer[0]; vy = towardsViewer[1]; vz = towardsViewer[2];
+        haveV = true;
+      } else if (!haveV) {
         vx = eye[0] - p[0]; vy = eye[1] - p[1]; vz = eye[2] - p[2];
         const vl = Math.hypot(vx, vy, vz);
         vx /= vl; vy /= vl; vz /= vl;

@@ -126,10 +126,10 @@ export class SurfaceTexture {
       this.singular = true;
       return bilinearInto(channels, u, v, out);
     }
-    // ∂p = t·∂d − t(∂d·n)/(d·n)·d: the differential moved onto the tangent plane at the hit.
+    // ∂p = q − (q·n)/(d·n)·d with q = ∂o + t·∂d: the differential moved onto the tangent plane at the hit.
     const a = this.edge1, b = this.edge2;
-    if (footprintEdge(ray.ddx, d, n, dn, t, gu, gv, tex, a)) this.singular = true;
-    if (footprintEdge(ray.ddy, d, n, dn, t, gu, gv, tex, b)) this.singular = true;
+    if (footprintEdge(ray.ddx, ray.odx, d, n, dn, t, gu, gv, tex, a)) this.singular = true;
+    if (footprintEdge(ray.ddy, ray.ody, d, n, dn, t, gu, gv, tex, b)) this.singular = true;
     if (channels.length === 1) {
       out[0] = out[1] = out[2] = channels[0].boxFilter(u, v, a[0], a[1], b[0], b[1]);
     } else {
@@ -154,13 +154,14 @@ function bilinearInto(channels: readonly TextureSampler[], u: number, v: number,
 
 /** One footprint edge in texels (s, t) into `out`; true when it had to be shortened to MAX_FOOTPRINT_TEXELS. */
 function footprintEdge(
-  dd: Float64Array, d: Float64Array, n: Float64Array, dn: number, t: number,
+  dd: Float64Array, od: Float64Array, d: Float64Array, n: Float64Array, dn: number, t: number,
   gu: Float64Array, gv: Float64Array, tex: ChannelTexture, out: Float64Array,
 ): boolean {
-  const k = (t * (dd[0] * n[0] + dd[1] * n[1] + dd[2] * n[2])) / dn;
+  // Written so a zero ∂o (perspective) adds exact zeros: the same figures as before it existed.
+  const k = (t * (dd[0] * n[0] + dd[1] * n[1] + dd[2] * n[2]) + (od[0] * n[0] + od[1] * n[1] + od[2] * n[2])) / dn;
   let es = 0, et = 0;
   for (let i = 0; i < 3; i++) {
-    const dp = t * dd[i] - k * d[i];
+    const dp = t * dd[i] + od[i] - k * d[i];
     es += gu[i] * dp;
     et += gv[i] * dp;
   }

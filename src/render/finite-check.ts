@@ -26,6 +26,7 @@ export function findNonFinite(setup: FrameSetup, state: FrameState, objectCount:
   if (!allFinite(setup.lightsMain.vectors) || !allFinite(setup.lightsMirrored.vectors)) return 'uLightVector';
   if (!allFinite(setup.reflectionViewProjection)) return 'uReflectionViewProjection';
   if (!allFinite(setup.clipPlane)) return 'uClipPlane';
+  if (!allFinite(setup.viewVectorMain) || !allFinite(setup.viewVectorMirrored)) return 'uViewVector';
   if (!Number.isFinite(state.transparency)) return 'uTransparency';
   if (!Number.isFinite(state.ior)) return 'uIor';
   return null;

@@ -2,8 +2,8 @@
 // Positions are relative to the eye (camera-relative rendering) so far cameras keep precision.
 // Reads the scene value (SPEC §9): any number of objects, any glass placement, up to 4 lights.
 import { mat3, mat4 } from 'gl-matrix';
-import { projectionMatrix, rotationOnlyView } from '../math/camera';
-import { reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
+import { forwardFromYawPitch, orthoHalfHeight, orthographicMatrix, projectionMatrix, rotationOnlyView, viewerSide } from '../math/camera';
+import { reflectDirection, reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
 import { CAMERA, DEFAULT_GLASS } from '../scene/default-scene';
 import { glassFrame, type GlassFrame } from '../scene/glass-frame';
 import { MAX_LIGHTS, type Glass, type Scene, type SceneObject } from '../scene/scene';
@@ -33,12 +33,32 @@ export class LightVectors {
 const f64 = (n: number) => new Float64Array(n);
 const TWO_PI = 2 * Math.PI;
 const DEG = Math.PI / 180;
+/** uViewVector of a perspective eye: V = normalize(−relPos). */
+const PERSPECTIVE_VIEW = [0, 0, 0, 1] as const;
 
 export class FrameSetup {
   readonly eye = f64(3);
   readonly mirroredEye = f64(3);
-  /** +1 when the eye is on the side the glass normal points to, −1 otherwise. */
+  /**
+   * +1 when the camera sees the side the glass normal points to, −1 otherwise: the eye's side
+   * in perspective, the side the view direction comes from in orthographic (viewerSide).
+   */
   side = 1;
+  /** Whether this frame's projection is orthographic (SPEC §10). */
+  orthographic = false;
+  /** Orthographic half-height in world units (orthoHalfHeight); 0 in perspective. */
+  halfHeight = 0;
+  /** Unit view direction of the real camera. */
+  readonly forward = f64(3);
+  /** forward · glass normal: 0 when the view direction lies in the glass plane. */
+  viewDot = 0;
+  /**
+   * uViewVector of each eye (lighting.glsl, glass.frag): V = normalize(xyz − w·relPos).
+   * Perspective (0, 0, 0, 1): V points to the eye. Orthographic (−forward, 0): the constant
+   * direction towards the viewer, mirrored for the mirrored camera.
+   */
+  readonly viewVectorMain = new Float32Array([0, 0, 0, 1]);
+  readonly viewVectorMirrored = new Float32Array([0, 0, 0, 1]);
   /** Signed distance of the eye from the glass plane. */
   eyeDistance = 0;
   /** The glass this frame (the default one's frame when the scene has none). */
@@ -88,9 +108,29 @@ export class FrameSetup {
     eye[0] = s.cameraPosition[0]; eye[1] = s.cameraPosition[1]; eye[2] = s.cameraPosition[2];
     reflectPoint(mirroredEye, eye, plane);
     this.eyeDistance = signedDistance(plane, eye);
-    this.side = this.eyeDistance >= 0 ? 1 : -1;
+    const forward = forwardFromYawPitch(this.forward, s.yaw, s.pitch);
+    const projection = s.projection ?? 'perspective';
+    this.orthographic = projection === 'orthographic';
+    this.side = viewerSide(plane, eye, forward, projection);
+    this.viewDot = plane[0] * forward[0] + plane[1] * forward[1] + plane[2] * forward[2];
 
-    projectionMatrix(this.projection, s.fov, s.width / Math.max(1, s.height), CAMERA.near, CAMERA.far);
+    // Same near and far for both projections (SPEC §2): the orthographic eye is a point on the
+    // view plane's centre like the perspective one, and draws depths near..far ahead of it.
+    const aspect = s.width / Math.max(1, s.height);
+    if (this.orthographic) {
+      this.halfHeight = orthoHalfHeight(s, scene.glass?.center ?? null);
+      orthographicMatrix(this.projection, this.halfHeight, aspect, CAMERA.near, CAMERA.far);
+      const vm = this.viewVectorMain, vr = this.viewVectorMirrored, t = this.scratch3;
+      vm[0] = -forward[0]; vm[1] = -forward[1]; vm[2] = -forward[2]; vm[3] = 0;
+      t[0] = -forward[0]; t[1] = -forward[1]; t[2] = -forward[2];
+      reflectDirection(t, t, plane);
+      vr[0] = t[0]; vr[1] = t[1]; vr[2] = t[2]; vr[3] = 0;
+    } else {
+      this.halfHeight = 0;
+      projectionMatrix(this.projection, s.fov, aspect, CAMERA.near, CAMERA.far);
+      this.viewVectorMain.set(PERSPECTIVE_VIEW);
+      this.viewVectorMirrored.set(PERSPECTIVE_VIEW);
+    }
     rotationOnlyView(this.viewRotation, s.yaw, s.pitch, this.scratch3);
     mat4.multiply(this.viewProjection as unknown as mat4, this.projection as unknown as mat4, this.viewRotation as unknown as mat4);
     // Mirrored eye-relative: V·R·x = Vrot·L·(x − mirroredEye), L the plane's linear reflection.
@@ -123,7 +163,7 @@ export class FrameSetup {
       }
     }
 
-    // Keep what lies on the eye's side: side·(n·(rel + e′) + d) ≥ 0.
+    // Keep what lies on the viewer's side: side·(n·(rel + e′) + d) ≥ 0 (exact in either projection).
     const p = plane;
     this.clipPlane[0] = this.side * p[0];
     this.clipPlane[1] = this.side * p[1];

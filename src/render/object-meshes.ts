@@ -72,10 +72,16 @@ function build(g: Geometry): MeshData {
 export class ObjectMeshes {
   private readonly slots: Slot[] = [];
   private frame = 0;
+  /** This frame's orthographic half-height (0: perspective), for the spheres' size on screen. */
+  private orthoHalfHeight = 0;
 
-  /** A new frame: spheres choose their tessellation again (once, not once per pass). */
-  beginFrame(): void {
+  /**
+   * A new frame: spheres choose their tessellation again (once, not once per pass).
+   * `orthoHalfHeight`: the orthographic view's half-height, 0 in perspective.
+   */
+  beginFrame(orthoHalfHeight = 0): void {
     this.frame++;
+    this.orthoHalfHeight = orthoHalfHeight;
   }
 
   constructor(
@@ -98,7 +104,7 @@ export class ObjectMeshes {
       const lod = (slot.lod ??= new SphereLod(this.gl, this.counter));
       if (slot.lodFrame === this.frame && lod.mesh) return lod.mesh;
       slot.lodFrame = this.frame;
-      return lod.update(state, m.center, m.radius, g.radius);
+      return lod.update(state, m.center, m.radius, g.radius, this.orthoHalfHeight);
     }
     if (slot.geometry === g && slot.flat === flat && slot.mesh) return slot.mesh;
     slot.lod?.dispose();

@@ -32,3 +32,8 @@ export function reflectionGrid(worldExtent: number, pixelsPerUnit: number): numb
 export function pixelsPerUnit(height: number, fovDeg: number, distance: number): number {
   return height / (2 * Math.tan((fovDeg * Math.PI) / 360) * distance);
 }
+
+/** Pixels per world unit anywhere in an orthographic view of half-height `halfHeight` over `height` pixels. */
+export function orthoPixelsPerUnit(height: number, halfHeight: number): number {
+  return height / (2 * halfHeight);
+}

@@ -41,8 +41,14 @@ export type ReadbackSource = 'screen' | 'reflection' | 'scene' | 'final';
 const BLACK = [0, 0, 0] as const;
 /** Below this projected area (px²) the glass covers no pixel centre worth a pass. */
 const MIN_GLASS_AREA = 0.5;
-/** An eye this close to the glass plane sees it edge-on. */
+/** A perspective eye this close to the glass plane sees it edge-on. */
 const EDGE_ON_DISTANCE = 1e-3;
+/**
+ * An orthographic camera sees the glass edge-on when its view direction lies in the plane,
+ * wherever its eye is: |forward·n| below this (the angular counterpart of EDGE_ON_DISTANCE,
+ * an eye 1e-3 off the plane per unit of depth).
+ */
+const EDGE_ON_COS = 1e-3;
 const PASSES: readonly PassName[] = ['reflection', 'scene', 'glass'];
 
 /** Why each pass does not run in a debug view. */
@@ -247,7 +253,7 @@ export class Renderer {
     const scene = this.ctx.scene;
     this.setup.update(state, scene);
     this.objectMeshes.trim(scene.objects.length);
-    this.objectMeshes.beginFrame();
+    this.objectMeshes.beginFrame(this.setup.halfHeight);
     this.ctx.triangles.scene = this.ctx.triangles.reflection = 0;
     if (this.setup.glass !== this.glassMeshFrame) {
       this.glassMesh.dispose();
@@ -255,12 +261,14 @@ export class Renderer {
       this.glassMeshFrame = this.setup.glass;
     }
     if (this.options.checks) this.checkFinite(state);
+    const setup = this.setup;
+    const edgeOn = setup.orthographic ? Math.abs(setup.viewDot) < EDGE_ON_COS : Math.abs(setup.eyeDistance) < EDGE_ON_DISTANCE;
     const rect = glassScreenRect(this.setup.viewProjection, this.setup.eye, state.width, state.height, this.glassRect, this.setup.glass.corners);
     this.glassSkipReason = !this.setup.hasGlass ? 'no glass'
       : !this.optimize ? undefined
-      // An eye in the plane sees the glass as a line, which can round to an empty rectangle:
-      // that is edge-on, not off screen.
-      : rect.area < MIN_GLASS_AREA && Math.abs(this.setup.eyeDistance) < EDGE_ON_DISTANCE ? 'glass edge-on'
+      // An eye in the plane (perspective), or a view direction in it (orthographic), sees the
+      // glass as a line, which can round to an empty rectangle: that is edge-on, not off screen.
+      : rect.area < MIN_GLASS_AREA && edgeOn ? 'glass edge-on'
       : rect.x1 <= rect.x0 || rect.y1 <= rect.y0 ? 'glass off screen'
       : rect.area < MIN_GLASS_AREA ? 'glass too small'
       : undefined;

@@ -4,6 +4,7 @@ import { Mesh } from './gl/mesh';
 import type { ResourceCounter } from './gl/resource-counter';
 import { segmentsForScreenRadius, sphereMesh } from '../scene/geometry/sphere';
 import { flatMesh } from '../scene/geometry/flat';
+import { orthoPixelsPerUnit } from './reflection-lod';
 import type { FrameState } from './types';
 
 const DEG = Math.PI / 180;
@@ -17,9 +18,11 @@ export const AUTO_SILHOUETTE_ERROR_PX = 0.25;
 
 /**
  * Radius in pixels of a sphere (world `centre`, `radius`) seen from `state`'s camera: its
- * largest on-screen extent.
+ * largest on-screen extent. `orthoHalfHeight` > 0: an orthographic view of that half-height,
+ * where the size does not depend on distance (height/(2·halfHeight) pixels per unit).
  */
-export function sphereScreenRadius(state: FrameState, centre: ArrayLike<number>, radius: number): number {
+export function sphereScreenRadius(state: FrameState, centre: ArrayLike<number>, radius: number, orthoHalfHeight = 0): number {
+  if (orthoHalfHeight > 0) return radius * orthoPixelsPerUnit(state.height, orthoHalfHeight);
   const [x, y, z] = state.cameraPosition;
   const d = Math.hypot(centre[0] - x, centre[1] - y, centre[2] - z);
   const focal = state.height / 2 / Math.tan((state.fov * DEG) / 2);
@@ -39,12 +42,13 @@ export class SphereLod {
 
   /**
    * The mesh to draw this frame for a sphere of `radius` (its own frame) whose world bounds are
-   * `centre`, `worldRadius`; rebuilt only when the segment count, radius or shading must change.
+   * `centre`, `worldRadius` (`orthoHalfHeight` as for sphereScreenRadius); rebuilt only when the segment count, radius or shading must change.
    */
-  update(state: FrameState, centre: ArrayLike<number>, worldRadius: number, radius: number): Mesh {
+  update(state: FrameState, centre: ArrayLike<number>, worldRadius: number, radius: number, orthoHalfHeight = 0): Mesh {
     let wanted: number;
     if (state.tessellation === 'auto') {
-      wanted = segmentsForScreenRadius(Math.min(sphereScreenRadius(state, centre, worldRadius), 1e6), AUTO_SILHOUETTE_ERROR_PX);
+      const screen = sphereScreenRadius(state, centre, worldRadius, orthoHalfHeight);
+      wanted = segmentsForScreenRadius(Math.min(screen, 1e6), AUTO_SILHOUETTE_ERROR_PX);
       // Hysteresis: keep a finer mesh until it is twice what is needed, so a camera moving
       // back and forth does not rebuild the mesh every frame.
       if (this.mesh && this.segments >= wanted && this.segments <= 2 * wanted) wanted = this.segments;

@@ -1,5 +1,8 @@
 // Plain data the renderer takes and gives back: no DOM, no GL handles.
 import type { FresnelModel } from '../math/fresnel';
+import type { Projection } from '../math/camera';
+
+export type { Projection };
 
 export type PassName = 'reflection' | 'scene' | 'glass';
 
@@ -29,6 +32,10 @@ export interface FrameState {
   tessellation: number | 'auto';
   /** Storage of the reflection: 8-bit, or half float (where the context can render to it). */
   reflectionFormat: ReflectionFormat;
+  /** Absent: perspective. Orthographic keeps the reflection (SPEC §10). */
+  projection?: Projection;
+  /** The camera target, if any: only the orthographic size reads it (depth of this point). */
+  target?: readonly [number, number, number] | null;
 }
 
 export type ReflectionFormat = 'rgba8' | 'rgba16f';

@@ -190,6 +190,7 @@ test('1100 random values over every attribute and property: no exception, warnin
       shading: (v) => ['phong', 'gouraud', 'flat'].includes(v as string),
       tessellation: (v) => v === 'auto' || (Number.isInteger(v) && inRange(v, 4, 512)),
       pixelRatio: (v) => v === 'auto' || inRange(v, 0.25, 4),
+      projection: (v) => ['perspective', 'orthographic'].includes(v as string),
       alt: (v) => typeof v === 'string',
     };
     const violations: string[] = [];

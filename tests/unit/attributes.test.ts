@@ -49,7 +49,7 @@ describe('defaults', () => {
     expect(new Set(names).size).toBe(names.length);
     expect([...names].sort()).toEqual([
       'background', 'camera-position', 'camera-rotation', 'controls', 'cube-distance', 'debug-view', 'fov',
-      'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'reflection-format',
+      'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'projection', 'reflection-format',
       'reflection-scale', 'samples', 'shading', 'spin', 'tessellation', 'time', 'transparency',
     ]);
     for (const s of ATTRIBUTES) {
@@ -236,6 +236,7 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
           case 'debugView': expect(DEBUG_VIEWS).toContain(v); break;
           case 'shading': expect(['phong', 'gouraud', 'flat']).toContain(v); break;
           case 'reflectionFormat': expect(['rgba8', 'rgba16f']).toContain(v); break;
+          case 'projection': expect(['perspective', 'orthographic']).toContain(v); break;
           case 'samples': expect([0, 2, 4]).toContain(v); break;
           case 'tessellation':
             if (v !== 'auto') expect(Number.isInteger(v) && (v as number) >= 4 && (v as number) <= 512).toBe(true);

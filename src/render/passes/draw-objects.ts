@@ -2,6 +2,7 @@
 // mirrored one (pass 1): opaque ones first, then those with opacity < 1 blended over them
 // (depth-tested, no depth write), as SPEC §9 and seed 002 ask.
 import { signedDistance } from '../../math/mirror';
+import { orthoPixelsPerUnit } from '../reflection-lod';
 import type { Program } from '../gl/program';
 import type { Texture } from '../gl/texture';
 import type { ClipMode, ObjectVariant } from '../programs';
@@ -36,6 +37,8 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean,
   const { gl, setup, scene } = ctx;
   const eye = setup.mirroredEye;
   const focal = targetHeight / (2 * Math.tan((ctx.state.fov * Math.PI) / 360));
+  // The mirrored camera is orthographic too: the same pixels per unit at every depth.
+  const orthoPpu = setup.orthographic ? orthoPixelsPerUnit(targetHeight, setup.halfHeight) : 0;
   const objects = scene.objects;
   let draws = 0;
   let current: Program | null = null;
@@ -54,7 +57,7 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean,
       if (switched) {
         current = program;
         program.use();
-        setLights(gl, program, setup, mirrored ? setup.lightsMirrored : setup.lightsMain);
+        setLights(gl, program, setup, mirrored);
         if (mirrored) gl.uniform4fv(program.location('uClipPlane'), setup.clipPlane);
       }
       const t = ctx.textures.textureFor(o.material.texture);
@@ -75,7 +78,7 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean,
       setMaterial(gl, program, o);
       if (mirrored) {
         const d = Math.hypot(m.center[0] - eye[0], m.center[1] - eye[1], m.center[2] - eye[2]);
-        const mesh = ctx.objectMeshes.mirrored(i, o.geometry, m, ctx.state, focal / d);
+        const mesh = ctx.objectMeshes.mirrored(i, o.geometry, m, ctx.state, setup.orthographic ? orthoPpu : focal / d);
         mesh.draw();
         ctx.triangles.reflection += mesh.count / 3;
       } else {

@@ -25,6 +25,7 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
     gl.uniformMatrix4fv(program.location('uReflectionViewProjection'), false, setup.reflectionViewProjection);
     gl.uniform1f(program.location('uTransparency'), state.transparency);
     gl.uniform1f(program.location('uIor'), state.ior);
+    gl.uniform4fv(program.location('uViewVector'), setup.viewVectorMain);
     gl.uniform3fv(program.location('uBodyTint'), BODY_TINT);
     gl.uniform1i(program.location('uTexture'), 0);
     gl.uniform1i(program.location('uReflection'), 1);

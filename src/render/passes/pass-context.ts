@@ -56,10 +56,12 @@ export function beginTarget(
   gl.disable(gl.SCISSOR_TEST);
 }
 
-/** The lights (vectors relative to the eye drawn from) shared by every object of a pass. */
-export function setLights(gl: WebGL2RenderingContext, p: Program, setup: FrameSetup, vectors: LightVectors): void {
+/** The lights (vectors relative to the eye drawn from) and view vector shared by every object of a pass. */
+export function setLights(gl: WebGL2RenderingContext, p: Program, setup: FrameSetup, mirrored: boolean): void {
+  const vectors: LightVectors = mirrored ? setup.lightsMirrored : setup.lightsMain;
   gl.uniform1i(p.location('uTexture'), 0);
   gl.uniform4fv(p.location('uLightVector'), vectors.vectors);
+  gl.uniform4fv(p.location('uViewVector'), mirrored ? setup.viewVectorMirrored : setup.viewVectorMain);
   gl.uniform3fv(p.location('uLightAmbient'), setup.lightAmbient);
   gl.uniform3fv(p.location('uLightDiffuse'), setup.lightDiffuse);
   gl.uniform3fv(p.location('uLightSpecular'), setup.lightSpecular);
