@@ -240,7 +240,8 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
     parse(raw) {
       if (raw === null) return { value: null };
       const w = raw.trim().toLowerCase();
-      if (w === '' || w === 'true') return { value: 'flyby' };
+      // The bare attribute, and the forms a boolean attribute takes in HTML and XHTML.
+      if (w === '' || w === 'true' || w === 'controls') return { value: 'flyby' };
       if ((CONTROLS_MODES as readonly string[]).includes(w)) return { value: w as ControlsMode };
       return { value: 'flyby', problem: `expected one of ${CONTROLS_MODES.join(', ')}; using flyby` };
     },

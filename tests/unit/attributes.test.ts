@@ -37,7 +37,9 @@ describe('defaults', () => {
     expect(d.spin).toBe(0.8);
     expect(d.time).toBeNull();
     expect(d.debugView).toBe('none');
-    expect(d.controls).toBe(false);
+    expect(d.controls).toBeNull();
+    expect(d.cameraTarget).toBeNull();
+    expect(d.projection).toBe('perspective');
     expect(d.cameraPosition).toHaveLength(3);
     expect(d.cameraPosition.every(Number.isFinite)).toBe(true);
     expect(d.cameraRotation).toHaveLength(2);
@@ -48,7 +50,7 @@ describe('defaults', () => {
     const names = ATTRIBUTES.map((s) => s.attribute);
     expect(new Set(names).size).toBe(names.length);
     expect([...names].sort()).toEqual([
-      'background', 'camera-position', 'camera-rotation', 'controls', 'cube-distance', 'debug-view', 'fov',
+      'background', 'camera-position', 'camera-rotation', 'camera-target', 'controls', 'cube-distance', 'debug-view', 'fov',
       'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'projection', 'reflection-format',
       'reflection-scale', 'samples', 'shading', 'spin', 'tessellation', 'time', 'transparency',
     ]);
@@ -173,13 +175,27 @@ describe('camera', () => {
 });
 
 describe('controls', () => {
-  it('is a presence boolean', () => {
-    expect(parse('controls', null).value).toBe(false);
-    expect(parse('controls', '').value).toBe(true);
-    expect(parse('controls', 'controls').value).toBe(true);
-    expect(parse('controls', 'false').value).toBe(true); // HTML boolean attributes: presence wins
-    expect(spec('controls').format(true as never)).toBe('');
-    expect(spec('controls').format(false as never)).toBeNull();
+  it('is a mode keyword; the bare attribute (and its boolean forms) means flyby, absence no input', () => {
+    expect(parse('controls', null).value).toBeNull();
+    expectOk('controls', '', 'flyby');
+    expectOk('controls', 'controls', 'flyby');
+    expectOk('controls', 'true', 'flyby');
+    expectOk('controls', ' Orbit ', 'orbit');
+    expectOk('controls', 'trackball', 'trackball');
+    expectFallback('controls', 'false', 'flyby'); // present: some input, with a warning
+    expectFallback('controls', 'arcball', 'flyby');
+    expect(spec('controls').format('orbit' as never)).toBe('orbit');
+    expect(spec('controls').format(null as never)).toBeNull();
+  });
+});
+
+describe('camera-target', () => {
+  it('is "x y z" or absent; a bad value means no target, with a warning', () => {
+    expect(parse('camera-target', null).value).toBeNull();
+    expectOk('camera-target', '0 1 -2', [0, 1, -2]);
+    expectFallback('camera-target', '0 1', null);
+    expectFallback('camera-target', '', null);
+    expectFallback('camera-target', '1e9 0 0', [1e7, 0, 0]);
   });
 });
 
@@ -191,7 +207,8 @@ describe('propertyToRaw', () => {
     expect(propertyToRaw(spec('camera-rotation'), [-90, 5])).toBe('-90 5');
     expect(propertyToRaw(spec('controls'), true)).toBe('');
     expect(propertyToRaw(spec('controls'), false)).toBeNull();
-    expect(propertyToRaw(spec('controls'), 1)).toBe('');
+    expect(propertyToRaw(spec('controls'), 'trackball')).toBe('trackball');
+    expect(propertyToRaw(spec('camera-target'), [0, 1, 2])).toBe('0 1 2');
     expect(propertyToRaw(spec('time'), null)).toBeNull();
     expect(propertyToRaw(spec('time'), undefined)).toBeNull();
     expect(propertyToRaw(spec('transparency'), true)).toBe('true');
@@ -231,7 +248,13 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
         const v = r!.value;
         if (r!.problem !== undefined) expect(typeof r!.problem).toBe('string');
         switch (s.property) {
-          case 'controls': expect(v).toBe(true); break;
+          case 'controls': expect(['flyby', 'orbit', 'trackball']).toContain(v); break;
+          case 'cameraTarget':
+            if (v !== null) {
+              expect(v).toHaveLength(3);
+              for (const x of v as number[]) expect(Math.abs(x)).toBeLessThanOrEqual(1e7);
+            }
+            break;
           case 'fresnel': expect(['exact', 'schlick', 'classic']).toContain(v); break;
           case 'debugView': expect(DEBUG_VIEWS).toContain(v); break;
           case 'shading': expect(['phong', 'gouraud', 'flat']).toContain(v); break;

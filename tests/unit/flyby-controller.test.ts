@@ -1,6 +1,6 @@
 // Flyby controller: keys and mouse → camera pose, frame-rate independent (seed 000's updateCamera).
 import { describe, expect, it } from 'vitest';
-import { FlybyController, wrapYaw } from '../../src/element/flyby-controller';
+import { FlybyController, MAX_LOOK_STEP, wrapYaw } from '../../src/element/flyby-controller';
 import { forwardFromYawPitch, PITCH_LIMIT } from '../../src/math/camera';
 
 const SENS = 0.002 * (180 / Math.PI);
@@ -160,18 +160,26 @@ describe('movement', () => {
 describe('looking', () => {
   it('look() turns by sensitivity per pixel: +dx right (+yaw), +dy down (−pitch)', () => {
     const c = at([0, 0, 0], -90, 0);
-    expect(c.look(100, 50)).toBe(true);
-    expect(c.pose.yaw).toBeCloseTo(-90 + 100 * SENS, 12);
-    expect(c.pose.pitch).toBeCloseTo(-50 * SENS, 12);
+    expect(c.look(30, 15)).toBe(true);
+    expect(c.pose.yaw).toBeCloseTo(-90 + 30 * SENS, 12);
+    expect(c.pose.pitch).toBeCloseTo(-15 * SENS, 12);
     expect(SENS).toBeCloseTo(0.11459, 5);
+  });
+
+  it('look() turns at most 5° per event, in the direction of the movement (SPEC §10)', () => {
+    const c = at([0, 0, 0], -90, 0);
+    c.look(-528, -377); // what Chromium reported once on entering pointer lock
+    const yaw = c.pose.yaw + 90, pitch = c.pose.pitch;
+    expect(Math.hypot(yaw, pitch)).toBeCloseTo(MAX_LOOK_STEP, 12);
+    expect(Math.atan2(pitch, yaw)).toBeCloseTo(Math.atan2(377, -528), 12);
   });
 
   it('look() clamps pitch at ±89.9', () => {
     const c = at([0, 0, 0]);
-    c.look(0, -100000);
+    for (let i = 0; i < 40; i++) c.look(0, -1000);
     expect(c.pose.pitch).toBe(PITCH_LIMIT);
     expect(c.look(0, -10)).toBe(false); // already at the limit: nothing changed
-    c.look(0, 100000);
+    for (let i = 0; i < 40; i++) c.look(0, 1000);
     expect(c.pose.pitch).toBe(-PITCH_LIMIT);
   });
 
