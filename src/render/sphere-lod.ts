@@ -5,28 +5,9 @@ import type { ResourceCounter } from './gl/resource-counter';
 import { segmentsForScreenRadius, sphereMesh } from '../scene/geometry/sphere';
 import { flatMesh } from '../scene/geometry/flat';
 import type { FrameState } from './types';
+import { AUTO_SILHOUETTE_ERROR_PX, sphereScreenRadius } from './sphere-screen';
 
-const DEG = Math.PI / 180;
-
-/**
- * Silhouette error 'auto' aims for, in pixels. Half a pixel (SPEC §5's bound) left the
- * interpolated shading visibly coarse: in the bench, auto at 0.5 px scored 0.6 dB below 32
- * fixed segments at the same cost; a quarter pixel closes that gap.
- */
-export const AUTO_SILHOUETTE_ERROR_PX = 0.25;
-
-/**
- * Radius in pixels of a sphere (world `centre`, `radius`) seen from `state`'s camera: its
- * largest on-screen extent.
- */
-export function sphereScreenRadius(state: FrameState, centre: ArrayLike<number>, radius: number): number {
-  const [x, y, z] = state.cameraPosition;
-  const d = Math.hypot(centre[0] - x, centre[1] - y, centre[2] - z);
-  const focal = state.height / 2 / Math.tan((state.fov * DEG) / 2);
-  if (d <= radius * 1.0001) return Number.POSITIVE_INFINITY; // inside it
-  // Silhouette of a sphere: angular radius asin(r/d).
-  return focal * Math.tan(Math.asin(radius / d));
-}
+export { AUTO_SILHOUETTE_ERROR_PX, sphereScreenRadius } from './sphere-screen';
 
 export class SphereLod {
   mesh: Mesh | null = null;
