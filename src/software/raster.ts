@@ -232,7 +232,8 @@ export class Rasterizer {
           const pixel = base + x;
           if (mask === null || mask[pixel] !== 0) {
             const l0 = e0 * inv, l1 = e1 * inv, l2 = 1 - l0 - l1;
-            const z = l0 * z0 + l1 * z1 + l2 * z2 + depthBias;
+            // Rounded as the Float32 buffer stores it, so equal depths compare equal (LESS fails).
+            const z = Math.fround(l0 * z0 + l1 * z1 + l2 * z2 + depthBias);
             if (!depthTest || z < depth[pixel]) {
               if (depthWrite) depth[pixel] = z;
               const a0 = l0 * w0, a1 = l1 * w1, a2 = l2 * w2;
