@@ -1,0 +1,120 @@
+// The glass rectangle on the CPU (shaders/glass.vert + glass.frag): its footprint (which pixels
+// the reflection pass must fill), the glass equation of SPEC §4 over what is behind it, or F.
+import { fresnel, type FresnelModel } from '../math/fresnel';
+import { GLASS } from '../scene/default-scene';
+import type { GlassFrame } from '../scene/glass-frame';
+import type { MipTexture } from './mip-texture';
+import { CLIP_DISTANCE, VARYINGS, type FragmentShader, type Rasterizer } from './raster';
+
+const BODY = GLASS.tint.map((c) => c * GLASS.darkness);
+// Varyings: eye-relative position, UV.
+const REL = 0, UV = 3;
+const STRIDE = VARYINGS + 5;
+
+export type GlassMode = 'mask' | 'compose' | 'fresnel';
+
+export class GlassShader implements FragmentShader {
+  mode: GlassMode = 'compose';
+  /** The pixels the glass covers (mode 'mask' sets them to 1). */
+  mask: Uint8Array = new Uint8Array(0);
+  /** What pass 2 left (B), composed over in place; the reflection (R), same grid. */
+  colour: Float32Array = new Float32Array(0);
+  reflection: Float32Array = new Float32Array(0);
+  model: FresnelModel = 'exact';
+  ior = 1.5;
+  transparency = 0.5;
+  texture!: MipTexture;
+  /** The glass's unit normal. */
+  private nx = 0;
+  private ny = 0;
+  private nz = 1;
+  private readonly vertices = new Float64Array(4 * STRIDE);
+  private readonly tex = new Float64Array(3);
+
+  /**
+   * Vertex stage of the glass rectangle (its float64 corners, u along its width, v along its
+   * height, as rectangle.ts builds it) seen from `eye` through `viewProjection` (eye-relative →
+   * clip); call once per frame before `draw`.
+   */
+  setup(frame: GlassFrame, eye: ArrayLike<number>, viewProjection: Float64Array): void {
+    this.nx = frame.plane[0]; this.ny = frame.plane[1]; this.nz = frame.plane[2];
+    const vp = viewProjection, out = this.vertices, uvs = CORNER_UV;
+    for (let i = 0; i < 4; i++) {
+      const o = i * STRIDE, v = o + VARYINGS, p = frame.corners[i];
+      const rx = p[0] - eye[0], ry = p[1] - eye[1], rz = p[2] - eye[2];
+      out[o] = vp[0] * rx + vp[4] * ry + vp[8] * rz + vp[12];
+      out[o + 1] = vp[1] * rx + vp[5] * ry + vp[9] * rz + vp[13];
+      out[o + 2] = vp[2] * rx + vp[6] * ry + vp[10] * rz + vp[14];
+      out[o + 3] = vp[3] * rx + vp[7] * ry + vp[11] * rz + vp[15];
+      out[o + CLIP_DISTANCE] = 0;
+      out[v + REL] = rx; out[v + REL + 1] = ry; out[v + REL + 2] = rz;
+      out[v + UV] = uvs[2 * i]; out[v + UV + 1] = uvs[2 * i + 1];
+    }
+  }
+
+  /** Rasterizes the glass with `r` (depth-tested, no depth write, pushed back a hair). */
+  draw(r: Rasterizer, indices: ArrayLike<number>): void {
+    r.stride = STRIDE;
+    r.userClip = false;
+    r.cull = 'none';
+    r.derivatives = this.mode === 'compose';
+    r.depthTest = true;
+    r.depthWrite = false;
+    // A cube face lying in the glass plane wins the depth test every time (glass-pass.ts's
+    // polygonOffset): well above rounding, far below any real depth step.
+    r.depthBias = 1e-6;
+    try {
+      r.drawTriangles(this.vertices, indices, indices.length, this);
+    } finally {
+      r.depthBias = 0;
+    }
+  }
+
+  fragment(pixel: number, r: Rasterizer): void {
+    if (this.mode === 'mask') {
+      this.mask[pixel] = 1;
+      return;
+    }
+    const p = r.poly, b0 = r.b0, b1 = r.b1, b2 = r.b2, i0 = r.o0, i1 = r.o1, i2 = r.o2;
+    const rx = b0 * p[i0 + REL] + b1 * p[i1 + REL] + b2 * p[i2 + REL];
+    const ry = b0 * p[i0 + REL + 1] + b1 * p[i1 + REL + 1] + b2 * p[i2 + REL + 1];
+    const rz = b0 * p[i0 + REL + 2] + b1 * p[i1 + REL + 2] + b2 * p[i2 + REL + 2];
+    const len = Math.sqrt(rx * rx + ry * ry + rz * rz);
+    // Two-sided: cosθ = |N·V|, clamped to [0, 1].
+    let c = len > 0 ? Math.abs(this.nx * rx + this.ny * ry + this.nz * rz) / len : 1;
+    if (c > 1) c = 1;
+    const f = fresnel(this.model, c, this.ior);
+    const o = 3 * pixel, out = this.colour;
+    if (this.mode === 'fresnel') {
+      out[o] = out[o + 1] = out[o + 2] = f;
+      return;
+    }
+    const ua = i0 + UV, ub = i1 + UV, uc = i2 + UV;
+    this.texture.sample(
+      b0 * p[ua] + b1 * p[ub] + b2 * p[uc], b0 * p[ua + 1] + b1 * p[ub + 1] + b2 * p[uc + 1],
+      r.dbdx0 * p[ua] + r.dbdx1 * p[ub] + r.dbdx2 * p[uc], r.dbdx0 * p[ua + 1] + r.dbdx1 * p[ub + 1] + r.dbdx2 * p[uc + 1],
+      r.dbdy0 * p[ua] + r.dbdy1 * p[ub] + r.dbdy2 * p[uc], r.dbdy0 * p[ua + 1] + r.dbdy1 * p[ub + 1] + r.dbdy2 * p[uc + 1],
+      this.tex);
+    const tex = this.tex[0], t = this.transparency, refl = this.reflection;
+    if (this.model === 'classic') {
+      // Seed 000 verbatim: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha.
+      const a = (1 - t) * (0.2 + 0.8 * f);
+      for (let k = 0; k < 3; k++) {
+        const d = tex * BODY[k], rk = Math.min(refl[o + k], 1);
+        out[o + k] = clamp01((d + (rk - d) * f) * a + out[o + k] * (1 - a));
+      }
+      return;
+    }
+    // out = F·R + (1 − F)·(T·B + (1 − T)·D), R clamped as the 8-bit reflection target holds it.
+    for (let k = 0; k < 3; k++) {
+      const d = tex * BODY[k], rk = Math.min(refl[o + k], 1);
+      out[o + k] = clamp01(f * rk + (1 - f) * (t * out[o + k] + (1 - t) * d));
+    }
+  }
+}
+
+const clamp01 = (x: number): number => (x < 0 ? 0 : x > 1 ? 1 : x);
+
+const CORNER_UV = [0, 0, 1, 0, 1, 1, 0, 1];
+
+export const GLASS_INDICES = new Uint16Array([0, 1, 2, 0, 2, 3]);

@@ -1,0 +1,79 @@
+// Blinn-Phong of SPEC §9 for the CPU, term for term as shaders/lighting.glsl writes it: per
+// light Ka⊙Ia + Kd⊙Id·max(N·L, 0) into `a` (which the texture multiplies) and
+// Ks⊙Is·max(N·H, 0)^n into `s` where N·L > 0. Positions are relative to the eye drawn from.
+import { MAX_LIGHTS, type Material, type Scene } from '../scene/scene';
+
+export class Lights {
+  count = 0;
+  /** Unit direction towards a directional light, or a point light's eye-relative position. */
+  readonly vector = new Float64Array(3 * MAX_LIGHTS);
+  readonly point = new Uint8Array(MAX_LIGHTS);
+  readonly ambient = new Float64Array(3 * MAX_LIGHTS);
+  readonly diffuse = new Float64Array(3 * MAX_LIGHTS);
+  readonly specular = new Float64Array(3 * MAX_LIGHTS);
+
+  /** The scene's lights (up to MAX_LIGHTS) as seen from `eye`. */
+  set(scene: Scene, eye: ArrayLike<number>): void {
+    const n = Math.min(scene.lights.length, MAX_LIGHTS);
+    this.count = n;
+    for (let i = 0; i < n; i++) {
+      const l = scene.lights[i];
+      let [x, y, z] = l.vector;
+      if (l.kind === 'point') {
+        x -= eye[0]; y -= eye[1]; z -= eye[2];
+      } else {
+        const len = Math.hypot(x, y, z) || 1;
+        x /= len; y /= len; z /= len;
+      }
+      this.vector[3 * i] = x; this.vector[3 * i + 1] = y; this.vector[3 * i + 2] = z;
+      this.point[i] = l.kind === 'point' ? 1 : 0;
+      for (let k = 0; k < 3; k++) {
+        this.ambient[3 * i + k] = l.ambient[k];
+        this.diffuse[3 * i + k] = l.diffuse[k];
+        this.specular[3 * i + k] = l.specular[k];
+      }
+    }
+  }
+}
+
+/**
+ * The two light sums at eye-relative point `rel` (px, py, pz) with unit normal n and unit view
+ * vector v (towards the eye) into out[0..2] (a) and out[3..5] (s). `twoSided` turns n towards
+ * the viewer first (meshes from files, SPEC §9).
+ */
+export function blinnPhong(
+  lights: Lights, m: Material, twoSided: boolean,
+  px: number, py: number, pz: number, nx: number, ny: number, nz: number, vx: number, vy: number, vz: number,
+  out: Float64Array,
+): void {
+  if (twoSided && nx * vx + ny * vy + nz * vz < 0) { nx = -nx; ny = -ny; nz = -nz; }
+  const ka = m.ambient, kd = m.diffuse, ks = m.specular;
+  let ar = 0, ag = 0, ab = 0, sr = 0, sg = 0, sb = 0;
+  const vec = lights.vector;
+  for (let i = 0; i < lights.count; i++) {
+    let lx = vec[3 * i], ly = vec[3 * i + 1], lz = vec[3 * i + 2];
+    if (lights.point[i] === 1) {
+      lx -= px; ly -= py; lz -= pz;
+      const len = Math.sqrt(lx * lx + ly * ly + lz * lz);
+      if (len > 0) { lx /= len; ly /= len; lz /= len; }
+    }
+    const nl = nx * lx + ny * ly + nz * lz;
+    const m0 = nl > 0 ? nl : 0;
+    const ia = lights.ambient, id = lights.diffuse;
+    ar += ka[0] * ia[3 * i] + kd[0] * id[3 * i] * m0;
+    ag += ka[1] * ia[3 * i + 1] + kd[1] * id[3 * i + 1] * m0;
+    ab += ka[2] * ia[3 * i + 2] + kd[2] * id[3 * i + 2] * m0;
+    if (nl > 0) {
+      const hx = lx + vx, hy = ly + vy, hz = lz + vz;
+      const hl = Math.sqrt(hx * hx + hy * hy + hz * hz);
+      const nh = hl > 0 ? (nx * hx + ny * hy + nz * hz) / hl : 0;
+      const p = (nh > 0 ? nh : 0) ** m.shininess;
+      const is = lights.specular;
+      sr += ks[0] * is[3 * i] * p;
+      sg += ks[1] * is[3 * i + 1] * p;
+      sb += ks[2] * is[3 * i + 2] * p;
+    }
+  }
+  out[0] = ar; out[1] = ag; out[2] = ab;
+  out[3] = sr; out[4] = sg; out[5] = sb;
+}

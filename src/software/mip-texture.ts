@@ -1,0 +1,121 @@
+// A texture as the GPU samples it, in float: a 2×2-box mip chain, REPEAT, trilinear
+// (LINEAR_MIPMAP_LINEAR) with the isotropic LOD of the GL spec, from UV derivatives per pixel.
+import { TEXTURE_SIZE } from '../scene/default-scene';
+import { proceduralTexture } from '../scene/procedural-texture';
+import type { DecodedImage } from '../reference/image-texture';
+
+interface Level {
+  width: number;
+  height: number;
+  /** `channels` floats per texel, 0..1, row 0 at v = 0. */
+  data: Float32Array;
+}
+
+export class MipTexture {
+  readonly levels: Level[] = [];
+
+  /** `data`: width×height texels of `channels` floats (1: grey, 3: RGB), row 0 at v = 0. */
+  constructor(readonly channels: 1 | 3, width: number, height: number, data: Float32Array) {
+    let level: Level = { width, height, data };
+    this.levels.push(level);
+    while (level.width > 1 || level.height > 1) {
+      level = halve(level, channels);
+      this.levels.push(level);
+    }
+  }
+
+  /**
+   * The texture at (u, v) into out[0..2] (grey is copied to all three), with the LOD from the UV
+   * derivatives along screen x and y: λ = log2(max(|∂(s,t)/∂x|, |∂(s,t)/∂y|)) in base texels.
+   */
+  sample(u: number, v: number, dudx: number, dvdx: number, dudy: number, dvdy: number, out: Float64Array): void {
+    const base = this.levels[0];
+    const sx = dudx * base.width, tx = dvdx * base.height, sy = dudy * base.width, ty = dvdy * base.height;
+    const rho2 = Math.max(sx * sx + tx * tx, sy * sy + ty * ty);
+    // λ = ½·log2(ρ²); NaN (a degenerate derivative) reads the base level.
+    const lambda = rho2 > 1 ? 0.5 * Math.log2(rho2) : 0;
+    const top = this.levels.length - 1;
+    if (!(lambda > 0)) {
+      this.bilinear(this.levels[0], u, v, out, 1, false);
+      return;
+    }
+    if (lambda >= top) {
+      this.bilinear(this.levels[top], u, v, out, 1, false);
+      return;
+    }
+    const d = Math.floor(lambda), f = lambda - d;
+    this.bilinear(this.levels[d], u, v, out, 1 - f, false);
+    this.bilinear(this.levels[d + 1], u, v, out, f, true);
+  }
+
+  /** out (+)= weight · bilinear(level, u, v), REPEAT. */
+  private bilinear(level: Level, u: number, v: number, out: Float64Array, weight: number, add: boolean): void {
+    const W = level.width, H = level.height, data = level.data;
+    const s = u * W - 0.5, t = v * H - 0.5;
+    const fi = Math.floor(s), fj = Math.floor(t);
+    const x = s - fi, y = t - fj;
+    let i0 = fi % W; if (i0 < 0) i0 += W;
+    let j0 = fj % H; if (j0 < 0) j0 += H;
+    const i1 = i0 + 1 === W ? 0 : i0 + 1, j1 = j0 + 1 === H ? 0 : j0 + 1;
+    const w00 = (1 - x) * (1 - y) * weight, w10 = x * (1 - y) * weight, w01 = (1 - x) * y * weight, w11 = x * y * weight;
+    if (this.channels === 1) {
+      const g = w00 * data[j0 * W + i0] + w10 * data[j0 * W + i1] + w01 * data[j1 * W + i0] + w11 * data[j1 * W + i1];
+      if (add) { out[0] += g; out[1] += g; out[2] += g; } else { out[0] = out[1] = out[2] = g; }
+      return;
+    }
+    const a = 3 * (j0 * W + i0), b = 3 * (j0 * W + i1), c = 3 * (j1 * W + i0), e = 3 * (j1 * W + i1);
+    for (let k = 0; k < 3; k++) {
+      const g = w00 * data[a + k] + w10 * data[b + k] + w01 * data[c + k] + w11 * data[e + k];
+      out[k] = add ? out[k] + g : g;
+    }
+  }
+}
+
+/** The next level: each texel the mean of (up to) 2×2 texels of `level` (an odd last row/column folds in). */
+function halve(level: Level, channels: number): Level {
+  const W = level.width, H = level.height, src = level.data;
+  const w = Math.max(1, W >> 1), h = Math.max(1, H >> 1);
+  const data = new Float32Array(w * h * channels);
+  for (let j = 0; j < h; j++) {
+    const j0 = Math.min(2 * j, H - 1), j1 = Math.min(2 * j + 1, H - 1);
+    for (let i = 0; i < w; i++) {
+      const i0 = Math.min(2 * i, W - 1), i1 = Math.min(2 * i + 1, W - 1);
+      for (let k = 0; k < channels; k++) {
+        data[(j * w + i) * channels + k] = 0.25 * (
+          src[(j0 * W + i0) * channels + k] + src[(j0 * W + i1) * channels + k]
+          + src[(j1 * W + i0) * channels + k] + src[(j1 * W + i1) * channels + k]);
+      }
+    }
+  }
+  return { width: w, height: h, data };
+}
+
+let procedural: MipTexture | undefined;
+
+/** SPEC §3's checker-plus-noise, grey, built once and shared (read-only). */
+export function proceduralMipTexture(): MipTexture {
+  if (procedural) return procedural;
+  const rgba = proceduralTexture();
+  const n = TEXTURE_SIZE;
+  const grey = new Float32Array(n * n);
+  for (let i = 0; i < grey.length; i++) grey[i] = rgba[4 * i] / 255;
+  return (procedural = new MipTexture(1, n, n, grey));
+}
+
+/**
+ * A decoded image (RGBA8, top row first) as RGB with OBJ's convention (SPEC §9): v = 0 is the
+ * image's bottom row, so texture row j is image row H − 1 − j (what the GL path gets by reading
+ * at (u, 1 − v)). Null when the pixels do not match the size.
+ */
+export function imageMipTexture(image: DecodedImage): MipTexture | null {
+  const { width: w, height: h, data } = image;
+  if (!(w >= 1 && h >= 1 && Number.isInteger(w) && Number.isInteger(h)) || data.length < w * h * 4) return null;
+  const rgb = new Float32Array(w * h * 3);
+  for (let j = 0; j < h; j++) {
+    const row = (h - 1 - j) * w;
+    for (let i = 0; i < w; i++) {
+      for (let k = 0; k < 3; k++) rgb[(j * w + i) * 3 + k] = data[(row + i) * 4 + k] / 255;
+    }
+  }
+  return new MipTexture(3, w, h, rgb);
+}

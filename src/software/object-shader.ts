@@ -1,0 +1,208 @@
+// The standard program of the GL path on the CPU (shaders/standard.vert + standard.frag): the
+// vertex stage into a clip-space buffer, and per fragment the texture through its mapping,
+// Blinn-Phong per pixel (phong) or interpolated from the vertices (gouraud, flat), the 8-bit
+// clamp, and straight alpha blending for opacity < 1.
+import { cylindricalUV, sphericalUV, boundsScale, TRIPLANAR_SHARPNESS } from '../scene/mapping';
+import type { MeshData } from '../scene/geometry/mesh-data';
+import type { Bounds, Material } from '../scene/scene';
+import type { Shading } from '../render/types';
+import { blinnPhong, type Lights } from './lighting';
+import type { MipTexture } from './mip-texture';
+import { CLIP_DISTANCE, VARYINGS, type FragmentShader, type Rasterizer } from './raster';
+
+// Varyings, after the clip-space slots: phong carries the eye-relative position and normal,
+// gouraud and flat the two light sums in the same slots; then UV, object position and normal.
+const REL = 0, NRM = 3, UV = 6, OBJ = 8, OBJ_N = 11;
+export const OBJECT_STRIDE = VARYINGS + 14;
+
+/** One object's draw: what the vertex stage and the fragments read. */
+export interface ObjectDraw {
+  mesh: MeshData;
+  /** Model matrix (column-major, float64) and its normal matrix (inverse transpose, 3×3). */
+  model: Float64Array;
+  normal: Float64Array;
+  /** The eye drawn from (world) and projection × view for eye-relative points (float64). */
+  eye: ArrayLike<number>;
+  viewProjection: Float64Array;
+  /** Kept where plane·(rel, 1) ≥ 0 (rel eye-relative); null: no user clip. */
+  clipPlane: ArrayLike<number> | null;
+  material: Material;
+  bounds: Bounds;
+  texture: MipTexture;
+  twoSided: boolean;
+  shading: Shading;
+  lights: Lights;
+}
+
+export class ObjectShader implements FragmentShader {
+  /** RGB per pixel, 0..1, written by the fragments. */
+  colour: Float32Array = new Float32Array(0);
+  private vertices = new Float64Array(0);
+  private draw!: ObjectDraw;
+  private readonly sums = new Float64Array(6);
+  private readonly tex = new Float64Array(3);
+  private readonly part = new Float64Array(3);
+  private readonly uv0 = new Float64Array(2);
+  private readonly uv1 = new Float64Array(2);
+  private readonly q = new Float64Array(3);
+
+  /** Runs the vertex stage of `d` and rasterizes its triangles with `r`. */
+  render(d: ObjectDraw, r: Rasterizer): void {
+    this.draw = d;
+    const count = d.mesh.positions.length / 3;
+    if (this.vertices.length < count * OBJECT_STRIDE) this.vertices = new Float64Array(count * OBJECT_STRIDE);
+    this.vertexStage(d, count);
+    r.stride = OBJECT_STRIDE;
+    r.userClip = d.clipPlane !== null;
+    r.derivatives = true;
+    r.drawTriangles(this.vertices, d.mesh.indices, d.mesh.indices.length, this);
+  }
+
+  private vertexStage(d: ObjectDraw, count: number): void {
+    const { positions: p, normals: nrm, uvs, centroids } = d.mesh;
+    const m = d.model, nm = d.normal, vp = d.viewProjection, e = d.eye, cp = d.clipPlane;
+    const out = this.vertices, sums = this.sums;
+    const phong = d.shading === 'phong';
+    const hasNormals = nrm.length >= 3 * count, hasUvs = uvs.length >= 2 * count;
+    for (let i = 0; i < count; i++) {
+      const o = i * OBJECT_STRIDE, v = o + VARYINGS;
+      const x = p[3 * i], y = p[3 * i + 1], z = p[3 * i + 2];
+      const rx = m[0] * x + m[4] * y + m[8] * z + m[12] - e[0];
+      const ry = m[1] * x + m[5] * y + m[9] * z + m[13] - e[1];
+      const rz = m[2] * x + m[6] * y + m[10] * z + m[14] - e[2];
+      out[o] = vp[0] * rx + vp[4] * ry + vp[8] * rz + vp[12];
+      out[o + 1] = vp[1] * rx + vp[5] * ry + vp[9] * rz + vp[13];
+      out[o + 2] = vp[2] * rx + vp[6] * ry + vp[10] * rz + vp[14];
+      out[o + 3] = vp[3] * rx + vp[7] * ry + vp[11] * rz + vp[15];
+      out[o + CLIP_DISTANCE] = cp === null ? 0 : cp[0] * rx + cp[1] * ry + cp[2] * rz + cp[3];
+      const ox = hasNormals ? nrm[3 * i] : 0, oy = hasNormals ? nrm[3 * i + 1] : 0, oz = hasNormals ? nrm[3 * i + 2] : 0;
+      const wx = nm[0] * ox + nm[3] * oy + nm[6] * oz;
+      const wy = nm[1] * ox + nm[4] * oy + nm[7] * oz;
+      const wz = nm[2] * ox + nm[5] * oy + nm[8] * oz;
+      if (phong) {
+        out[v + REL] = rx; out[v + REL + 1] = ry; out[v + REL + 2] = rz;
+        out[v + NRM] = wx; out[v + NRM + 1] = wy; out[v + NRM + 2] = wz;
+      } else {
+        // Gouraud lights the vertex; flat lights the face's centroid (flat meshes carry it on
+        // each of the triangle's own three vertices, with the face normal: flat.ts).
+        let lx = rx, ly = ry, lz = rz;
+        if (centroids !== undefined && d.shading === 'flat') {
+          const cx = centroids[3 * i], cy = centroids[3 * i + 1], cz = centroids[3 * i + 2];
+          lx = m[0] * cx + m[4] * cy + m[8] * cz + m[12] - e[0];
+          ly = m[1] * cx + m[5] * cy + m[9] * cz + m[13] - e[1];
+          lz = m[2] * cx + m[6] * cy + m[10] * cz + m[14] - e[2];
+        }
+        const vl = Math.sqrt(lx * lx + ly * ly + lz * lz) || 1;
+        const nl = Math.sqrt(wx * wx + wy * wy + wz * wz) || 1;
+        blinnPhong(d.lights, d.material, d.twoSided, lx, ly, lz, wx / nl, wy / nl, wz / nl, -lx / vl, -ly / vl, -lz / vl, sums);
+        for (let k = 0; k < 6; k++) out[v + k] = sums[k];
+      }
+      out[v + UV] = hasUvs ? uvs[2 * i] : 0;
+      out[v + UV + 1] = hasUvs ? uvs[2 * i + 1] : 0;
+      out[v + OBJ] = x; out[v + OBJ + 1] = y; out[v + OBJ + 2] = z;
+      out[v + OBJ_N] = ox; out[v + OBJ_N + 1] = oy; out[v + OBJ_N + 2] = oz;
+    }
+  }
+
+  fragment(pixel: number, r: Rasterizer): void {
+    const d = this.draw, p = r.poly, b0 = r.b0, b1 = r.b1, b2 = r.b2;
+    const i0 = r.o0, i1 = r.o1, i2 = r.o2;
+    const sums = this.sums;
+    if (d.shading === 'phong') {
+      const rx = b0 * p[i0 + REL] + b1 * p[i1 + REL] + b2 * p[i2 + REL];
+      const ry = b0 * p[i0 + REL + 1] + b1 * p[i1 + REL + 1] + b2 * p[i2 + REL + 1];
+      const rz = b0 * p[i0 + REL + 2] + b1 * p[i1 + REL + 2] + b2 * p[i2 + REL + 2];
+      let nx = b0 * p[i0 + NRM] + b1 * p[i1 + NRM] + b2 * p[i2 + NRM];
+      let ny = b0 * p[i0 + NRM + 1] + b1 * p[i1 + NRM + 1] + b2 * p[i2 + NRM + 1];
+      let nz = b0 * p[i0 + NRM + 2] + b1 * p[i1 + NRM + 2] + b2 * p[i2 + NRM + 2];
+      const nl = Math.sqrt(nx * nx + ny * ny + nz * nz);
+      if (nl > 0) { nx /= nl; ny /= nl; nz /= nl; }
+      const vl = Math.sqrt(rx * rx + ry * ry + rz * rz) || 1;
+      blinnPhong(d.lights, d.material, d.twoSided, rx, ry, rz, nx, ny, nz, -rx / vl, -ry / vl, -rz / vl, sums);
+    } else {
+      for (let k = 0; k < 6; k++) sums[k] = b0 * p[i0 + k] + b1 * p[i1 + k] + b2 * p[i2 + k];
+    }
+    const tex = this.texture(r);
+    const c = this.colour, o = 3 * pixel;
+    const alpha = d.material.opacity;
+    const cr = clamp01(tex[0] * sums[0] + sums[3]);
+    const cg = clamp01(tex[1] * sums[1] + sums[4]);
+    const cb = clamp01(tex[2] * sums[2] + sums[5]);
+    if (alpha >= 1) {
+      c[o] = cr; c[o + 1] = cg; c[o + 2] = cb;
+    } else {
+      // colour·(1 − kt) + framebuffer·kt (SPEC §11), kt = 1 − opacity.
+      const a = alpha > 0 ? alpha : 0;
+      c[o] = cr * a + c[o] * (1 - a);
+      c[o + 1] = cg * a + c[o + 1] * (1 - a);
+      c[o + 2] = cb * a + c[o + 2] * (1 - a);
+    }
+  }
+
+  /** The texture at the fragment through the material's mapping (standard.frag's surfaceTexture). */
+  private texture(r: Rasterizer): Float64Array {
+    const d = this.draw, p = r.poly, tex = this.tex, t = d.texture;
+    const b0 = r.b0, b1 = r.b1, b2 = r.b2, x0 = r.dbdx0, x1 = r.dbdx1, x2 = r.dbdx2, y0 = r.dbdy0, y1 = r.dbdy1, y2 = r.dbdy2;
+    const i0 = r.o0, i1 = r.o1, i2 = r.o2;
+    const mapping = d.material.mapping;
+    if (mapping === 'uv') {
+      const a = i0 + UV, b = i1 + UV, c = i2 + UV;
+      t.sample(
+        b0 * p[a] + b1 * p[b] + b2 * p[c], b0 * p[a + 1] + b1 * p[b + 1] + b2 * p[c + 1],
+        x0 * p[a] + x1 * p[b] + x2 * p[c], x0 * p[a + 1] + x1 * p[b + 1] + x2 * p[c + 1],
+        y0 * p[a] + y1 * p[b] + y2 * p[c], y0 * p[a + 1] + y1 * p[b + 1] + y2 * p[c + 1], tex);
+      return tex;
+    }
+    const q = this.q;
+    const a = i0 + OBJ, b = i1 + OBJ, c = i2 + OBJ;
+    q[0] = b0 * p[a] + b1 * p[b] + b2 * p[c];
+    q[1] = b0 * p[a + 1] + b1 * p[b + 1] + b2 * p[c + 1];
+    q[2] = b0 * p[a + 2] + b1 * p[b + 2] + b2 * p[c + 2];
+    // ∂q/∂x, ∂q/∂y per pixel.
+    const qx0 = x0 * p[a] + x1 * p[b] + x2 * p[c], qx1 = x0 * p[a + 1] + x1 * p[b + 1] + x2 * p[c + 1], qx2 = x0 * p[a + 2] + x1 * p[b + 2] + x2 * p[c + 2];
+    const qy0 = y0 * p[a] + y1 * p[b] + y2 * p[c], qy1 = y0 * p[a + 1] + y1 * p[b + 1] + y2 * p[c + 1], qy2 = y0 * p[a + 2] + y1 * p[b + 2] + y2 * p[c + 2];
+    const bounds = d.bounds;
+    if (mapping === 'triplanar') {
+      const na = i0 + OBJ_N, nb = i1 + OBJ_N, nc = i2 + OBJ_N;
+      let nx = b0 * p[na] + b1 * p[nb] + b2 * p[nc];
+      let ny = b0 * p[na + 1] + b1 * p[nb + 1] + b2 * p[nc + 1];
+      let nz = b0 * p[na + 2] + b1 * p[nb + 2] + b2 * p[nc + 2];
+      const len = Math.sqrt(nx * nx + ny * ny + nz * nz);
+      if (len > 0) { nx = Math.abs(nx / len); ny = Math.abs(ny / len); nz = Math.abs(nz / len); } else { nx = ny = nz = 1; }
+      const k = TRIPLANAR_SHARPNESS;
+      let wx = nx ** k, wy = ny ** k, wz = nz ** k;
+      const sum = wx + wy + wz;
+      wx /= sum; wy /= sum; wz /= sum;
+      const cen = bounds.center, s = 1 / (2 * boundsScale(bounds));
+      const sx = 0.5 + (q[0] - cen[0]) * s, sy = 0.5 + (q[1] - cen[1]) * s, sz = 0.5 + (q[2] - cen[2]) * s;
+      const part = this.part;
+      tex[0] = tex[1] = tex[2] = 0;
+      if (wx > 0) { t.sample(sz, sy, qx2 * s, qx1 * s, qy2 * s, qy1 * s, part); addScaled(tex, part, wx); }
+      if (wy > 0) { t.sample(sx, sz, qx0 * s, qx2 * s, qy0 * s, qy2 * s, part); addScaled(tex, part, wy); }
+      if (wz > 0) { t.sample(sx, sy, qx0 * s, qx1 * s, qy0 * s, qy1 * s, part); addScaled(tex, part, wz); }
+      return tex;
+    }
+    // Cylindrical and spherical: derivatives by one-pixel differences (as dFdx does), with the
+    // u seam unwrapped so the seam does not read the smallest mip level.
+    const map = mapping === 'cylindrical' ? cylindricalUV : sphericalUV;
+    const uv = this.uv0, uv1 = this.uv1;
+    map(uv, q, bounds);
+    q[0] += qx0; q[1] += qx1; q[2] += qx2;
+    map(uv1, q, bounds);
+    const dudx = wrap(uv1[0] - uv[0]), dvdx = uv1[1] - uv[1];
+    q[0] += qy0 - qx0; q[1] += qy1 - qx1; q[2] += qy2 - qx2;
+    map(uv1, q, bounds);
+    const dudy = wrap(uv1[0] - uv[0]), dvdy = uv1[1] - uv[1];
+    t.sample(uv[0], uv[1], dudx, dvdx, dudy, dvdy, tex);
+    return tex;
+  }
+}
+
+const clamp01 = (x: number): number => (x < 0 ? 0 : x > 1 ? 1 : x);
+
+/** A difference of u (period 1) taken the short way round. */
+const wrap = (du: number): number => du - Math.round(du);
+
+function addScaled(out: Float64Array, v: Float64Array, w: number): void {
+  out[0] += w * v[0]; out[1] += w * v[1]; out[2] += w * v[2];
+}

@@ -1,0 +1,299 @@
+// SPEC §11's CPU renderer: the scene value drawn by the same passes and equations as the GL
+// path (reflection into a second frame buffer, scene, glass), without DOM or GL, so it can run
+// in a worker. Pixels come back as RGBA8, top row first, like `capture()` and the reference.
+import { mat3, mat4 } from 'gl-matrix';
+import { reflectionMatrix, signedDistance } from '../math/mirror';
+import { FrameSetup } from '../render/frame-setup';
+import type { FrameState } from '../render/types';
+import type { DecodedImage } from '../reference/image-texture';
+import { defaultScene } from '../scene/default-scene';
+import type { Scene, SceneObject } from '../scene/scene';
+import { GlassShader, GLASS_INDICES } from './glass-shader';
+import { Lights } from './lighting';
+import { isTwoSided, SoftwareMeshes } from './meshes';
+import { imageMipTexture, proceduralMipTexture, type MipTexture } from './mip-texture';
+import { ObjectShader, type ObjectDraw } from './object-shader';
+import { Rasterizer } from './raster';
+
+export interface SoftwareRendererOptions {
+  /**
+   * Samples per pixel along each axis (1..8): the frame is drawn on an n× finer grid at the
+   * sample positions of the reference renderer's n×n strata and box-filtered. Default 1.
+   */
+  samplesPerAxis?: number;
+}
+
+/** Which objects a draw takes, and on which side of the glass plane their fragments must lie. */
+type Selection = 'opaque' | 'transparent';
+type Side = 'all' | 'eye' | 'beyond';
+
+const BLACK = [0, 0, 0] as const;
+
+export class SoftwareRenderer {
+  samplesPerAxis: number;
+  private readonly setup = new FrameSetup();
+  private readonly meshes = new SoftwareMeshes();
+  private readonly main = new Rasterizer();
+  private readonly mirror = new Rasterizer();
+  private readonly objectShader = new ObjectShader();
+  private readonly glassShader = new GlassShader();
+  private readonly lightsMain = new Lights();
+  private readonly lightsMirrored = new Lights();
+  private colour = new Float32Array(0);
+  private reflection = new Float32Array(0);
+  private mask = new Uint8Array(0);
+  private output = new Uint8ClampedArray(0);
+  private readonly images = new WeakMap<DecodedImage, MipTexture | null>();
+  private readonly mirroredViewProjection = new Float64Array(16);
+  private readonly reflectionLinear = new Float64Array(16);
+  private readonly normals: Float64Array[] = [];
+  private readonly mirroredClip = new Float64Array(4);
+  private readonly sideClip = new Float64Array(4);
+  private readonly transparent: number[] = [];
+  private readonly draw: ObjectDraw;
+  private defaultScene: { cubeDistance: number; spin: number; scene: Scene } | null = null;
+
+  constructor(options: SoftwareRendererOptions = {}) {
+    this.samplesPerAxis = options.samplesPerAxis ?? 1;
+    const procedural = proceduralMipTexture();
+    this.glassShader.texture = procedural;
+    this.draw = {
+      mesh: { positions: new Float32Array(0), normals: new Float32Array(0), uvs: new Float32Array(0), indices: new Uint16Array(0) },
+      model: new Float64Array(16), normal: new Float64Array(9), eye: [0, 0, 0], viewProjection: new Float64Array(16),
+      clipPlane: null, material: undefined as unknown as ObjectDraw['material'], bounds: { center: [0, 0, 0], radius: 1 },
+      texture: procedural, twoSided: false, shading: 'phong', lights: this.lightsMain,
+    };
+  }
+
+  /**
+   * Draws `state.view` of `scene` (SPEC §3's default scene when absent) and returns its pixels:
+   * RGBA8, top row first. The array is the renderer's own and is overwritten by the next call.
+   * `images`: decoded pixels of the scene's image textures by URL (RGBA8, top row first); a
+   * material whose image is missing draws with the procedural texture.
+   */
+  render(state: FrameState, scene?: Scene, images?: ReadonlyMap<string, DecodedImage>): Uint8ClampedArray {
+    scene ??= this.defaultSceneFor(state);
+    const n = Math.max(1, Math.min(8, Math.floor(this.samplesPerAxis)));
+    const width = Math.max(0, Math.floor(state.width)), height = Math.max(0, Math.floor(state.height));
+    const W = width * n, H = height * n;
+    this.resize(W, H, width * height);
+    if (W === 0 || H === 0) return this.output;
+    this.prepare(state, scene);
+
+    const view = state.view === 'passes' ? 'final' : state.view;
+    let source = this.colour;
+    const hasGlass = this.setup.hasGlass;
+    switch (view) {
+      case 'reflection':
+        if (hasGlass) {
+          this.mask.fill(1, 0, W * H);
+          this.reflectionPass(state, scene, images, false);
+          source = this.reflection;
+        } else {
+          fill(this.colour, W * H, scene.background);
+        }
+        break;
+      case 'scene':
+        this.scenePass(state, scene, images, 'all');
+        break;
+      case 'fresnel':
+        this.opaquePass(state, scene, images);
+        fill(this.colour, W * H, BLACK);
+        if (hasGlass) this.glass('fresnel');
+        break;
+      default:
+        if (!hasGlass) {
+          this.scenePass(state, scene, images, 'all');
+          break;
+        }
+        // Opaque objects, transparent ones beyond the glass, the glass's footprint, the
+        // reflection there only, the glass over it all, transparent objects on the eye's side.
+        this.scenePass(state, scene, images, 'beyond');
+        this.mask.fill(0, 0, W * H);
+        this.glass('mask');
+        this.reflectionPass(state, scene, images, true);
+        this.glass('compose');
+        this.drawObjects(this.main, state, scene, images, false, 'transparent', 'eye');
+    }
+    this.resolve(source, width, height, n);
+    return this.output;
+  }
+
+  private resize(W: number, H: number, pixels: number): void {
+    const N = W * H;
+    if (this.colour.length < 3 * N) {
+      this.colour = new Float32Array(3 * N);
+      this.reflection = new Float32Array(3 * N);
+      this.mask = new Uint8Array(N);
+    }
+    if (this.output.length !== 4 * pixels) this.output = new Uint8ClampedArray(4 * pixels);
+    this.main.resize(W, H);
+    this.mirror.resize(W, H);
+    this.objectShader.colour = this.colour;
+    this.glassShader.colour = this.colour;
+    this.glassShader.reflection = this.reflection;
+    this.glassShader.mask = this.mask;
+  }
+
+  private prepare(state: FrameState, scene: Scene): void {
+    const s = this.setup;
+    s.update(state, scene);
+    const plane = s.glass.plane;
+    // Mirrored eye-relative points → clip: projection · view · L (L the plane's linear reflection).
+    reflectionMatrix(this.reflectionLinear, plane);
+    this.reflectionLinear[12] = this.reflectionLinear[13] = this.reflectionLinear[14] = 0;
+    mat4.multiply(this.mirroredViewProjection as unknown as mat4, s.viewProjection as unknown as mat4, this.reflectionLinear as unknown as mat4);
+    // The reflection keeps the eye's side: side·(n·(rel + e′) + d) ≥ 0, rel relative to e′.
+    setPlane(this.mirroredClip, plane, s.mirroredEye, s.side);
+    while (this.normals.length < scene.objects.length) this.normals.push(new Float64Array(9));
+    for (let i = 0; i < scene.objects.length; i++) {
+      mat3.normalFromMat4(this.normals[i] as unknown as mat3, s.objects[i].model as unknown as mat4);
+    }
+    this.lightsMain.set(scene, s.eye);
+    this.lightsMirrored.set(scene, s.mirroredEye);
+    this.glassShader.model = state.fresnel;
+    this.glassShader.ior = state.ior;
+    this.glassShader.transparency = state.transparency;
+    // Transparent objects back to front by their bounds' centre (the GL path draws them in
+    // scene order; the reference sorts per ray).
+    const t = this.transparent;
+    t.length = 0;
+    for (let i = 0; i < scene.objects.length; i++) if (scene.objects[i].material.opacity < 1) t.push(i);
+    const eye = s.eye;
+    const dist = (i: number) => {
+      const c = s.objects[i].center;
+      return (c[0] - eye[0]) ** 2 + (c[1] - eye[1]) ** 2 + (c[2] - eye[2]) ** 2;
+    };
+    t.sort((a, b) => dist(b) - dist(a));
+  }
+
+  /** Pass 2: background, opaque objects, then transparent ones (those on `side` of the glass). */
+  private scenePass(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined, side: Side): void {
+    this.opaquePass(state, scene, images);
+    this.drawObjects(this.main, state, scene, images, false, 'transparent', side);
+  }
+
+  private opaquePass(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined): void {
+    const r = this.main;
+    fill(this.colour, r.width * r.height, scene.background);
+    r.clearDepth();
+    r.mask = null;
+    this.drawObjects(r, state, scene, images, false, 'opaque', 'all');
+  }
+
+  /** Pass 1 into the reflection buffer, at the masked pixels only when `masked`. */
+  private reflectionPass(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined, masked: boolean): void {
+    const r = this.mirror;
+    fill(this.reflection, r.width * r.height, scene.background);
+    r.clearDepth();
+    r.mask = masked ? this.mask : null;
+    this.objectShader.colour = this.reflection;
+    try {
+      this.drawObjects(r, state, scene, images, true, 'opaque', 'eye');
+      this.drawObjects(r, state, scene, images, true, 'transparent', 'eye');
+    } finally {
+      this.objectShader.colour = this.colour;
+      r.mask = null;
+    }
+  }
+
+  private glass(mode: GlassShader['mode']): void {
+    const g = this.glassShader, s = this.setup;
+    g.mode = mode;
+    g.setup(s.glass, s.eye, s.viewProjection);
+    this.main.mask = null;
+    g.draw(this.main, GLASS_INDICES);
+  }
+
+  private drawObjects(
+    r: Rasterizer, state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined,
+    mirrored: boolean, selection: Selection, side: Side,
+  ): void {
+    const s = this.setup, d = this.draw, objects = scene.objects;
+    const eye = mirrored ? s.mirroredEye : s.eye;
+    const plane = s.glass.plane;
+    let clip: Float64Array | null = null;
+    if (mirrored) clip = this.mirroredClip;
+    else if (side !== 'all' && s.hasGlass) clip = setPlane(this.sideClip, plane, eye, side === 'eye' ? s.side : -s.side);
+    const order = selection === 'transparent' ? this.transparent : null;
+    const count = order ? order.length : objects.length;
+    r.depthTest = true;
+    r.depthWrite = selection === 'opaque';
+    r.frontCCW = !mirrored; // the mirror flips winding
+    for (let k = 0; k < count; k++) {
+      const i = order ? order[k] : k;
+      const o: SceneObject = objects[i];
+      if (selection === 'opaque' && o.material.opacity < 1) continue;
+      const m = s.objects[i];
+      // Culling, not selection (SPEC §4): bounds wholly beyond the glass cannot be reflected.
+      if (mirrored && s.side * signedDistance(plane, m.center) <= -m.radius) continue;
+      d.mesh = this.meshes.get(o.geometry, state, m.center, m.radius, r.width / Math.max(1, state.width));
+      d.model = m.model;
+      d.normal = this.normals[i];
+      d.eye = eye;
+      d.viewProjection = mirrored ? this.mirroredViewProjection : s.viewProjection;
+      d.clipPlane = clip;
+      d.material = o.material;
+      d.bounds = o.bounds;
+      d.texture = this.textureOf(o, images);
+      d.twoSided = isTwoSided(o.geometry);
+      d.shading = state.shading;
+      d.lights = mirrored ? this.lightsMirrored : this.lightsMain;
+      r.cull = d.twoSided ? 'none' : 'back';
+      this.objectShader.render(d, r);
+    }
+  }
+
+  private textureOf(o: SceneObject, images: ReadonlyMap<string, DecodedImage> | undefined): MipTexture {
+    const source = o.material.texture;
+    if (source.kind !== 'image') return proceduralMipTexture();
+    const image = images?.get(source.url);
+    if (image === undefined) return proceduralMipTexture();
+    let t = this.images.get(image);
+    if (t === undefined) this.images.set(image, (t = imageMipTexture(image)));
+    return t ?? proceduralMipTexture();
+  }
+
+  /** Box filter of n×n samples per pixel, rounded to RGBA8. */
+  private resolve(source: Float32Array, width: number, height: number, n: number): void {
+    const out = this.output, W = width * n, k = 255 / (n * n);
+    for (let y = 0; y < height; y++) {
+      for (let x = 0; x < width; x++) {
+        let r = 0, g = 0, b = 0;
+        for (let sy = 0; sy < n; sy++) {
+          let o = 3 * ((y * n + sy) * W + x * n);
+          for (let sx = 0; sx < n; sx++, o += 3) {
+            r += source[o]; g += source[o + 1]; b += source[o + 2];
+          }
+        }
+        const p = 4 * (y * width + x);
+        out[p] = Math.round(r * k);
+        out[p + 1] = Math.round(g * k);
+        out[p + 2] = Math.round(b * k);
+        out[p + 3] = 255;
+      }
+    }
+  }
+
+  private defaultSceneFor(state: FrameState): Scene {
+    const d = this.defaultScene;
+    if (d && Object.is(d.cubeDistance, state.cubeDistance) && Object.is(d.spin, state.spin)) return d.scene;
+    this.defaultScene = { cubeDistance: state.cubeDistance, spin: state.spin, scene: defaultScene(state.cubeDistance, state.spin) };
+    return this.defaultScene.scene;
+  }
+}
+
+/** out = sign·(n, n·eye + d): the plane as a function of eye-relative points, kept where ≥ 0. */
+function setPlane(out: Float64Array, plane: ArrayLike<number>, eye: ArrayLike<number>, sign: number): Float64Array {
+  out[0] = sign * plane[0];
+  out[1] = sign * plane[1];
+  out[2] = sign * plane[2];
+  out[3] = sign * (plane[0] * eye[0] + plane[1] * eye[1] + plane[2] * eye[2] + plane[3]);
+  return out;
+}
+
+function fill(buffer: Float32Array, pixels: number, rgb: readonly number[]): void {
+  for (let i = 0, o = 0; i < pixels; i++, o += 3) {
+    buffer[o] = rgb[0]; buffer[o + 1] = rgb[1]; buffer[o + 2] = rgb[2];
+  }
+}
