@@ -10,6 +10,11 @@ const NUMBER = /^[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?$/;
 /** No number the files need is longer; a longer token is rejected before any regex runs. */
 const MAX_NUMBER_LENGTH = 64;
 
+/** Whether `token` is a number as the course's files write one (linear time at any length). */
+export function isNumber(token: string): boolean {
+  return token.length <= MAX_NUMBER_LENGTH && NUMBER.test(token);
+}
+
 export interface ContentLine {
   /** 1-based physical line. */
   line: number;
@@ -45,7 +50,7 @@ export class CourseLines {
   private readonly text: string;
   private pos: number;
   private line = 0;
-  private readonly breaks = /\r\n|\r|\n/g;
+  private readonly token = /\S+/g;
   /** The last non-blank line read, for "the file ends here" errors. */
   lastLine = 1;
 
@@ -55,23 +60,35 @@ export class CourseLines {
     this.pos = text.charCodeAt(0) === 0xfeff ? 1 : 0;
   }
 
-  /** The next physical line, or null at the end of the text. */
-  private physical(): string | null {
-    if (this.pos > this.text.length) return null;
+  /**
+   * Moves past the next physical line; returns where its first non-space character is
+   * and where the line ends, or null at the end of the text. One charCodeAt pass, no slicing.
+   */
+  private physical(): { first: number; end: number } | null {
+    const t = this.text, n = t.length;
+    if (this.pos > n) return null;
+    let p = this.pos, first = -1;
+    for (; p < n; p++) {
+      const c = t.charCodeAt(p);
+      if (c === 10 || c === 13) break;
+      if (first < 0 && c !== 32 && c !== 9) first = p;
+    }
     this.line++;
-    this.breaks.lastIndex = this.pos;
-    const m = this.breaks.exec(this.text);
-    const end = m ? m.index : this.text.length;
-    const out = this.text.slice(this.pos, end);
-    this.pos = m ? end + m[0].length : this.text.length + 1;
-    return out;
+    this.pos = p >= n ? n + 1 : p + (t.charCodeAt(p) === 13 && t.charCodeAt(p + 1) === 10 ? 2 : 1);
+    return { first: first < 0 ? p : first, end: p };
   }
 
   /** The next non-blank line with up to `max` + 1 tokens, or null at the end of the text. */
   next(max: number): ContentLine | null {
-    for (let s = this.physical(); s !== null; s = this.physical()) {
-      const tokens = firstTokens(s, max + 1);
-      if (tokens.length === 0) continue;
+    for (let l = this.physical(); l !== null; l = this.physical()) {
+      if (l.first === l.end) continue;
+      const tokens: string[] = [];
+      const re = this.token;
+      re.lastIndex = l.first;
+      for (let m = re.exec(this.text); m !== null && m.index < l.end && tokens.length <= max; m = re.exec(this.text)) {
+        tokens.push(m[0]);
+      }
+      if (tokens.length === 0) continue; // only other kinds of white space (\v, \f, U+00A0 …)
       this.lastLine = this.line;
       return { line: this.line, tokens };
     }
@@ -88,16 +105,13 @@ export class CourseLines {
   /** The first non-blank line left and how many there are, without keeping their text. */
   rest(): { first: number; count: number } | null {
     let first = 0, count = 0;
-    for (let s = this.physical(); s !== null; s = this.physical()) {
-      if (!/\S/.test(s)) continue;
-      if (count++ === 0) first = this.line;
-    }
+    for (let l = this.next(0); l !== null; l = this.next(0)) if (count++ === 0) first = l.line;
     return count === 0 ? null : { first, count };
   }
 
   /** A finite number, else a LoadError naming the line and what the token was to be. */
   number(token: string, line: number, what: string): number {
-    const value = token.length <= MAX_NUMBER_LENGTH && NUMBER.test(token) ? Number(token) : NaN;
+    const value = isNumber(token) ? Number(token) : NaN;
     if (Number.isFinite(value)) return value;
     const why = Number.isNaN(value) ? 'is not a number' : 'is too large';
     throw new LoadError(this.url, `${what}: ${shown(token)} ${why}`, line);
@@ -121,12 +135,4 @@ export class CourseLines {
     }
     return value;
   }
-}
-
-/** Up to `max` whitespace-separated tokens of `s`. */
-export function firstTokens(s: string, max: number): string[] {
-  const out: string[] = [];
-  const re = /\S+/g;
-  for (let m = re.exec(s); m !== null && out.length < max; m = re.exec(s)) out.push(m[0]);
-  return out;
 }

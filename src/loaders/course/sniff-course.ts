@@ -1,14 +1,13 @@
 // Tells the course's files apart (SPEC §11), in the manner of ../sniff.ts: by content first,
 // the URL's name only when the content is too broken to say.
 import { sniffModel } from '../sniff';
-import { CourseLines } from './course-text';
+import { CourseLines, isNumber } from './course-text';
 
 export type CourseFormat = 'byu-mesh' | 'byu-bezier' | 'camera' | 'lighting' | 'html' | 'binary' | 'unknown';
 
 /** Numbers per line of a well-formed camera `.cfg` and of `iluminacao.txt`. */
 const CAMERA = [3, 3, 3, 3];
 const LIGHTING = [3, 1, 3, 1, 3, 1, 3, 1];
-const NUMBER = /^[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?$/;
 const COUNT = /^\d+$/;
 
 /**
@@ -30,7 +29,7 @@ export function sniffCourse(url: string, text: string): CourseFormat {
     const l = lines.next(3);
     if (l === null) break;
     first.push(l.tokens);
-    shape.push(l.tokens.length <= 3 && l.tokens.every((t) => t.length <= 64 && NUMBER.test(t)) ? l.tokens.length : -1);
+    shape.push(l.tokens.length <= 3 && l.tokens.every(isNumber) ? l.tokens.length : -1);
   }
   if (first.length >= 1 && first[0].length === 2 && first[0].every((t) => COUNT.test(t))) {
     return shape[1] === 1 ? 'byu-bezier' : 'byu-mesh';
