@@ -1,0 +1,21 @@
+// A course `.byu` of either kind (SPEC §11): the content decides mesh or Bézier surface.
+import { LoadError } from '../load-error';
+import { parseByuBezier, type ByuBezierResult } from './byu-bezier';
+import { parseByuMesh, type ByuMeshResult } from './byu-mesh';
+import { sniffCourse } from './sniff-course';
+
+export type ByuResult = ({ kind: 'mesh' } & ByuMeshResult) | ({ kind: 'bezier' } & ByuBezierResult);
+
+/**
+ * A mesh `.byu`, or a Bézier `.byu` when its second non-blank line holds a single number;
+ * `resolution` overrides a Bézier file's E. Content that is a camera or lighting file is a
+ * LoadError; anything else is read as a mesh, whose parser names the faulty line.
+ */
+export function parseByu(text: string, options: { url?: string; resolution?: number } = {}): ByuResult {
+  const format = sniffCourse(options.url ?? '', text);
+  if (format === 'byu-bezier') return { kind: 'bezier', ...parseByuBezier(text, options) };
+  if (format === 'camera' || format === 'lighting') {
+    throw new LoadError(options.url ?? '', `a ${format === 'camera' ? 'camera .cfg' : 'lighting'} file, not a .byu model`);
+  }
+  return { kind: 'mesh', ...parseByuMesh(text, options) };
+}

@@ -1,0 +1,86 @@
+// The course's iluminacao.txt and Phong equation (SPEC §11), against hand-computed values.
+import { describe, expect, it } from 'vitest';
+import { parseLightingTxt } from '../../src/loaders/course/lighting-txt';
+import { coursePhong, type CourseLight, type CourseMaterial } from '../../src/math/course-phong';
+import type { Vec3 } from '../../src/math/course-camera';
+import { expectLoadError, sample } from './course-helpers';
+
+const R2 = Math.SQRT1_2;
+
+describe('parseLightingTxt', () => {
+  it('reads Pl / ka / Ia / kd / Od / ks / Il / n into a point light and a material', () => {
+    const r = parseLightingTxt(sample('iluminacao.txt'), { url: 'iluminacao.txt' });
+    expect(r.light).toEqual({ position: [-200, 50, 100], ambient: [100, 90, 80], intensity: [255, 255, 255] });
+    expect(r.material).toEqual({ ka: 0.2, kd: 0.5, ks: 0.5, od: [0.7, 0.5, 0.8], n: 2 });
+    expect(r.warnings).toEqual([]);
+  });
+
+  it('reads CRLF, a BOM, tabs, blank lines, exponents and no final newline alike', () => {
+    const text = '\uFEFF-2E2\t50 1.0e+2 \r\n\r\n2.0E-1\r\n100 90 80\r\n+.5\r\n7e-1 5.e-1 .8\r\n\r\n0.5\r\n255 255 255\r\n2';
+    const r = parseLightingTxt(text);
+    expect(r.light.position).toEqual([-200, 50, 100]);
+    expect(r.material).toEqual({ ka: 0.2, kd: 0.5, ks: 0.5, od: [0.7, 0.5, 0.8], n: 2 });
+  });
+
+  it('clamps values outside their ranges with a warning naming the line', () => {
+    const r = parseLightingTxt('0 0 0\n1.5\n300 0 -1\n0.5\n1 1 1\n0.5\n10 10 10\n-2\n');
+    expect(r.material.ka).toBe(1);
+    expect(r.light.ambient).toEqual([255, 0, 0]);
+    expect(r.material.n).toBe(0);
+    expect(r.warnings.map((w) => w.line)).toEqual([2, 3, 3, 8]);
+  });
+
+  it('warns about values and lines past the eight', () => {
+    const r = parseLightingTxt(`${sample('iluminacao.txt')}\n0.3\n`.replace('0.2\n', '0.2 0.4\n'));
+    expect(r.warnings.map((w) => w.line)).toEqual([2, 10]);
+  });
+
+  it('is a load error, with its line, for a token that is not a number or a missing line', () => {
+    expectLoadError(() => parseLightingTxt(sample('iluminacao-bad-token.txt'), { url: 'il.txt' }), 'il.txt', 6, /ks: "0,5" is not a number/);
+    expectLoadError(() => parseLightingTxt(sample('iluminacao-truncated.txt'), { url: 'il.txt' }), 'il.txt', 7, /ends here, no line for n/);
+    expectLoadError(() => parseLightingTxt('0 0 0\n0.2\n100 90\n', { url: 'il.txt' }), 'il.txt', 3, /Ia needs 3 numbers/);
+  });
+});
+
+describe('coursePhong', () => {
+  const material: CourseMaterial = { ka: 0.2, kd: 0.5, ks: 0.5, od: [0.7, 0.5, 0.8], n: 2 };
+  const light = (position: Vec3, intensity: Vec3 = [255, 255, 255]): CourseLight => ({ position, ambient: [100, 90, 80], intensity });
+  const ambient = [20, 18, 16];
+  const O: Vec3 = [0, 0, 0];
+  const UP: Vec3 = [0, 0, 1];
+
+  function close(actual: Vec3, want: number[]): void {
+    actual.forEach((c, k) => expect(c, `channel ${k}`).toBeCloseTo(want[k], 9));
+  }
+
+  it('head-on: I = ka·Ia + Il ⊙ (kd·Od + ks)', () => {
+    close(coursePhong(light([0, 0, 10]), material, O, UP, [0, 0, 10]),
+      [0, 1, 2].map((c) => ambient[c] + 255 * (0.5 * material.od[c] + 0.5)));
+  });
+
+  it('light at 45°: N·L = R·V = 1/√2, the specular term (R·V)^n', () => {
+    close(coursePhong(light([10, 0, 10]), material, O, UP, [0, 0, 10]),
+      [0, 1, 2].map((c) => ambient[c] + 255 * (0.5 * material.od[c] * R2 + 0.5 * 0.5)));
+    // The eye in the mirror direction: R·V = 1.
+    close(coursePhong(light([10, 0, 10]), material, O, UP, [-5, 0, 5]),
+      [0, 1, 2].map((c) => ambient[c] + 255 * (0.5 * material.od[c] * R2 + 0.5)));
+  });
+
+  it('turns N towards the viewer: a normal pointing away lights like one facing the eye', () => {
+    const toward = coursePhong(light([10, 0, 10]), material, O, UP, [0, 0, 10]);
+    expect(coursePhong(light([10, 0, 10]), material, O, [0, 0, -3], [0, 0, 10])).toEqual(toward);
+  });
+
+  it('no diffuse or specular where N·L ≤ 0, no specular where R·V ≤ 0', () => {
+    close(coursePhong(light([0, 0, -10]), material, O, UP, [0, 0, 10]), ambient);
+    close(coursePhong(light([10, 0, 0]), material, O, UP, [0, 0, 10]), ambient); // grazing: N·L = 0
+    // Light at 45° on one side, eye low on the same side: R·V < 0.
+    close(coursePhong(light([10, 0, 10]), material, O, UP, [10, 0, 1]),
+      [0, 1, 2].map((c) => ambient[c] + 255 * 0.5 * material.od[c] * R2));
+  });
+
+  it('clamps every channel to 0..255', () => {
+    const bright = coursePhong(light([0, 0, 10], [2550, 2550, 2550]), material, O, UP, [0, 0, 10]);
+    expect(bright).toEqual([255, 255, 255]);
+  });
+});
