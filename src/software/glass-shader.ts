@@ -30,6 +30,9 @@ export class GlassShader implements FragmentShader {
   private nz = 1;
   private readonly vertices = new Float64Array(4 * STRIDE);
   private readonly tex = new Float64Array(3);
+  private cos = 1;
+  private f = 0;
+  private readonly lookup = new Float64Array(6);
 
   /**
    * Vertex stage of the glass rectangle (its float64 corners, u along its width, v along its
@@ -70,6 +73,14 @@ export class GlassShader implements FragmentShader {
     }
   }
 
+  /**
+   * this.f = F(this.cos): through fields, because a double returned by a call that is not
+   * inlined is boxed, and this one (in a large fragment function) was half the frame's garbage.
+   */
+  private fresnel(): void {
+    this.f = fresnel(this.model, this.cos, this.ior);
+  }
+
   fragment(pixel: number, r: Rasterizer): void {
     if (this.mode === 'mask') {
       this.mask[pixel] = 1;
@@ -81,39 +92,42 @@ export class GlassShader implements FragmentShader {
     const rz = b0 * p[i0 + REL + 2] + b1 * p[i1 + REL + 2] + b2 * p[i2 + REL + 2];
     const len = Math.sqrt(rx * rx + ry * ry + rz * rz);
     // Two-sided: cosθ = |N·V|, clamped to [0, 1].
-    let c = len > 0 ? Math.abs(this.nx * rx + this.ny * ry + this.nz * rz) / len : 1;
-    if (c > 1) c = 1;
-    const f = fresnel(this.model, c, this.ior);
+    const c = len > 0 ? Math.abs(this.nx * rx + this.ny * ry + this.nz * rz) / len : 1;
+    this.cos = c > 1 ? 1 : c;
+    this.fresnel();
+    const f = this.f;
     const o = 3 * pixel, out = this.colour;
     if (this.mode === 'fresnel') {
       out[o] = out[o + 1] = out[o + 2] = f;
       return;
     }
-    const ua = i0 + UV, ub = i1 + UV, uc = i2 + UV;
-    this.texture.sample(
-      b0 * p[ua] + b1 * p[ub] + b2 * p[uc], b0 * p[ua + 1] + b1 * p[ub + 1] + b2 * p[uc + 1],
-      r.dbdx0 * p[ua] + r.dbdx1 * p[ub] + r.dbdx2 * p[uc], r.dbdx0 * p[ua + 1] + r.dbdx1 * p[ub + 1] + r.dbdx2 * p[uc + 1],
-      r.dbdy0 * p[ua] + r.dbdy1 * p[ub] + r.dbdy2 * p[uc], r.dbdy0 * p[ua + 1] + r.dbdy1 * p[ub + 1] + r.dbdy2 * p[uc + 1],
-      this.tex);
+    const ua = i0 + UV, ub = i1 + UV, uc = i2 + UV, l = this.lookup;
+    l[0] = b0 * p[ua] + b1 * p[ub] + b2 * p[uc];
+    l[1] = b0 * p[ua + 1] + b1 * p[ub + 1] + b2 * p[uc + 1];
+    l[2] = r.dbdx0 * p[ua] + r.dbdx1 * p[ub] + r.dbdx2 * p[uc];
+    l[3] = r.dbdx0 * p[ua + 1] + r.dbdx1 * p[ub + 1] + r.dbdx2 * p[uc + 1];
+    l[4] = r.dbdy0 * p[ua] + r.dbdy1 * p[ub] + r.dbdy2 * p[uc];
+    l[5] = r.dbdy0 * p[ua + 1] + r.dbdy1 * p[ub + 1] + r.dbdy2 * p[uc + 1];
+    this.texture.sample(l, this.tex);
     const tex = this.tex[0], t = this.transparency, refl = this.reflection;
     if (this.model === 'classic') {
       // Seed 000 verbatim: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha.
       const a = (1 - t) * (0.2 + 0.8 * f);
       for (let k = 0; k < 3; k++) {
         const d = tex * BODY[k], rk = Math.min(refl[o + k], 1);
-        out[o + k] = clamp01((d + (rk - d) * f) * a + out[o + k] * (1 - a));
+        const x = (d + (rk - d) * f) * a + out[o + k] * (1 - a);
+        out[o + k] = x < 0 ? 0 : x > 1 ? 1 : x; // inline: a helper's double result is boxed
       }
       return;
     }
     // out = F·R + (1 − F)·(T·B + (1 − T)·D), R clamped as the 8-bit reflection target holds it.
     for (let k = 0; k < 3; k++) {
       const d = tex * BODY[k], rk = Math.min(refl[o + k], 1);
-      out[o + k] = clamp01(f * rk + (1 - f) * (t * out[o + k] + (1 - t) * d));
+      const x = f * rk + (1 - f) * (t * out[o + k] + (1 - t) * d);
+      out[o + k] = x < 0 ? 0 : x > 1 ? 1 : x;
     }
   }
 }
-
-const clamp01 = (x: number): number => (x < 0 ? 0 : x > 1 ? 1 : x);
 
 const CORNER_UV = [0, 0, 1, 0, 1, 1, 0, 1];
 

@@ -37,15 +37,14 @@ export class Lights {
 }
 
 /**
- * The two light sums at eye-relative point `rel` (px, py, pz) with unit normal n and unit view
- * vector v (towards the eye) into out[0..2] (a) and out[3..5] (s). `twoSided` turns n towards
- * the viewer first (meshes from files, SPEC §9).
+ * The two light sums into out[0..2] (a) and out[3..5] (s), for g = [eye-relative point p, unit
+ * normal n, unit view vector v towards the eye] (9 values in an array: doubles passed to a
+ * call that is not inlined are boxed, once per pixel). `twoSided` turns n towards the viewer
+ * first (meshes from files, SPEC §9).
  */
-export function blinnPhong(
-  lights: Lights, m: Material, twoSided: boolean,
-  px: number, py: number, pz: number, nx: number, ny: number, nz: number, vx: number, vy: number, vz: number,
-  out: Float64Array,
-): void {
+export function blinnPhong(lights: Lights, m: Material, twoSided: boolean, g: Float64Array, out: Float64Array): void {
+  const px = g[0], py = g[1], pz = g[2], vx = g[6], vy = g[7], vz = g[8];
+  let nx = g[3], ny = g[4], nz = g[5];
   if (twoSided && nx * vx + ny * vy + nz * vz < 0) { nx = -nx; ny = -ny; nz = -nz; }
   const ka = m.ambient, kd = m.diffuse, ks = m.specular;
   let ar = 0, ag = 0, ab = 0, sr = 0, sg = 0, sb = 0;

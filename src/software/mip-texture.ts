@@ -25,48 +25,42 @@ export class MipTexture {
   }
 
   /**
-   * The texture at (u, v) into out[0..2] (grey is copied to all three), with the LOD from the UV
-   * derivatives along screen x and y: λ = log2(max(|∂(s,t)/∂x|, |∂(s,t)/∂y|)) in base texels.
+   * The texture into out[0..2] (grey is copied to all three) at a = [u, v, ∂u/∂x, ∂v/∂x, ∂u/∂y,
+   * ∂v/∂y] (screen derivatives per pixel), LOD λ = log2(max(|∂(s,t)/∂x|, |∂(s,t)/∂y|)) in base
+   * texels. Arguments come in an array: doubles passed to a call that is not inlined are boxed,
+   * which at one call per pixel was most of the frame's garbage.
    */
-  sample(u: number, v: number, dudx: number, dvdx: number, dudy: number, dvdy: number, out: Float64Array): void {
-    const base = this.levels[0];
-    const sx = dudx * base.width, tx = dvdx * base.height, sy = dudy * base.width, ty = dvdy * base.height;
+  sample(a: Float64Array, out: Float64Array): void {
+    const levels = this.levels, base = levels[0];
+    const sx = a[2] * base.width, tx = a[3] * base.height, sy = a[4] * base.width, ty = a[5] * base.height;
     const rho2 = Math.max(sx * sx + tx * tx, sy * sy + ty * ty);
     // λ = ½·log2(ρ²); NaN (a degenerate derivative) reads the base level.
     const lambda = rho2 > 1 ? 0.5 * Math.log2(rho2) : 0;
-    const top = this.levels.length - 1;
-    if (!(lambda > 0)) {
-      this.bilinear(this.levels[0], u, v, out, 1, false);
-      return;
-    }
-    if (lambda >= top) {
-      this.bilinear(this.levels[top], u, v, out, 1, false);
-      return;
-    }
-    const d = Math.floor(lambda), f = lambda - d;
-    this.bilinear(this.levels[d], u, v, out, 1 - f, false);
-    this.bilinear(this.levels[d + 1], u, v, out, f, true);
-  }
-
-  /** out (+)= weight · bilinear(level, u, v), REPEAT. */
-  private bilinear(level: Level, u: number, v: number, out: Float64Array, weight: number, add: boolean): void {
-    const W = level.width, H = level.height, data = level.data;
-    const s = u * W - 0.5, t = v * H - 0.5;
-    const fi = Math.floor(s), fj = Math.floor(t);
-    const x = s - fi, y = t - fj;
-    let i0 = fi % W; if (i0 < 0) i0 += W;
-    let j0 = fj % H; if (j0 < 0) j0 += H;
-    const i1 = i0 + 1 === W ? 0 : i0 + 1, j1 = j0 + 1 === H ? 0 : j0 + 1;
-    const w00 = (1 - x) * (1 - y) * weight, w10 = x * (1 - y) * weight, w01 = (1 - x) * y * weight, w11 = x * y * weight;
-    if (this.channels === 1) {
-      const g = w00 * data[j0 * W + i0] + w10 * data[j0 * W + i1] + w01 * data[j1 * W + i0] + w11 * data[j1 * W + i1];
-      if (add) { out[0] += g; out[1] += g; out[2] += g; } else { out[0] = out[1] = out[2] = g; }
-      return;
-    }
-    const a = 3 * (j0 * W + i0), b = 3 * (j0 * W + i1), c = 3 * (j1 * W + i0), e = 3 * (j1 * W + i1);
-    for (let k = 0; k < 3; k++) {
-      const g = w00 * data[a + k] + w10 * data[b + k] + w01 * data[c + k] + w11 * data[e + k];
-      out[k] = add ? out[k] + g : g;
+    const top = levels.length - 1;
+    // Both start as numbers (an unassigned `let` would make them tagged, boxed on every write).
+    let first = 0, f = 0;
+    if (lambda >= top) first = top;
+    else if (lambda > 0) { first = Math.floor(lambda) | 0; f = lambda - first; }
+    out[0] = out[1] = out[2] = 0;
+    const u = a[0], v = a[1], grey = this.channels === 1;
+    for (let l = first, weight = 1 - f; l <= first + 1 && weight > 0; l++, weight = f) {
+      const level = levels[l], W = level.width, H = level.height, data = level.data;
+      const s = u * W - 0.5, t = v * H - 0.5;
+      const fi = Math.floor(s), fj = Math.floor(t);
+      const x = s - fi, y = t - fj;
+      // REPEAT: a mask for powers of two, a remainder otherwise.
+      let i0: number, j0: number;
+      if ((W & (W - 1)) === 0) i0 = fi & (W - 1); else { i0 = fi % W; if (i0 < 0) i0 += W; }
+      if ((H & (H - 1)) === 0) j0 = fj & (H - 1); else { j0 = fj % H; if (j0 < 0) j0 += H; }
+      const i1 = i0 + 1 === W ? 0 : i0 + 1, j1 = j0 + 1 === H ? 0 : j0 + 1;
+      const w00 = (1 - x) * (1 - y) * weight, w10 = x * (1 - y) * weight, w01 = (1 - x) * y * weight, w11 = x * y * weight;
+      if (grey) {
+        const g = w00 * data[j0 * W + i0] + w10 * data[j0 * W + i1] + w01 * data[j1 * W + i0] + w11 * data[j1 * W + i1];
+        out[0] += g; out[1] += g; out[2] += g;
+      } else {
+        const p00 = 3 * (j0 * W + i0), p10 = 3 * (j0 * W + i1), p01 = 3 * (j1 * W + i0), p11 = 3 * (j1 * W + i1);
+        for (let k = 0; k < 3; k++) out[k] += w00 * data[p00 + k] + w10 * data[p10 + k] + w01 * data[p01 + k] + w11 * data[p11 + k];
+      }
     }
   }
 }

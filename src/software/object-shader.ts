@@ -40,6 +40,9 @@ export class ObjectShader implements FragmentShader {
   private vertices = new Float64Array(0);
   private draw!: ObjectDraw;
   private readonly sums = new Float64Array(6);
+  /** blinnPhong's point, normal and view vector; a texture lookup's UV and derivatives. */
+  private readonly geometry = new Float64Array(9);
+  private readonly lookup = new Float64Array(6);
   private readonly tex = new Float64Array(3);
   private readonly part = new Float64Array(3);
   private readonly uv0 = new Float64Array(2);
@@ -94,7 +97,8 @@ export class ObjectShader implements FragmentShader {
         }
         const vl = Math.sqrt(lx * lx + ly * ly + lz * lz) || 1;
         const nl = Math.sqrt(wx * wx + wy * wy + wz * wz) || 1;
-        blinnPhong(d.lights, d.material, d.twoSided, lx, ly, lz, wx / nl, wy / nl, wz / nl, -lx / vl, -ly / vl, -lz / vl, sums);
+        setGeometry(this.geometry, lx, ly, lz, wx / nl, wy / nl, wz / nl, -lx / vl, -ly / vl, -lz / vl);
+        blinnPhong(d.lights, d.material, d.twoSided, this.geometry, sums);
         for (let k = 0; k < 6; k++) out[v + k] = sums[k];
       }
       out[v + UV] = hasUvs ? uvs[2 * i] : 0;
@@ -118,16 +122,20 @@ export class ObjectShader implements FragmentShader {
       const nl = Math.sqrt(nx * nx + ny * ny + nz * nz);
       if (nl > 0) { nx /= nl; ny /= nl; nz /= nl; }
       const vl = Math.sqrt(rx * rx + ry * ry + rz * rz) || 1;
-      blinnPhong(d.lights, d.material, d.twoSided, rx, ry, rz, nx, ny, nz, -rx / vl, -ry / vl, -rz / vl, sums);
+      const g = this.geometry;
+      g[0] = rx; g[1] = ry; g[2] = rz; g[3] = nx; g[4] = ny; g[5] = nz; g[6] = -rx / vl; g[7] = -ry / vl; g[8] = -rz / vl;
+      blinnPhong(d.lights, d.material, d.twoSided, g, sums);
     } else {
       for (let k = 0; k < 6; k++) sums[k] = b0 * p[i0 + k] + b1 * p[i1 + k] + b2 * p[i2 + k];
     }
     const tex = this.texture(r);
     const c = this.colour, o = 3 * pixel;
     const alpha = d.material.opacity;
-    const cr = clamp01(tex[0] * sums[0] + sums[3]);
-    const cg = clamp01(tex[1] * sums[1] + sums[4]);
-    const cb = clamp01(tex[2] * sums[2] + sums[5]);
+    // The 8-bit target's clamp, inline (a helper's double result is boxed when not inlined).
+    let cr = tex[0] * sums[0] + sums[3], cg = tex[1] * sums[1] + sums[4], cb = tex[2] * sums[2] + sums[5];
+    cr = cr < 0 ? 0 : cr > 1 ? 1 : cr;
+    cg = cg < 0 ? 0 : cg > 1 ? 1 : cg;
+    cb = cb < 0 ? 0 : cb > 1 ? 1 : cb;
     if (alpha >= 1) {
       c[o] = cr; c[o + 1] = cg; c[o + 2] = cb;
     } else {
@@ -146,11 +154,11 @@ export class ObjectShader implements FragmentShader {
     const i0 = r.o0, i1 = r.o1, i2 = r.o2;
     const mapping = d.material.mapping;
     if (mapping === 'uv') {
-      const a = i0 + UV, b = i1 + UV, c = i2 + UV;
-      t.sample(
-        b0 * p[a] + b1 * p[b] + b2 * p[c], b0 * p[a + 1] + b1 * p[b + 1] + b2 * p[c + 1],
-        x0 * p[a] + x1 * p[b] + x2 * p[c], x0 * p[a + 1] + x1 * p[b + 1] + x2 * p[c + 1],
-        y0 * p[a] + y1 * p[b] + y2 * p[c], y0 * p[a + 1] + y1 * p[b + 1] + y2 * p[c + 1], tex);
+      const a = i0 + UV, b = i1 + UV, c = i2 + UV, l = this.lookup;
+      l[0] = b0 * p[a] + b1 * p[b] + b2 * p[c]; l[1] = b0 * p[a + 1] + b1 * p[b + 1] + b2 * p[c + 1];
+      l[2] = x0 * p[a] + x1 * p[b] + x2 * p[c]; l[3] = x0 * p[a + 1] + x1 * p[b + 1] + x2 * p[c + 1];
+      l[4] = y0 * p[a] + y1 * p[b] + y2 * p[c]; l[5] = y0 * p[a + 1] + y1 * p[b + 1] + y2 * p[c + 1];
+      t.sample(l, tex);
       return tex;
     }
     const q = this.q;
@@ -177,9 +185,10 @@ export class ObjectShader implements FragmentShader {
       const sx = 0.5 + (q[0] - cen[0]) * s, sy = 0.5 + (q[1] - cen[1]) * s, sz = 0.5 + (q[2] - cen[2]) * s;
       const part = this.part;
       tex[0] = tex[1] = tex[2] = 0;
-      if (wx > 0) { t.sample(sz, sy, qx2 * s, qx1 * s, qy2 * s, qy1 * s, part); addScaled(tex, part, wx); }
-      if (wy > 0) { t.sample(sx, sz, qx0 * s, qx2 * s, qy0 * s, qy2 * s, part); addScaled(tex, part, wy); }
-      if (wz > 0) { t.sample(sx, sy, qx0 * s, qx1 * s, qy0 * s, qy1 * s, part); addScaled(tex, part, wz); }
+      const l = this.lookup;
+      if (wx > 0) { setLookup(l, sz, sy, qx2 * s, qx1 * s, qy2 * s, qy1 * s); t.sample(l, part); addScaled(tex, part, wx); }
+      if (wy > 0) { setLookup(l, sx, sz, qx0 * s, qx2 * s, qy0 * s, qy2 * s); t.sample(l, part); addScaled(tex, part, wy); }
+      if (wz > 0) { setLookup(l, sx, sy, qx0 * s, qx1 * s, qy0 * s, qy1 * s); t.sample(l, part); addScaled(tex, part, wz); }
       return tex;
     }
     // Cylindrical and spherical: derivatives by one-pixel differences (as dFdx does), with the
@@ -193,15 +202,24 @@ export class ObjectShader implements FragmentShader {
     q[0] += qy0 - qx0; q[1] += qy1 - qx1; q[2] += qy2 - qx2;
     map(uv1, q, bounds);
     const dudy = wrap(uv1[0] - uv[0]), dvdy = uv1[1] - uv[1];
-    t.sample(uv[0], uv[1], dudx, dvdx, dudy, dvdy, tex);
+    setLookup(this.lookup, uv[0], uv[1], dudx, dvdx, dudy, dvdy);
+    t.sample(this.lookup, tex);
     return tex;
   }
 }
 
-const clamp01 = (x: number): number => (x < 0 ? 0 : x > 1 ? 1 : x);
-
 /** A difference of u (period 1) taken the short way round. */
 const wrap = (du: number): number => du - Math.round(du);
+
+function setLookup(l: Float64Array, u: number, v: number, a: number, b: number, c: number, d: number): void {
+  l[0] = u; l[1] = v; l[2] = a; l[3] = b; l[4] = c; l[5] = d;
+}
+
+function setGeometry(
+  g: Float64Array, px: number, py: number, pz: number, nx: number, ny: number, nz: number, vx: number, vy: number, vz: number,
+): void {
+  g[0] = px; g[1] = py; g[2] = pz; g[3] = nx; g[4] = ny; g[5] = nz; g[6] = vx; g[7] = vy; g[8] = vz;
+}
 
 function addScaled(out: Float64Array, v: Float64Array, w: number): void {
   out[0] += w * v[0]; out[1] += w * v[1]; out[2] += w * v[2];

@@ -224,10 +224,18 @@ export class Rasterizer {
     const { depth, mask, depthTest, depthWrite, depthBias, derivatives } = this;
     const width = this.width;
 
-    for (let y = py0; y <= py1; y++) {
-      let e0 = row0, e1 = row1, e2 = row2;
+    const span = px1 - px0;
+    for (let y = py0; y <= py1; y++, row0 += stepY0, row1 += stepY1, row2 += stepY2) {
+      // The row's covered run [k0, k1] (pixels from px0), solved per edge from e + bias + k·step ≥ 0
+      // and widened by one: the exact integer test below still decides every pixel.
+      let k0 = 0, k1 = span;
+      k0 = Math.max(k0, runStart(row0 + bias0, stepX0)); k1 = Math.min(k1, runEnd(row0 + bias0, stepX0, span));
+      k0 = Math.max(k0, runStart(row1 + bias1, stepX1)); k1 = Math.min(k1, runEnd(row1 + bias1, stepX1, span));
+      k0 = Math.max(k0, runStart(row2 + bias2, stepX2)); k1 = Math.min(k1, runEnd(row2 + bias2, stepX2, span));
+      if (k0 > k1) continue;
+      let e0 = row0 + k0 * stepX0, e1 = row1 + k0 * stepX1, e2 = row2 + k0 * stepX2;
       const base = y * width;
-      for (let x = px0; x <= px1; x++) {
+      for (let x = px0 + k0, xEnd = px0 + k1; x <= xEnd; x++) {
         if (e0 + bias0 >= 0 && e1 + bias1 >= 0 && e2 + bias2 >= 0) {
           const pixel = base + x;
           if (mask === null || mask[pixel] !== 0) {
@@ -251,7 +259,6 @@ export class Rasterizer {
         }
         e0 += stepX0; e1 += stepX1; e2 += stepX2;
       }
-      row0 += stepY0; row1 += stepY1; row2 += stepY2;
     }
   }
 }
@@ -287,6 +294,18 @@ function inside(v: Float64Array, o: number, user: boolean): number {
   if (g + y >= 0) bits |= 16;
   if (g - y >= 0) bits |= 32;
   return bits & (ALL_FRUSTUM | (1 << USER));
+}
+
+/** First k ≥ 0 (one early) where e + k·step ≥ 0 can hold; a value past any span when it never can. */
+function runStart(e: number, step: number): number {
+  if (step > 0) return e >= 0 ? 0 : Math.ceil(-e / step) - 1;
+  return e >= 0 ? 0 : 1 << 30;
+}
+
+/** Last k (one late) where e + k·step ≥ 0 can hold, capped at `span`; −1 when it never can. */
+function runEnd(e: number, step: number, span: number): number {
+  if (step < 0) return e < 0 ? -1 : Math.min(span, Math.floor(e / -step) + 1);
+  return e >= 0 || step > 0 ? span : -1;
 }
 
 function copyVertex(src: Float64Array, from: number, dst: Float64Array, to: number, n: number): void {

@@ -80,6 +80,7 @@ export class SoftwareRenderer {
     if (W === 0 || H === 0) return this.output;
     this.prepare(state, scene);
 
+    // 'passes' (four tiles) is not drawn yet: it shows the final image.
     const view = state.view === 'passes' ? 'final' : state.view;
     let source = this.colour;
     const hasGlass = this.setup.hasGlass;
@@ -257,6 +258,16 @@ export class SoftwareRenderer {
   /** Box filter of n×n samples per pixel, rounded to RGBA8. */
   private resolve(source: Float32Array, width: number, height: number, n: number): void {
     const out = this.output, W = width * n, k = 255 / (n * n);
+    if (n === 1) {
+      // Values are in [0, 1]: (x·255 + ½) | 0 is Math.round, without the call.
+      for (let i = 0, o = 0, p = 0; i < width * height; i++, o += 3, p += 4) {
+        out[p] = (source[o] * 255 + 0.5) | 0;
+        out[p + 1] = (source[o + 1] * 255 + 0.5) | 0;
+        out[p + 2] = (source[o + 2] * 255 + 0.5) | 0;
+        out[p + 3] = 255;
+      }
+      return;
+    }
     for (let y = 0; y < height; y++) {
       for (let x = 0; x < width; x++) {
         let r = 0, g = 0, b = 0;
@@ -293,6 +304,10 @@ function setPlane(out: Float64Array, plane: ArrayLike<number>, eye: ArrayLike<nu
 }
 
 function fill(buffer: Float32Array, pixels: number, rgb: readonly number[]): void {
+  if (rgb[0] === rgb[1] && rgb[1] === rgb[2]) {
+    buffer.fill(rgb[0], 0, 3 * pixels);
+    return;
+  }
   for (let i = 0, o = 0; i < pixels; i++, o += 3) {
     buffer[o] = rgb[0]; buffer[o + 1] = rgb[1]; buffer[o + 2] = rgb[2];
   }
