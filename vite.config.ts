@@ -20,11 +20,15 @@ const demoAtRoot: Plugin = {
   },
 };
 
-export default defineConfig(({ mode }) => {
+export default defineConfig(({ mode, command }) => {
   const standalone = mode === 'standalone';
   return {
+    // Built files find their workers and chunks relative to their own URL, wherever they are served.
+    base: command === 'build' ? './' : '/',
     plugins: [demoAtRoot, demoModels()],
     appType: 'mpa',
+    // The software renderer's worker is a module worker (it imports the renderer's chunk).
+    worker: { format: 'es' as const },
     server: { host: '127.0.0.1', port: 5173 },
     build: {
       outDir: 'dist',

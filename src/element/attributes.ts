@@ -14,6 +14,10 @@ export const PROJECTIONS: readonly Projection[] = ['perspective', 'orthographic'
 
 export type Vec3Tuple = [number, number, number];
 
+export const RENDERERS = ['auto', 'webgl', 'software'] as const;
+/** SPEC §11: `auto` = WebGL2 where it is available, else the software renderer. */
+export type RendererChoice = (typeof RENDERERS)[number];
+
 export const CONTROLS_MODES = ['flyby', 'orbit', 'trackball'] as const;
 /** Which input the element listens to (SPEC §10); the bare `controls` attribute means flyby. */
 export type ControlsMode = (typeof CONTROLS_MODES)[number];
@@ -32,6 +36,8 @@ export interface SceneAttributes {
   projection: Projection;
   /** The input mode, or null without the attribute (no input). */
   controls: ControlsMode | null;
+  /** Which renderer draws: WebGL2 where it works else the CPU (auto), or one of them. */
+  renderer: RendererChoice;
   /** The point the camera looks at (overriding camera-rotation) and orbit turns about, or null. */
   cameraTarget: Vec3Tuple | null;
   spin: number;
@@ -247,6 +253,8 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
     },
     format: (v) => v ?? null,
   } satisfies AttributeSpec<'controls'>,
+  keywordSpec('renderer', 'renderer', RENDERERS,
+    'auto (WebGL2 where available, else the CPU), webgl, or software (the CPU, in a worker)'),
   {
     property: 'cameraTarget', attribute: 'camera-target', default: null,
     doc: '"x y z" the camera looks at (overrides camera-rotation); orbit turns about it',

@@ -11,12 +11,14 @@ import { boundsCenter, rotateScene } from '../scene/group-rotation';
 import { applyStyle } from './element-style';
 import { readCanvas } from './canvas-readback';
 import { SharedContext, type ContextClient, type Presenter } from './shared-context';
-import { Renderer, type ReadbackSource } from '../render/renderer';
+import { Renderer, passesFor, type ReadbackSource } from '../render/renderer';
+import { SoftwareHost } from './software-host';
+import type { DecodedImage } from '../reference/image-texture';
 import { ShaderError } from '../render/gl/program';
 import type { FrameReport, FrameState, RenderStats } from '../render/types';
 import type { CameraChangeDetail, CapturePass, ErrorType, GlassPlaneSceneEventMap } from './types';
 import { SceneSource } from './scene-source';
-import { TextureImages } from './texture-images';
+import { TextureImages, decodeImage } from './texture-images';
 import { composeScene } from './compose-scene';
 import type { Scene } from '../scene/scene';
 
@@ -28,6 +30,8 @@ const MESSAGES: Record<ErrorType, string> = {
   'context-lost': 'The graphics context was lost; waiting for it to come back.',
   load: 'The glass scene could not be loaded.',
 };
+/** Largest side of a software frame (the CPU's cost grows with the pixels; 4096 is a 4K canvas's side). */
+const SOFTWARE_MAX_SIZE = 4096;
 /** Start drawing a little before the element scrolls into view. */
 const VIEW_MARGIN = '64px';
 
@@ -75,7 +79,18 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private sceneValue: Scene | null = null;
   private shared: SharedContext | null = null;
   private output: Presenter | null = null;
-  private renderer: Renderer | null = null;
+  private glRenderer: Renderer | null = null;
+  /** The software renderer (renderer="software", or "auto" without WebGL2), once loaded. */
+  private software: SoftwareHost | null = null;
+  /** Counts software starts, so a start overtaken by a change or a disconnection is dropped. */
+  private softwareGeneration = 0;
+  private softwareStarting = false;
+  /** A software frame is drawing; another is wanted when it is back. */
+  private softwareBusy = false;
+  /** Decoded pixels of the scene's image textures, for the software renderer. */
+  private readonly softwareImages = new Map<string, DecodedImage>();
+  /** How software frames reach the canvas: a 2D context, or (after WebGL used it) a bitmap renderer. */
+  private softwareOut: CanvasRenderingContext2D | ImageBitmapRenderingContext | null = null;
   private resizeObserver: ResizeObserver | null = null;
   private intersectionObserver: IntersectionObserver | null = null;
   private reducedMotion: MediaQueryList | null = null;
@@ -185,6 +200,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.pointerControls.detach();
     clearTimeout(this.lookTimer);
     this.disposeRenderer();
+    this.disposeSoftware();
     this.shared?.release(this);
     this.shared = null;
     this.inView = false;
@@ -210,6 +226,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       this.queueCameraChange();
     }
     if (spec.property === 'controls') this.pointerControls.cancel();
+    if (spec.property === 'renderer' && this.isConnected) this.switchRenderer();
     // Resize only: drawing here, mid-way through a script's batch of attribute changes, would
     // show a frame with half of them applied (the next animation frame comes before paint).
     if (spec.property === 'pixelRatio') this.resizeCanvas();
@@ -277,13 +294,19 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
    * state), at the drawing-buffer size, top row first. Null while nothing can be drawn.
    */
   capture(pass?: CapturePass): ImageData | null {
-    if (!this.renderer || this.failed) return null;
+    if ((!this.glRenderer && !this.software) || this.failed) return null;
     if (pass === undefined) return this.frames > 0 ? readCanvas(this.canvas) : null;
     const source: ReadbackSource = CAPTURE_SOURCES[pass as CapturePass] ?? 'final';
     if (!(pass in CAPTURE_SOURCES)) warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
+    if (this.software) {
+      // Drawn now, on this thread, from the last frame's state (capture is synchronous).
+      const state: FrameState = { ...(this.lastState ?? this.frameState(performance.now())), view: source as FrameState['view'] };
+      const pixels = this.software.renderNow(state, this.scene, this.softwareImages) as Uint8ClampedArray<ArrayBuffer>;
+      return new ImageData(pixels, state.width, state.height);
+    }
     try {
       this.shared!.reserve(this.canvas.width, this.canvas.height);
-      const px = this.renderer.read(source, this.lastState ?? this.frameState(performance.now()), this.scene);
+      const px = this.glRenderer!.read(source, this.lastState ?? this.frameState(performance.now()), this.scene);
       return new ImageData(px.data, px.width, px.height);
     } catch (e) {
       this.handleRenderError(e);
@@ -293,8 +316,10 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   /** Frames, passes run and skipped, draw calls, compiled programs and live GL resources. */
   get stats(): RenderStats {
-    const s = this.renderer ? this.renderer.stats : structuredClone(this.totals);
+    const s = this.glRenderer ? this.glRenderer.stats : structuredClone(this.totals);
     s.frames = this.frames;
+    s.renderer = this.glRenderer ? 'webgl' : this.software ? 'software' : null;
+    if (this.software) s.thread = this.software.thread;
     return s;
   }
 
@@ -340,17 +365,21 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   }
 
   private start(): void {
-    if (this.renderer || (this.failed && this.failed !== 'context-lost')) return;
+    if (this.glRenderer || this.software || this.softwareStarting || (this.failed && this.failed !== 'context-lost')) return;
+    const choice = this.values.renderer;
+    if (choice === 'software') return this.startSoftware();
     this.shared ??= SharedContext.acquire(this);
     if (!this.shared) {
+      // auto: no WebGL2 here, so the CPU draws the scene; nothing to report.
+      if (choice === 'auto') return this.startSoftware();
       this.fail('webgl2-unavailable', new Error('WebGL2 is not available in this browser, so this scene cannot be shown.'));
       return;
     }
     if (this.shared.lost || this.shared.gl.isContextLost()) return;
     this.output ??= this.shared.presenterFor(this.canvas);
     try {
-      this.renderer = new Renderer(this.shared.gl, { checks: checksEnabled() });
-      this.images.attach(this.renderer);
+      this.glRenderer = new Renderer(this.shared.gl, { checks: checksEnabled() });
+      this.images.attach(this.glRenderer);
     } catch (e) {
       this.handleRenderError(e);
       return;
@@ -359,12 +388,54 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.requestRender();
   }
 
+  /** The software renderer, loaded as a chunk of its own; `error` only if it cannot start either. */
+  private startSoftware(): void {
+    const generation = ++this.softwareGeneration;
+    this.softwareStarting = true;
+    SoftwareHost.create().then((host) => {
+      this.softwareStarting = false;
+      if (generation !== this.softwareGeneration || !this.isConnected) return host.dispose();
+      this.software = host;
+      this.softwareOut = this.canvas.getContext('2d', { alpha: false }) ?? this.canvas.getContext('bitmaprenderer');
+      this.resizeCanvas();
+      this.requestRender();
+    }, (e: unknown) => {
+      this.softwareStarting = false;
+      if (generation !== this.softwareGeneration) return;
+      const why = e instanceof Error ? e.message : String(e);
+      this.fail('webgl2-unavailable', new Error(`Neither WebGL2 nor the software renderer is available here (${why}), so this scene cannot be shown.`));
+    });
+  }
+
+  private disposeSoftware(): void {
+    this.softwareGeneration++;
+    this.softwareStarting = false;
+    this.softwareBusy = false;
+    this.software?.dispose();
+    this.software = null;
+  }
+
+  /** `renderer` changed: let go of the renderer in use and start the one now asked for. */
+  private switchRenderer(): void {
+    const wantSoftware = this.values.renderer === 'software' || (this.values.renderer === 'auto' && !this.glRenderer && !this.shared);
+    if ((wantSoftware && (this.software || this.softwareStarting)) || (!wantSoftware && this.glRenderer)) return;
+    this.cancelFrame();
+    this.disposeRenderer();
+    this.disposeSoftware();
+    if (this.failed !== 'context-lost') {
+      this.failed = null;
+      this.message.hidden = true;
+      this.canvas.hidden = false;
+    }
+    this.start();
+  }
+
   private disposeRenderer(): void {
-    if (!this.renderer) return;
-    this.totals = this.renderer.stats;
-    this.renderer.dispose();
+    if (!this.glRenderer) return;
+    this.totals = this.glRenderer.stats;
+    this.glRenderer.dispose();
     this.totals.resources = emptyStats().resources;
-    this.renderer = null;
+    this.glRenderer = null;
     this.images.attach(null);
   }
 
@@ -372,7 +443,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   /** Draws only when something changed or moves, the element is in view and the page shown. */
   private scheduleFrame(): void {
-    if (this.rafId !== 0 || !this.renderer || this.failed || !this.inView || document.hidden) return;
+    if (this.rafId !== 0 || (!this.glRenderer && !this.software) || this.failed || !this.inView || document.hidden) return;
     if (!this.dirty && !this.animating()) return;
     this.rafId = requestAnimationFrame(this.onFrame);
   }
@@ -402,7 +473,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   private readonly onFrame = (now: number): void => {
     this.rafId = 0;
-    if (!this.renderer || this.failed) return;
+    if ((!this.glRenderer && !this.software) || this.failed) return;
     this.advanceFlyby();
     // The motion after release, by the frames' own clock (exact for any frame time).
     const dt = this.lastFrameNow ? (now - this.lastFrameNow) / 1000 : 0;
@@ -421,7 +492,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   };
 
   private draw(now: number): void {
-    const renderer = this.renderer!;
+    if (this.software) return this.drawSoftware(now);
+    const renderer = this.glRenderer!;
     this.dirty = false;
     const { width, height } = this.canvas;
     if (this.clientWidth === 0 || this.clientHeight === 0) return; // nothing to show
@@ -437,6 +509,62 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       this.handleRenderError(e);
       return;
     }
+    this.frameDrawn(state, report.time, report.width, report.height, report.drawCalls, report.passes);
+  }
+
+  /**
+   * A software frame: drawn in the worker while the page goes on; one at a time (a change while
+   * it draws is drawn next). The pixels reach the canvas in one piece when the frame is complete.
+   */
+  private drawSoftware(now: number): void {
+    const host = this.software!;
+    if (this.softwareBusy) return; // dirty stays set: drawn when this one is back
+    this.dirty = false;
+    const { width, height } = this.canvas;
+    if (this.clientWidth === 0 || this.clientHeight === 0) return;
+    const state = this.frameState(now);
+    const scene = this.scene;
+    this.syncSoftwareImages(scene);
+    const generation = this.softwareGeneration;
+    this.softwareBusy = true;
+    const frozen: FrameState = { ...state };
+    void host.render(frozen, scene, this.softwareImages).then((pixels) => {
+      if (generation !== this.softwareGeneration) return;
+      this.softwareBusy = false;
+      if (this.canvas.width !== width || this.canvas.height !== height) {
+        this.requestRender(); // resized while it drew: draw again at the new size
+        return;
+      }
+      const image = new ImageData(pixels as Uint8ClampedArray<ArrayBuffer>, width, height);
+      const out = this.softwareOut;
+      if (out && 'putImageData' in out) out.putImageData(image, 0, 0);
+      else if (out) void createImageBitmap(image).then((b) => (out as ImageBitmapRenderingContext).transferFromImageBitmap(b));
+      const glassSkip = state.view === 'final' && !scene.glass ? 'no glass' : undefined;
+      this.frameDrawn(frozen, frozen.time, width, height, 0, passesFor(frozen.view, glassSkip));
+      if (this.dirty) this.scheduleFrame();
+    });
+  }
+
+  /** Decoded pixels for the software renderer of the images the scene names (once per URL). */
+  private syncSoftwareImages(scene: Scene): void {
+    for (const o of scene.objects) {
+      const t = o.material.texture;
+      if (t.kind !== 'image' || this.softwareImages.has(t.url)) continue;
+      const url = t.url;
+      this.softwareImages.set(url, { width: 0, height: 0, data: new Uint8ClampedArray(0) }); // asked for
+      void decodeImage(url).then((bitmap) => {
+        if (!bitmap) return;
+        const c = new OffscreenCanvas(bitmap.width, bitmap.height);
+        const ctx = c.getContext('2d')!;
+        ctx.drawImage(bitmap, 0, 0);
+        this.softwareImages.set(url, ctx.getImageData(0, 0, bitmap.width, bitmap.height));
+        this.requestRender();
+      });
+    }
+  }
+
+  /** After a frame is on the canvas: counts, the last state (for capture), `ready` and `frame`. */
+  private frameDrawn(state: FrameState, time: number, width: number, height: number, drawCalls: number, passes: FrameReport['passes']): void {
     this.frames++;
     if (!this.message.hidden) this.message.hidden = true; // drawn again after a shader failure
     this.reportedShaderError = null;
@@ -449,10 +577,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     // One small frozen object per frame (the event is one anyway), its passes shared frozen
     // records: listeners may keep it, and nothing later changes it. A deep copy per frame
     // (structuredClone) is what it replaces.
-    const detail: FrameReport = Object.freeze({
-      frame: this.frames, time: report.time, width: report.width, height: report.height,
-      drawCalls: report.drawCalls, passes: report.passes,
-    });
+    const detail: FrameReport = Object.freeze({ frame: this.frames, time, width, height, drawCalls, passes });
     // `ready` waits for the models of the children: loaded or failed (SPEC §2).
     if (!this.readyFired && !this.source.loading) {
       this.readyFired = true;
@@ -504,14 +629,14 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     // Resizing clears the canvas: draw now rather than show an empty frame.
     this.cancelFrame();
     this.dirty = true;
-    if (this.renderer && !this.failed && this.inView && !document.hidden) this.onFrame(performance.now());
+    if ((this.glRenderer || this.software) && !this.failed && this.inView && !document.hidden) this.onFrame(performance.now());
   };
 
   /** Drawing buffer = CSS box × pixel ratio, within the GL limits. Returns true if it changed. */
   private resizeCanvas(): boolean {
-    if (!this.shared) return false;
+    if (!this.shared && !this.software) return false;
     const ratio = this.values.pixelRatio === 'auto' ? window.devicePixelRatio || 1 : this.values.pixelRatio;
-    const limit = this.shared.maxSize;
+    const limit = this.shared ? this.shared.maxSize : SOFTWARE_MAX_SIZE;
     const w = Math.max(1, Math.min(limit, Math.round(this.clientWidth * ratio)));
     const h = Math.max(1, Math.min(limit, Math.round(this.clientHeight * ratio)));
     if (w === this.canvas.width && h === this.canvas.height) return false;

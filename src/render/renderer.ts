@@ -77,6 +77,14 @@ const PASSES_BY_VIEW = Object.fromEntries(
 /** The final view with the glass (and so the reflection) skipped, by reason; filled on first use. */
 const GLASS_SKIPPED = new Map<string, PassReports>();
 
+/** The shared frozen pass reports of `view`, with the glass skipped for `glassSkip` in the final view. */
+export function passesFor(view: RenderView, glassSkip?: string): PassReports {
+  if (view !== 'final' || glassSkip === undefined) return PASSES_BY_VIEW[view];
+  let passes = GLASS_SKIPPED.get(glassSkip);
+  if (!passes) GLASS_SKIPPED.set(glassSkip, (passes = passReports({ reflection: glassSkip, glass: glassSkip })));
+  return passes;
+}
+
 function setViewport(out: Viewport, x: number, y: number, width: number, height: number): Viewport {
   out.x = x;
   out.y = y;
@@ -169,12 +177,7 @@ export class Renderer {
     r.width = state.width;
     r.height = state.height;
     r.drawCalls = drawCalls;
-    const glassSkip = state.view === 'final' ? this.glassSkipReason : undefined;
-    let passes = PASSES_BY_VIEW[state.view];
-    if (glassSkip !== undefined) {
-      passes = GLASS_SKIPPED.get(glassSkip) ?? passReports({ reflection: glassSkip, glass: glassSkip });
-      GLASS_SKIPPED.set(glassSkip, passes);
-    }
+    const passes = passesFor(state.view, this.glassSkipReason);
     r.passes = passes;
     for (const p of PASSES) {
       if (passes[p].ran) this.counts.passesRun[p]++;

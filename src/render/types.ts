@@ -85,6 +85,9 @@ export interface RenderStats {
    * can be well below `scene`.
    */
   triangles: { scene: number; reflection: number };
+  /** Which renderer draws (set by the element): WebGL2, or the CPU in a worker or on the main thread. */
+  renderer?: 'webgl' | 'software' | null;
+  thread?: 'worker' | 'main';
   /** Live GL objects owned by this element; all zero after it is removed. */
   resources: ResourceCounts & { total: number };
 }

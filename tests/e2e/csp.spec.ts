@@ -115,7 +115,17 @@ test.describe("under Content-Security-Policy: default-src 'self'", () => {
     for (const line of consoleLog.take('error')) expect(line).toMatch(/Content Security Policy/);
   });
 
-  test('without WebGL2: the message box shows, with no policy violation', async ({ page }) => {
+  test('without WebGL2, renderer="auto": the built software renderer and its worker draw, with no policy violation', async ({ page }) => {
+    await page.addInitScript(withoutWebGL2);
+    await openCspPage(page);
+    const { selector: b } = await mount(page, { time: 1.25 }, SIZE);
+    const stats = await page.evaluate((s) => (document.querySelector(s) as unknown as { stats: { renderer: string; thread: string } }).stats, b);
+    expect(stats).toMatchObject({ renderer: 'software', thread: 'worker' });
+    expect(countUnlike(await capture(page, undefined, b), [26, 26, 26], 3), 'drawn').toBeGreaterThan(5000);
+    expect(await violations(page)).toEqual([]);
+  });
+
+  test('without WebGL2, renderer="webgl": the message box shows, with no policy violation', async ({ page }) => {
     await page.addInitScript(withoutWebGL2);
     await openCspPage(page);
     const errors = await page.evaluate(
@@ -123,6 +133,7 @@ test.describe("under Content-Security-Policy: default-src 'self'", () => {
         new Promise<GlassPlaneSceneErrorDetail[]>((resolve) => {
           const el = document.createElement('glass-plane-scene');
           el.id = 'no-gl';
+          el.setAttribute('renderer', 'webgl');
           el.style.width = '320px';
           el.style.height = '180px';
           const errors: GlassPlaneSceneErrorDetail[] = [];
@@ -193,6 +204,7 @@ test.describe('attribute values are text, never HTML', () => {
     await page.evaluate((payload) => {
       const el = document.createElement('glass-plane-scene');
       el.id = 'no-gl';
+      el.setAttribute('renderer', 'webgl');
       el.setAttribute('alt', payload);
       el.style.width = '320px';
       el.style.height = '180px';

@@ -181,6 +181,7 @@ test('1100 random values over every attribute and property: no exception, warnin
       cameraRotation: (v) => Array.isArray(v) && v.length === 2 && inRange(v[0], -180, 180) && inRange(v[1], -89.9, 89.9),
       fov: (v) => inRange(v, 1, 179),
       controls: (v) => v === null || ['flyby', 'orbit', 'trackball'].includes(v as string),
+      renderer: (v) => ['auto', 'webgl', 'software'].includes(v as string),
       cameraTarget: (v) => v === null || (Array.isArray(v) && v.length === 3 && v.every((x) => inRange(x, -1e7, 1e7))),
       spin: finite,
       time: (v) => v === null || finite(v),

@@ -11,12 +11,13 @@ test.beforeEach(async ({ page }) => {
 
 // The element reports this failure through the `error` event and the message only: it logs
 // nothing to the console (the fixture fails the test on any console error or warning).
-test('shows a readable message, fires error webgl2-unavailable, throws nothing', async ({ page }) => {
+test('renderer="webgl" shows a readable message, fires error webgl2-unavailable, throws nothing', async ({ page }) => {
   const result = await page.evaluate(
     () =>
       new Promise<{ errors: GlassPlaneSceneErrorDetail[]; ready: number; threw: string | null }>((resolve) => {
         const el = document.createElement('glass-plane-scene') as SceneElement;
         el.id = 'no-gl';
+        el.setAttribute('renderer', 'webgl'); // auto would draw with the software renderer (software.spec.ts)
         el.style.width = '320px';
         el.style.height = '180px';
         const errors: GlassPlaneSceneErrorDetail[] = [];

@@ -40,6 +40,7 @@ describe('defaults', () => {
     expect(d.controls).toBeNull();
     expect(d.cameraTarget).toBeNull();
     expect(d.projection).toBe('perspective');
+    expect(d.renderer).toBe('auto');
     expect(d.cameraPosition).toHaveLength(3);
     expect(d.cameraPosition.every(Number.isFinite)).toBe(true);
     expect(d.cameraRotation).toHaveLength(2);
@@ -52,7 +53,7 @@ describe('defaults', () => {
     expect([...names].sort()).toEqual([
       'background', 'camera-position', 'camera-rotation', 'camera-target', 'controls', 'cube-distance', 'debug-view', 'fov',
       'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'projection', 'reflection-format',
-      'reflection-scale', 'samples', 'shading', 'spin', 'tessellation', 'time', 'transparency',
+      'reflection-scale', 'renderer', 'samples', 'shading', 'spin', 'tessellation', 'time', 'transparency',
     ]);
     for (const s of ATTRIBUTES) {
       expect(s.attribute.replace(/-([a-z])/g, (_, c: string) => c.toUpperCase())).toBe(s.property);
@@ -260,6 +261,7 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
           case 'shading': expect(['phong', 'gouraud', 'flat']).toContain(v); break;
           case 'reflectionFormat': expect(['rgba8', 'rgba16f']).toContain(v); break;
           case 'projection': expect(['perspective', 'orthographic']).toContain(v); break;
+          case 'renderer': expect(['auto', 'webgl', 'software']).toContain(v); break;
           case 'samples': expect([0, 2, 4]).toContain(v); break;
           case 'tessellation':
             if (v !== 'auto') expect(Number.isInteger(v) && (v as number) >= 4 && (v as number) <= 512).toBe(true);

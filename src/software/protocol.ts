@@ -1,0 +1,67 @@
+// What the element sends the software renderer's worker each frame: the frame state and the scene,
+// with each mesh's arrays and each image's pixels sent once (the worker keeps them by key), not
+// once per frame. Pure data, no DOM.
+import type { FrameState } from '../render/types';
+import type { Scene } from '../scene/scene';
+import type { MeshData } from '../scene/geometry/mesh-data';
+import type { DecodedImage } from '../reference/image-texture';
+
+export interface SoftwareRequest {
+  id: number;
+  state: FrameState;
+  /** The scene, with `data` of meshes the worker already holds replaced by null. */
+  scene: Scene;
+  /** Meshes new to the worker, by geometry key. */
+  meshes: [string, MeshData][];
+  /** Images new to the worker, by URL. */
+  images: [string, DecodedImage][];
+  /** Samples per pixel along each axis. */
+  samplesPerAxis: number;
+}
+
+export type SoftwareResponse =
+  | { id: number; pixels: Uint8ClampedArray; width: number; height: number }
+  | { id: number; error: string };
+
+/** Remembers what a worker holds, so a mesh or an image crosses once. */
+export class SentResources {
+  private readonly meshes = new Map<string, MeshData>();
+  private readonly images = new Set<string>();
+
+  /** The request's scene and its new meshes and images. */
+  pack(scene: Scene, images: ReadonlyMap<string, DecodedImage>): Pick<SoftwareRequest, 'scene' | 'meshes' | 'images'> {
+    const meshes: [string, MeshData][] = [];
+    let stripped = false;
+    const objects = scene.objects.map((o) => {
+      const g = o.geometry;
+      if (g.kind !== 'mesh') return o;
+      if (this.meshes.get(g.key) !== g.data) {
+        this.meshes.set(g.key, g.data);
+        meshes.push([g.key, g.data]);
+      }
+      stripped = true;
+      return { ...o, geometry: { kind: 'mesh' as const, key: g.key, data: null as unknown as MeshData } };
+    });
+    const newImages: [string, DecodedImage][] = [];
+    for (const [url, image] of images) {
+      if (this.images.has(url)) continue;
+      this.images.add(url);
+      newImages.push([url, image]);
+    }
+    return { scene: stripped ? { ...scene, objects } : scene, meshes, images: newImages };
+  }
+}
+
+/** The worker's side: the scene with every mesh's arrays put back from `store`. */
+export function unpackScene(scene: Scene, store: ReadonlyMap<string, MeshData>): Scene {
+  if (!scene.objects.some((o) => o.geometry.kind === 'mesh')) return scene;
+  return {
+    ...scene,
+    objects: scene.objects.map((o) => {
+      const g = o.geometry;
+      if (g.kind !== 'mesh' || g.data) return o;
+      const data = store.get(g.key);
+      return data ? { ...o, geometry: { ...g, data } } : o;
+    }),
+  };
+}

@@ -1,0 +1,28 @@
+// The software renderer's worker (SPEC §11): draws each requested frame off the main thread and
+// sends the pixels back (transferred, not copied). Meshes and images arrive once and are kept.
+/// <reference lib="webworker" />
+import { SoftwareRenderer } from './software-renderer';
+import { unpackScene, type SoftwareRequest, type SoftwareResponse } from './protocol';
+import type { MeshData } from '../scene/geometry/mesh-data';
+import type { DecodedImage } from '../reference/image-texture';
+
+const renderer = new SoftwareRenderer();
+const meshes = new Map<string, MeshData>();
+const images = new Map<string, DecodedImage>();
+const scope = self as unknown as DedicatedWorkerGlobalScope;
+
+scope.onmessage = (e: MessageEvent<SoftwareRequest>) => {
+  const r = e.data;
+  for (const [key, data] of r.meshes) meshes.set(key, data);
+  for (const [url, image] of r.images) images.set(url, image);
+  let response: SoftwareResponse;
+  try {
+    renderer.samplesPerAxis = r.samplesPerAxis;
+    const pixels = renderer.render(r.state, unpackScene(r.scene, meshes), images).slice();
+    response = { id: r.id, pixels, width: r.state.width, height: r.state.height };
+    scope.postMessage(response, [pixels.buffer]);
+  } catch (err) {
+    response = { id: r.id, error: err instanceof Error ? err.message : String(err) };
+    scope.postMessage(response);
+  }
+};

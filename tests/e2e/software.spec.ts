@@ -1,0 +1,104 @@
+// The software renderer in the element (issue 11 §1–2): renderer="software" draws in a worker,
+// falls back to the main thread where no worker may start (CSP worker-src 'none'), and
+// renderer="auto" draws with it where WebGL2 is missing, firing no error. Pixels against the
+// float64 reference.
+import fs from 'node:fs';
+import path from 'node:path';
+import { test, expect, mount, openPage, capture, setAttributes, type SceneElement } from './fixtures';
+import { withoutWebGL2 } from './helpers/no-webgl2';
+import { compareImages as comparePixels } from './helpers/golden';
+import { renderReference, compareImages } from '../../src/reference';
+import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION } from '../../src/element/attributes';
+import type { FrameState } from '../../src/render/types';
+
+const SIZE = { width: 320, height: 180 };
+const BOUND_DB = 40;
+
+function referenceOfDefault(time: number) {
+  const state: FrameState = {
+    width: SIZE.width, height: SIZE.height, time, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
+    fov: 60, cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
+    view: 'final', reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
+  };
+  return renderReference(state, { samplesPerAxis: 4 });
+}
+
+const statsOf = (page: import('@playwright/test').Page, s: string) =>
+  page.evaluate((s) => { const st = (document.querySelector(s) as SceneElement).stats; return { renderer: st.renderer, thread: st.thread, frames: st.frames }; }, s);
+
+test('renderer="software": the default scene drawn in a worker matches the reference; frame events say which passes ran', async ({ page }) => {
+  await openPage(page);
+  const { selector, ready } = await mount(page, { time: 1.25, renderer: 'software' }, SIZE);
+  expect(ready.passes.reflection.ran && ready.passes.glass.ran).toBe(true);
+  expect(await statsOf(page, selector)).toMatchObject({ renderer: 'software', thread: 'worker' });
+  const image = await capture(page, undefined, selector);
+  const cmp = compareImages(referenceOfDefault(1.25), image.data);
+  const line = `software (worker), default scene 320×180: PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}, glass ${cmp.psnr.glass.toFixed(1)}, edges ${cmp.psnr.edges.toFixed(1)})`;
+  console.log(line);
+  expect(cmp.psnr.all, line).toBeGreaterThanOrEqual(BOUND_DB);
+  // A pass, drawn on demand on the main thread, is the same renderer's.
+  const reflection = await capture(page, 'reflection', selector);
+  expect(reflection.width).toBe(SIZE.width);
+  // An attribute change draws again.
+  const before = image;
+  await setAttributes(page, selector, { transparency: 0.9 });
+  expect(comparePixels(before, await capture(page, undefined, selector)).differing).toBeGreaterThan(1000);
+});
+
+test('switching renderer at run time: software → webgl → software, each drawing the same scene within 40 dB of the other', async ({ page }) => {
+  await openPage(page);
+  const { selector } = await mount(page, { time: 1.25, renderer: 'software' }, SIZE);
+  const soft = await capture(page, undefined, selector);
+  await setAttributes(page, selector, { renderer: 'webgl' });
+  expect((await statsOf(page, selector)).renderer).toBe('webgl');
+  const gl = await capture(page, undefined, selector);
+  const ref = referenceOfDefault(1.25);
+  const a = compareImages(ref, soft.data).psnr.all, b = compareImages(ref, gl.data).psnr.all;
+  console.log(`default scene 320×180 against the reference: software ${a.toFixed(1)} dB, webgl ${b.toFixed(1)} dB`);
+  expect(a).toBeGreaterThanOrEqual(BOUND_DB);
+  expect(b).toBeGreaterThanOrEqual(BOUND_DB);
+  await setAttributes(page, selector, { renderer: 'software' });
+  expect((await statsOf(page, selector)).renderer).toBe('software');
+  expect(comparePixels(soft, await capture(page, undefined, selector)).differing, 'software again after webgl').toBe(0);
+});
+
+test.describe('without WebGL2', () => {
+  test.beforeEach(async ({ page }) => {
+    await page.addInitScript(withoutWebGL2);
+    await openPage(page);
+  });
+
+  test('renderer="auto" (the default) draws the default scene with the software renderer and fires no error', async ({ page }) => {
+    const errors: string[] = [];
+    await page.exposeFunction('__onError', (t: string) => errors.push(t));
+    await page.evaluate(() => document.addEventListener('error', (e) => (window as unknown as { __onError(t: string): void }).__onError((e as unknown as CustomEvent).detail?.type), true));
+    const { selector } = await mount(page, { time: 1.25 }, SIZE);
+    expect(await statsOf(page, selector)).toMatchObject({ renderer: 'software' });
+    const cmp = compareImages(referenceOfDefault(1.25), (await capture(page, undefined, selector)).data);
+    console.log(`auto without WebGL2, default scene 320×180: PSNR ${cmp.psnr.all.toFixed(1)} dB`);
+    expect(cmp.psnr.all).toBeGreaterThanOrEqual(BOUND_DB);
+    await expect(page.locator(`${selector} [part=message]`)).toBeHidden();
+    expect(errors).toEqual([]);
+  });
+});
+
+test('where a worker may not start (CSP worker-src \'none\') the software renderer draws on the main thread', async ({ page, consoleLog }) => {
+  const html = fs.readFileSync(path.resolve('tests/e2e/pages/element.html'), 'utf8');
+  await page.route('**/tests/e2e/pages/element.html', (route) => route.fulfill({
+    status: 200, contentType: 'text/html',
+    headers: { 'Content-Security-Policy': "worker-src 'none'", 'Cache-Control': 'no-store' },
+    body: html,
+  }));
+  await openPage(page);
+  const { selector } = await mount(page, { time: 1.25, renderer: 'software' }, SIZE);
+  await expect.poll(async () => (await statsOf(page, selector)).thread).toBe('main');
+  await page.evaluate((s) => (document.querySelector(s) as SceneElement).requestRender(), selector);
+  await page.waitForTimeout(300);
+  const cmp = compareImages(referenceOfDefault(1.25), (await capture(page, undefined, selector)).data);
+  console.log(`software on the main thread (CSP), default scene: PSNR ${cmp.psnr.all.toFixed(1)} dB`);
+  expect(cmp.psnr.all).toBeGreaterThanOrEqual(BOUND_DB);
+  // The browser reports the refused worker itself; the element adds nothing.
+  const errors = consoleLog.take('error');
+  expect(errors.length, 'the refusal is logged').toBeGreaterThan(0);
+  expect(errors.every((e) => /worker|Content Security Policy/i.test(e)), errors.join('\n')).toBe(true);
+});
