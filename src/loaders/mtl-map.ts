@@ -1,5 +1,6 @@
 // A texture statement of an MTL file (`map_Kd -s 2 2 1 -clamp on dir\my tex.png`): options
 // stripped with their own argument counts, the rest of the line the path.
+import { isNumberToken } from './number-token';
 
 export interface MtlTexture {
   /** Relative to the MTL file; `\` read as `/`, spaces kept. */
@@ -17,7 +18,6 @@ const FIXED_ARGS: Record<string, number> = {
   '-type': 1,
 };
 const VECTOR_ARGS = new Set(['-o', '-s', '-t']);
-const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
 
 export function readMapStatement(rest: string, warn: (message: string) => void): MtlTexture | null {
   const map: MtlTexture = { path: '' };
@@ -32,7 +32,7 @@ export function readMapStatement(rest: string, warn: (message: string) => void):
     const t = token();
     if (t === null) break;
     const option = t.text.toLowerCase();
-    if (!option.startsWith('-') || NUMBER.test(option)) {
+    if (!option.startsWith('-') || isNumberToken(option)) {
       map.path = rest.slice(t.start).trim().replace(/\\/g, '/');
       break;
     }
@@ -41,7 +41,7 @@ export function readMapStatement(rest: string, warn: (message: string) => void):
       const values: number[] = [];
       for (let k = 0; k < 3; k++) {
         const v = token();
-        if (v === null || !NUMBER.test(v.text)) break;
+        if (v === null || !isNumberToken(v.text)) break;
         values.push(Number(v.text));
         at = v.end;
       }

@@ -1,6 +1,7 @@
 // The MTL loader (SPEC §9): material values and texture paths by material name. Pure, like
 // the OBJ loader; a value the file does not give is left out, so attributes and defaults
 // can take precedence over what is missing.
+import { isNumberToken } from './number-token';
 import { decodeText, type Bytes } from './decode-text';
 import { LoadError, type LoadWarning } from './load-error';
 import { sniffModel } from './sniff';
@@ -39,7 +40,6 @@ const KNOWN_UNUSED = new Set(['ke', 'tf', 'pr', 'pm', 'ps', 'pc', 'pcr', 'aniso'
   'map_ns', 'map_d', 'map_bump', 'bump', 'disp', 'decal', 'refl', 'norm', 'map_pr', 'map_pm', 'map_ps', 'map_ke',
   'map_tr', 'map_refl', 'map_aat']);
 
-const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
 
 export function parseMtl(text: string, options: { url?: string } = {}): MtlResult {
   const url = options.url ?? '';
@@ -71,7 +71,7 @@ export function parseMtl(text: string, options: { url?: string } = {}): MtlResul
     const m: MtlMaterial = current;
     const args = rest === '' ? [] : rest.split(/\s+/);
     const numbers = (min: number, max: number): number[] | null => {
-      if (args.length < min || args.length > max || !args.every((a) => NUMBER.test(a))) {
+      if (args.length < min || args.length > max || !args.every((a) => isNumberToken(a))) {
         warnings.add(line, `${shown(keyword)} needs ${min === max ? min : `${min} to ${max}`} numbers, got ${shown(rest)}; ignored`);
         return null;
       }
