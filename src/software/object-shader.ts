@@ -34,9 +34,38 @@ export interface ObjectDraw {
   lights: Lights;
 }
 
+/**
+ * Phase times of frames in ms, added to by SoftwareRenderer.render when its `timing` is set (the
+ * bench's split of a frame; per draw, never per pixel, so the cost is nil when it is unset).
+ */
+export interface SoftwareTiming {
+  /** The vertex stage: model, view and projection transforms (and per-vertex lighting for gouraud/flat). */
+  vertex: number;
+  /** The objects' triangles: clipping, setup, coverage, depth test and the fragments. */
+  triangles: number;
+  /** The glass's mask and composite (clipping to shading, as one). */
+  glass: number;
+  /** The whole of render(). */
+  total: number;
+  /** Objects' fragments write a constant colour instead of being shaded: `triangles` is then raster alone. */
+  constantFragments: boolean;
+}
+
+/** The fragment shader of the timing run that leaves shading out (SoftwareTiming.constantFragments). */
+class ConstantShader implements FragmentShader {
+  colour: Float32Array = new Float32Array(0);
+  fragment(pixel: number): void {
+    const c = this.colour, o = 3 * pixel;
+    c[o] = 0.5; c[o + 1] = 0.5; c[o + 2] = 0.5;
+  }
+}
+
 export class ObjectShader implements FragmentShader {
   /** RGB per pixel, 0..1, written by the fragments. */
   colour: Float32Array = new Float32Array(0);
+  /** Set by the bench only: phase times are added here (see SoftwareTiming). */
+  timing: SoftwareTiming | null = null;
+  private readonly constant = new ConstantShader();
   private vertices = new Float64Array(0);
   private draw!: ObjectDraw;
   private readonly sums = new Float64Array(6);
@@ -54,11 +83,25 @@ export class ObjectShader implements FragmentShader {
     this.draw = d;
     const count = d.mesh.positions.length / 3;
     if (this.vertices.length < count * OBJECT_STRIDE) this.vertices = new Float64Array(count * OBJECT_STRIDE);
+    const timing = this.timing;
+    const t0 = timing ? performance.now() : 0;
     this.vertexStage(d, count);
     r.stride = OBJECT_STRIDE;
     r.userClip = d.clipPlane !== null;
     r.derivatives = true;
-    r.drawTriangles(this.vertices, d.mesh.indices, d.mesh.indices.length, this);
+    if (!timing) {
+      r.drawTriangles(this.vertices, d.mesh.indices, d.mesh.indices.length, this);
+      return;
+    }
+    const t1 = performance.now();
+    let shader: FragmentShader = this;
+    if (timing.constantFragments) {
+      this.constant.colour = this.colour;
+      shader = this.constant;
+    }
+    r.drawTriangles(this.vertices, d.mesh.indices, d.mesh.indices.length, shader);
+    timing.vertex += t1 - t0;
+    timing.triangles += performance.now() - t1;
   }
 
   private vertexStage(d: ObjectDraw, count: number): void {

@@ -12,7 +12,7 @@ import { GlassShader, GLASS_INDICES } from './glass-shader';
 import { Lights } from './lighting';
 import { isTwoSided, SoftwareMeshes } from './meshes';
 import { imageMipTexture, proceduralMipTexture, type MipTexture } from './mip-texture';
-import { ObjectShader, type ObjectDraw } from './object-shader';
+import { ObjectShader, type ObjectDraw, type SoftwareTiming } from './object-shader';
 import { Rasterizer } from './raster';
 
 export interface SoftwareRendererOptions {
@@ -31,6 +31,8 @@ const BLACK = [0, 0, 0] as const;
 
 export class SoftwareRenderer {
   samplesPerAxis: number;
+  /** The bench's split of a frame: when set, render() adds its phase times (ms) here. */
+  timing: SoftwareTiming | null = null;
   private readonly setup = new FrameSetup();
   private readonly meshes = new SoftwareMeshes();
   private readonly main = new Rasterizer();
@@ -72,6 +74,18 @@ export class SoftwareRenderer {
    * material whose image is missing draws with the procedural texture.
    */
   render(state: FrameState, scene?: Scene, images?: ReadonlyMap<string, DecodedImage>): Uint8ClampedArray {
+    const timing = this.timing;
+    this.objectShader.timing = timing;
+    if (!timing) return this.frame(state, scene, images);
+    const t0 = performance.now();
+    try {
+      return this.frame(state, scene, images);
+    } finally {
+      timing.total += performance.now() - t0;
+    }
+  }
+
+  private frame(state: FrameState, scene?: Scene, images?: ReadonlyMap<string, DecodedImage>): Uint8ClampedArray {
     scene ??= this.defaultSceneFor(state);
     const n = Math.max(1, Math.min(8, Math.floor(this.samplesPerAxis)));
     const width = Math.max(0, Math.floor(state.width)), height = Math.max(0, Math.floor(state.height));
@@ -203,7 +217,10 @@ export class SoftwareRenderer {
     g.mode = mode;
     g.setup(s.glass, s.eye, s.viewProjection);
     this.main.mask = null;
+    const timing = this.timing;
+    const t0 = timing ? performance.now() : 0;
     g.draw(this.main, GLASS_INDICES);
+    if (timing) timing.glass += performance.now() - t0;
   }
 
   private drawObjects(
