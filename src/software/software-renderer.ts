@@ -220,7 +220,7 @@ export class SoftwareRenderer {
     const count = order ? order.length : objects.length;
     r.depthTest = true;
     r.depthWrite = selection === 'opaque';
-    r.frontCCW = !mirrored; // the mirror flips winding
+    r.frontCCW = !mirrored !== s.mirrorsWinding; // the mirror flips winding; so may a course camera
     for (let k = 0; k < count; k++) {
       const i = order ? order[k] : k;
       const o: SceneObject = objects[i];
