@@ -2,7 +2,6 @@
 // `src`. Fires `progress`, `load` and `error` (bubbling, composed); never throws. A changed or
 // removed `src` aborts the old load, whose result is never shown.
 import { normalizeObj } from '../../loaders/obj-normalize';
-import { bezierObj } from '../../loaders/course/byu-model';
 import type { ObjResult } from '../../loaders/obj';
 import type { SceneObject, Transform } from '../../scene/scene';
 import { builtinShape } from './builtin-shapes';
@@ -30,7 +29,7 @@ function partsOf(model: LoadedModel, normalize: boolean, resolution: number | nu
   const key = `${normalize ? '#normalized' : ''}${grid === null ? '' : `#E${grid}`}`;
   let parts = entry.get(key);
   if (!parts) {
-    let obj: ObjResult = grid === null ? model.obj : bezierObj(model.bezier!, grid);
+    let obj: ObjResult = grid === null || !model.bezierAt ? model.obj : model.bezierAt(grid);
     if (normalize) obj = normalizeObj(obj);
     entry.set(key, (parts = meshParts(obj, `${model.url}${key}`)));
   }

@@ -7,13 +7,15 @@ import type { ObjResult } from '../../loaders/obj';
 import { fetchBytes, type Progress } from './model-fetch';
 import { parseModelBytes } from './model-parse';
 import type { MtlValues } from './object-material';
-import type { ByuBezierInfo } from '../../loaders/course/byu-model';
+import { bezierObj, type ByuBezierInfo } from '../../loaders/course/byu-model';
 
 export interface LoadedModel {
   url: string;
   obj: ObjResult;
   /** A Bézier `.byu` (SPEC §11): re-evaluated at the object's `resolution` when it sets one. */
   bezier: ByuBezierInfo | null;
+  /** The Bézier patch on an E×E grid (here, so that the evaluator stays in this lazy chunk). */
+  bezierAt: ((resolution: number) => ObjResult) | null;
   /** A course `.byu`: no texture unless the object's `texture` sets one (SPEC §11). */
   byu: boolean;
   /** By material name; the first MTL file that defines a name gives it. */
@@ -53,5 +55,6 @@ export async function loadModel(url: string, signal: AbortSignal, onProgress: (p
       warnings.push(`glass-plane-scene: ${mtlUrl}: material library not loaded (${why}); using attributes and defaults`);
     }
   }
-  return { url, obj, bezier, byu, materials, warnings };
+  const bezierAt = bezier ? (resolution: number) => bezierObj(bezier, resolution) : null;
+  return { url, obj, bezier, bezierAt, byu, materials, warnings };
 }
