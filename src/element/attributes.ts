@@ -40,6 +40,8 @@ export interface SceneAttributes {
   renderer: RendererChoice;
   /** The point the camera looks at (overriding camera-rotation) and orbit turns about, or null. */
   cameraTarget: Vec3Tuple | null;
+  /** URL of a course camera file (SPEC §11); while its camera is in force it is the view. */
+  cameraSrc: string | null;
   spin: number;
   /** Fixed scene clock in seconds, or null for the live clock. */
   time: number | null;
@@ -267,6 +269,12 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
     },
     format: (v) => (v ? v.join(' ') : null),
   } satisfies AttributeSpec<'cameraTarget'>,
+  {
+    property: 'cameraSrc', attribute: 'camera-src', default: null,
+    doc: "URL of a course camera .cfg (C, N, V, d hx hy); while it is in force it is the view (camera-position, -rotation, -target, fov, projection and camera controls wait)",
+    parse: (raw) => ({ value: raw === null || raw.trim() === '' ? null : raw.trim() }),
+    format: (v) => v,
+  } satisfies AttributeSpec<'cameraSrc'>,
   finiteSpec('spin', 'spin', 0.8, "the cube's spin about its Y axis, rad/s; 0 stops it"),
   {
     property: 'time', attribute: 'time', default: null,

@@ -20,6 +20,7 @@ import type { CameraChangeDetail, CapturePass, ErrorType, GlassPlaneSceneEventMa
 import { SceneSource } from './scene-source';
 import { TextureImages, decodeImage } from './texture-images';
 import { composeScene } from './compose-scene';
+import { CameraSource } from './camera-source';
 import type { Scene } from '../scene/scene';
 
 const CAPTURE_SOURCES: Record<CapturePass, ReadbackSource> = { reflection: 'reflection', scene: 'scene', final: 'final' };
@@ -75,6 +76,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private readonly source = new SceneSource(this, () => this.sceneChanged());
   /** Image textures the scene names, decoded once per URL per page, given to the renderer. */
   private readonly images = new TextureImages(() => this.requestRender());
+  /** `camera-src`: the course camera, when one is in force (SPEC §11). */
+  private readonly cameraSource = new CameraSource(this, () => this.requestRender());
   /** The scene value, built on demand and kept until an attribute or a child changes. */
   private sceneValue: Scene | null = null;
   private shared: SharedContext | null = null;
@@ -184,6 +187,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
     this.reducedMotion?.addEventListener('change', this.onMotionPreference);
     this.source.connect();
+    this.cameraSource.set(this.values.cameraSrc);
     this.start();
   }
 
@@ -196,6 +200,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.reducedMotion?.removeEventListener('change', this.onMotionPreference);
     this.reducedMotion = null;
     this.source.disconnect();
+    this.cameraSource.stop();
     this.input.detach();
     this.pointerControls.detach();
     clearTimeout(this.lookTimer);
@@ -227,6 +232,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     }
     if (spec.property === 'controls') this.pointerControls.cancel();
     if (spec.property === 'renderer' && this.isConnected) this.switchRenderer();
+    if (spec.property === 'cameraSrc') this.cameraSource.set(this.values.cameraSrc);
     // Resize only: drawing here, mid-way through a script's batch of attribute changes, would
     // show a frame with half of them applied (the next animation frame comes before paint).
     if (spec.property === 'pixelRatio') this.resizeCanvas();
@@ -579,7 +585,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     // (structuredClone) is what it replaces.
     const detail: FrameReport = Object.freeze({ frame: this.frames, time, width, height, drawCalls, passes });
     // `ready` waits for the models of the children: loaded or failed (SPEC §2).
-    if (!this.readyFired && !this.source.loading) {
+    if (!this.readyFired && !this.source.loading && !this.cameraSource.loading) {
       this.readyFired = true;
       this.dispatchEvent(new CustomEvent('ready', { detail }));
     }
@@ -619,7 +625,22 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     s.reflectionFormat = v.reflectionFormat;
     s.projection = v.projection;
     s.target = v.cameraTarget; // the orthographic size is taken there (else at the glass centre)
+    this.applyCourseCamera(s);
     return s;
+  }
+
+  /**
+   * `camera-src` (SPEC §11): while a course camera is in force it is the view. cameraPosition
+   * and fov follow it, for the level-of-detail choices that read them.
+   */
+  private applyCourseCamera(s: FrameState): void {
+    const cam = this.cameraSource.camera;
+    s.courseCamera = cam;
+    if (!cam) return;
+    s.cameraPosition = cam.c;
+    s.fov = CameraSource.fov(cam);
+    s.projection = 'perspective';
+    this.cameraSource.checkLooksAway(this.scene, s.time);
   }
 
   // ---- observers ---------------------------------------------------------------------------

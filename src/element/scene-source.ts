@@ -7,6 +7,7 @@ import { CHILD_CHANGE } from './children/child-element';
 import { LIGHT_TAG, type GlassLight } from './children/glass-light';
 import { OBJECT_TAG, type GlassObject } from './children/glass-object';
 import { warn } from './warnings';
+import type { MtlValues } from './children/object-material';
 
 export class SceneSource {
   private observer: MutationObserver | null = null;
@@ -30,9 +31,12 @@ export class SceneSource {
     this.host.removeEventListener(CHILD_CHANGE, this.onChildChange);
   }
 
-  /** True while a direct <glass-object> child is fetching or parsing its model. */
+  /** True while a direct <glass-object> or <glass-light> child is fetching or parsing its file. */
   get loading(): boolean {
-    for (const child of this.host.children) if (child.localName === OBJECT_TAG && (child as GlassObject).loading === true) return true;
+    for (const child of this.host.children) {
+      const name = child.localName;
+      if ((name === OBJECT_TAG || name === LIGHT_TAG) && (child as GlassObject | GlassLight).loading === true) return true;
+    }
     return false;
   }
 
@@ -45,6 +49,13 @@ export class SceneSource {
     let objects: SceneObject[] | null = null;
     let lights: Light[] | null = null;
     let extra = 0;
+    // The material of the first lighting file in document order that has loaded (SPEC §11).
+    let fileMaterial: MtlValues | null = null;
+    for (const child of this.host.children) {
+      if (child.localName !== LIGHT_TAG || typeof (child as Partial<GlassLight>).toMaterial !== 'function') continue;
+      fileMaterial = safely(() => (child as GlassLight).toMaterial(), null);
+      if (fileMaterial) break;
+    }
     for (const child of this.host.children) {
       const name = child.localName;
       if (name !== OBJECT_TAG && name !== LIGHT_TAG) continue;
@@ -55,12 +66,14 @@ export class SceneSource {
         continue;
       }
       if (name === OBJECT_TAG) {
-        (objects ??= []).push(...safely(() => object.toSceneObjects!(), []));
+        (objects ??= []).push(...safely(() => object.toSceneObjects!(fileMaterial), []));
       } else if ((lights ??= []).length < MAX_LIGHTS) {
         const l = safely(() => light.toLight!(), null);
         if (l) lights.push(l);
       } else extra++;
     }
+    // Lights whose file failed or still loads add none: with none left, the default light.
+    if (lights && lights.length === 0) lights = null;
     if (extra > 0 && !this.warnedLights) {
       this.warnedLights = true;
       warn(`at most ${MAX_LIGHTS} <glass-light> children are used; ${extra} more ignored`);

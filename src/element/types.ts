@@ -10,6 +10,9 @@ export type ErrorType = 'webgl2-unavailable' | 'context-lost' | 'shader' | 'load
 export interface GlassPlaneSceneErrorDetail {
   type: ErrorType;
   message: string;
+  /** A `camera-src` that failed (type 'load'): its URL, and the line of a parse error. */
+  url?: string;
+  line?: number;
 }
 
 export interface CameraChangeDetail {

@@ -1,24 +1,28 @@
-// The OBJ worker's work as a plain function (testable without a worker): bytes in, result
-// out, with the list of buffers to transfer instead of copy.
+// The model worker's work as a plain function (testable without a worker): bytes in, result
+// out, with the list of buffers to transfer instead of copy. OBJ, or a course `.byu`.
 import { LoadError, type LoadErrorDetail } from './load-error';
 import { parseObjBytes, type ObjResult } from './obj';
+import { parseByuModel, type ByuBezierInfo } from './course/byu-model';
 
 export interface ObjJobRequest {
   id: number;
   url: string;
   bytes: ArrayBuffer;
+  /** Absent: OBJ. */
+  format?: 'obj' | 'byu';
 }
 
 export type ObjJobResponse =
-  | { id: number; ok: true; result: ObjResult }
+  | { id: number; ok: true; result: ObjResult; bezier?: ByuBezierInfo | null }
   | { id: number; ok: false; error: LoadErrorDetail };
 
 export function runObjJob(request: ObjJobRequest): { response: ObjJobResponse; transfer: ArrayBuffer[] } {
   try {
-    const result = parseObjBytes(request.bytes, { url: request.url });
+    const byu = request.format === 'byu' ? parseByuModel(request.bytes, request.url) : null;
+    const result = byu ? byu.obj : parseObjBytes(request.bytes, { url: request.url });
     const arrays = [result.positions, result.normals, result.uvs, result.colors, result.indices];
     const transfer = arrays.flatMap((a) => (a ? [a.buffer as ArrayBuffer] : []));
-    return { response: { id: request.id, ok: true, result }, transfer };
+    return { response: { id: request.id, ok: true, result, bezier: byu?.bezier ?? null }, transfer };
   } catch (e) {
     const error: LoadErrorDetail = e instanceof LoadError ? e.detail
       : { type: 'load', url: request.url, message: e instanceof Error ? e.message : String(e) };

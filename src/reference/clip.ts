@@ -4,10 +4,19 @@ import { CAMERA } from '../scene/default-scene';
 import type { Ray } from './ray';
 import type { SurfaceHit } from './surface-hit';
 
-export const { near: NEAR, far: FAR } = CAMERA;
+/**
+ * The view depths kept: SPEC §3's near and far, or a course camera's (SPEC §11, from the
+ * scene's geometry). Set by the sample tracer before it traces (one image at a time).
+ */
+export const clipRange = { near: CAMERA.near as number, far: CAMERA.far as number };
+
+export function setClipRange(near: number, far: number): void {
+  clipRange.near = near;
+  clipRange.far = far;
+}
 
 export function visible(t: number): boolean {
-  return t >= NEAR && t <= FAR;
+  return t >= clipRange.near && t <= clipRange.far;
 }
 
 /**
@@ -24,8 +33,8 @@ export function kept(hit: SurfaceHit, tMin: number, clipSide: number, plane: Pla
  * Returns false when the interval is empty.
  */
 export function keptInterval(ray: Ray, tMin: number, clipSide: number, plane: Plane | null, out: Float64Array): boolean {
-  let lo = Math.max(tMin, NEAR);
-  let hi: number = FAR;
+  let lo = Math.max(tMin, clipRange.near);
+  let hi: number = clipRange.far;
   if (clipSide !== 0) {
     const o = ray.origin, d = ray.direction;
     const s0 = clipSide * signedDistance(plane!, o);

@@ -2,7 +2,9 @@
 import { viewerSide } from '../math/camera';
 import { reflectPoint, type Plane } from '../math/mirror';
 import type { Scene } from '../scene/scene';
-import { visible } from './clip';
+import { setClipRange, visible } from './clip';
+import { courseSceneRange } from '../scene/course-depth';
+import { CAMERA } from '../scene/default-scene';
 import type { DecodedImage } from './image-texture';
 import { ViewCamera } from './view-camera';
 import { Ray } from './ray';
@@ -72,7 +74,10 @@ export class SampleTracer {
     scene: Scene, private readonly view: ViewState, filter: TextureFilter,
     images?: ReadonlyMap<string, DecodedImage>,
   ) {
-    this.camera = new ViewCamera(view, scene.glass?.center ?? null);
+    // A course camera's near and far come from the scene (SPEC §11), as in the frame setup.
+    const range = view.courseCamera ? courseSceneRange(view.courseCamera, scene, view.time) : null;
+    setClipRange(range?.near ?? CAMERA.near, range?.far ?? CAMERA.far);
+    this.camera = new ViewCamera(view, scene.glass?.center ?? null, range);
     this.scene = new RayScene(scene, view.time);
     this.codes = this.scene.codes;
     this.lights = scene.lights.map(prepareLight);

@@ -32,6 +32,8 @@ export class SurfaceTexture {
   private readonly gu = new Float64Array(3);
   private readonly gv = new Float64Array(3);
   private readonly part = new Float64Array(3);
+  /** A plain material's texture (tex = 1). */
+  private white: ChannelTexture | null = null;
 
   constructor(private readonly filter: TextureFilter, private readonly decoded: ReadonlyMap<string, DecodedImage> = new Map()) {
     const sampler = new TextureSampler();
@@ -41,6 +43,7 @@ export class SurfaceTexture {
   /** An image texture by URL, decoded once; the procedural texture when it is missing or malformed. */
   textureOf(material: Material): ChannelTexture {
     const source = material.texture;
+    if (source.kind === 'none') return (this.white ??= imageTexture({ width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) })!);
     if (source.kind !== 'image') return this.procedural;
     let tex = this.images.get(source.url);
     if (tex === undefined) {

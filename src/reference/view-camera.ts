@@ -6,6 +6,7 @@ import type { ReadonlyVec3 } from 'gl-matrix';
 import { CAMERA } from '../scene/default-scene';
 import type { Ray } from './ray';
 import type { ViewState } from './reference-state';
+import type { CourseDepthRange } from '../scene/course-depth';
 
 /**
  * Built from the same `rotationOnlyView` and projection matrices the renderer uploads (and the
@@ -31,7 +32,22 @@ export class ViewCamera {
   private readonly scratch = new Float64Array(3);
 
   /** `glassCenter`: the scene's glass centre (or null), which sizes an orthographic view without a target. */
-  constructor(state: ViewState, glassCenter: ReadonlyVec3 | null = null) {
+  constructor(state: ViewState, glassCenter: ReadonlyVec3 | null = null, courseRange: CourseDepthRange | null = null) {
+    const cam = state.courseCamera;
+    if (cam) {
+      // The course's projection (SPEC §11): NDC (x, y) = ((d/hx)·x/z, (d/hy)·y/z) along
+      // N + x·(hx/d)·U + y·(hy/d)·V, t = z. Looking away (`behind`), the same NDC along the
+      // opposite direction, t = −z: the nearest to the eye wins, as the GPU's depth says.
+      const s = courseRange?.behind ? -1 : 1;
+      this.orthographic = false;
+      for (let k = 0; k < 3; k++) {
+        this.eye[k] = cam.c[k];
+        this.forward[k] = s * cam.n[k];
+        this.right[k] = (s * cam.hx * cam.u[k]) / cam.d;
+        this.up[k] = (s * cam.hy * cam.v[k]) / cam.d;
+      }
+      return;
+    }
     const p = state.cameraPosition;
     this.eye[0] = p[0]; this.eye[1] = p[1]; this.eye[2] = p[2];
     const v = rotationOnlyView(this.view, state.yaw, state.pitch, this.scratch);

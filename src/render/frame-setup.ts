@@ -4,6 +4,8 @@
 import { mat3, mat4 } from 'gl-matrix';
 import { forwardFromYawPitch, orthoHalfHeight, orthographicMatrix, projectionMatrix, rotationOnlyView, viewerSide } from '../math/camera';
 import { reflectDirection, reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
+import { courseViewProjection, type CourseCamera } from '../math/course-camera';
+import { courseSceneRange, type CourseDepthRange } from '../scene/course-depth';
 import { CAMERA, DEFAULT_GLASS } from '../scene/default-scene';
 import { glassFrame, type GlassFrame } from '../scene/glass-frame';
 import { MAX_LIGHTS, type Glass, type Scene, type SceneObject } from '../scene/scene';
@@ -65,6 +67,14 @@ export class FrameSetup {
   glass: GlassFrame = glassFrame(DEFAULT_GLASS);
   /** Whether the scene has a glass at all. */
   hasGlass = true;
+  /**
+   * True when the projection mirrors the picture (a course camera with one negative half-size,
+   * or looking away from everything, SPEC §11): a triangle counter-clockwise as seen from the
+   * eye is clockwise on screen, so whoever culls back faces swaps its front face.
+   */
+  mirrorsWinding = false;
+  /** The course camera's near, far and `behind` this frame; null for the flyby camera. */
+  courseRange: CourseDepthRange | null = null;
   readonly projection = f64(16);
   /** Per scene object, in scene order; grows with the scene, never shrinks. */
   readonly objects: ObjectMatrices[] = [];
@@ -96,6 +106,9 @@ export class FrameSetup {
   private readonly scratch3 = f64(3);
   private readonly identity = mat4.identity(f64(16) as unknown as mat4) as unknown as Float64Array;
   private lastGlass: Glass | null | undefined = undefined;
+  /** courseSceneRange is a walk over every vertex: kept while camera, scene and clock are. */
+  private rangeKey: { cam: CourseCamera; scene: Scene; time: number } | null = null;
+  private readonly eyeRelativeCamera: CourseCamera = { c: [0, 0, 0], n: [0, 0, 1], v: [0, 1, 0], u: [1, 0, 0], d: 1, hx: 1, hy: 1 };
 
   update(s: FrameState, scene: Scene): void {
     const { eye, mirroredEye } = this;
@@ -105,11 +118,13 @@ export class FrameSetup {
       this.glass = glassFrame(scene.glass ?? DEFAULT_GLASS);
     }
     const plane = this.glass.plane;
-    eye[0] = s.cameraPosition[0]; eye[1] = s.cameraPosition[1]; eye[2] = s.cameraPosition[2];
+    const course = s.courseCamera ?? null;
+    const position = course ? course.c : s.cameraPosition;
+    eye[0] = position[0]; eye[1] = position[1]; eye[2] = position[2];
     reflectPoint(mirroredEye, eye, plane);
     this.eyeDistance = signedDistance(plane, eye);
-    const forward = forwardFromYawPitch(this.forward, s.yaw, s.pitch);
-    const projection = s.projection ?? 'perspective';
+    const forward = course ? this.copyForward(course.n) : forwardFromYawPitch(this.forward, s.yaw, s.pitch);
+    const projection = course ? 'perspective' : s.projection ?? 'perspective';
     this.orthographic = projection === 'orthographic';
     this.side = viewerSide(plane, eye, forward, projection);
     this.viewDot = plane[0] * forward[0] + plane[1] * forward[1] + plane[2] * forward[2];
@@ -117,7 +132,14 @@ export class FrameSetup {
     // Same near and far for both projections (SPEC §2): the orthographic eye is a point on the
     // view plane's centre like the perspective one, and draws depths near..far ahead of it.
     const aspect = s.width / Math.max(1, s.height);
-    if (this.orthographic) {
+    this.mirrorsWinding = false;
+    this.courseRange = null;
+    if (course) {
+      this.halfHeight = 0;
+      this.viewVectorMain.set(PERSPECTIVE_VIEW);
+      this.viewVectorMirrored.set(PERSPECTIVE_VIEW);
+      this.courseViewProjection(course, scene, s.time);
+    } else if (this.orthographic) {
       this.halfHeight = orthoHalfHeight(s, scene.glass?.center ?? null);
       orthographicMatrix(this.projection, this.halfHeight, aspect, CAMERA.near, CAMERA.far);
       const vm = this.viewVectorMain, vr = this.viewVectorMirrored, t = this.scratch3;
@@ -131,8 +153,10 @@ export class FrameSetup {
       this.viewVectorMain.set(PERSPECTIVE_VIEW);
       this.viewVectorMirrored.set(PERSPECTIVE_VIEW);
     }
-    rotationOnlyView(this.viewRotation, s.yaw, s.pitch, this.scratch3);
-    mat4.multiply(this.viewProjection as unknown as mat4, this.projection as unknown as mat4, this.viewRotation as unknown as mat4);
+    if (!course) {
+      rotationOnlyView(this.viewRotation, s.yaw, s.pitch, this.scratch3);
+      mat4.multiply(this.viewProjection as unknown as mat4, this.projection as unknown as mat4, this.viewRotation as unknown as mat4);
+    }
     // Mirrored eye-relative: V·R·x = Vrot·L·(x − mirroredEye), L the plane's linear reflection.
     reflectionMatrix(this.reflectionLinear, plane);
     this.reflectionLinear[12] = this.reflectionLinear[13] = this.reflectionLinear[14] = 0;
@@ -170,6 +194,36 @@ export class FrameSetup {
     this.clipPlane[2] = this.side * p[2];
     this.clipPlane[3] = this.side * signedDistance(p, mirroredEye);
   }
+
+  private copyForward(n: ArrayLike<number>): Float64Array {
+    this.forward[0] = n[0]; this.forward[1] = n[1]; this.forward[2] = n[2];
+    return this.forward;
+  }
+
+  /**
+   * The course's projection (SPEC §11) as viewProjection, for eye-relative points: the same
+   * matrix with C at the origin. `projection` holds it too (there is no separate view).
+   * Near and far from the scene's geometry (courseSceneRange), recomputed only when the
+   * camera, the scene or (with something spinning) the clock changed.
+   */
+  private courseViewProjection(cam: CourseCamera, scene: Scene, time: number): void {
+    const spins = scene.objects.some((o) => o.transform.spin !== 0);
+    const key = this.rangeKey;
+    if (!key || key.cam !== cam || key.scene !== scene || (spins && key.time !== time) || !this.cachedRange) {
+      this.rangeKey = { cam, scene, time };
+      this.cachedRange = courseSceneRange(cam, scene, time);
+    }
+    const range = this.cachedRange!;
+    this.courseRange = range;
+    const e = this.eyeRelativeCamera;
+    e.n = cam.n; e.v = cam.v; e.u = cam.u; e.d = cam.d; e.hx = cam.hx; e.hy = cam.hy;
+    courseViewProjection(this.viewProjection, e, range);
+    this.projection.set(this.viewProjection);
+    // One negative half-size mirrors the picture; so does looking away (x/z, y/z with z < 0).
+    this.mirrorsWinding = (cam.hx < 0) !== (cam.hy < 0) !== range.behind;
+  }
+
+  private cachedRange: CourseDepthRange | null = null;
 
   /** T · Rz·Ry·Rx · Ry(spin·t) · S, and the world bounding sphere. */
   private modelMatrix(out: ObjectMatrices, object: SceneObject, time: number): void {

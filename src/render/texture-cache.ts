@@ -7,6 +7,8 @@ import type { TextureSource } from '../scene/scene';
 
 export class TextureCache {
   private readonly images = new Map<string, Texture>();
+  /** 1×1 white, for `{ kind: 'none' }`: made when a scene first needs it. */
+  private white: Texture | null = null;
 
   constructor(
     private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, readonly procedural: Texture,
@@ -22,6 +24,9 @@ export class TextureCache {
 
   /** The texture for `source`, and whether it is an image (read at (u, 1 − v)). */
   textureFor(source: TextureSource): Texture {
+    if (source.kind === 'none') {
+      return (this.white ??= new Texture(this.gl, this.counter, { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]), repeat: true }));
+    }
     return source.kind === 'image' ? (this.images.get(source.url) ?? this.procedural) : this.procedural;
   }
 
@@ -32,5 +37,7 @@ export class TextureCache {
   dispose(): void {
     for (const t of this.images.values()) t.dispose();
     this.images.clear();
+    this.white?.dispose();
+    this.white = null;
   }
 }

@@ -1,6 +1,7 @@
 // Plain data the renderer takes and gives back: no DOM, no GL handles.
 import type { FresnelModel } from '../math/fresnel';
 import type { Projection } from '../math/camera';
+import type { CourseCamera } from '../math/course-camera';
 
 export type { Projection };
 
@@ -36,6 +37,13 @@ export interface FrameState {
   projection?: Projection;
   /** The camera target, if any: only the orthographic size reads it (depth of this point). */
   target?: readonly [number, number, number] | null;
+  /**
+   * A course camera (SPEC §11, `camera-src`): when set it is the view, in place of
+   * cameraPosition/yaw/pitch/fov/projection; near and far come from the scene's geometry.
+   * The element then sets cameraPosition to C and fov to 2·atan(|hy/d|), which only the
+   * level-of-detail choices (sphere segments, reflection meshes) read.
+   */
+  courseCamera?: CourseCamera | null;
 }
 
 export type ReflectionFormat = 'rgba8' | 'rgba16f';

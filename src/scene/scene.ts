@@ -9,8 +9,11 @@ export type Vec3 = readonly [number, number, number];
 export type Mapping = 'uv' | 'triplanar' | 'cylindrical' | 'spherical';
 export const MAPPINGS: readonly Mapping[] = ['uv', 'triplanar', 'cylindrical', 'spherical'];
 
-/** The seeded checker of SPEC §3, or an image (by URL, decoded by whoever draws it). */
-export type TextureSource = { kind: 'procedural' } | { kind: 'image'; url: string };
+/**
+ * The seeded checker of SPEC §3, an image (by URL, decoded by whoever draws it), or none: a
+ * plain material, tex = 1 (the course's `.byu` objects, SPEC §11).
+ */
+export type TextureSource = { kind: 'procedural' } | { kind: 'image'; url: string } | { kind: 'none' };
 
 /** Blinn-Phong with seed 001's names; the texture multiplies Ka and Kd. */
 export interface Material {

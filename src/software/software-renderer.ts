@@ -28,6 +28,8 @@ type Selection = 'opaque' | 'transparent';
 type Side = 'all' | 'eye' | 'beyond';
 
 const BLACK = [0, 0, 0] as const;
+/** A plain material's texture (tex = 1). */
+const WHITE = imageMipTexture({ width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) })!;
 
 export class SoftwareRenderer {
   samplesPerAxis: number;
@@ -237,7 +239,7 @@ export class SoftwareRenderer {
     const count = order ? order.length : objects.length;
     r.depthTest = true;
     r.depthWrite = selection === 'opaque';
-    r.frontCCW = !mirrored; // the mirror flips winding
+    r.frontCCW = !mirrored !== s.mirrorsWinding; // the mirror flips winding; so may a course camera
     for (let k = 0; k < count; k++) {
       const i = order ? order[k] : k;
       const o: SceneObject = objects[i];
@@ -264,6 +266,7 @@ export class SoftwareRenderer {
 
   private textureOf(o: SceneObject, images: ReadonlyMap<string, DecodedImage> | undefined): MipTexture {
     const source = o.material.texture;
+    if (source.kind === 'none') return WHITE;
     if (source.kind !== 'image') return proceduralMipTexture();
     const image = images?.get(source.url);
     if (image === undefined) return proceduralMipTexture();

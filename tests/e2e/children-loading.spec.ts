@@ -99,7 +99,6 @@ const failures: [string, string, RegExp][] = [
   ['an HTML page (a dev server fallback)', 'models/fallback.obj', /HTML/],
   ['a 404', 'models/missing.obj', /HTTP 404/],
   ['binary garbage', 'models/garbage.obj', /binary/],
-  ['a .byu file', 'models/tri.byu', /not supported yet/],
 ];
 
 for (const [what, src, message] of failures) {

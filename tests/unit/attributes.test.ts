@@ -51,7 +51,7 @@ describe('defaults', () => {
     const names = ATTRIBUTES.map((s) => s.attribute);
     expect(new Set(names).size).toBe(names.length);
     expect([...names].sort()).toEqual([
-      'background', 'camera-position', 'camera-rotation', 'camera-target', 'controls', 'cube-distance', 'debug-view', 'fov',
+      'background', 'camera-position', 'camera-rotation', 'camera-src', 'camera-target', 'controls', 'cube-distance', 'debug-view', 'fov',
       'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'projection', 'reflection-format',
       'reflection-scale', 'renderer', 'samples', 'shading', 'spin', 'tessellation', 'time', 'transparency',
     ]);
@@ -270,6 +270,7 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
             if (v !== 'auto') expect((v as number) >= 0.25 && (v as number) <= 4).toBe(true);
             break;
           case 'time': expect(v === null || Number.isFinite(v)).toBe(true); break;
+          case 'cameraSrc': expect(v === null || (typeof v === 'string' && v.trim() === v && v !== '')).toBe(true); break;
           case 'cameraPosition':
             expect(v).toHaveLength(3);
             for (const x of v as number[]) expect(Math.abs(x)).toBeLessThanOrEqual(1e7);

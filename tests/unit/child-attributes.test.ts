@@ -69,7 +69,7 @@ describe('<glass-object> table', () => {
 describe('<glass-light> table', () => {
   it('defaults to the intensities of the default light (Ia 0.15, Id 0.85, Is 1)', () => {
     const d = defaultLightAttributes();
-    expect(d).toEqual({ position: null, direction: null, ambient: DEFAULT_LIGHT.ambient, diffuse: DEFAULT_LIGHT.diffuse, specular: DEFAULT_LIGHT.specular });
+    expect(d).toEqual({ src: null, position: null, direction: null, ambient: DEFAULT_LIGHT.ambient, diffuse: DEFAULT_LIGHT.diffuse, specular: DEFAULT_LIGHT.specular });
     expect(DEFAULT_LIGHT.ambient).toEqual([0.15, 0.15, 0.15]);
   });
 
@@ -135,5 +135,34 @@ describe('built-in shapes', () => {
     expect(far).toBeLessThanOrEqual(g.bounds.radius + 1e-6);
     // …and it is not a loose one: the tightest sphere is hardly smaller.
     expect(boundingSphere(p).radius).toBeGreaterThan(g.bounds.radius * 0.99);
+  });
+});
+
+describe('the course lighting file in the scene terms (SPEC §11)', () => {
+  it('maps ka, kd·Od, ks, n onto Ka, Kd, Ks and a Blinn exponent 4n; Ia/255 and Il/255 onto the point light', async () => {
+    const { courseMaterialValues, courseLight } = await import('../../src/element/children/course-lighting');
+    const m = courseMaterialValues({ ka: 0.2, kd: 0.5, ks: 0.3, od: [0.7, 0.5, 0.8], n: 2 });
+    expect(m.ambient).toEqual([0.2, 0.2, 0.2]);
+    expect(m.diffuse).toEqual([0.35, 0.25, 0.4]);
+    expect(m.specular).toEqual([0.3, 0.3, 0.3]);
+    expect(m.shininess).toBe(8);
+    expect(courseMaterialValues({ ka: 0, kd: 0, ks: 0, od: [0, 0, 0], n: 1e9 }).shininess).toBe(10000);
+    expect(courseLight({ position: [1, 2, 3], ambient: [255, 0, 51], intensity: [255, 255, 0] })).toEqual({
+      kind: 'point', vector: [1, 2, 3], ambient: [1, 0, 0.2], diffuse: [1, 1, 0], specular: [1, 1, 0],
+    });
+  });
+
+  it('puts the file below the attribute and the MTL, above the default; .byu objects are plain', async () => {
+    const { resolveMaterial } = await import('../../src/element/children/object-material');
+    const none = { ambient: null, diffuse: null, specular: null, shininess: null, opacity: null, texture: null, mapping: null };
+    const file = { ambient: [0.2, 0.2, 0.2] as const, diffuse: [0.35, 0.25, 0.4] as const, shininess: 8 };
+    const m = resolveMaterial({ ...none, diffuse: [0.1, 0.9, 0.1] }, { shininess: 50 }, false, null, { file, plain: true });
+    expect(m.diffuse).toEqual([0.1, 0.9, 0.1]); // attribute
+    expect(m.shininess).toBe(50); // MTL
+    expect(m.ambient).toEqual([0.2, 0.2, 0.2]); // file
+    expect(m.specular).toEqual([0.5, 0.5, 0.5]); // default
+    expect(m.texture).toEqual({ kind: 'none' });
+    expect(resolveMaterial(none, undefined, false, 'http://x/t.png', { plain: true }).texture).toEqual({ kind: 'image', url: 'http://x/t.png' });
+    expect(resolveMaterial(none, undefined, true, null).texture).toEqual({ kind: 'procedural' });
   });
 });

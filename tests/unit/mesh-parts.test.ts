@@ -57,11 +57,12 @@ describe('meshParts', () => {
 });
 
 describe('formats that are load errors', () => {
-  it('rejects HTML, binary bytes and .byu before parsing, passes OBJ', () => {
+  it('rejects HTML and binary bytes before parsing, passes OBJ and the course\'s .byu', () => {
     const bytes = (s: string) => new TextEncoder().encode(s);
     expect(formatProblem(sniffModel(bytes('<!doctype html><html></html>')))).toMatch(/HTML/);
     expect(formatProblem(sniffModel(new Uint8Array([0x89, 0x50, 0x4e, 0x47, 0, 0, 0, 1, 2, 3, 0, 0])))).toMatch(/binary/);
-    expect(formatProblem(sniffModel(bytes('3 1\n0 0 0\n1 0 0\n0 1 0\n1 2 3\n')))).toMatch(/not supported yet/);
+    expect(formatProblem(sniffModel(bytes('3 1\n0 0 0\n1 0 0\n0 1 0\n1 2 3\n')))).toBeNull();
+    expect(formatProblem(sniffModel(bytes('1 1\n4\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n')))).toBeNull();
     expect(formatProblem(sniffModel(bytes(TWO_MATERIALS)))).toBeNull();
   });
 });

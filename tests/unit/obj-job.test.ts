@@ -22,4 +22,21 @@ describe('runObjJob', () => {
     expect(response).toEqual({ id: 1, ok: false, error: { type: 'load', url: 'm.obj', line: 1, message: expect.stringMatching(/HTML/) } });
     expect(transfer).toEqual([]);
   });
+
+  it('parses a course .byu mesh and a Bézier .byu (with its order and E) when asked for format byu', () => {
+    const mesh = runObjJob({ id: 2, url: 't.byu', format: 'byu', bytes: bytes('4 2\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 2 3\n1 2 4\n') });
+    if (!mesh.response.ok) throw new Error('expected a result');
+    expect([...mesh.response.result.indices]).toEqual([0, 1, 2, 0, 1, 3]);
+    expect(mesh.response.result.uvs).toBeNull();
+    expect(mesh.response.bezier).toBeNull();
+    const bezier = runObjJob({ id: 3, url: 'p.byu', format: 'byu', bytes: bytes('1 1\n5\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n') });
+    if (!bezier.response.ok) throw new Error('expected a result');
+    expect(bezier.response.result.positions.length).toBe(3 * 25);
+    expect(bezier.response.bezier).toMatchObject({ order: 'second-fastest', fileResolution: 5, patch: { degreeU: 1, degreeV: 1 } });
+  });
+
+  it('gives a .byu load error its line', () => {
+    const { response } = runObjJob({ id: 4, url: 'bad.byu', format: 'byu', bytes: bytes('3 1\n0 0 0\n1 x 0\n0 1 0\n1 2 3\n') });
+    expect(response).toMatchObject({ ok: false, error: { url: 'bad.byu', line: 3 } });
+  });
 });

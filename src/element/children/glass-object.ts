@@ -2,6 +2,7 @@
 // `src`. Fires `progress`, `load` and `error` (bubbling, composed); never throws. A changed or
 // removed `src` aborts the old load, whose result is never shown.
 import { normalizeObj } from '../../loaders/obj-normalize';
+import type { ObjResult } from '../../loaders/obj';
 import type { SceneObject, Transform } from '../../scene/scene';
 import { builtinShape } from './builtin-shapes';
 import { ChildElement, defineChildProperties } from './child-element';
@@ -9,19 +10,30 @@ import { acquireModel, loadErrorDetail, type ModelHandle } from './model-cache';
 import type { LoadedModel } from './model-loader';
 import { meshParts, type MeshPart } from './mesh-parts';
 import { defaultObjectAttributes, OBJECT_ATTRIBUTES, type ObjectAttributes } from './object-attributes';
-import { resolveMaterial } from './object-material';
+import { resolveMaterial, type MtlValues } from './object-material';
 import { decodeImage } from '../texture-images';
 
 export const OBJECT_TAG = 'glass-object';
 
-/** Parts per loaded model, raw and normalised: shared by every element showing it. */
-const partsCache = new WeakMap<LoadedModel, { raw?: MeshPart[]; normalized?: MeshPart[] }>();
+/**
+ * Parts per loaded model, raw and normalised, by Bézier resolution ('' for the model as
+ * loaded): shared by every element showing it.
+ */
+const partsCache = new WeakMap<LoadedModel, Map<string, MeshPart[]>>();
 
-function partsOf(model: LoadedModel, normalize: boolean): MeshPart[] {
+/** `resolution`: a Bézier `.byu` re-evaluated on that grid (null: the file's E). */
+function partsOf(model: LoadedModel, normalize: boolean, resolution: number | null): MeshPart[] {
   let entry = partsCache.get(model);
-  if (!entry) partsCache.set(model, (entry = {}));
-  if (normalize) return (entry.normalized ??= meshParts(normalizeObj(model.obj), `${model.url}#normalized`));
-  return (entry.raw ??= meshParts(model.obj, model.url));
+  if (!entry) partsCache.set(model, (entry = new Map()));
+  const grid = model.bezier && resolution !== null && resolution !== model.bezier.fileResolution ? resolution : null;
+  const key = `${normalize ? '#normalized' : ''}${grid === null ? '' : `#E${grid}`}`;
+  let parts = entry.get(key);
+  if (!parts) {
+    let obj: ObjResult = grid === null || !model.bezierAt ? model.obj : model.bezierAt(grid);
+    if (normalize) obj = normalizeObj(obj);
+    entry.set(key, (parts = meshParts(obj, `${model.url}${key}`)));
+  }
+  return parts;
 }
 
 /** Resolves against the document; null for a URL that cannot be one. */
@@ -73,23 +85,30 @@ export class GlassObject extends ChildElement<ObjectAttributes> {
     return this.pending;
   }
 
-  /** The object as scene parts: one per material of a model; none while it loads or after it failed. */
-  toSceneObjects(): SceneObject[] {
+  /**
+   * The object as scene parts: one per material of a model; none while it loads or after it
+   * failed. `fileMaterial`: the element's lighting-file material (SPEC §11), below the
+   * object's attributes and its MTL.
+   */
+  toSceneObjects(fileMaterial: MtlValues | null = null): SceneObject[] {
     const v = this.values;
     const transform: Transform = { position: v.position, rotation: v.rotation, scale: v.scale, spin: 0 };
     const texture = absolute(v.texture);
     if (v.src !== null) {
       if (!this.model) return [];
       const model = this.model;
-      return partsOf(model, v.normalizeModel).map((part) => ({
+      // `resolution` re-evaluates a Bézier .byu only when set: its default is the Gaussian's.
+      const resolution = this.hasAttribute('resolution') ? v.resolution : null;
+      const context = { file: fileMaterial, plain: model.byu };
+      return partsOf(model, v.normalizeModel, resolution).map((part) => ({
         geometry: part.geometry,
         transform,
-        material: resolveMaterial(v, part.material === null ? undefined : model.materials.get(part.material), part.hasUvs, texture),
+        material: resolveMaterial(v, part.material === null ? undefined : model.materials.get(part.material), part.hasUvs, texture, context),
         bounds: part.bounds,
       }));
     }
     const { geometry, bounds } = builtinShape(v.shape ?? 'cube', v.resolution);
-    return [{ geometry, transform, material: resolveMaterial(v, undefined, true, texture), bounds }];
+    return [{ geometry, transform, material: resolveMaterial(v, undefined, true, texture, { file: fileMaterial }), bounds }];
   }
 
   /** The first scene part (a built-in shape is one), or null while no model is shown. */
@@ -126,7 +145,9 @@ export class GlassObject extends ChildElement<ObjectAttributes> {
           if (this.handle !== handle) return;
           this.pending = false;
           this.changed();
-          this.fire('load', { url, warnings: [...model.warnings] });
+          // A Bézier .byu says which index of its control points varies fastest (SPEC §11).
+          const order = model.bezier ? { order: model.bezier.order } : {};
+          this.fire('load', { url, warnings: [...model.warnings], ...order });
         });
       },
       (e) => {

@@ -2,9 +2,11 @@
 // light of SPEC §3 exactly: directional towards normalize(0.4, 1, 0.6), Ia 0.15, Id 0.85, Is 1.
 import { DEFAULT_LIGHT } from '../../scene/default-scene';
 import type { Vec3 } from '../../scene/scene';
-import { vec3, type ChildAttributeSpec } from './child-attribute-spec';
+import { url, vec3, type ChildAttributeSpec } from './child-attribute-spec';
 
 export interface LightAttributes {
+  /** The course's iluminacao.txt (SPEC §11): its point light and the element's material. */
+  src: string | null;
   /** A point light here, or null. */
   position: Vec3 | null;
   /** Towards a directional light (normalised when read), or null. */
@@ -23,6 +25,7 @@ const intensity = (property: 'ambient' | 'diffuse' | 'specular', what: string, d
 type Row = { [K in keyof LightAttributes]: ChildAttributeSpec<LightAttributes[K], K> }[keyof LightAttributes];
 
 export const LIGHT_ATTRIBUTES: readonly Row[] = [
+  url('src', 'src', "URL of the course's iluminacao.txt: a point light at Pl, and the material of the element's objects; attributes win over the file"),
   vec3('position', 'position', null, '"x y z": a point light there (wins over direction)'),
   vec3('direction', 'direction', null, '"x y z" towards a directional light; neither: the default light\'s direction', { nonZero: true }),
   intensity('ambient', 'Ia', DEFAULT_LIGHT.ambient),

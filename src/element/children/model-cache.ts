@@ -1,12 +1,14 @@
 // One fetch and parse per URL per page (SPEC §9): elements share a pending load and keep the
 // result. Each user holds a reference; when the last one lets go of a load still under way,
 // it is aborted. A failed load is forgotten, so setting the URL again later tries again.
+// Models, and the course's camera and lighting files (SPEC §11), each kind keyed apart.
 import { LoadError, type LoadErrorDetail } from '../../loaders/load-error';
 import type { LoadedModel } from './model-loader';
 import type { Progress } from './model-fetch';
+import type { CourseFileKind, LoadedCourseFile } from './course-files';
 
-interface Entry {
-  promise: Promise<LoadedModel>;
+interface Entry<T = unknown> {
+  promise: Promise<T>;
   controller: AbortController;
   refs: number;
   settled: boolean;
@@ -16,11 +18,13 @@ interface Entry {
 
 const cache = new Map<string, Entry>();
 
-export interface ModelHandle {
-  readonly promise: Promise<LoadedModel>;
+export interface Handle<T> {
+  readonly promise: Promise<T>;
   /** Stop listening; the last release of an unfinished load aborts it. Idempotent. */
   release(): void;
 }
+
+export type ModelHandle = Handle<LoadedModel>;
 
 /** A load error as the `error` event's detail, whatever was thrown. */
 export function loadErrorDetail(url: string, e: unknown): LoadErrorDetail {
@@ -28,14 +32,15 @@ export function loadErrorDetail(url: string, e: unknown): LoadErrorDetail {
   return { type: 'load', url, message: e instanceof Error ? e.message : String(e) };
 }
 
-function start(url: string): Entry {
+type Loader<T> = (signal: AbortSignal, onProgress: (p: Progress) => void) => Promise<T>;
+
+function start<T extends { warnings: string[] }>(key: string, url: string, load: Loader<T>): Entry<T> {
   const controller = new AbortController();
-  const entry: Entry = { promise: null!, controller, refs: 0, settled: false, listeners: new Set(), last: null };
-  // The loaders are a chunk of their own, fetched when a page first asks for a model (SPEC §12).
-  entry.promise = import('./model-loader').then(({ loadModel }) => loadModel(url, controller.signal, (p) => {
+  const entry: Entry<T> = { promise: null!, controller, refs: 0, settled: false, listeners: new Set(), last: null };
+  entry.promise = load(controller.signal, (p) => {
     entry.last = p;
     for (const l of entry.listeners) l(p);
-  }));
+  });
   entry.promise.then(
     (model) => {
       entry.settled = true;
@@ -44,7 +49,7 @@ function start(url: string): Entry {
     },
     (e) => {
       entry.settled = true;
-      if (cache.get(url) === entry) cache.delete(url);
+      if (cache.get(key) === entry) cache.delete(key);
       if (controller.signal.aborted) return;
       const d = loadErrorDetail(url, e);
       console.error(e instanceof LoadError ? e.message : `glass-plane-scene: ${url}: ${d.message}`);
@@ -54,8 +59,20 @@ function start(url: string): Entry {
 }
 
 export function acquireModel(url: string, onProgress: (p: Progress) => void): ModelHandle {
-  let entry = cache.get(url);
-  if (!entry) cache.set(url, (entry = start(url)));
+  // The loaders are a chunk of their own, fetched when a page first asks for a model (SPEC §12).
+  return acquire(`model ${url}`, url, onProgress, (signal, progress) =>
+    import('./model-loader').then(({ loadModel }) => loadModel(url, signal, progress)));
+}
+
+/** A camera `.cfg` or an `iluminacao.txt` (SPEC §11), once per URL per page like a model. */
+export function acquireCourseFile<K extends CourseFileKind>(kind: K, url: string, onProgress: (p: Progress) => void = () => {}): Handle<LoadedCourseFile<K>> {
+  return acquire(`${kind} ${url}`, url, onProgress, (signal, progress) =>
+    import('./course-files').then(({ loadCourseFile }) => loadCourseFile(kind, url, signal, progress)));
+}
+
+function acquire<T extends { warnings: string[] }>(key: string, url: string, onProgress: (p: Progress) => void, load: Loader<T>): Handle<T> {
+  let entry = cache.get(key) as Entry<T> | undefined;
+  if (!entry) cache.set(key, (entry = start(key, url, load)));
   const e = entry;
   e.refs++;
   e.listeners.add(onProgress);
@@ -69,7 +86,7 @@ export function acquireModel(url: string, onProgress: (p: Progress) => void): Mo
       e.listeners.delete(onProgress);
       if (--e.refs === 0 && !e.settled) {
         e.controller.abort();
-        if (cache.get(url) === e) cache.delete(url);
+        if (cache.get(key) === e) cache.delete(key);
       }
     },
   };

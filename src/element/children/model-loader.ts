@@ -7,10 +7,17 @@ import type { ObjResult } from '../../loaders/obj';
 import { fetchBytes, type Progress } from './model-fetch';
 import { parseModelBytes } from './model-parse';
 import type { MtlValues } from './object-material';
+import { bezierObj, type ByuBezierInfo } from '../../loaders/course/byu-model';
 
 export interface LoadedModel {
   url: string;
   obj: ObjResult;
+  /** A Bézier `.byu` (SPEC §11): re-evaluated at the object's `resolution` when it sets one. */
+  bezier: ByuBezierInfo | null;
+  /** The Bézier patch on an E×E grid (here, so that the evaluator stays in this lazy chunk). */
+  bezierAt: ((resolution: number) => ObjResult) | null;
+  /** A course `.byu`: no texture unless the object's `texture` sets one (SPEC §11). */
+  byu: boolean;
   /** By material name; the first MTL file that defines a name gives it. */
   materials: Map<string, MtlValues>;
   /** Console-ready text (prefix, URL and line), as in the `load` event's detail. */
@@ -19,7 +26,7 @@ export interface LoadedModel {
 
 export async function loadModel(url: string, signal: AbortSignal, onProgress: (p: Progress) => void): Promise<LoadedModel> {
   const bytes = await fetchBytes(url, signal, onProgress);
-  const obj = await parseModelBytes(bytes, url);
+  const { obj, bezier, byu } = await parseModelBytes(bytes, url);
   signal.throwIfAborted();
   const warnings = obj.warnings.map((w) => warningText(url, w));
   const materials = new Map<string, MtlValues>();
@@ -48,5 +55,6 @@ export async function loadModel(url: string, signal: AbortSignal, onProgress: (p
       warnings.push(`glass-plane-scene: ${mtlUrl}: material library not loaded (${why}); using attributes and defaults`);
     }
   }
-  return { url, obj, materials, warnings };
+  const bezierAt = bezier ? (resolution: number) => bezierObj(bezier, resolution) : null;
+  return { url, obj, bezier, bezierAt, byu, materials, warnings };
 }

@@ -1,9 +1,11 @@
-// Bytes → ObjResult: sniff the content (an HTML page, binary bytes or a .byu are load errors),
-// then parse the OBJ on the main thread, or in a worker above WORKER_THRESHOLD so a big file
-// does not block the page. Where a worker cannot start, the main thread parses it.
+// Bytes → ObjResult: sniff the content (an HTML page or binary bytes are load errors), then
+// parse the OBJ or the course's `.byu` (SPEC §11) on the main thread, or in a worker above
+// WORKER_THRESHOLD so a big file does not block the page. Where a worker cannot start, the
+// main thread parses it.
 import { LoadError } from '../../loaders/load-error';
 import { parseObjBytes, type ObjResult } from '../../loaders/obj';
 import type { ObjJobRequest, ObjJobResponse } from '../../loaders/obj-job';
+import { parseByuModel, type ByuBezierInfo } from '../../loaders/course/byu-model';
 import { sniffModel, type ModelFormat } from '../../loaders/sniff';
 
 /** Files at least this big are parsed off the main thread. */
@@ -14,25 +16,41 @@ export function formatProblem(format: ModelFormat): string | null {
   switch (format) {
     case 'html': return 'an HTML page (or other markup), not a model: is the URL right?';
     case 'binary': return 'binary content, not a model file';
-    case 'byu-mesh': case 'byu-bezier': return '.byu models: format not supported yet';
     default: return null;
   }
 }
 
-export async function parseModelBytes(bytes: Uint8Array, url: string): Promise<ObjResult> {
-  const problem = formatProblem(sniffModel(bytes));
+export interface ParsedModel {
+  obj: ObjResult;
+  /** A Bézier `.byu`: its patch, index order and E (null for an OBJ or a mesh `.byu`). */
+  bezier: ByuBezierInfo | null;
+  /** A course `.byu` (mesh or Bézier): drawn without a texture unless one is set (SPEC §11). */
+  byu: boolean;
+}
+
+export async function parseModelBytes(bytes: Uint8Array, url: string): Promise<ParsedModel> {
+  const sniffed = sniffModel(bytes);
+  const problem = formatProblem(sniffed);
   if (problem) throw new LoadError(url, problem);
+  // Content too broken to say (a .byu without its face count) is named by the URL, so that
+  // the .byu parser reports the faulty line (SPEC §11).
+  const byu = sniffed === 'byu-mesh' || sniffed === 'byu-bezier' || (sniffed === 'unknown' && isByuUrl(url));
+  const format = byu ? 'byu' : 'obj';
   if (bytes.length >= WORKER_THRESHOLD) {
-    const result = await parseInWorker(bytes, url);
+    const result = await parseInWorker(bytes, url, format);
     if (result) return result;
   }
-  return parseObjBytes(bytes, { url });
+  return format === 'byu' ? { ...parseByuModel(bytes, url), byu: true } : { obj: parseObjBytes(bytes, { url }), bezier: null, byu: false };
+}
+
+function isByuUrl(url: string): boolean {
+  return /\.byu$/i.test(url.split(/[?#]/, 1)[0]);
 }
 
 let nextId = 1;
 
 /** Resolves null when no worker could run the job (the caller parses on the main thread). */
-function parseInWorker(bytes: Uint8Array, url: string): Promise<ObjResult | null> {
+function parseInWorker(bytes: Uint8Array, url: string, format: 'obj' | 'byu'): Promise<ParsedModel | null> {
   return new Promise((resolve, reject) => {
     let worker: Worker;
     try {
@@ -45,7 +63,7 @@ function parseInWorker(bytes: Uint8Array, url: string): Promise<ObjResult | null
     worker.onmessage = (e: MessageEvent<ObjJobResponse>) => {
       worker.terminate();
       const r = e.data;
-      if (r.ok) resolve(r.result);
+      if (r.ok) resolve({ obj: r.result, bezier: r.bezier ?? null, byu: format === 'byu' });
       else reject(new LoadError(r.error.url, r.error.message, r.error.line));
     };
     // A worker that fails to load (CSP, no module workers) reports here: parse on this thread.
@@ -56,7 +74,7 @@ function parseInWorker(bytes: Uint8Array, url: string): Promise<ObjResult | null
     };
     // Copied, not transferred: the bytes stay usable for the main-thread fallback.
     const buffer = bytes.slice().buffer as ArrayBuffer;
-    const request: ObjJobRequest = { id, url, bytes: buffer };
+    const request: ObjJobRequest = { id, url, bytes: buffer, format };
     worker.postMessage(request, [buffer]);
   });
 }

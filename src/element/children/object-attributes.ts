@@ -41,9 +41,9 @@ const colour = (property: 'ambient' | 'diffuse' | 'specular', attribute: string,
 type Row = { [K in keyof ObjectAttributes]: ChildAttributeSpec<ObjectAttributes[K], K> }[keyof ObjectAttributes];
 
 export const OBJECT_ATTRIBUTES: readonly Row[] = [
-  url('src', 'src', 'URL of an .obj model (its mtllib resolved against it); the format is sniffed from the content'),
+  url('src', 'src', 'URL of an .obj model (its mtllib resolved against it) or a course .byu (mesh or Bézier surface); the format is sniffed from the content'),
   keyword('shape', 'shape', SHAPES, null, 'cube (edge 1), sphere (radius 0.5) or gaussian; cube when there is no src, ignored when there is'),
-  clampedNumber('resolution', 'resolution', 40, MIN_RESOLUTION, MAX_RESOLUTION, 'N×N vertices of the gaussian grid', true) as ChildAttributeSpec<number, 'resolution'>,
+  clampedNumber('resolution', 'resolution', 40, MIN_RESOLUTION, MAX_RESOLUTION, 'N×N vertices of the gaussian grid; when set, E of a Bézier .byu (the file\'s E otherwise)', true) as ChildAttributeSpec<number, 'resolution'>,
   vec3('position', 'position', [0, 0, 0], '"x y z" of the object\'s origin') as ChildAttributeSpec<Vec3, 'position'>,
   vec3('rotation', 'rotation', [0, 0, 0], '"x y z" in degrees, applied X then Y then Z') as ChildAttributeSpec<Vec3, 'rotation'>,
   vec3('scale', 'scale', [1, 1, 1], 'one number or "x y z"', { single: true }) as ChildAttributeSpec<Vec3, 'scale'>,

@@ -14,22 +14,33 @@ export interface MtlValues {
 
 export type MaterialAttributes = Pick<ObjectAttributes, 'ambient' | 'diffuse' | 'specular' | 'shininess' | 'opacity' | 'texture' | 'mapping'>;
 
+/** Element-wide material (the course's `iluminacao.txt`, SPEC §11) and how the object is textured. */
+export interface MaterialContext {
+  /** Below the object's attributes and its MTL, above the defaults. */
+  file?: MtlValues | null;
+  /** No texture unless the `texture` attribute sets one (the course's `.byu` objects). */
+  plain?: boolean;
+}
+
 /**
  * `textureUrl` is the `texture` attribute already resolved against the document; `hasUvs`
- * picks the default mapping (the built-in shapes have UVs; a model may not).
+ * picks the default mapping (the built-in shapes have UVs; a model may not). Precedence:
+ * attribute, then the model's MTL, then the element's lighting file, then the default.
  */
 export function resolveMaterial(
   attrs: MaterialAttributes, mtl: MtlValues | undefined, hasUvs: boolean, textureUrl: string | null,
+  context: MaterialContext = {},
 ): Material {
   const image = textureUrl ?? mtl?.texture ?? null;
-  const texture: TextureSource = image === null ? { kind: 'procedural' } : { kind: 'image', url: image };
+  const texture: TextureSource = image !== null ? { kind: 'image', url: image } : context.plain ? { kind: 'none' } : { kind: 'procedural' };
   const mapping: Mapping = attrs.mapping ?? (hasUvs ? 'uv' : 'spherical');
+  const file = context.file ?? undefined;
   return {
-    ambient: attrs.ambient ?? mtl?.ambient ?? OBJECT_DEFAULTS.ambient,
-    diffuse: attrs.diffuse ?? mtl?.diffuse ?? OBJECT_DEFAULTS.diffuse,
-    specular: attrs.specular ?? mtl?.specular ?? OBJECT_DEFAULTS.specular,
-    shininess: attrs.shininess ?? mtl?.shininess ?? OBJECT_DEFAULTS.shininess,
-    opacity: attrs.opacity ?? mtl?.opacity ?? OBJECT_DEFAULTS.opacity,
+    ambient: attrs.ambient ?? mtl?.ambient ?? file?.ambient ?? OBJECT_DEFAULTS.ambient,
+    diffuse: attrs.diffuse ?? mtl?.diffuse ?? file?.diffuse ?? OBJECT_DEFAULTS.diffuse,
+    specular: attrs.specular ?? mtl?.specular ?? file?.specular ?? OBJECT_DEFAULTS.specular,
+    shininess: attrs.shininess ?? mtl?.shininess ?? file?.shininess ?? OBJECT_DEFAULTS.shininess,
+    opacity: attrs.opacity ?? mtl?.opacity ?? file?.opacity ?? OBJECT_DEFAULTS.opacity,
     texture,
     mapping,
   };

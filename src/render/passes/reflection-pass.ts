@@ -23,7 +23,8 @@ export function reflectionPass(ctx: PassContext, framebuffer: WebGLFramebuffer, 
     gl.scissor(scissor.x, scissor.y, scissor.width, scissor.height);
   }
   gl.enable(gl.DEPTH_TEST);
-  gl.frontFace(gl.CW); // the mirror flips winding
+  // The mirror flips winding, and so does a mirroring course camera (SPEC §11).
+  gl.frontFace(ctx.setup.mirrorsWinding ? gl.CCW : gl.CW);
   if (clipExtension) gl.enable(clipExtension.CLIP_DISTANCE0_WEBGL);
   try {
     return drawObjects(ctx, clip, true, height);

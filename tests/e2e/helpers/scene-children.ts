@@ -42,7 +42,7 @@ export async function installSummary(page: Page): Promise<void> {
             position: [...o.transform.position], scale: [...o.transform.scale],
             material: {
               ambient: [...m.ambient], diffuse: [...m.diffuse], specular: [...m.specular], shininess: m.shininess,
-              opacity: m.opacity, texture: m.texture.kind === 'image' ? m.texture.url : 'procedural', mapping: m.mapping,
+              opacity: m.opacity, texture: m.texture.kind === 'image' ? m.texture.url : m.texture.kind, mapping: m.mapping,
             },
             bounds: { center: [...o.bounds.center], radius: o.bounds.radius },
           };

@@ -1,0 +1,106 @@
+// `camera-src` (SPEC §2, §11): the course's camera file for the scene element. Loaded once per
+// URL per page like a model; while one is in force it is the view (camera-position, -rotation,
+// -target, fov, projection and the camera controls wait until camera-src is removed). A file
+// that fails fires `error` on the element, which keeps the camera it had.
+import type { CourseCamera } from '../math/course-camera';
+import { courseSceneRange } from '../scene/course-depth';
+import type { Scene } from '../scene/scene';
+import { acquireCourseFile, loadErrorDetail, type Handle } from './children/model-cache';
+import type { LoadedCamera } from './children/course-files';
+import { warn } from './warnings';
+
+const DEG = 180 / Math.PI;
+
+export class CameraSource {
+  /** The course camera in force, or null (the flyby camera). */
+  camera: CourseCamera | null = null;
+  private url: string | null = null;
+  private handle: Handle<LoadedCamera> | null = null;
+  private pending = false;
+  /** Cameras already warned about looking away from everything (once each). */
+  private readonly warned = new WeakSet<CourseCamera>();
+  private checked: { camera: CourseCamera; scene: Scene } | null = null;
+
+  constructor(private readonly host: HTMLElement, private readonly changed: () => void) {}
+
+  get loading(): boolean {
+    return this.pending;
+  }
+
+  /** The attribute's value (as written), on change and on connection; null: no course camera. */
+  set(src: string | null): void {
+    const url = src === null || !this.host.isConnected ? null : absolute(src);
+    if (url === this.url && src !== null && url !== null) return;
+    this.handle?.release();
+    this.handle = null;
+    this.pending = false;
+    this.url = url;
+    if (src === null) {
+      if (this.camera) {
+        this.camera = null;
+        this.changed();
+      }
+      return;
+    }
+    if (!this.host.isConnected) return;
+    if (url === null) {
+      this.fail(src, { type: 'load', url: src, message: 'not a usable URL' });
+      return;
+    }
+    this.pending = true;
+    const handle = acquireCourseFile('camera', url);
+    this.handle = handle;
+    handle.promise.then(
+      (file) => {
+        if (this.handle !== handle) return;
+        this.pending = false;
+        this.camera = file.camera;
+        this.changed();
+      },
+      (e) => {
+        if (this.handle !== handle) return;
+        this.pending = false;
+        this.fail(url, loadErrorDetail(url, e));
+      },
+    );
+  }
+
+  /** Disconnected: the load stops (the camera stays, for a move). */
+  stop(): void {
+    this.handle?.release();
+    this.handle = null;
+    this.pending = false;
+    this.url = null;
+  }
+
+  /**
+   * A camera that looks away from everything (SPEC §11: vader.cfg, maca.cfg) is drawn as the
+   * course's programs drew it, with one warning per camera. Checked when camera or scene change.
+   */
+  checkLooksAway(scene: Scene, time: number): void {
+    const camera = this.camera;
+    if (!camera || this.warned.has(camera) || (this.checked?.camera === camera && this.checked.scene === scene)) return;
+    this.checked = { camera, scene };
+    if (scene.objects.length === 0 || !courseSceneRange(camera, scene, time).behind) return;
+    this.warned.add(camera);
+    warn(`camera-src: every vertex is behind the camera (z ≤ 0 along N); drawn as the course's programs drew it, the formula applied to negative z (the view along −N, mirrored top to bottom)`);
+  }
+
+  /** The vertical field of view the course window stands for (for level-of-detail choices). */
+  static fov(camera: CourseCamera): number {
+    return 2 * Math.atan(Math.abs(camera.hy / camera.d)) * DEG;
+  }
+
+  private fail(url: string, detail: ReturnType<typeof loadErrorDetail>): void {
+    this.changed();
+    queueMicrotask(() => this.host.dispatchEvent(new CustomEvent('error', { detail: { ...detail, url } })));
+  }
+}
+
+function absolute(url: string): string | null {
+  try {
+    return new URL(url, document.baseURI).href;
+  } catch {
+    return null;
+  }
+}
