@@ -4,6 +4,7 @@
 import type { Plugin } from 'vite';
 import { PNG } from 'pngjs';
 import { bunnyObj, dragonObj } from '../tests/data/make-obj.ts';
+import { makeChalice } from '../tests/data/course/make-chalice.ts';
 
 type Texel = (u: number, v: number) => [number, number, number];
 
@@ -59,6 +60,30 @@ function torusObj(): string {
 
 const TORUS_MTL = '# torus material\nnewmtl striped\nKa 0.2 0.2 0.2\nKd 0.9 0.9 0.9\nKs 0.6 0.6 0.6\nNs 64\nmap_Kd stripes.png\n';
 
+/**
+ * The course page's files (seed 002's formats, SPEC §11), written the way the course's own files
+ * are: CRLF, exponent forms, a bicubic Bézier bump of E = 24.
+ */
+function bezierBump(): string {
+  const lines = ['3 3', '24'];
+  for (let i = 0; i <= 3; i++) {
+    for (let j = 0; j <= 3; j++) {
+      const inner = i > 0 && i < 3 && j > 0 && j < 3;
+      lines.push(`${(-1.2 + 0.8 * i).toFixed(3)} ${(inner ? 1.6 : 0).toExponential(2)} ${(-1.2 + 0.8 * j).toFixed(3)}`);
+    }
+  }
+  return lines.join('\r\n') + '\r\n';
+}
+
+const COURSE: Record<string, () => string> = {
+  'chalice.byu': () => makeChalice().text,
+  'bump.byu': () => bezierBump(),
+  // C, N (not unit), V (not orthogonal to N), d hx hy.
+  'camera.cfg': () => '0 1.6 6\r\n0 -0.15 -1\r\n0 1 0.2\r\n1.2 0.8 0.45\r\n',
+  // Pl / ka / Ia / kd / Od / ks / Il / n
+  'iluminacao.txt': () => '-3 5 4\r\n0.25\r\n90 90 100\r\n0.7\r\n0.85 0.7 0.3\r\n0.6\r\n255 250 240\r\n12\r\n',
+};
+
 const FILES: Record<string, () => string | Buffer> = {
   'bunny.obj': () => bunnyObj(),
   'dragon.obj': () => dragonObj(4),
@@ -72,6 +97,14 @@ export function demoModels(): Plugin {
   return {
     name: 'demo-models',
     configureServer(server) {
+      server.middlewares.use('/demo/course/', (req, res, next) => {
+        const name = (req.url ?? '').replace(/^\//, '').split('?')[0];
+        const make = COURSE[name];
+        if (!make) return next();
+        if (!cache.has(`course/${name}`)) cache.set(`course/${name}`, make());
+        res.setHeader('Content-Type', 'text/plain; charset=utf-8');
+        res.end(cache.get(`course/${name}`));
+      });
       server.middlewares.use('/demo/models/', (req, res, next) => {
         const name = (req.url ?? '').replace(/^\//, '').split('?')[0];
         const make = FILES[name];

@@ -543,11 +543,22 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       }
       const image = new ImageData(pixels as Uint8ClampedArray<ArrayBuffer>, width, height);
       const out = this.softwareOut;
-      if (out && 'putImageData' in out) out.putImageData(image, 0, 0);
-      else if (out) void createImageBitmap(image).then((b) => (out as ImageBitmapRenderingContext).transferFromImageBitmap(b));
       const glassSkip = state.view === 'final' && !scene.glass ? 'no glass' : undefined;
-      this.frameDrawn(frozen, frozen.time, width, height, 0, passesFor(frozen.view, glassSkip));
-      if (this.dirty) this.scheduleFrame();
+      const done = () => {
+        if (generation !== this.softwareGeneration) return;
+        this.frameDrawn(frozen, frozen.time, width, height, 0, passesFor(frozen.view, glassSkip));
+        if (this.dirty) this.scheduleFrame();
+      };
+      if (out && 'putImageData' in out) {
+        out.putImageData(image, 0, 0);
+        done();
+      } else if (out) {
+        // The canvas held WebGL's frames (a bitmap renderer): the frame counts once it is shown.
+        void createImageBitmap(image).then((b) => {
+          if (generation === this.softwareGeneration) (out as ImageBitmapRenderingContext).transferFromImageBitmap(b);
+          done();
+        });
+      } else done();
     });
   }
 

@@ -1,0 +1,25 @@
+// The demo's course page (issue 11 §5): a scene read from seed 002's files, a switch between the
+// two renderers, and the difference image between them.
+import { test, expect, capture } from './fixtures';
+
+test('the course page draws its files with either renderer and shows the difference image between them', async ({ page }) => {
+  test.setTimeout(90_000);
+  await page.setViewportSize({ width: 1000, height: 640 });
+  await page.goto('/demo/course.html');
+  await page.waitForFunction(() => (document.getElementById('scene') as unknown as { stats: { frames: number } }).stats.frames > 0, undefined, { timeout: 30_000 });
+  const loads = await page.evaluate(() => [...document.querySelectorAll('glass-object')].map((o) => (o as unknown as { loading?: boolean }).loading));
+  expect(loads.every((l) => !l)).toBe(true);
+  const shot = await capture(page, undefined, '#scene');
+  let lit = 0;
+  for (let i = 0; i < shot.data.length; i += 4) if (shot.data[i] + shot.data[i + 1] + shot.data[i + 2] > 3 * 40) lit++;
+  expect(lit, 'pixels of the chalice and the bump').toBeGreaterThan(2000);
+  await page.selectOption('select[data-attr="renderer"]', 'software');
+  await expect.poll(() => page.evaluate(() => (document.getElementById('scene') as unknown as { stats: { renderer: string } }).stats.renderer)).toBe('software');
+  await page.click('#compare');
+  await expect(page.locator('#difference-caption')).toContainText('dB between the two renderers', { timeout: 30_000 });
+  const caption = await page.locator('#difference-caption').textContent();
+  const db = Number(/([\d.]+) dB/.exec(caption!)![1]);
+  console.log(`course page: ${caption}`);
+  expect(db, 'WebGL and software agree on the course scene').toBeGreaterThan(30);
+  expect(await page.evaluate(() => (document.getElementById('difference') as HTMLCanvasElement).width)).toBeGreaterThan(100);
+});
