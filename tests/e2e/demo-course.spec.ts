@@ -6,9 +6,13 @@ test('the course page draws its files with either renderer and shows the differe
   test.setTimeout(90_000);
   await page.setViewportSize({ width: 1000, height: 640 });
   await page.goto('/demo/course.html');
-  await page.waitForFunction(() => (document.getElementById('scene') as unknown as { stats: { frames: number } }).stats.frames > 0, undefined, { timeout: 30_000 });
-  const loads = await page.evaluate(() => [...document.querySelectorAll('glass-object')].map((o) => (o as unknown as { loading?: boolean }).loading));
-  expect(loads.every((l) => !l)).toBe(true);
+  // Both models loaded, and a frame drawn with them.
+  await page.waitForFunction(() => [...document.querySelectorAll('glass-object')].every((o) => (o as unknown as { loading: boolean }).loading === false), undefined, { timeout: 30_000 });
+  await page.evaluate(() => new Promise((r) => {
+    const el = document.getElementById('scene') as unknown as HTMLElement & { requestRender(): void };
+    el.addEventListener('frame', r, { once: true });
+    el.requestRender();
+  }));
   const shot = await capture(page, undefined, '#scene');
   let lit = 0;
   for (let i = 0; i < shot.data.length; i += 4) if (shot.data[i] + shot.data[i + 1] + shot.data[i + 2] > 3 * 40) lit++;
