@@ -9,6 +9,7 @@ import { renderScene, compareImages } from '../../src/reference';
 import { DEFAULT_LIGHT } from '../../src/scene/default-scene';
 import type { Light, Material, Scene, SceneObject, Vec3 } from '../../src/scene/scene';
 import type { FrameState, Shading } from '../../src/render/types';
+import { bezierPatchMesh } from '../../src/scene/geometry/bezier';
 
 const W = 320, H = 180;
 const BOUND_DB = 35;
@@ -53,6 +54,22 @@ const CASES: Case[] = [
     name: 'a dense Gaussian (225², 100k triangles) over a glass floor, its reflection from the clustered copy',
     scene: { glass: floor, objects: [gaussian(225, [0, 0.4, 0])], lights: [DEFAULT_LIGHT], background: grey(0.1) },
     state: state([4, 2.2, 5], [0, 0.4, 0]),
+  },
+  {
+    // Seed 002's Bézier surface: a bicubic bump at E = 40, as the course's .byu loader makes it.
+    name: 'a bicubic Bézier surface (E = 40) over a glass floor',
+    scene: {
+      glass: floor, lights: [DEFAULT_LIGHT], background: grey(0.1),
+      objects: [{
+        geometry: { kind: 'mesh', key: 'bezier-bump', data: bezierPatchMesh({ degreeU: 3, degreeV: 3, points: (() => {
+          const p: number[] = [];
+          for (let i = 0; i <= 3; i++) for (let j = 0; j <= 3; j++) p.push(-1.2 + 0.8 * i, i > 0 && i < 3 && j > 0 && j < 3 ? 1.6 : (i + j) % 2 ? 0.3 : 0, -1.2 + 0.8 * j);
+          return p;
+        })() }, 40) },
+        transform: at([0, 0.3, 0]), material: mat([0.9, 0.6, 0.3]), bounds: { center: [0, 0.6, 0], radius: 1.8 },
+      }],
+    },
+    state: state([3, 2.2, 4], [0, 0.5, 0]),
   },
   {
     name: 'two point lights',

@@ -7,6 +7,17 @@ import { BACKGROUND, DEFAULT_GLASS, DEFAULT_LIGHT, defaultScene } from '../../sr
 import type { Geometry, Material, Scene, SceneObject } from '../../src/scene/scene';
 import type { FrameState } from '../../src/render/types';
 import { SoftwareRenderer } from '../../src/software';
+import { bezierPatchMesh } from '../../src/scene/geometry/bezier';
+
+/** A bicubic Bézier bump (seed 002's geometry) at E = 40, as the course's .byu loader makes it. */
+function bezierBump() {
+  const points: number[] = [];
+  for (let i = 0; i <= 3; i++) for (let j = 0; j <= 3; j++) {
+    const inner = i > 0 && i < 3 && j > 0 && j < 3;
+    points.push(-1.2 + 0.8 * i, inner ? 1.6 : (i + j) % 2 ? 0.3 : 0, -1.2 + 0.8 * j);
+  }
+  return bezierPatchMesh({ degreeU: 3, degreeV: 3, points }, 40);
+}
 
 const BOUND_DB = 40;
 /**
@@ -112,6 +123,11 @@ const CASES: Case[] = [
       object({ kind: 'sphere', radius: 0.5 }, [0.8, 0.8, 1.3], { opacity: 0.5, diffuse: [0.3, 0.3, 0.9], ambient: [0.3, 0.3, 0.9] }),
       object({ kind: 'sphere', radius: 0.4 }, [-1.6, 0.3, 0.1], { opacity: 0.4, diffuse: [0.9, 0.8, 0.2], ambient: [0.9, 0.8, 0.2] }),
     ]),
+  },
+  {
+    name: 'a bicubic Bézier surface (E = 40) before the glass',
+    scene: glassScene([object({ kind: 'mesh', key: 'bezier-bump', data: bezierBump() }, [0.3, 0.2, 1.3], { diffuse: [0.9, 0.6, 0.3] },
+      { transform: { position: [0.3, 0.2, 1.3], rotation: [0, 25, 0], scale: [0.7, 0.7, 0.7], spin: 0 }, bounds: { center: [0, 0.6, 0], radius: 1.8 } })]),
   },
   {
     name: 'triplanar, cylindrical and spherical mappings, a point light',
