@@ -53,6 +53,44 @@ function checksEnabled(): boolean {
 
 export interface GlassPlaneScene extends SceneAttributes {}
 
+/**
+ * A plane of dark glass that reflects the viewer's side and lets through what is behind it,
+ * with Fresnel (SPEC §1–§3); `<glass-object>` and `<glass-light>` children replace the default
+ * objects and light (SPEC §9). Every attribute is also a camelCase property.
+ *
+ * @tagname glass-plane-scene
+ * @attr {number} [transparency=0.5] - T in the glass equation, 0..1; 1 = clear glass
+ * @attr {number} [cube-distance=0.75] - z of the cube's centre (signed distance from the glass)
+ * @attr {number} [ior=1.5] - index of refraction for the Fresnel term, 1..10
+ * @attr {'exact' | 'schlick' | 'classic'} [fresnel="exact"] - Fresnel model
+ * @attr {string} [camera-position="3.6 2.4 0.2"] - "x y z" of the camera
+ * @attr {string} [camera-rotation="-169 -23.6"] - "yaw pitch" in degrees; yaw −90 looks down −Z, pitch clamped to ±89.9
+ * @attr {number} [fov=60] - vertical field of view in degrees, 1..179
+ * @attr {'perspective' | 'orthographic'} [projection="perspective"] - orthographic keeps the size the perspective view had at the target (or the glass centre)
+ * @attr {'flyby' | 'orbit' | 'trackball' | boolean} [controls=null] - the input mode; the bare attribute means flyby; absent: no input
+ * @attr {'auto' | 'webgl' | 'software'} [renderer="auto"] - auto: WebGL2 where available, else the CPU renderer (in a worker)
+ * @attr {string} [camera-target=null] - "x y z" the camera looks at (overrides camera-rotation); orbit turns about it
+ * @attr {number} [spin=0.8] - the cube's spin about its Y axis, rad/s; 0 stops it
+ * @attr {number} [time=null] - fixes the scene clock, in seconds (deterministic frames); absent: the live clock
+ * @attr {'none' | 'reflection' | 'scene' | 'fresnel' | 'passes'} [debug-view="none"] - shows one pass instead of the final image
+ * @attr {number} [reflection-scale=1] - reflection framebuffer size ÷ drawing-buffer size, 0.125..2
+ * @attr {0 | 2 | 4} [samples=4] - MSAA samples of the reflection and scene passes
+ * @attr {'phong' | 'gouraud' | 'flat'} [shading="phong"] - per-fragment phong, per-vertex gouraud, or flat
+ * @attr {number | 'auto'} [tessellation="auto"] - sphere segments 4..512, or auto (from the sphere's size on screen)
+ * @attr {number | 'auto'} [pixel-ratio="auto"] - drawing-buffer pixels per CSS pixel 0.25..4, or auto (devicePixelRatio)
+ * @attr {'rgba8' | 'rgba16f'} [reflection-format="rgba8"] - reflection storage (rgba16f: half float, where supported)
+ * @attr {string} [glass-center="0 1 0"] - "x y z": centre of the glass rectangle
+ * @attr {string} [glass-normal="0 0 1"] - "x y z": normal of the glass; "0 1 0" makes a glass floor
+ * @attr {string} [glass-size="8 4"] - "w h": width and height of the glass; "0 0" means no glass
+ * @attr {string} [background="0.1 0.1 0.1"] - any CSS colour, or "r g b" in 0..1: the clear colour, also of the reflection
+ * @attr {string} [alt="A dark glass plane reflecting a cube, with a sphere behind it"] - text alternative; becomes the aria-label
+ * @fires {CustomEvent<FrameReport>} ready - once, after the first frame is on the canvas
+ * @fires {CustomEvent<FrameReport>} frame - after every frame drawn
+ * @fires {CustomEvent<GlassPlaneSceneErrorDetail>} error - WebGL2 unavailable, a shader failed, the context was lost, or a load failed
+ * @fires {CustomEvent<CameraChangeDetail>} camera-change - after a gesture moved the camera, or the page set a camera attribute
+ * @csspart canvas - the canvas the scene is drawn on
+ * @csspart message - the message shown when the scene cannot be drawn
+ */
 export class GlassPlaneScene extends Base implements ContextClient, AttributeHost {
   static get observedAttributes(): string[] {
     return [...ATTRIBUTES.map((a) => a.attribute), 'alt'];

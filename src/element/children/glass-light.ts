@@ -17,6 +17,18 @@ const conflicts = new AttributeWarnings();
 
 export interface GlassLight extends LightAttributes {}
 
+/**
+ * One light of the scene (SPEC §9), a child of `<glass-plane-scene>`: `position` makes a point
+ * light, `direction` a directional one; with neither it is the default light of SPEC §3.
+ * Every attribute is also a property.
+ *
+ * @tagname glass-light
+ * @attr {string} [position=null] - "x y z": a point light there (wins over direction)
+ * @attr {string} [direction=null] - "x y z" towards a directional light; neither: the default light's direction
+ * @attr {string} [ambient="0.15 0.15 0.15"] - "r g b" ≥ 0, Ia (above 1 allowed)
+ * @attr {string} [diffuse="0.85 0.85 0.85"] - "r g b" ≥ 0, Id (above 1 allowed)
+ * @attr {string} [specular="1 1 1"] - "r g b" ≥ 0, Is (above 1 allowed)
+ */
 export class GlassLight extends ChildElement<LightAttributes> {
   static get observedAttributes(): string[] {
     return LIGHT_ATTRIBUTES.map((a) => a.attribute);

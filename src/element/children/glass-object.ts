@@ -48,6 +48,30 @@ function absolute(url: string | null): string | null {
 
 export interface GlassObject extends ObjectAttributes {}
 
+/**
+ * One object of the scene (SPEC §9): a built-in shape, or a model loaded from `src`. A child of
+ * `<glass-plane-scene>`; every attribute is also a camelCase property (`normalize`:
+ * `normalizeModel`). Material attributes win over the MTL's values, the MTL over the defaults.
+ *
+ * @tagname glass-object
+ * @attr {string} [src=null] - URL of an .obj model (its mtllib resolved against it); the format is sniffed from the content
+ * @attr {'cube' | 'sphere' | 'gaussian'} [shape=null] - cube (edge 1), sphere (radius 0.5) or gaussian; cube when there is no src, ignored when there is
+ * @attr {number} [resolution=40] - N×N vertices of the gaussian grid
+ * @attr {string} [position="0 0 0"] - "x y z" of the object's origin
+ * @attr {string} [rotation="0 0 0"] - "x y z" in degrees, applied X then Y then Z
+ * @attr {string} [scale="1 1 1"] - one number or "x y z"
+ * @attr {boolean} [normalize=false] - centre the model on the origin and scale its longest side to 2, before the transform
+ * @attr {string} [ambient=null] - "r g b" 0..1, Ka; the MTL's value, else "0.2 0.2 0.2"
+ * @attr {string} [diffuse=null] - "r g b" 0..1, Kd; the MTL's value, else "0.8 0.8 0.8"
+ * @attr {string} [specular=null] - "r g b" 0..1, Ks; the MTL's value, else "0.5 0.5 0.5"
+ * @attr {number} [shininess=null] - Blinn-Phong exponent 0..10000; the MTL's Ns, else 32
+ * @attr {number} [opacity=null] - 1 − kt, 0..1; the MTL's d, else 1
+ * @attr {string} [texture=null] - URL of an image multiplying Ka and Kd; the MTL's map_Kd, else the procedural texture
+ * @attr {'uv' | 'triplanar' | 'cylindrical' | 'spherical'} [mapping=null] - uv where the model has UVs, else spherical
+ * @fires {CustomEvent<ModelProgress>} progress - bytes of the model received (bubbles, composed)
+ * @fires {CustomEvent<{ url: string; warnings: string[] }>} load - the model is loaded and shown (bubbles, composed)
+ * @fires {CustomEvent<LoadErrorDetail>} error - the model could not be loaded or read (bubbles, composed)
+ */
 export class GlassObject extends ChildElement<ObjectAttributes> {
   static get observedAttributes(): string[] {
     return OBJECT_ATTRIBUTES.map((a) => a.attribute);
