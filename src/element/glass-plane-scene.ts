@@ -70,6 +70,7 @@ export interface GlassPlaneScene extends SceneAttributes {}
  * @attr {'flyby' | 'orbit' | 'trackball' | boolean} [controls=null] - the input mode; the bare attribute means flyby; absent: no input
  * @attr {'auto' | 'webgl' | 'software'} [renderer="auto"] - auto: WebGL2 where available, else the CPU renderer (in a worker)
  * @attr {string} [camera-target=null] - "x y z" the camera looks at (overrides camera-rotation); orbit turns about it
+ * @attr {string} [camera-src=null] - URL of a course camera file (.cfg: C, N, V, d hx hy); while it is in force it is the view
  * @attr {number} [spin=0.8] - the cube's spin about its Y axis, rad/s; 0 stops it
  * @attr {number} [time=null] - fixes the scene clock, in seconds (deterministic frames); absent: the live clock
  * @attr {'none' | 'reflection' | 'scene' | 'fresnel' | 'passes'} [debug-view="none"] - shows one pass instead of the final image

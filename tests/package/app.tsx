@@ -23,6 +23,7 @@ export function App() {
       controls="orbit"
       renderer="software"
       camera-target="0 0.5 -1"
+      camera-src="course/camera.cfg"
       spin={0}
       time={1.25}
       debug-view="reflection"
@@ -60,7 +61,7 @@ export function App() {
         onprogress={(e) => console.log(e.detail.loaded)}
         onerror={(e) => console.log(e.detail.message)}
       />
-      <glass-light position="2 3 1" direction="0 1 0" ambient="0.1 0.1 0.1" diffuse="0.9 0.9 0.9" specular="1 1 1" />
+      <glass-light position="2 3 1" direction="0 1 0" ambient="0.1 0.1 0.1" diffuse="0.9 0.9 0.9" specular="1 1 1" src="course/iluminacao.txt" />
       <glass-plane-scene controls />
       {/* @ts-expect-error controls is flyby, orbit, trackball or a boolean */}
       <glass-plane-scene controls="orbitt" />

@@ -28,6 +28,7 @@ export interface GlassLight extends LightAttributes {}
  * @attr {string} [ambient="0.15 0.15 0.15"] - "r g b" ≥ 0, Ia (above 1 allowed)
  * @attr {string} [diffuse="0.85 0.85 0.85"] - "r g b" ≥ 0, Id (above 1 allowed)
  * @attr {string} [specular="1 1 1"] - "r g b" ≥ 0, Is (above 1 allowed)
+ * @attr {string} [src=null] - URL of the course's iluminacao.txt: a point light at Pl, and the material of the element's objects; attributes win over the file
  */
 export class GlassLight extends ChildElement<LightAttributes> {
   static get observedAttributes(): string[] {
