@@ -54,6 +54,9 @@ export class SoftwareRenderer {
   private readonly mirroredClip = new Float64Array(4);
   private readonly sideClip = new Float64Array(4);
   private readonly transparent: number[] = [];
+  /** The `passes` view's frame, and the state each of its tiles is drawn with (reused). */
+  private tiled = new Uint8ClampedArray(0);
+  private readonly tileState = {} as FrameState;
   private readonly draw: ObjectDraw;
   private defaultScene: { cubeDistance: number; spin: number; scene: Scene } | null = null;
 
@@ -76,6 +79,7 @@ export class SoftwareRenderer {
    * material whose image is missing draws with the procedural texture.
    */
   render(state: FrameState, scene?: Scene, images?: ReadonlyMap<string, DecodedImage>): Uint8ClampedArray {
+    if (state.view === 'passes') return this.tiles(state, scene, images);
     const timing = this.timing;
     this.objectShader.timing = timing;
     if (!timing) return this.frame(state, scene, images);
@@ -87,6 +91,32 @@ export class SoftwareRenderer {
     }
   }
 
+  /**
+   * The `passes` debug view as the WebGL renderer tiles it: reflection | scene over
+   * fresnel | final, each drawn at its tile's size; on an odd size the right column and the top
+   * row take the extra pixel.
+   */
+  private tiles(state: FrameState, scene?: Scene, images?: ReadonlyMap<string, DecodedImage>): Uint8ClampedArray {
+    const width = Math.max(0, Math.floor(state.width)), height = Math.max(0, Math.floor(state.height));
+    if (this.tiled.length !== 4 * width * height) this.tiled = new Uint8ClampedArray(4 * width * height);
+    const left = Math.floor(width / 2), right = width - left;
+    const bottom = Math.floor(height / 2), top = height - bottom;
+    const tile = Object.assign(this.tileState, state);
+    const put = (view: FrameState['view'], x: number, y: number, w: number, h: number) => {
+      if (w === 0 || h === 0) return;
+      tile.view = view;
+      tile.width = w;
+      tile.height = h;
+      const px = this.render(tile, scene, images);
+      for (let row = 0; row < h; row++) this.tiled.set(px.subarray(4 * row * w, 4 * (row + 1) * w), 4 * ((y + row) * width + x));
+    };
+    put('reflection', 0, 0, left, top);
+    put('scene', left, 0, right, top);
+    put('fresnel', 0, top, left, bottom);
+    put('final', left, top, right, bottom);
+    return this.tiled;
+  }
+
   private frame(state: FrameState, scene?: Scene, images?: ReadonlyMap<string, DecodedImage>): Uint8ClampedArray {
     scene ??= this.defaultSceneFor(state);
     const n = Math.max(1, Math.min(8, Math.floor(this.samplesPerAxis)));
@@ -96,8 +126,7 @@ export class SoftwareRenderer {
     if (W === 0 || H === 0) return this.output;
     this.prepare(state, scene);
 
-    // 'passes' (four tiles) is not drawn yet: it shows the final image.
-    const view = state.view === 'passes' ? 'final' : state.view;
+    const view = state.view; // 'passes' is tiled by render()
     let source = this.colour;
     const hasGlass = this.setup.hasGlass;
     switch (view) {

@@ -176,3 +176,29 @@ describe(`software renderer against the reference (${STATE.width}×${STATE.heigh
     expect(cmp.psnr.all).toBeGreaterThan(30);
   });
 });
+
+describe('software renderer: the passes debug view', () => {
+  it('tiles reflection | scene over fresnel | final like the WebGL renderer, every pixel written on an odd size', () => {
+    const r = new SoftwareRenderer();
+    const scene = defaultScene(0.75, 0.8);
+    const state: FrameState = { ...STATE, width: 161, height: 91, view: 'passes' };
+    const tiled = r.render(state, scene).slice();
+    for (let i = 3; i < tiled.length; i += 4) expect(tiled[i]).toBe(255);
+    // left 80, right 81; bottom 45, top 46 (top row first in the output).
+    const quadrants: [FrameState['view'], number, number, number, number][] = [
+      ['reflection', 0, 0, 80, 46], ['scene', 80, 0, 81, 46], ['fresnel', 0, 46, 80, 45], ['final', 80, 46, 81, 45],
+    ];
+    for (const [view, x, y, w, h] of quadrants) {
+      const alone = r.render({ ...state, view, width: w, height: h }, scene);
+      let differing = 0;
+      for (let row = 0; row < h; row++) {
+        for (let col = 0; col < w * 4; col++) if (tiled[4 * ((y + row) * 161 + x) + col] !== alone[4 * row * w + col]) differing++;
+      }
+      expect(differing, `${view} tile`).toBe(0);
+    }
+    // Not four copies of one view.
+    const a = r.render({ ...state, view: 'reflection', width: 80, height: 46 }, scene).slice();
+    const b = r.render({ ...state, view: 'final', width: 80, height: 46 }, scene);
+    expect(a.some((v, i) => v !== b[i])).toBe(true);
+  });
+});
