@@ -131,6 +131,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private softwareBusy = false;
   /** Decoded pixels of the scene's image textures, for the software renderer. */
   private readonly softwareImages = new Map<string, DecodedImage>();
+  private readonly softwareAsked = new Set<string>();
   /** How software frames reach the canvas: a 2D context, or (after WebGL used it) a bitmap renderer. */
   private softwareOut: CanvasRenderingContext2D | ImageBitmapRenderingContext | null = null;
   private resizeObserver: ResizeObserver | null = null;
@@ -605,9 +606,10 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private syncSoftwareImages(scene: Scene): void {
     for (const o of scene.objects) {
       const t = o.material.texture;
-      if (t.kind !== 'image' || this.softwareImages.has(t.url)) continue;
+      if (t.kind !== 'image' || this.softwareAsked.has(t.url)) continue;
       const url = t.url;
-      this.softwareImages.set(url, { width: 0, height: 0, data: new Uint8ClampedArray(0) }); // asked for
+      // Only decoded pixels go in softwareImages: the worker is sent each URL's entry once.
+      this.softwareAsked.add(url);
       void decodeImage(url).then((bitmap) => {
         if (!bitmap) return;
         const c = new OffscreenCanvas(bitmap.width, bitmap.height);

@@ -17,20 +17,29 @@ interface JsonObject extends Omit<SceneObject, 'geometry'> {
   geometry: SceneObject['geometry'] | { kind: 'mesh'; key: string; data: Record<string, number[]> };
 }
 
-test('a textured OBJ with MTL, a concave n-gon and negative indices matches the reference', async ({ page }) => {
+for (const renderer of ['webgl', 'software'] as const) test(`${renderer}: a textured OBJ with MTL, a concave n-gon and negative indices matches the reference`, async ({ page }) => {
   await openPage(page);
   // The image arrives late (a slow server): `load`, hence `ready`, must still wait for it.
   await page.route('**/models/checker.png', async (route) => {
     await new Promise((r) => setTimeout(r, 600));
     await route.continue();
   });
-  await mountHtml(page, `<glass-plane-scene time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
+  await mountHtml(page, `<glass-plane-scene renderer="${renderer}" time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
     <glass-object src="/tests/e2e/pages/models/ngon-textured.obj" position="-1.5 0 1"></glass-object>
     <glass-light direction="0.3 0.8 1"></glass-light>
   </glass-plane-scene>`);
   // `ready` waits for the model's load, which waits for its map_Kd image: one frame later the
   // image is on screen (no timeout; without the wait the frame shows the procedural checker).
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r(null)))));
+  if (renderer === 'software') {
+    // The software renderer decodes the image to pixels on its own side, then draws again.
+    await page.waitForTimeout(300);
+    await page.evaluate(() => new Promise((r) => {
+      const el = document.querySelector('glass-plane-scene') as unknown as HTMLElement & { requestRender(): void };
+      el.addEventListener('frame', r, { once: true });
+      el.requestRender();
+    }));
+  }
   const image = await capture(page);
 
   const { scene, view } = await page.evaluate(() => {
@@ -73,9 +82,10 @@ test('a textured OBJ with MTL, a concave n-gon and negative indices matches the 
   };
   const ref = renderScene({ ...scene, objects }, state, { samplesPerAxis: 4, images });
   const cmp = compareImages(ref, image.data);
-  const line = `textured OBJ + MTL, n-gon, negative indices: PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}, glass ${cmp.psnr.glass.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;
+  const line = `${renderer}: textured OBJ + MTL, n-gon, negative indices: PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}, glass ${cmp.psnr.glass.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;
   console.log(line);
   test.info().annotations.push({ type: 'psnr', description: line });
   expect(cmp.pixels.objects, 'the model covers part of the frame').toBeGreaterThan(300);
-  expect(cmp.psnr.all, line).toBeGreaterThanOrEqual(BOUND_DB);
+  // Issue 9's bar for WebGL; issue 11's (40 dB) holds for both.
+  expect(cmp.psnr.all, line).toBeGreaterThanOrEqual(Math.max(BOUND_DB, 40));
 });
