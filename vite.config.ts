@@ -43,6 +43,9 @@ export default defineConfig(({ mode, command }) => {
       },
       rollupOptions: {
         external: standalone ? [] : [/^gl-matrix/],
+        // Library mode keeps whitespace in ES output; the self-contained file is for <script>
+        // tags and CDNs, so it is minified whole.
+        output: standalone ? { minify: true } : {},
       },
     },
   };

@@ -12,6 +12,16 @@ for (const input of document.querySelectorAll<HTMLInputElement | HTMLSelectEleme
     scene.setAttribute(attr, input.value);
     show();
   });
+  // Both ways: an attribute changed elsewhere (a script, the F key, devtools) moves the control.
+  const follow = () => {
+    const value = scene.getAttribute(attr);
+    if (value !== null && value !== input.value) {
+      input.value = value;
+      show();
+    }
+  };
+  new MutationObserver(follow).observe(scene, { attributes: true, attributeFilter: [attr] });
+  follow();
   show();
 }
 

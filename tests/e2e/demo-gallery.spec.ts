@@ -71,3 +71,18 @@ test('the demo takes orbit input by default and offers controls and projection m
   const q = await page.evaluate(() => (document.getElementById('scene') as unknown as { objectRotation: number[] }).objectRotation);
   expect(2 * Math.acos(Math.min(1, Math.abs(q[3]))) * (180 / Math.PI), 'degrees the drag turned the model').toBeGreaterThan(5);
 });
+
+test('the demo\'s controls follow attribute changes made elsewhere', async ({ page }) => {
+  await page.goto('/demo/');
+  await page.waitForFunction(() => (document.getElementById('scene') as unknown as { stats: { frames: number } }).stats.frames > 0);
+  await page.evaluate(() => {
+    const el = document.getElementById('scene')!;
+    el.setAttribute('transparency', '0.83');
+    el.setAttribute('fresnel', 'schlick');
+    el.setAttribute('projection', 'orthographic');
+  });
+  await expect(page.locator('input[data-attr="transparency"]')).toHaveValue('0.83');
+  await expect(page.locator('output[for="transparency"]')).toHaveText('0.83');
+  await expect(page.locator('select[data-attr="fresnel"]')).toHaveValue('schlick');
+  await expect(page.locator('select[data-attr="projection"]')).toHaveValue('orthographic');
+});

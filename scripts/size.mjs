@@ -1,0 +1,82 @@
+// Size check (SPEC §12, issue 12 §5): the gzip size of every chunk of the self-contained build
+// (dist/glass-plane-scene.standalone.js, minified, and what it imports statically or lazily)
+// against the budget per chunk in package.json "sizeBudget" (bytes, min+gzip). `--tree` shows
+// where the bytes go, from the ES build (dist/glass-plane-scene.js), whose chunks keep a
+// "// path" line before each module: each module gzipped alone, so a share, not exact bytes
+// (and before whitespace removal, gl-matrix excluded: a map of the weight, not the budget).
+//
+//   npm run size            the table, and a non-zero exit over budget
+//   npm run size -- --tree  and every module of every chunk, largest first
+import fs from 'node:fs';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { fileURLToPath } from 'node:url';
+
+const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+const DIST = path.join(ROOT, 'dist');
+const ENTRY = 'glass-plane-scene.standalone.js';
+const gz = (s) => zlib.gzipSync(s, { level: 9 }).length;
+const kB = (n) => (n / 1000).toFixed(1);
+
+/** The chunks the entry reaches: static imports (loaded with it) and dynamic ones (lazy), and workers. */
+function graph(entry) {
+  const chunks = new Map();
+  const visit = (file, lazy, from) => {
+    if (chunks.has(file)) return;
+    const text = fs.readFileSync(path.join(DIST, file), 'utf8');
+    chunks.set(file, { file, text, lazy, from });
+    // Quotes of either kind (the minifier writes template literals).
+    const q = '["\'`]';
+    const rel = (m) => path.posix.join(path.posix.dirname(file), m[1]);
+    for (const m of text.matchAll(new RegExp(`from\\s*${q}\\.\\/([^"'\`]+\\.js)${q}`, 'g'))) visit(rel(m), lazy, file);
+    for (const m of text.matchAll(new RegExp(`import\\(\\s*${q}\\.\\/([^"'\`]+\\.js)${q}\\s*\\)`, 'g'))) visit(rel(m), true, file);
+    for (const m of text.matchAll(new RegExp(`new URL\\(\\s*(?:/\\*[^*]*\\*/\\s*)?(?:new URL\\(\\s*)?${q}\\.?\\/?(assets\\/[^"'\`]+\\.js)${q}`, 'g'))) visit(m[1], true, file);
+  };
+  visit(entry, false, null);
+  return [...chunks.values()];
+}
+
+/** A chunk's name without its hash: "model-loader", "assets/worker". */
+const nameOf = (file) => file.replace(/-[A-Za-z0-9_-]{8}\.js$/, '').replace(/\.js$/, '');
+
+function modules(text) {
+  const parts = text.split(/^(?=\/\/ (?:src|node_modules|shaders|\.\.)\/)/m);
+  return parts.map((p) => {
+    const m = /^\/\/ (\S+)/.exec(p);
+    return { name: m ? m[1] : '(chunk glue)', bytes: gz(p) };
+  }).sort((a, b) => b.bytes - a.bytes);
+}
+
+const pkg = JSON.parse(fs.readFileSync(path.join(ROOT, 'package.json'), 'utf8'));
+const budget = pkg.sizeBudget ?? {};
+if (!fs.existsSync(path.join(DIST, ENTRY))) {
+  console.error('size: dist is missing; run `npm run build` first');
+  process.exit(1);
+}
+const chunks = graph(ENTRY);
+const core = chunks.filter((c) => !c.lazy);
+const rows = [{ name: 'core', files: core }];
+for (const c of chunks.filter((c) => c.lazy)) rows.push({ name: nameOf(c.file), files: [c] });
+let over = 0;
+const lines = ['| chunk | loaded | min+gzip | budget |', '|---|---|---|---|'];
+for (const r of rows) {
+  const bytes = r.files.reduce((s, c) => s + gz(c.text), 0);
+  const b = budget[r.name];
+  const ok = b === undefined || bytes <= b;
+  if (!ok) over++;
+  lines.push(`| ${r.name} | ${r.name === 'core' ? 'with the element' : 'when a scene uses it'} | ${kB(bytes)} kB | ${b === undefined ? '—' : `${kB(b)} kB${ok ? '' : ' **over**'}`} |`);
+}
+console.log(lines.join('\n'));
+if (process.argv.includes('--tree')) {
+  const es = graph('glass-plane-scene.js');
+  const groups = [{ name: 'core', files: es.filter((c) => !c.lazy) }, ...es.filter((c) => c.lazy).map((c) => ({ name: nameOf(c.file), files: [c] }))];
+  for (const g of groups) {
+    const all = g.files.flatMap((c) => modules(c.text)).sort((a, b) => b.bytes - a.bytes);
+    console.log(`\n${g.name} (ES build, modules gzipped alone):`);
+    for (const m of all) console.log(`  ${kB(m.bytes).padStart(6)} kB  ${m.name}`);
+  }
+}
+const missing = rows.filter((r) => budget[r.name] === undefined).map((r) => r.name);
+if (missing.length) console.log(`size: no budget for ${missing.join(', ')} (package.json "sizeBudget")`);
+console.log(`size: ${rows.length - over} within budget, ${over} over`);
+process.exit(over || missing.length ? 1 : 0);
