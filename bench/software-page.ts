@@ -74,7 +74,7 @@ const api = {
     const h = await softwareHost(), scene = defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), out: number[] = [];
     for (let i = 0; i < warmup + frames; i++) {
       const t0 = performance.now();
-      await h.render(frameState(size, 1 + i / 60), scene, new Map(), samplesPerAxis);
+      await h.render(frameState(size, 1 + i / 60), scene, samplesPerAxis);
       if (i >= warmup) out.push(performance.now() - t0);
     }
     return out;
@@ -83,7 +83,7 @@ const api = {
   /** The default scene at `time` through SoftwareHost's worker: RGBA8, top row first, base64. */
   async hostPixels(size: Size, samplesPerAxis: number, time: number): Promise<string> {
     const h = await softwareHost();
-    return toBase64(await h.render(frameState(size, time), defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), new Map(), samplesPerAxis));
+    return toBase64(await h.render(frameState(size, time), defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), samplesPerAxis));
   },
 
   /**

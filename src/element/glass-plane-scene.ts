@@ -13,12 +13,11 @@ import { readCanvas } from './canvas-readback';
 import { SharedContext, type ContextClient, type Presenter } from './shared-context';
 import { Renderer, passesFor, type ReadbackSource } from '../render/renderer';
 import { SoftwareHost } from './software-host';
-import type { DecodedImage } from '../reference/image-texture';
 import { ShaderError } from '../render/gl/program';
 import type { FrameReport, FrameState, RenderStats } from '../render/types';
 import type { CameraChangeDetail, CapturePass, ErrorType, GlassPlaneSceneEventMap } from './types';
 import { SceneSource } from './scene-source';
-import { TextureImages, decodeImage } from './texture-images';
+import { TextureImages } from './texture-images';
 import { composeScene } from './compose-scene';
 import { CameraSource } from './camera-source';
 import type { Scene } from '../scene/scene';
@@ -129,9 +128,6 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private softwareStarting = false;
   /** A software frame is drawing; another is wanted when it is back. */
   private softwareBusy = false;
-  /** Decoded pixels of the scene's image textures, for the software renderer. */
-  private readonly softwareImages = new Map<string, DecodedImage>();
-  private readonly softwareAsked = new Set<string>();
   /** How software frames reach the canvas: a 2D context, or (after WebGL used it) a bitmap renderer. */
   private softwareOut: CanvasRenderingContext2D | ImageBitmapRenderingContext | null = null;
   private resizeObserver: ResizeObserver | null = null;
@@ -347,7 +343,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     if (this.software) {
       // Drawn now, on this thread, from the last frame's state (capture is synchronous).
       const state: FrameState = { ...(this.lastState ?? this.frameState(performance.now())), view: source as FrameState['view'] };
-      const pixels = this.software.renderNow(state, this.scene, this.softwareImages) as Uint8ClampedArray<ArrayBuffer>;
+      const pixels = this.software.renderNow(state, this.scene) as Uint8ClampedArray<ArrayBuffer>;
       return new ImageData(pixels, state.width, state.height);
     }
     try {
@@ -442,6 +438,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       this.softwareStarting = false;
       if (generation !== this.softwareGeneration || !this.isConnected) return host.dispose();
       this.software = host;
+      this.images.attach(host);
       this.softwareOut = this.canvas.getContext('2d', { alpha: false }) ?? this.canvas.getContext('bitmaprenderer');
       this.resizeCanvas();
       this.requestRender();
@@ -457,6 +454,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.softwareGeneration++;
     this.softwareStarting = false;
     this.softwareBusy = false;
+    if (this.software) this.images.attach(null);
     this.software?.dispose();
     this.software = null;
   }
@@ -570,11 +568,11 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     if (this.clientWidth === 0 || this.clientHeight === 0) return;
     const state = this.frameState(now);
     const scene = this.scene;
-    this.syncSoftwareImages(scene);
+    this.images.sync(scene);
     const generation = this.softwareGeneration;
     this.softwareBusy = true;
     const frozen: FrameState = { ...state };
-    void host.render(frozen, scene, this.softwareImages).then((pixels) => {
+    void host.render(frozen, scene).then((pixels) => {
       if (generation !== this.softwareGeneration) return;
       this.softwareBusy = false;
       if (this.canvas.width !== width || this.canvas.height !== height) {
@@ -600,25 +598,6 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
         });
       } else done();
     });
-  }
-
-  /** Decoded pixels for the software renderer of the images the scene names (once per URL). */
-  private syncSoftwareImages(scene: Scene): void {
-    for (const o of scene.objects) {
-      const t = o.material.texture;
-      if (t.kind !== 'image' || this.softwareAsked.has(t.url)) continue;
-      const url = t.url;
-      // Only decoded pixels go in softwareImages: the worker is sent each URL's entry once.
-      this.softwareAsked.add(url);
-      void decodeImage(url).then((bitmap) => {
-        if (!bitmap) return;
-        const c = new OffscreenCanvas(bitmap.width, bitmap.height);
-        const ctx = c.getContext('2d')!;
-        ctx.drawImage(bitmap, 0, 0);
-        this.softwareImages.set(url, ctx.getImageData(0, 0, bitmap.width, bitmap.height));
-        this.requestRender();
-      });
-    }
   }
 
   /** After a frame is on the canvas: counts, the last state (for capture), `ready` and `frame`. */

@@ -16,7 +16,26 @@ export class SoftwareHost {
   private nextId = 0;
   private pending: { id: number; resolve(p: Uint8ClampedArray): void; reject(e: Error): void } | null = null;
 
+  /**
+   * Decoded pixels of the scene's image textures by URL. The host is the element's image sink
+   * (texture-images.ts) while it draws: each image is decoded once per page, as for WebGL.
+   */
+  readonly images = new Map<string, DecodedImage>();
+
   private constructor(private readonly local: SoftwareRenderer) {}
+
+  /** ImageSink: an image arrives (as pixels: the CPU reads them), or goes (null). */
+  setImage(url: string, image: TexImageSource | null): void {
+    if (!image) {
+      this.images.delete(url);
+      return;
+    }
+    const { width, height } = image as { width: number; height: number };
+    const canvas = new OffscreenCanvas(width, height);
+    const ctx = canvas.getContext('2d')!;
+    ctx.drawImage(image as CanvasImageSource, 0, 0);
+    this.images.set(url, ctx.getImageData(0, 0, width, height));
+  }
 
   /** Loads the renderer and starts its worker (or settles for the main thread). */
   static async create(useWorker = true): Promise<SoftwareHost> {
@@ -29,10 +48,6 @@ export class SoftwareHost {
   /** Where frames are drawn. */
   get thread(): SoftwareThread {
     return this.worker ? 'worker' : 'main';
-  }
-
-  get busy(): boolean {
-    return this.pending !== null;
   }
 
   private startWorker(): void {
@@ -70,8 +85,9 @@ export class SoftwareHost {
    * when there is one (the request is a copy: the caller may change `state` at once), else now.
    * A worker that fails mid-way hands the frame to the main thread.
    */
-  render(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage>, samplesPerAxis = 1): Promise<Uint8ClampedArray> {
-    if (!this.worker) return Promise.resolve(this.renderNow(state, scene, images, samplesPerAxis));
+  render(state: FrameState, scene: Scene, samplesPerAxis = 1): Promise<Uint8ClampedArray> {
+    const images = this.images;
+    if (!this.worker) return Promise.resolve(this.renderNow(state, scene, samplesPerAxis));
     const id = ++this.nextId;
     const request: SoftwareRequest = { id, state, samplesPerAxis, ...this.sent.pack(scene, images) };
     return new Promise<Uint8ClampedArray>((resolve, reject) => {
@@ -82,13 +98,13 @@ export class SoftwareHost {
         this.pending = null;
         reject(e instanceof Error ? e : new Error(String(e)));
       }
-    }).catch(() => this.renderNow(state, scene, images, samplesPerAxis));
+    }).catch(() => this.renderNow(state, scene, samplesPerAxis));
   }
 
   /** Draws on the main thread, now (capture of a pass, the fallback). A copy of the pixels. */
-  renderNow(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage>, samplesPerAxis = 1): Uint8ClampedArray {
+  renderNow(state: FrameState, scene: Scene, samplesPerAxis = 1): Uint8ClampedArray {
     this.local.samplesPerAxis = samplesPerAxis;
-    return this.local.render(state, scene, images).slice();
+    return this.local.render(state, scene, this.images).slice();
   }
 
   dispose(): void {

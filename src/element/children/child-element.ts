@@ -49,6 +49,11 @@ export abstract class ChildElement<V extends object> extends Base {
   }
 
   /** Tells the scene element (if this child is in one) to rebuild its scene. */
+  /** A child's own event (load, progress, error): bubbles and crosses shadow roots. */
+  protected fire(type: string, detail: unknown): void {
+    this.dispatchEvent(new CustomEvent(type, { detail, bubbles: true, composed: true }));
+  }
+
   protected changed(): void {
     if (this.isConnected) this.dispatchEvent(new Event(CHILD_CHANGE, { bubbles: true }));
   }

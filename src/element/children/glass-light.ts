@@ -134,10 +134,6 @@ export class GlassLight extends ChildElement<LightAttributes> {
     this.pending = false;
     if (had) this.changed();
   }
-
-  private fire(type: string, detail: unknown): void {
-    this.dispatchEvent(new CustomEvent(type, { detail, bubbles: true, composed: true }));
-  }
 }
 
 function unit(v: Vec3): Vec3 {

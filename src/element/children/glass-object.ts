@@ -192,10 +192,6 @@ export class GlassObject extends ChildElement<ObjectAttributes> {
     this.pending = false;
     if (hadModel) this.changed();
   }
-
-  private fire(type: string, detail: unknown): void {
-    this.dispatchEvent(new CustomEvent(type, { detail, bubbles: true, composed: true }));
-  }
 }
 
 defineChildProperties(GlassObject.prototype, OBJECT_ATTRIBUTES);
