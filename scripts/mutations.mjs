@@ -125,6 +125,20 @@ const MUTATIONS = [
     edits: [{ file: 'src/render/object-meshes.ts', find: '    for (const entry of slot.reflection.values()) if (entry) this.shared.releaseMesh(entry.key);\n', replace: '' }],
     tests: [LEAKS],
   },
+  {
+    name: '13 software rasterizer without the top-left rule',
+    edits: [{
+      file: 'src/software/raster.ts',
+      find: '    const bias0 = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;\n    const bias1 = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;\n    const bias2 = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;',
+      replace: '    const bias0 = 0;\n    const bias1 = 0;\n    const bias2 = 0;',
+    }],
+    tests: ['tests/unit/software-raster.test.ts'],
+  },
+  {
+    name: '14 the software renderer never given the decoded images',
+    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '      this.images.attach(host);\n', replace: '' }],
+    tests: ['tests/e2e/model-reference.spec.ts'],
+  },
 ];
 
 const occurrences = (text, find) => text.split(find).length - 1;
