@@ -1,4 +1,4 @@
-// Mutation check for the tests (issue 14 §2): each mutation below breaks one pass on purpose in a
+// Mutation check for the tests (issue 14 §2): each mutation (scripts/mutations/*.mjs) breaks one pass on purpose in a
 // temporary copy of the repository and runs the tests meant to catch it. A mutation is "caught"
 // when at least one of those tests fails, "missed" when they all pass, "stale" when its search
 // text is no longer in the file exactly once (the code moved: fix the table, never skip it), and
@@ -6,7 +6,8 @@
 // An unmutated baseline runs first; if it fails, the table would mean nothing, so it stops there.
 //
 //   npm run test:mutations              every mutation
-//   npm run test:mutations -- clip      only those whose name contains "clip" (the baseline still runs)
+//   npm run test:mutations -- controls  only one area (a file of scripts/mutations/), or those whose
+//                                       name contains the word (the baseline still runs)
 //   KEEP_MUTANTS=1 …                    leave the temporary copies in place
 //
 // Logs: test-results/mutations/<name>.log. Not part of `npm test`: it runs the relevant specs
@@ -16,130 +17,22 @@ import fs from 'node:fs';
 import net from 'node:net';
 import os from 'node:os';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const LOG_DIR = path.join(ROOT, 'test-results', 'mutations');
 
-const PASSES = 'tests/e2e/passes.spec.ts';
-const LEAKS = 'tests/e2e/gl-leaks.spec.ts';
-const CONTROLS = 'tests/e2e/controls.spec.ts';
-
-/** { name, edits: [{ file, find, replace }], tests: spec (Playwright) or test (vitest) files }. */
-const MUTATIONS = [
-  {
-    name: '1 reflection drawn from the unmirrored camera',
-    edits: [{
-      file: 'src/render/frame-setup.ts',
-      find: 'this.compose(o.mirrored, o.model, mirroredEye, this.mirroredViewProjection);',
-      replace: 'this.compose(o.mirrored, o.model, eye, this.viewProjection);',
-    }],
-    tests: [PASSES],
-  },
-  {
-    name: '2 clip plane sign flipped',
-    edits: [{
-      file: 'src/render/frame-setup.ts',
-      find: 'this.clipPlane[0] = this.side * p[0];\n    this.clipPlane[1] = this.side * p[1];\n    this.clipPlane[2] = this.side * p[2];\n    this.clipPlane[3] = this.side * signedDistance(p, mirroredEye);',
-      replace: 'this.clipPlane[0] = -this.side * p[0];\n    this.clipPlane[1] = -this.side * p[1];\n    this.clipPlane[2] = -this.side * p[2];\n    this.clipPlane[3] = -this.side * signedDistance(p, mirroredEye);',
-    }],
-    tests: [PASSES],
-  },
-  {
-    name: '3 abs() removed from cosθ',
-    edits: [{
-      file: 'shaders/glass.frag',
-      find: 'float c = clamp(abs(dot(normalize(vNormal), v)), 0.0, 1.0);',
-      replace: 'float c = clamp(dot(normalize(vNormal), v), 0.0, 1.0);',
-    }],
-    tests: [PASSES],
-  },
-  {
-    name: '4 dispose() skips the texture',
-    edits: [{ file: 'src/render/gl/shared-resources.ts', find: '    this.procedural?.dispose();\n', replace: '' }],
-    tests: [LEAKS],
-  },
-  {
-    name: '5a discard fallback removed',
-    edits: [{ file: 'shaders/standard.frag', find: '  if (vClipDistance < 0.0) discard;\n', replace: '' }],
-    tests: [PASSES],
-  },
-  {
-    name: '5b discard fallback inverted',
-    edits: [{ file: 'shaders/standard.frag', find: 'if (vClipDistance < 0.0) discard;', replace: 'if (vClipDistance > 0.0) discard;' }],
-    tests: [PASSES],
-  },
-  {
-    name: '6a classic alpha without (1 − T)',
-    edits: [{
-      file: 'shaders/glass.frag',
-      find: 'float a = (1.0 - uTransparency) * (0.2 + 0.8 * f);',
-      replace: 'float a = 0.2 + 0.8 * f;',
-    }],
-    tests: [PASSES],
-  },
-  {
-    name: '6b classic colour not premultiplied',
-    edits: [{ file: 'shaders/glass.frag', find: 'outColor = vec4(mix(d, r, f) * a, a);', replace: 'outColor = vec4(mix(d, r, f), a);' }],
-    tests: [PASSES],
-  },
-  {
-    name: '7a far-side clip removed (clip distance and discard)',
-    edits: [
-      { file: 'shaders/standard.vert', find: 'gl_ClipDistance[0] = clipDistance;', replace: 'gl_ClipDistance[0] = 1.0;' },
-      { file: 'shaders/standard.frag', find: '  if (vClipDistance < 0.0) discard;\n', replace: '' },
-    ],
-    tests: [PASSES],
-  },
-  {
-    name: '7b far-side clip removed (uClipPlane zeroed)',
-    edits: [{
-      file: 'src/render/passes/draw-objects.ts',
-      find: "gl.uniform4fv(program.location('uClipPlane'), setup.clipPlane);",
-      replace: "gl.uniform4fv(program.location('uClipPlane'), [0, 0, 0, 0]);",
-    }],
-    tests: [PASSES],
-  },
-  {
-    name: '8 F forced to 0',
-    edits: [{ file: 'shaders/glass.frag', find: 'float f = fresnel(c);', replace: 'float f = 0.0;' }],
-    tests: [PASSES],
-  },
-  {
-    name: '9 inertia stepped by Euler (frame-rate dependent)',
-    edits: [{ file: 'src/element/controls/inertia.ts', find: '    const f = INERTIA_TAU * (1 - k);', replace: '    const f = t;' }],
-    tests: [CONTROLS],
-  },
-  {
-    name: '10 touch-action none without controls',
-    edits: [{ file: 'src/element/element-style.ts', find: 'canvas { display: block; width: 100%; height: 100%; }', replace: 'canvas { display: block; width: 100%; height: 100%; touch-action: none; }' }],
-    tests: [CONTROLS],
-  },
-  {
-    name: '11 pointer-lock entry movement turned by',
-    edits: [{ file: 'src/element/flyby-input.ts', find: '    this.skipNext = true;', replace: '' }],
-    tests: [CONTROLS],
-  },
-  {
-    name: '12 a dense mesh\'s clustered reflection copies never released',
-    edits: [{ file: 'src/render/object-meshes.ts', find: '    for (const entry of slot.reflection.values()) if (entry) this.shared.releaseMesh(entry.key);\n', replace: '' }],
-    tests: [LEAKS],
-  },
-  {
-    name: '13 software rasterizer without the top-left rule',
-    edits: [{
-      file: 'src/software/raster.ts',
-      find: '    const bias0 = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;\n    const bias1 = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;\n    const bias2 = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;',
-      replace: '    const bias0 = 0;\n    const bias1 = 0;\n    const bias2 = 0;',
-    }],
-    tests: ['tests/unit/software-raster.test.ts'],
-  },
-  {
-    name: '14 the software renderer never given the decoded images',
-    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '      this.images.attach(host);\n', replace: '' }],
-    tests: ['tests/e2e/model-reference.spec.ts'],
-  },
-];
+/**
+ * The mutations, one file per area under scripts/mutations/ (glass, controls, loaders, …): each
+ * exports an array of { name, edits: [{ file, find, replace }], tests }. The area is the file's name.
+ */
+const MUTATIONS_DIR = path.join(ROOT, 'scripts', 'mutations');
+const MUTATIONS = [];
+for (const file of fs.readdirSync(MUTATIONS_DIR).filter((f) => f.endsWith('.mjs')).sort()) {
+  const area = file.replace(/\.mjs$/, '');
+  const { default: list } = await import(pathToFileURL(path.join(MUTATIONS_DIR, file)).href);
+  for (const m of list) MUTATIONS.push({ ...m, area });
+}
 
 const occurrences = (text, find) => text.split(find).length - 1;
 
@@ -243,8 +136,8 @@ async function runTests(dir, tests, logName) {
 }
 
 function table(rows) {
-  const head = ['mutation', 'result', 'tests failed / run', 'caught by', 'time'];
-  const body = rows.map((r) => [r.name, r.status, r.counts, r.by, r.time]);
+  const head = ['area', 'mutation', 'result', 'tests failed / run', 'caught by', 'time'];
+  const body = rows.map((r) => [r.area, r.name, r.status, r.counts, r.by, r.time]);
   const widths = head.map((h, i) => Math.max(h.length, ...body.map((b) => b[i].length)));
   const line = (cells) => `| ${cells.map((c, i) => c.padEnd(widths[i])).join(' | ')} |`;
   return [line(head), `|${widths.map((w) => '-'.repeat(w + 2)).join('|')}|`, ...body.map(line)].join('\n');
@@ -254,7 +147,7 @@ const seconds = (t0) => `${((Date.now() - t0) / 1000).toFixed(0)} s`;
 
 async function main() {
   const filter = process.argv[2];
-  const chosen = MUTATIONS.filter((m) => !filter || m.name.includes(filter));
+  const chosen = MUTATIONS.filter((m) => !filter || m.area === filter || m.name.includes(filter));
   if (!chosen.length) {
     console.error(`mutations: no mutation name contains "${filter}"`);
     process.exit(2);
@@ -292,12 +185,12 @@ async function main() {
     const stale = applyEdits(dir, m.edits);
     let row;
     if (stale) {
-      row = { name: m.name, status: 'STALE', counts: '-', by: stale, time: seconds(t0) };
+      row = { area: m.area, name: m.name, status: 'STALE', counts: '-', by: stale, time: seconds(t0) };
     } else {
       const r = await runTests(dir, m.tests, m.name);
       const status = r.errors.length ? 'ERROR' : r.failed > 0 ? 'caught' : 'MISSED';
       const by = r.errors.length ? r.errors.join('; ') : r.failures.join('; ') || '-';
-      row = { name: m.name, status, counts: `${r.failed} / ${r.failed + r.passed}`, by, time: seconds(t0) };
+      row = { area: m.area, name: m.name, status, counts: `${r.failed} / ${r.failed + r.passed}`, by, time: seconds(t0) };
     }
     cleanup();
     rows.push(row);

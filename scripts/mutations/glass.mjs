@@ -1,0 +1,79 @@
+// The glass passes (GL): mirror, clip plane, Fresnel, the classic blend.
+// Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
+const PASSES = 'tests/e2e/passes.spec.ts';
+
+export default [
+  {
+    name: '1 reflection drawn from the unmirrored camera',
+    edits: [{
+      file: 'src/render/frame-setup.ts',
+      find: 'this.compose(o.mirrored, o.model, mirroredEye, this.mirroredViewProjection);',
+      replace: 'this.compose(o.mirrored, o.model, eye, this.viewProjection);',
+    }],
+    tests: [PASSES],
+  },
+  {
+    name: '2 clip plane sign flipped',
+    edits: [{
+      file: 'src/render/frame-setup.ts',
+      find: 'this.clipPlane[0] = this.side * p[0];\n    this.clipPlane[1] = this.side * p[1];\n    this.clipPlane[2] = this.side * p[2];\n    this.clipPlane[3] = this.side * signedDistance(p, mirroredEye);',
+      replace: 'this.clipPlane[0] = -this.side * p[0];\n    this.clipPlane[1] = -this.side * p[1];\n    this.clipPlane[2] = -this.side * p[2];\n    this.clipPlane[3] = -this.side * signedDistance(p, mirroredEye);',
+    }],
+    tests: [PASSES],
+  },
+  {
+    name: '3 abs() removed from cosθ',
+    edits: [{
+      file: 'shaders/glass.frag',
+      find: 'float c = clamp(abs(dot(normalize(vNormal), v)), 0.0, 1.0);',
+      replace: 'float c = clamp(dot(normalize(vNormal), v), 0.0, 1.0);',
+    }],
+    tests: [PASSES],
+  },
+  {
+    name: '5a discard fallback removed',
+    edits: [{ file: 'shaders/standard.frag', find: '  if (vClipDistance < 0.0) discard;\n', replace: '' }],
+    tests: [PASSES],
+  },
+  {
+    name: '5b discard fallback inverted',
+    edits: [{ file: 'shaders/standard.frag', find: 'if (vClipDistance < 0.0) discard;', replace: 'if (vClipDistance > 0.0) discard;' }],
+    tests: [PASSES],
+  },
+  {
+    name: '6a classic alpha without (1 − T)',
+    edits: [{
+      file: 'shaders/glass.frag',
+      find: 'float a = (1.0 - uTransparency) * (0.2 + 0.8 * f);',
+      replace: 'float a = 0.2 + 0.8 * f;',
+    }],
+    tests: [PASSES],
+  },
+  {
+    name: '6b classic colour not premultiplied',
+    edits: [{ file: 'shaders/glass.frag', find: 'outColor = vec4(mix(d, r, f) * a, a);', replace: 'outColor = vec4(mix(d, r, f), a);' }],
+    tests: [PASSES],
+  },
+  {
+    name: '7a far-side clip removed (clip distance and discard)',
+    edits: [
+      { file: 'shaders/standard.vert', find: 'gl_ClipDistance[0] = clipDistance;', replace: 'gl_ClipDistance[0] = 1.0;' },
+      { file: 'shaders/standard.frag', find: '  if (vClipDistance < 0.0) discard;\n', replace: '' },
+    ],
+    tests: [PASSES],
+  },
+  {
+    name: '7b far-side clip removed (uClipPlane zeroed)',
+    edits: [{
+      file: 'src/render/passes/draw-objects.ts',
+      find: "gl.uniform4fv(program.location('uClipPlane'), setup.clipPlane);",
+      replace: "gl.uniform4fv(program.location('uClipPlane'), [0, 0, 0, 0]);",
+    }],
+    tests: [PASSES],
+  },
+  {
+    name: '8 F forced to 0',
+    edits: [{ file: 'shaders/glass.frag', find: 'float f = fresnel(c);', replace: 'float f = 0.0;' }],
+    tests: [PASSES],
+  },
+];
