@@ -30,6 +30,9 @@ export default defineConfig(({ mode, command }) => {
     // The software renderer's worker is a module worker (it imports the renderer's chunk).
     worker: { format: 'es' as const },
     server: { host: '127.0.0.1', port: 5173 },
+    // The dev server's dependency scan reads every HTML file but the framework apps' (tests/frameworks/,
+    // built on their own by tests/e2e/frameworks.spec.ts): the demo pre-bundles no React, Vue or Svelte.
+    optimizeDeps: { entries: ['**/*.html', '!tests/frameworks/**'] },
     build: {
       outDir: 'dist',
       emptyOutDir: !standalone,

@@ -1,11 +1,16 @@
 // The package as users get it (`npm test`, after `npm run build`): `npm pack` into a temp dir,
 // then arethetypeswrong and publint on the tarball, then the consumer test: the tarball
-// installed into a temporary project whose files (tests/package/) must type-check under
-// `strict` with moduleResolution bundler, node16 and nodenext, and whose bad file must not.
+// installed into a temporary project whose files (tests/package/, and the README's React
+// example from tests/frameworks/react/) must type-check under `strict` with moduleResolution
+// bundler, node16 and nodenext, and whose bad file must not. Last, that project as a fresh Vite
+// app (tests/package/vite-app/: the README's bundler and React examples) is built with
+// `vite build` and its pages are opened in the tests' Chromium: the element draws, the README's
+// listeners and handlers run. All offline: vite, Chromium and React come from this repository.
 import { execFileSync, spawnSync } from 'node:child_process';
-import { cpSync, existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import { cpSync, existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, statSync, symlinkSync, writeFileSync } from 'node:fs';
+import { createServer } from 'node:http';
 import { tmpdir } from 'node:os';
-import { join, resolve } from 'node:path';
+import { extname, join, resolve, sep } from 'node:path';
 
 const repo = resolve('.');
 const bin = (name) => join(repo, 'node_modules/.bin', name);
@@ -22,6 +27,93 @@ function check(name, ok, detail = '') {
   if (ok) passed++;
   else failed++;
   console.log(`${ok ? 'ok  ' : 'FAIL'} ${name}${detail ? `\n${detail.replace(/^/gm, '     ')}` : ''}`);
+}
+
+/** The browser tests' Chromium flags (tests/e2e/fixtures.ts, CHROMIUM_ARGS): WebGL2 on SwiftShader, a closed network. */
+const CHROMIUM_ARGS = ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--headless=shell',
+  '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run', '--disable-quic'];
+
+/** The model the README's React example loads (/models/spot.obj): a cube, 8 vertices and 6 quads. */
+const CUBE_OBJ = 'v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n'
+  + 'f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 4 8 7 3\nf 1 5 8 4\nf 2 3 7 6\n';
+
+const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.map': 'application/json', '.obj': 'text/plain' };
+
+/**
+ * The consumer project as a fresh Vite app: `vite build` (this repository's Vite, the app's own
+ * node_modules for the package), then each page in Chromium from a static server of dist/.
+ */
+async function viteApp(root) {
+  const t0 = performance.now();
+  const built = run(bin('vite'), ['build', '--logLevel', 'warn'], { cwd: root });
+  const seconds = () => ((performance.now() - t0) / 1000).toFixed(1);
+  check(`vite build of a fresh Vite app with the tarball installed (2 pages) in ${seconds()} s`, built.status === 0, built.out.trim());
+  if (built.status !== 0) return;
+  const out = join(root, 'dist');
+  mkdirSync(join(out, 'models'));
+  writeFileSync(join(out, 'models/spot.obj'), CUBE_OBJ);
+  const server = createServer((req, res) => {
+    const file = join(out, decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname));
+    const ok = file.startsWith(out + sep) && existsSync(file) && statSync(file).isFile();
+    res.statusCode = ok ? 200 : 404;
+    if (ok) res.setHeader('Content-Type', MIME[extname(file)] ?? 'application/octet-stream');
+    res.end(ok ? readFileSync(file) : undefined);
+  });
+  await new Promise((done) => server.listen(0, '127.0.0.1', done));
+  const origin = `http://127.0.0.1:${server.address().port}`;
+  const { chromium } = await import('playwright-core');
+  const executablePath = process.env.PLAYWRIGHT_CHROMIUM ?? await (await import('@sparticuz/chromium')).default.executablePath();
+  const browser = await chromium.launch({ executablePath, args: CHROMIUM_ARGS });
+  try {
+    /** A page with the element's checks on, and every console line it printed. */
+    const open = async (path) => {
+      const page = await browser.newPage({ viewport: { width: 800, height: 600 }, deviceScaleFactor: 1 });
+      await page.addInitScript(() => { globalThis.__GLASS_PLANE_SCENE_CHECKS__ = true; });
+      const lines = [];
+      page.on('console', (m) => lines.push({ type: m.type(), text: m.text() }));
+      page.on('pageerror', (e) => lines.push({ type: 'pageerror', text: String(e) }));
+      await page.goto(`${origin}/${path}`);
+      return { page, lines, problems: () => lines.filter((l) => l.type !== 'log' && l.type !== 'debug' && l.type !== 'info') };
+    };
+
+    // The README's bundler example: the element renders the default scene, the page's property
+    // write reflects to the attribute, the page's `frame` listener logs the passes.
+    const plain = await open('index.html');
+    const seen = await plain.page.waitForFunction(() => (document.querySelector('glass-plane-scene')?.stats?.frames ?? 0) > 0, null, { timeout: 30_000 })
+      .then(() => true, () => false);
+    const result = seen ? await plain.page.evaluate(() => {
+      const el = document.querySelector('glass-plane-scene');
+      const image = el.capture();
+      // Pixels where one channel exceeds both others by more than 0.1 (tests/e2e/helpers/pixels.ts).
+      const dominant = (c) => {
+        let n = 0;
+        for (let i = 0; i < image.data.length; i += 4) {
+          const d = image.data;
+          if (d[i + c] - Math.max(d[i + (c + 1) % 3], d[i + (c + 2) % 3]) > 25.5) n++;
+        }
+        return n;
+      };
+      return { size: `${image.width}×${image.height}`, red: dominant(0), green: dominant(1), transparency: el.getAttribute('transparency') };
+    }) : null;
+    const logged = plain.lines.filter((l) => l.type === 'log' && /reflection/.test(l.text));
+    // The default scene at time 1.25, transparency 0.8, 320×180: measured 1,345 red (the cube and
+    // its reflection) and 3,210 green (the sphere, clearer through the glass) pixels; ±5 %.
+    check(`the Vite app draws the default scene: ${result ? `${result.size}, ${result.red} red, ${result.green} green pixels` : 'no frame within 30 s'}`,
+      result !== null && result.size === '320×180' && result.red > 1_280 && result.red < 1_410 && result.green > 3_050 && result.green < 3_370);
+    check(`the README's bundler example ran: transparency="${result?.transparency}", ${logged.length} frame(s) logged`,
+      result?.transparency === '0.8' && logged.length > 0, logged.length ? '' : plain.lines.map((l) => `[${l.type}] ${l.text}`).join('\n'));
+    check('the Vite app logs no error or warning', plain.problems().length === 0, plain.problems().map((l) => `[${l.type}] ${l.text}`).join('\n'));
+
+    // The README's React example: the model's `load` reaches the component's handler.
+    const react = await open('react/index.html');
+    const status = await react.page.locator('p').filter({ hasText: /^loaded / }).textContent({ timeout: 30_000 }).catch(() => null);
+    check(`the README's React example from the tarball: "${status ?? (await react.page.locator('p').textContent())}"`, status === `loaded ${origin}/models/spot.obj`);
+    check('its page logs no error or warning', react.problems().length === 0, react.problems().map((l) => `[${l.type}] ${l.text}`).join('\n'));
+  } finally {
+    await browser.close();
+    server.close();
+  }
+  console.log(`     the Vite app: built and rendered in ${seconds()} s`);
 }
 
 try {
@@ -54,11 +146,12 @@ try {
   check('tarball installs into a new project', install.status === 0, install.status === 0 ? '' : install.out);
   // The frameworks' own typings come from this repository's devDependencies, as a user's project has them.
   mkdirSync(join(app, 'node_modules/@types'), { recursive: true });
-  for (const dep of ['@types/react', 'csstype', 'vue', '@vue']) {
+  for (const dep of ['@types/react', 'csstype', 'vue', '@vue', 'react', 'react-dom', 'scheduler']) {
     if (!existsSync(join(app, 'node_modules', dep))) symlinkSync(join(repo, 'node_modules', dep), join(app, 'node_modules', dep), 'dir');
   }
   const fixtures = join(repo, 'tests/package');
   cpSync(fixtures, join(app, 'src'), { recursive: true });
+  cpSync(join(repo, 'tests/frameworks/react'), join(app, 'src/vite-app/react'), { recursive: true });
 
   // Every attribute in the manifest appears in the React file (so it cannot fall behind).
   const manifest = JSON.parse(readFileSync(join(app, 'node_modules/glass-plane-scene/dist/custom-elements.json'), 'utf8'));
@@ -73,7 +166,7 @@ try {
   }
   check('app.tsx sets every attribute of the three elements', unused.length === 0, unused.join(', '));
 
-  const good = ['src/main.ts', 'src/app.tsx', 'src/vue.ts', 'src/svelte.ts'];
+  const good = ['src/main.ts', 'src/app.tsx', 'src/vue.ts', 'src/svelte.ts', 'src/vite-app/main.ts', 'src/vite-app/react/Viewer.tsx'];
   const tsconfig = (resolution, include) => ({
     compilerOptions: {
       target: 'ES2022', module: resolution === 'bundler' ? 'ESNext' : resolution, moduleResolution: resolution,
@@ -96,6 +189,8 @@ try {
   check(`bad.tsx: ${reported.size} of ${badLines.length} wrong values rejected (TS2322), nothing else`,
     bad.status !== 0 && missed.length === 0 && [...reported].every((l) => badLines.includes(l)) && !/error TS(?!2322)/.test(bad.out),
     missed.length ? `accepted on lines ${missed.join(', ')}\n${bad.out}` : '');
+
+  await viteApp(join(app, 'src/vite-app'));
 } finally {
   rmSync(work, { recursive: true, force: true });
 }

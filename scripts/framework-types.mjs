@@ -58,6 +58,15 @@ function eventProps(tag, prop, indent) {
   return events[tag].map((e) => `${indent}/** ${e.description} */\n${indent}${key(prop(e.name))}?: (event: ${e.type}) => void;\n`).join('');
 }
 
+/**
+ * React's own camelCase handlers (`onLoad`, `onError`, `onProgress` are in its DOM props) never
+ * hear the element's events: React 19 passes only unknown `on…` props to addEventListener, under
+ * the name as written. Typed `never`, so writing one is a compile error rather than a silent no-op.
+ */
+function reactOwn(tag) {
+  return events[tag].map((e) => `        /** Never called for this element's \`${e.name}\`: write \`on${e.name}\`. */\n        ${key(`on${camel(e.name)}`)}?: never;\n`).join('');
+}
+
 let react = HEADER + `// React 19 JSX for <glass-plane-scene>, <glass-object> and <glass-light>:
 // \`import 'glass-plane-scene/react'\` defines the elements and adds these to JSX.IntrinsicElements.
 import type { DetailedHTMLProps, HTMLAttributes } from 'react';
@@ -69,7 +78,7 @@ declare module 'react' {
     interface IntrinsicElements {
 `;
 for (const el of elements) {
-  const ev = events[el.tagName].length ? ` & {\n        // React 19 listens for \`on\` + the event's name on a custom element.\n${eventProps(el.tagName, (n) => `on${n}`, '        ')}      }` : '';
+  const ev = events[el.tagName].length ? ` & {\n        // React 19 listens for \`on\` + the event's name on a custom element.\n${eventProps(el.tagName, (n) => `on${n}`, '        ')}${reactOwn(el.tagName)}      }` : '';
   react += `      '${el.tagName}': Props<${el.name}, ${typeName(el.tagName)}Attributes${ev}>;\n`;
 }
 react += '    }\n  }\n}\n';

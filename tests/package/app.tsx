@@ -61,7 +61,17 @@ export function App() {
         onprogress={(e) => console.log(e.detail.loaded)}
         onerror={(e) => console.log(e.detail.message)}
       />
-      <glass-light position="2 3 1" direction="0 1 0" ambient="0.1 0.1 0.1" diffuse="0.9 0.9 0.9" specular="1 1 1" src="course/iluminacao.txt" />
+      <glass-light
+        position="2 3 1"
+        direction="0 1 0"
+        ambient="0.1 0.1 0.1"
+        diffuse="0.9 0.9 0.9"
+        specular="1 1 1"
+        src="course/iluminacao.txt"
+        onprogress={(e) => console.log(e.detail.loaded)}
+        onload={(e) => console.log(e.detail.warnings)}
+        onerror={(e) => console.log(e.detail.line)}
+      />
       <glass-plane-scene controls />
       {/* @ts-expect-error controls is flyby, orbit, trackball or a boolean */}
       <glass-plane-scene controls="orbitt" />

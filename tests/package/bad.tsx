@@ -1,4 +1,6 @@
-// Consumer test (scripts/check-package.mjs): each line marked BAD must be a type error.
+// Consumer test (scripts/check-package.mjs): each line marked BAD must be a type error. React's own
+// onLoad, onError and onProgress never hear the elements' events (React 19 calls only `on` + the
+// exact event name), so the typings reject them.
 import 'glass-plane-scene/react';
 
 export const bad = (
@@ -12,5 +14,8 @@ export const bad = (
     <glass-plane-scene transparency="half" /> {/* BAD */}
     <glass-object mapping="planar" /> {/* BAD */}
     <glass-object shape="torus" /> {/* BAD */}
+    <glass-object onLoad={() => {}} /> {/* BAD */}
+    <glass-plane-scene onError={() => {}} /> {/* BAD */}
+    <glass-light onProgress={() => {}} /> {/* BAD */}
   </>
 );

@@ -29,6 +29,9 @@ export interface GlassLight extends LightAttributes {}
  * @attr {string} [diffuse="0.85 0.85 0.85"] - "r g b" ≥ 0, Id (above 1 allowed)
  * @attr {string} [specular="1 1 1"] - "r g b" ≥ 0, Is (above 1 allowed)
  * @attr {string} [src=null] - URL of the course's iluminacao.txt: a point light at Pl, and the material of the element's objects; attributes win over the file
+ * @fires {CustomEvent<ModelProgress>} progress - bytes of the `src` file received (bubbles, composed)
+ * @fires {CustomEvent<{ url: string; warnings: string[] }>} load - the `src` file is loaded and in the scene (bubbles, composed)
+ * @fires {CustomEvent<LoadErrorDetail>} error - the `src` file could not be loaded or read (bubbles, composed)
  */
 export class GlassLight extends ChildElement<LightAttributes> {
   static get observedAttributes(): string[] {
