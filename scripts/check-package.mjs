@@ -118,7 +118,7 @@ async function viteApp(root) {
 
 try {
   // ---- pack ----------------------------------------------------------------------------------
-  const [pack] = JSON.parse(execFileSync('npm', ['pack', '--json', '--pack-destination', work], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }));
+  const [pack] = JSON.parse(execFileSync('npm', ['pack', '--json', '--ignore-scripts', '--pack-destination', work], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] }));
   const tarball = join(work, pack.filename);
   const files = pack.files.map((f) => f.path);
   console.log(`packed ${pack.filename}: ${files.length} files, ${(pack.size / 1024).toFixed(1)} kB (${(pack.unpackedSize / 1024).toFixed(1)} kB unpacked)`);
