@@ -1,9 +1,14 @@
 // Issue 9 §3 (loading): <glass-object src> fetches with progress, sniffs, parses (in a worker
 // for big files), applies its MTL, and reports load / error; a changed src aborts the old load;
 // one fetch per URL; `ready` waits for the models present at connection.
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
 import type { Page, Route } from '@playwright/test';
 import { test, expect, openPage } from './fixtures';
 import { installSummary, mountHtml, nextEvent, summary } from './helpers/scene-children';
+
+const MODELS = path.resolve(path.dirname(fileURLToPath(import.meta.url)), 'pages/models');
 
 test.beforeEach(async ({ page }) => {
   await installSummary(page);
@@ -54,6 +59,37 @@ test('a model: progress, then load; its MTL materials, one part per material, at
   const n = await summary(page);
   expect(n.objects[0].key).toMatch(/#normalized#0$/);
   expect(n.objects[0].bounds.center.map((x) => Math.abs(x) < 1e-6)).toEqual([true, true, true]);
+});
+
+// SPEC §9: attribute over MTL over default, nothing written back. tetra.mtl's `red` has Ka, Kd,
+// Ks, Ns 64 and d 0.75; `textured` only Kd and map_Kd checker.png.
+test('attributes win over the MTL (opacity, diffuse, texture), and the MTL over the defaults', async ({ page }) => {
+  await openPage(page);
+  const checker = fs.readFileSync(path.join(MODELS, 'checker.png'));
+  await page.route('**/own/texture.png', (r) => r.fulfill({ status: 200, contentType: 'image/png', body: checker }));
+  await mountHtml(page, `<glass-plane-scene time="1">
+    <glass-object src="models/tetra.obj" opacity="1" diffuse="0 0 1" texture="/own/texture.png"></glass-object></glass-plane-scene>`);
+  const [red, textured] = (await summary(page)).objects.map((o) => o.material);
+  const own = expect.stringMatching(/\/own\/texture\.png$/);
+  expect(red).toEqual({ ambient: [0.1, 0, 0], diffuse: [0, 0, 1], specular: [0.3, 0.3, 0.3], shininess: 64, opacity: 1, texture: own, mapping: 'uv' });
+  expect(textured).toEqual({ ambient: [0.2, 0.2, 0.2], diffuse: [0, 0, 1], specular: [0.5, 0.5, 0.5], shininess: 32, opacity: 1, texture: own, mapping: 'uv' });
+  // Nothing written back: the element's attributes are what the page set.
+  expect(await page.evaluate(() => document.querySelector('glass-object')!.getAttribute('opacity'))).toBe('1');
+});
+
+test('a material named in two MTL files is the first file\'s', async ({ page }) => {
+  await openPage(page);
+  const files: Record<string, string> = {
+    'model.obj': 'mtllib first.mtl second.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl paint\nf 1 2 3\n',
+    'first.mtl': 'newmtl paint\nKd 1 0 0\n',
+    'second.mtl': 'newmtl paint\nKd 0 1 0\nKs 0 0 1\n',
+  };
+  await page.route('**/two-libs/*', (r) => r.fulfill({ status: 200, contentType: 'text/plain', body: files[r.request().url().split('/').pop()!] }));
+  await mountHtml(page, '<glass-plane-scene time="1"><glass-object src="/two-libs/model.obj"></glass-object></glass-plane-scene>');
+  const [m] = (await summary(page)).objects.map((o) => o.material);
+  expect(m.diffuse).toEqual([1, 0, 0]);
+  // Per material, not per value: the second file's Ks is not merged in.
+  expect(m.specular).toEqual([0.5, 0.5, 0.5]);
 });
 
 test('a changed src aborts the old load, which never appears', async ({ page }) => {

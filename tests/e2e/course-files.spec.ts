@@ -177,6 +177,33 @@ test('iluminacao.txt: a point light at Pl and the material of every object, attr
   expect(d.objects[0].material.diffuse).toEqual([0.8, 0.8, 0.8]);
 });
 
+// SPEC §9/§11: attribute over MTL over lighting file over default, for an OBJ with its MTL in an
+// element with a lighting file; a light's own position over the file's Pl; with two lighting
+// files the first in document order gives the material, and each adds its light.
+test('an MTL wins over the lighting file, a light\'s position over Pl, and the first of two files gives the material', async ({ page }) => {
+  await openPage(page);
+  // The second file: every value unlike the first's (Pl −200 50 100, ka 0.2, kd·Od 0.35 0.25 0.4, ks 0.5, n 2).
+  await page.route('**/second/iluminacao.txt', (r) => r.fulfill({ status: 200, contentType: 'text/plain', body: '5 6 7\n0.4\n50 50 50\n1\n0.1 0.2 0.3\n0.9\n100 100 100\n5\n' }));
+  await mountHtml(page, `<glass-plane-scene time="0" glass-size="0 0">
+    <glass-object src="/tests/e2e/pages/models/tetra.obj"></glass-object>
+    <glass-object src="${URL_BASE}tetra.byu"></glass-object>
+    <glass-light src="${URL_BASE}iluminacao.txt"></glass-light>
+    <glass-light src="/second/iluminacao.txt"></glass-light></glass-plane-scene>`);
+  const s = await summary(page);
+  const [red, textured, byu] = s.objects.map((o) => o.material);
+  // tetra.mtl's red: Ka 0.1 0 0, Kd 0.9 0.1 0.1, Ks 0.3, Ns 64 (the file's would be 0.2, 0.35 0.25 0.4, 0.5, 8).
+  expect(red).toMatchObject({ ambient: [0.1, 0, 0], diffuse: [0.9, 0.1, 0.1], specular: [0.3, 0.3, 0.3], shininess: 64 });
+  // textured has only Kd: the rest from the first lighting file, not the defaults (Ns 32) or the second file.
+  expect(textured).toMatchObject({ ambient: [0.2, 0.2, 0.2], diffuse: [0.5, 0.5, 0.5], specular: [0.5, 0.5, 0.5], shininess: 8 });
+  expect(byu.diffuse.map((x) => +x.toFixed(6))).toEqual([0.35, 0.25, 0.4]);
+  expect(s.lights.map((l) => l.vector)).toEqual([[-200, 50, 100], [5, 6, 7]]);
+
+  await nextEvent(page, 'frame', `el.querySelector('glass-light').setAttribute('position', '1 2 3')`);
+  const moved = await summary(page);
+  expect(moved.lights.map((l) => l.vector)).toEqual([[1, 2, 3], [5, 6, 7]]);
+  expect(moved.lights[0].ambient.map((x) => Math.round(x * 255))).toEqual([100, 90, 80]); // still the file's Ia
+});
+
 test('a lighting file that fails adds no light (the default one is used) and fires error with its line', async ({ page, consoleLog }) => {
   await openPage(page);
   const events = await mountHtml(page, `<glass-plane-scene time="0" glass-size="0 0">

@@ -112,17 +112,15 @@ describe('courseVertexNormals', () => {
 });
 
 describe('the generated chalice', () => {
+  // Its parse time is in `npm run bench` (bench/parse-course.md), not asserted here.
   const chalice = makeChalice();
-  const started = performance.now();
   const r = parseByuMesh(chalice.text, { url: 'chalice.byu' });
-  const took = performance.now() - started;
 
-  it('has the counts of its header, a few thousand triangles, no warnings, read promptly', () => {
+  it('has the counts of its header, a few thousand triangles, no warnings', () => {
     expect(r.vertexCount).toBe(chalice.vertexCount);
     expect(r.faceCount).toBe(chalice.faceCount);
     expect(r.faceCount).toBeGreaterThan(3000);
     expect(r.warnings).toEqual([]);
-    expect(took).toBeLessThan(1000);
   });
 
   it('has unit normals pointing to the outer side of the sheet: down under the foot, out on the stem', () => {

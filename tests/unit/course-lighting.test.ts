@@ -15,6 +15,13 @@ describe('parseLightingTxt', () => {
     expect(r.warnings).toEqual([]);
   });
 
+  it('reads each line into its own field: no two of ka, kd, ks, Ia, Il alike', () => {
+    // The sample file has kd = ks; here every value differs, so a field read from the wrong line shows.
+    const r = parseLightingTxt('1 2 3\n0.1\n10 20 30\n0.6\n0.2 0.4 0.9\n0.3\n200 150 100\n7\n');
+    expect(r.light).toEqual({ position: [1, 2, 3], ambient: [10, 20, 30], intensity: [200, 150, 100] });
+    expect(r.material).toEqual({ ka: 0.1, kd: 0.6, ks: 0.3, od: [0.2, 0.4, 0.9], n: 7 });
+  });
+
   it('reads CRLF, a BOM, tabs, blank lines, exponents and no final newline alike', () => {
     const text = '\uFEFF-2E2\t50 1.0e+2 \r\n\r\n2.0E-1\r\n100 90 80\r\n+.5\r\n7e-1 5.e-1 .8\r\n\r\n0.5\r\n255 255 255\r\n2';
     const r = parseLightingTxt(text);

@@ -120,14 +120,30 @@ describe('parseObj: never hangs', { timeout: 30_000 }, () => {
     expect(r.warnings.every((w) => w.message.length < 200)).toBe(true);
   });
 
-  it('reads a 10 MB face line without quadratic triangulation', () => {
-    const r = parseObj(`${TRI}f ${'1 2 3 '.repeat(big / 6)}\n`);
-    expect(r.indices.length / 3).toBe(3 * Math.floor(big / 6) - 2);
+  it('drops a 10 MB face (5 million corners, issue 18) with a warning naming its line, keeping the rest', () => {
+    // Four collinear vertices walked 1.25 million times: every triangle of it has zero area.
+    const oneFace = `v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf${' 1 2 3 4'.repeat(1_250_000)}`;
+    const e = expectLoadError(() => parseObj(oneFace, { url: 'model.obj' }), 5, /^no faces to draw: 1 face dropped/);
+    expect(e.message.length).toBeLessThan(200);
+    // Beside a triangle: that triangle alone is drawn, and the warning names the line and why.
+    const r = parseObj(`${oneFace}\nv 0 1 0\nf 1 2 5\n`, { url: 'model.obj' });
+    expect([...r.indices]).toEqual([0, 1, 2]);
+    expect(r.warnings).toEqual([{ line: 5, message: 'face of 5000000 vertices, more than the 65536 a face may have; face dropped' }]);
+  });
+
+  it('triangulates a face of 65 536 corners (the most a face may have), dropping one of 65 537', () => {
+    // Triangle 1 2 3 walked over and over: every corner turns left, so it is fanned from the
+    // first, (1, k, k+1); only where k, k+1 are vertices 2, 3 does a triangle have area.
+    const r = parseObj(`${TRI}f${' 1 2 3'.repeat(21_845)} 1\n`);
+    expect(r.warnings).toEqual([]);
+    expect(r.indices.length / 3).toBe(21_845);
+    expect(parseObj(`${TRI}f${' 1 2 3'.repeat(21_845)} 1 2\nf 1 2 3\n`).warnings.map((w) => w.message))
+      .toEqual(['face of 65537 vertices, more than the 65536 a face may have; face dropped']);
   });
 
   it('ear-clips a huge comb-shaped face only up to a work limit, then fans with a warning', () => {
-    // 200k teeth: full ear clipping tests every reflex corner per ear, ~10^10 steps.
-    const n = 200_000;
+    // 60k teeth: full ear clipping tests every reflex corner per ear, ~10^9 steps.
+    const n = 60_000;
     const lines = ['v 0 0 0', `v ${n} 0 0`];
     for (let i = n; i >= 0; i--) lines.push(`v ${i} ${1 + (i % 2)} 0`);
     const r = parseObj(`${lines.join('\n')}\nf ${Array.from({ length: n + 3 }, (_, k) => k + 1).join(' ')}\n`);

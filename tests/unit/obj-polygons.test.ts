@@ -65,14 +65,31 @@ describe('triangulation', () => {
     expectExactCover(clockwise, layout, cross(w, u));
   });
 
-  it('falls back to a fan for degenerate polygons, without crashing', () => {
-    const line = parseObj('v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nv 4 0 0\nf 1 2 3 4 5\n');
-    expect(line.indices.length).toBe(9);
-    const point = parseObj('v 1 1 1\nf 1 1 1 1 1 1\n');
-    expect(point.indices.length).toBe(12);
-    expect([...point.normals.slice(0, 3)].every(Number.isFinite)).toBe(true);
+  it('drops a polygon of no area with a warning naming its line, and keeps the rest', () => {
+    // Collinear corners, or one point repeated: every triangle made of them has zero area.
+    const line = parseObj('v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nv 4 0 0\nv 0 1 0\nf 1 2 3 4 5\nf 1 2 6\n');
+    expect([...line.indices]).toEqual([0, 1, 2]);
+    expect(line.warnings).toEqual([{ line: 7, message: expect.stringMatching(/^face of 5 vertices with no area .*; face dropped$/) }]);
+    expect(() => parseObj('v 1 1 1\nf 1 1 1 1 1 1\n')).toThrow(/line 2: no faces to draw: 1 face dropped/);
+    // A triangle is kept as written, even of zero area.
+    expect(parseObj('v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n').indices.length).toBe(3);
+  });
+
+  it('keeps only the triangles with area from a polygon that walks over its corners again', () => {
+    // A unit square walked 1000 times: all 4000 corners turn left, so it is fanned from the
+    // first corner: (1, k, k+1) for k = 2 … 3999. Of those, only (1 2 3) and (1 3 4) of each lap
+    // have area (the others hold vertex 1 twice): 2 × 1000 triangles of area 1/2, not 3998.
+    const r = parseObj(`v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf${' 1 2 3 4'.repeat(1000)}\n`);
+    expect(r.warnings).toEqual([]);
+    const tris = triangles(r);
+    expect(tris.length).toBe(2000);
+    for (const t of tris) expect(length(triangleNormal(t)) / 2).toBe(0.5);
+  });
+
+  it('fans a bowtie (a polygon whose Newell normal is zero), keeping its triangles of area', () => {
     const bowtie = parseObj('v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\nv 0.5 2 0\nf 1 2 3 4 5\n');
     expect(bowtie.indices.length).toBe(9);
+    expect([...bowtie.normals.slice(0, 3)].every(Number.isFinite)).toBe(true);
   });
 });
 

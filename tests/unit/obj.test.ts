@@ -62,6 +62,14 @@ describe('parseObj: statements', () => {
     expect([...r.indices]).toEqual([0, 1, 2, 3, 4, 5]);
   });
 
+  it('resolves negative vt and vn indices against the coordinates and normals read so far, each list apart', () => {
+    // Two vt and three vn before the face: -1 is the last of each, -2 the one before.
+    const r = parseObj(`${TRI}vt 0.25 0.5\nvt 0.75 1\nvn 1 0 0\nvn 0 1 0\nvn 0 0 1\nf 1/-2/-3 2/-1/-1 3/-1/-2\n`);
+    expect(r.warnings).toEqual([]);
+    expect([...r.uvs!]).toEqual([0.25, 0.5, 0.75, 1, 0.75, 1]);
+    expect([...r.normals]).toEqual([1, 0, 0, 0, 0, 1, 0, 1, 0]);
+  });
+
   it('splits a convex quad into two triangles over its 4 vertices', () => {
     const r = parseObj('v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n');
     expect(r.positions.length / 3).toBe(4);

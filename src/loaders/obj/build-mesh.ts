@@ -24,7 +24,7 @@ export function buildMesh(raw: ObjRaw): Omit<ObjResult, 'warnings'> {
   let outCount = 0;
 
   for (let f = 0; f < faceCount; f++) {
-    const first = faces[f * FACE_INTS], count = faces[f * FACE_INTS + 1], smooth = faces[f * FACE_INTS + 3];
+    const first = faces[f * FACE_INTS], count = faces[f * FACE_INTS + 1], smooth = faces[f * FACE_INTS + 4];
     let nx = 0, ny = 0, nz = 0;
     let j = 3 * corners[3 * (first + count - 1)];
     for (let k = 0; k < count; k++) {
@@ -132,9 +132,9 @@ function indexByMaterial(raw: ObjRaw, cornerOut: Int32Array, outCount: number): 
   const perMaterial = new Int32Array(materialCount);
   const order: number[] = [];
   for (let f = 0; f < faceCount; f++) {
-    const m = faces[f * FACE_INTS + 4];
+    const m = faces[f * FACE_INTS + 5];
     if (perMaterial[m] === 0) order.push(m);
-    perMaterial[m] += faces[f * FACE_INTS + 1] - 2;
+    perMaterial[m] += faces[f * FACE_INTS + 3];
   }
   const offset = new Int32Array(materialCount);
   const groups: DrawGroup[] = [];
@@ -147,9 +147,9 @@ function indexByMaterial(raw: ObjRaw, cornerOut: Int32Array, outCount: number): 
   const indices = outCount > 65535 ? new Uint32Array(3 * triangleCount) : new Uint16Array(3 * triangleCount);
   const tris = raw.triangles.data;
   for (let f = 0; f < faceCount; f++) {
-    const m = faces[f * FACE_INTS + 4];
+    const m = faces[f * FACE_INTS + 5];
     const firstTriangle = faces[f * FACE_INTS + 2];
-    const n = faces[f * FACE_INTS + 1] - 2;
+    const n = faces[f * FACE_INTS + 3];
     let w = 3 * offset[m];
     for (let t = 3 * firstTriangle; t < 3 * (firstTriangle + n); t++) indices[w++] = cornerOut[tris[t]];
     offset[m] += n;

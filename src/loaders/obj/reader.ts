@@ -3,15 +3,15 @@
 import { F64List, I32List } from './growable';
 import { addUnique, splitGroups, splitMtllib } from './names';
 import { Scanner } from './scanner';
-import { triangulate } from './triangulate';
+import { dropZeroArea, MAX_FACE_CORNERS, triangulate } from './triangulate';
 import { shown, Warnings } from '../warnings';
 
 /** Smoothing slot of faces under `s off` / `s 0`: flat normals. */
 export const FLAT = -1;
 /** Smoothing slot before any `s`: files that never say `s` (scans) are meant to be smooth. */
 const DEFAULT_SMOOTH = 0;
-/** Ints per face record: first corner, corner count, first triangle, smoothing slot, material. */
-export const FACE_INTS = 5;
+/** Ints per face record: first corner, corner count, first triangle, triangle count, smoothing slot, material. */
+export const FACE_INTS = 6;
 
 /** Statements read and deliberately not drawn, reported once each without "unknown". */
 const UNSUPPORTED = new Set(['l', 'p', 'vp', 'curv', 'curv2', 'surf', 'cstype', 'deg', 'bmat', 'step', 'parm',
@@ -143,6 +143,7 @@ export function readObj(text: string): ObjRaw {
       sc.pos += 1;
       face.clear();
       let fault = '';
+      let cornerCount = 0;
       const vCount = positions.length / 3, tCount = uvs.length / 2, nCount = normals.length / 3;
       for (;;) {
         sc.skipBlank();
@@ -158,6 +159,8 @@ export function readObj(text: string): ObjRaw {
           sc.pos++; // never stall on a character no reader consumes
           if (fault === '') fault = `${shown(text.charAt(tokenStart))} is not a face corner`;
         }
+        // Past the cap the line is still read to its end (to count it), but nothing is kept.
+        if (++cornerCount > MAX_FACE_CORNERS && fault === '') fault = 'too many';
         if (fault !== '') continue;
         const vi = resolve(v, vCount), ti = t === 0 ? -1 : resolve(t, tCount), ni = nn === 0 ? -1 : resolve(nn, nCount);
         if (v !== v || t !== t || nn !== nn) fault = `${shown(text.slice(tokenStart, sc.tokenEnd()))} is not a face corner`;
@@ -170,18 +173,24 @@ export function readObj(text: string): ObjRaw {
         else face.push3(vi, ti, ni);
       }
       const count = face.length / 3;
-      if (fault !== '') dropFace(line, `${fault}; face dropped`);
+      if (cornerCount > MAX_FACE_CORNERS) dropFace(line, `face of ${cornerCount} vertices, more than the ${MAX_FACE_CORNERS} a face may have; face dropped`);
+      else if (fault !== '') dropFace(line, `${fault}; face dropped`);
       else if (count < 3) dropFace(line, `face with ${count} ${count === 1 ? 'vertex' : 'vertices'} (a face needs 3); face dropped`);
       else {
         const start = corners.length / 3;
         for (let k = 0; k < face.length; k++) corners.push(face.data[k]);
         const firstTriangle = triangles.length / 3;
-        if (!triangulate(positions.data, corners.data, start, count, triangles)) {
-          warnings.add(line, `face of ${count} vertices too large to ear-clip in time; part of it drawn as a fan`);
+        const clipped = triangulate(positions.data, corners.data, start, count, triangles);
+        // A triangle as written is kept as written; what triangulating a polygon makes of zero area is not.
+        const kept = count === 3 ? 1 : dropZeroArea(positions.data, corners.data, triangles, firstTriangle);
+        if (kept === 0) {
+          corners.length = 3 * start;
+          dropFace(line, `face of ${count} vertices with no area (its corners are repeated or on one line); face dropped`);
+        } else {
+          if (!clipped) warnings.add(line, `face of ${count} vertices too large to ear-clip in time; part of it drawn as a fan`);
+          faces.push3(start, count, firstTriangle);
+          faces.push3(kept, smooth, material);
         }
-        faces.push3(start, count, firstTriangle);
-        faces.push(smooth);
-        faces.push(material);
       }
     } else {
       const keyword = sc.readToken();

@@ -6,6 +6,17 @@ import type { I32List } from './growable';
 /** Containment tests allowed per polygon before the rest is fanned (a few tens of ms). */
 const WORK_LIMIT = 30_000_000;
 
+/**
+ * Corners a face may have; a longer face is dropped with a warning (reader.ts). Triangulating
+ * is linear past the work limit, but a face of n corners still becomes up to n − 2 triangles
+ * drawn in every frame, and an `f` line spends about 2 bytes a corner where a file of
+ * triangles spends 8 a triangle: unbounded, one 10 MB line is 5 million triangles that stop
+ * the page (issue 18). Real models' largest n-gons (a finely cut circle, a font outline) have
+ * a few thousand corners; 65 536 leaves room for ten times that while bounding one line's
+ * triangles by what a 0.5 MB file of triangles could hold anyway.
+ */
+export const MAX_FACE_CORNERS = 65_536;
+
 let px = new Float64Array(64);
 let py = new Float64Array(64);
 let prev = new Int32Array(64);
@@ -156,6 +167,29 @@ function inTriangle(a: number, b: number, c: number, q: number): boolean {
   return (px[b] - px[a]) * (y - py[a]) - (py[b] - py[a]) * (x - px[a]) >= 0
     && (px[c] - px[b]) * (y - py[b]) - (py[c] - py[b]) * (x - px[b]) >= 0
     && (px[a] - px[c]) * (y - py[c]) - (py[a] - py[c]) * (x - px[c]) >= 0;
+}
+
+/**
+ * Removes the triangles from `first` (a triangle number) on whose corners are collinear or
+ * repeated in space: they cover nothing and add nothing to the area-weighted normals, and a
+ * polygon that walks back over its own corners (`f 1 2 3 4 1 2 3 4 …`) is mostly made of
+ * them. One pass, order kept. Returns how many triangles from `first` remain.
+ */
+export function dropZeroArea(positions: Float64Array, corners: Int32Array, out: I32List, first: number): number {
+  const t = out.data;
+  let w = 3 * first;
+  for (let r = 3 * first; r < out.length; r += 3) {
+    const a = 3 * corners[3 * t[r]], b = 3 * corners[3 * t[r + 1]], c = 3 * corners[3 * t[r + 2]];
+    const ux = positions[b] - positions[a], uy = positions[b + 1] - positions[a + 1], uz = positions[b + 2] - positions[a + 2];
+    const vx = positions[c] - positions[a], vy = positions[c + 1] - positions[a + 1], vz = positions[c + 2] - positions[a + 2];
+    if (uy * vz - uz * vy === 0 && uz * vx - ux * vz === 0 && ux * vy - uy * vx === 0) continue;
+    t[w] = t[r];
+    t[w + 1] = t[r + 1];
+    t[w + 2] = t[r + 2];
+    w += 3;
+  }
+  out.length = w;
+  return w / 3 - first;
 }
 
 function fan(s: number, from: number, count: number, out: I32List): void {
