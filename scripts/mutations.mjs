@@ -127,7 +127,8 @@ async function runTests(dir, tests, logName) {
     if (runner === 'playwright') {
       for (const m of out.matchAll(/^\s+\d+\) \S+?:\d+:\d+ › (.+?) ─*$/gm)) result.failures.push(m[1].trim());
     } else {
-      for (const m of out.matchAll(/^\s*(?:FAIL|×)\s+(.+)$/gm)) result.failures.push(m[1].trim());
+      // vitest names a failing test twice (a × line in the run, a FAIL line in the summary): the FAIL lines alone.
+      for (const m of new Set([...out.matchAll(/^\s*FAIL\s+(.+)$/gm)].map((x) => x[1].trim()))) result.failures.push(m);
     }
     // A non-zero exit with no failing test is not a catch: the run itself broke.
     if (r.code !== 0 && !failed) result.errors.push(`${runner} exited ${r.signal ?? r.code} with no failing test`);
