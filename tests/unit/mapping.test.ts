@@ -29,7 +29,7 @@ describe('spherical', () => {
 });
 
 describe('triplanar', () => {
-  it('weights |n_i|^k normalised; each projection maps the bounds cube onto [0, 1]²', () => {
+  it('weights abs(n_i)^k normalised; each projection maps the bounds cube onto [0, 1]²', () => {
     const w = [0, 0, 0], uvs = [0, 0, 0, 0, 0, 0];
     triplanarUV(w, uvs, [0.5, -0.5, 1], [0, 0, 1], UNIT);
     expectClose(w, [0, 0, 1]);
