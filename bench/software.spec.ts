@@ -1,8 +1,9 @@
 // `npm run bench`, issue 11's rows: the software renderer. The default scene at 640×360 in the
 // element's worker (round trip and the worker's own time) next to the WebGL renderer, with PSNR
-// against the float64 reference; a ~100k-triangle mesh with its frame split into transform,
-// raster and shading; a bicubic Bézier patch's evaluation time and image error against E; and
-// main-thread long tasks while the element draws continuously, in a worker and without one.
+// against the float64 reference, and in Node by shading mode; a ~100k-triangle mesh with its
+// frame split into transform, raster and shading; a bicubic Bézier patch's evaluation time and
+// image error against E; and main-thread long tasks while the element draws continuously, in a
+// worker and without one.
 // Writes bench/software.md; BENCH_SMOKE=1 runs each part tiny so the pipeline cannot rot.
 import { writeFileSync } from 'node:fs';
 import { loadavg } from 'node:os';
@@ -111,6 +112,37 @@ async function defaultSceneRows(page: Page): Promise<string[]> {
     `| software, SoftwareHost (element's worker) | 2×2 | ${med(rt.get('host 2')!)} | — | ${met('host 2')} | ${psnrCells(cmp[2])} |`,
     `| software, bench worker | 2×2 | ${med(rt.get('worker 2')!)} | ${med(own.get('worker 2')!)} | ${met('worker 2')} | (same pixels) | |`,
     `| WebGL (SwiftShader), same page and run | MSAA 4 | ${med(rt.get('gl')!)} | — | ${met('gl')} | ${psnrCells(cmp.gl)} |`,
+    '',
+    ...nodeRows(),
+  ];
+}
+
+/**
+ * The same default scene rendered by SoftwareRenderer.render() in Node (no worker, no copy of
+ * the pixels), by shading mode and samples per pixel: the renderer's own cost on this machine's
+ * V8 (measured here, not in the unit suite, which asserts no time).
+ */
+function nodeRows(): string[] {
+  const scene = defaultScene(DEFAULT_CUBE_DISTANCE, 0.8);
+  const rows: [number, FrameState['shading']][] = [[1, 'phong'], [1, 'gouraud'], [1, 'flat'], [2, 'phong']];
+  const times = new Map<string, number[]>();
+  const renderers = new Map(rows.map(([n]) => [n, new SoftwareRenderer({ samplesPerAxis: n })]));
+  let frame = 0;
+  for (let rep = 0; rep < REPETITIONS; rep++) {
+    for (const [n, shading] of shuffled(rows, 71 + rep)) {
+      const r = renderers.get(n)!, key = `${n} ${shading}`;
+      // The clock moves so the cube turns: every frame is a new one.
+      const next = () => r.render({ ...state(SIZE, DEFAULT_VIEW, PIXEL_TIME + frame++ / 60), shading }, scene);
+      for (let i = 0; i < WARMUP; i++) next();
+      times.set(key, [...(times.get(key) ?? []), ...timeNode(next, FRAMES)]);
+    }
+  }
+  return [
+    `In Node ${process.version} (SoftwareRenderer.render() on the main thread, no worker, no copy of the pixels), the same scene and clock, ` +
+      `${REPETITIONS} repetitions × ${FRAMES} frames per row (after ${WARMUP + 1} warm-up frames), rows shuffled per repetition:`, '',
+    '| spp | shading | ms/frame median [IQR] |',
+    '|---|---|---|',
+    ...rows.map(([n, shading]) => `| ${n === 1 ? '1' : `${n}×${n}`} | ${shading} | ${med(times.get(`${n} ${shading}`)!)} |`),
     '',
   ];
 }
@@ -310,7 +342,7 @@ test('bench: software renderer (issue 11)', async ({ page }) => {
   ];
   const md = [
     '# Bench: the software renderer (issue 11)', '',
-    `Headless Chromium (the pinned SwiftShader build of the test suite) for the browser rows, Node ${process.version} for the Bézier evaluation and its software images. ` +
+    `Headless Chromium (the pinned SwiftShader build of the test suite) for the browser rows, Node ${process.version} for the software renderer's own time in section 1, the Bézier evaluation and its software images. ` +
       '**The machine was shared**: 2 cores, other test and bench runs going at the same time, so absolute times are noisy and pessimistic; IQRs show the spread. ' +
       `1-minute load average ${loadBefore.toFixed(1)} when this run started, ${loadavg()[0].toFixed(1)} when it ended. ` +
       'Speed is measured here, never asserted in a test.', '',

@@ -1,5 +1,9 @@
 // The course's camera (SPEC §11, seed 002): its basis, its pixel projection exactly as the
 // course's programs compute it, and the same projection as a 4×4 matrix for a GPU.
+// courseBasis makes the camera that both renderers and the reference take, and courseDepthRange
+// gives all three their near and far (through scene/course-depth.ts): tied down by
+// tests/unit/course-camera.test.ts's hand-computed bases, pixels and ranges, and
+// course-depth.test.ts. The reference casts its own rays from the basis (reference/view-camera.ts).
 export type Vec3 = [number, number, number];
 
 /**

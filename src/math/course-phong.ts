@@ -1,4 +1,7 @@
 // The course's Phong equation (SPEC §11, seed 002), on the 0..255 scale of its files.
+// Not shared with the renderers or the reference: none calls it (the element turns the course's
+// light and material into SPEC §9's Blinn-Phong, element/children/course-lighting.ts). Tied down
+// by tests/unit/course-lighting.test.ts's values worked out by hand.
 import type { Vec3 } from './course-camera';
 
 /** The light of `iluminacao.txt`: a point light at Pl, ambient Ia and intensity Il (0..255). */

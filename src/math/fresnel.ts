@@ -1,4 +1,9 @@
 // Fresnel reflectance models of SPEC §4; the GLSL in shaders/glass.frag mirrors these.
+// Shared by the float64 reference (reference/shade.ts) and the software renderer
+// (software/glass-shader.ts), so comparing those two cannot see a fault here: tied down by
+// tests/unit/fresnel.test.ts's hand-computed values (normal incidence, Brewster's angle, 45°,
+// 60°, the textbook Snell's-law form at every degree, Schlick and classic at worked points),
+// and by software-glass.test.ts and reference-pixels.test.ts, which write each model out themselves.
 
 export type FresnelModel = 'exact' | 'schlick' | 'classic';
 export const FRESNEL_MODELS: readonly FresnelModel[] = ['exact', 'schlick', 'classic'];

@@ -1,6 +1,8 @@
 // Near and far for a course camera (SPEC §11), which the course's programs do not have: from the
 // scene's geometry, so that nothing in front of the camera is clipped. Shared by the frame setup
-// (WebGL and software renderers) and the float64 reference, so all three clip alike.
+// (WebGL and software renderers) and the float64 reference, so all three clip alike: tied down
+// by tests/unit/course-depth.test.ts's ranges worked out by hand (mirrored far, scaled sphere,
+// the order of rotations and spin).
 import { mat4 } from 'gl-matrix';
 import { courseDepthRange, type CourseCamera } from '../math/course-camera';
 import { reflectPoint } from '../math/mirror';

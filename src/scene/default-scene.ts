@@ -1,4 +1,8 @@
 // The normative numbers of SPEC §3, in one place: renderer, reference and tests read them here.
+// Shared by the reference and both renderers, so each number is tied to SPEC §3 by tests that
+// write it out: reference-pixels.test.ts (albedos, light, Ka/Kd/Ks, shininess, tint, darkness,
+// background, positions), texture.test.ts (512), orthographic.test.ts and reference-scene.test.ts
+// (near, far).
 import type { Glass, Light, Material, Scene, Vec3 } from './scene';
 
 export const GLASS = {

@@ -1,5 +1,9 @@
 // Texture-coordinate mappings of seed 001, written once: object-space position and normal in, UV out.
 // The reference renderer calls these; the GPU shader mirrors them formula for formula.
+// Shared by the reference (reference/surface-texture.ts) and the software renderer
+// (software/object-shader.ts: cylindrical, spherical, boundsScale and TRIPLANAR_SHARPNESS; its
+// triplanar blend is its own): tied down by tests/unit/mapping.test.ts's hand-computed UVs and
+// weights (k = 4 written out there, as shaders/standard.frag has it).
 import type { Bounds } from './scene';
 
 type V3 = ArrayLike<number>;

@@ -1,4 +1,7 @@
 // The seeded checker-plus-noise texture of SPEC §3 (never Math.random: frames are reproducible).
+// Shared by the reference (reference/texture-sampler.ts) and both renderers
+// (software/mip-texture.ts, render/gl/shared-resources.ts): tied down by
+// tests/unit/texture.test.ts's texels worked out by hand and its BigInt re-implementation of the hash.
 import { TEXTURE_SIZE } from './default-scene';
 
 const CELL = 64;

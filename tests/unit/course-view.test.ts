@@ -124,20 +124,23 @@ describe('frame setup with a course camera', () => {
 describe(`software renderer against the reference with course cameras (${W}×${H}, 4×4 samples)`, () => {
   const renderer = new SoftwareRenderer({ samplesPerAxis: 4 });
   const plain: Scene = { ...defaultScene(0.75, 0.8), glass: null, lights: [DEFAULT_LIGHT], background: BACKGROUND };
-  const cases: [string, CourseCamera, Scene][] = [
-    ['oblique, stretched window, glass', OBLIQUE, defaultScene(0.75, 0.8)],
-    ['negative hx (mirrored; culled cube and sphere)', { ...OBLIQUE, hx: -0.6 }, defaultScene(0.75, 0.8)],
-    ['negative hy, no glass', { ...OBLIQUE, hy: -0.5 }, plain],
-    ['looking away (behind), no glass', camera([3.6, 2.4, 4], [7.2, 3.8, 8], [0, 1, 0], 1, 0.6, 0.5), plain],
+  /** Each bound is the figure measured less this (both renderers are deterministic; see software-reference.test.ts). */
+  const MARGIN_DB = 2;
+  // [name, camera, scene, PSNR measured over the whole image and over the objects, in dB]
+  const cases: [string, CourseCamera, Scene, number, number][] = [
+    ['oblique, stretched window, glass', OBLIQUE, defaultScene(0.75, 0.8), 54.1, 56.3],
+    ['negative hx (mirrored; culled cube and sphere)', { ...OBLIQUE, hx: -0.6 }, defaultScene(0.75, 0.8), 54.1, 56.3],
+    ['negative hy, no glass', { ...OBLIQUE, hy: -0.5 }, plain, 50.2, 44.3],
+    ['looking away (behind), no glass', camera([3.6, 2.4, 4], [7.2, 3.8, 8], [0, 1, 0], 1, 0.6, 0.5), plain, 50.2, 44.3],
   ];
-  for (const [name, cam, scene] of cases) {
-    it(`${name}: ≥ 40 dB`, () => {
+  for (const [name, cam, scene, all, objects] of cases) {
+    it(`${name}: within ${MARGIN_DB} dB of ${all} dB (objects ${objects} dB)`, () => {
       const s = state(cam);
       const cmp = compareImages(renderScene(scene, s, { samplesPerAxis: 4 }), renderer.render(s, scene));
       const line = `course camera, ${name}: PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;
       console.log(line);
-      expect(cmp.psnr.all, line).toBeGreaterThanOrEqual(40);
-      expect(cmp.psnr.objects, line).toBeGreaterThanOrEqual(40);
+      expect(cmp.psnr.all, line).toBeGreaterThanOrEqual(all - MARGIN_DB);
+      expect(cmp.psnr.objects, line).toBeGreaterThanOrEqual(objects - MARGIN_DB);
     });
   }
 });

@@ -36,6 +36,29 @@ describe('fresnelExact', () => {
     for (const c of [1e-7, 1e-8, 1e-9, 1e-12]) expect(fresnelExact(c, 1), `cos ${c}`).toBeCloseTo(0, 9);
   });
 
+  it('is the textbook form at every degree for ior 1.33, 1.5 and 2.4 (Snell\'s law, then rs and rp)', () => {
+    // Written out here from sin θt = sin θi / n, rs = (cos θi − n cos θt)/(cos θi + n cos θt),
+    // rp = (n cos θi − cos θt)/(n cos θi + cos θt), R = (rs² + rp²)/2, not from the module.
+    for (const n of [1.33, 1.5, 2.4]) {
+      for (let deg = 0; deg < 90; deg++) {
+        const ti = (deg * Math.PI) / 180, tt = Math.asin(Math.sin(ti) / n);
+        const rs = (Math.cos(ti) - n * Math.cos(tt)) / (Math.cos(ti) + n * Math.cos(tt));
+        const rp = (n * Math.cos(ti) - Math.cos(tt)) / (n * Math.cos(ti) + Math.cos(tt));
+        expect(fresnelExact(Math.cos(ti), n), `ior ${n} at ${deg}°`).toBeCloseTo((rs * rs + rp * rp) / 2, 12);
+      }
+    }
+    // Two values worked out by hand for ior 1.5: at 45°, sin θt = √2/3, cos θt = √7/3, so
+    // rs = (√2/2 − √7/2)/(√2/2 + √7/2) = (√2 − √7)/(√2 + √7) and rp = (1.5·√2/2 − √7/3)/(1.5·√2/2 + √7/3).
+    const rs45 = (Math.SQRT2 - Math.sqrt(7)) / (Math.SQRT2 + Math.sqrt(7));
+    const rp45 = (0.75 * Math.SQRT2 - Math.sqrt(7) / 3) / (0.75 * Math.SQRT2 + Math.sqrt(7) / 3);
+    expect(fresnelExact(Math.SQRT1_2, 1.5)).toBeCloseTo((rs45 ** 2 + rp45 ** 2) / 2, 14);
+    expect(fresnelExact(Math.SQRT1_2, 1.5)).toBeCloseTo(0.0502, 4);
+    // At 60° (cos ½): sin θt = √3/3, cos θt = √6/3, rs = (1 − √6)/(1 + √6), rp = (0.75 − √6/3)/(0.75 + √6/3).
+    const rs60 = (1 - Math.sqrt(6)) / (1 + Math.sqrt(6)), rp60 = (0.75 - Math.sqrt(6) / 3) / (0.75 + Math.sqrt(6) / 3);
+    expect(fresnelExact(0.5, 1.5)).toBeCloseTo((rs60 ** 2 + rp60 ** 2) / 2, 14);
+    expect(fresnelExact(0.5, 1.5)).toBeCloseTo(0.0892, 4);
+  });
+
   it('increases with angle for ior 1.5 beyond Brewster (and from 0° too)', () => {
     let prev = -Infinity;
     for (let deg = 0; deg <= 90; deg += 0.25) {
@@ -57,6 +80,10 @@ describe('fresnelSchlick', () => {
 
   it('is R0 + (1 − R0)(1 − cos)^5', () => {
     expect(fresnelSchlick(0.5, 1.5)).toBeCloseTo(0.04 + 0.96 / 32, 12);
+    // ior 2: R0 = 1/9; cos 0.2: (0.8)^5 = 0.32768 → 1/9 + (8/9)·0.32768.
+    expect(fresnelSchlick(0.2, 2)).toBeCloseTo(1 / 9 + (8 / 9) * 0.32768, 12);
+    // cos 0.9, ior 1.5: 0.04 + 0.96·10⁻⁵.
+    expect(fresnelSchlick(0.9, 1.5)).toBeCloseTo(0.04 + 0.96e-5, 12);
   });
 
   it('stays within 0.02..0.05 of the exact model at its worst for ior 1.5', () => {

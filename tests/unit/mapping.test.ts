@@ -1,5 +1,5 @@
 // The texture mappings of src/scene/mapping.ts at hand-computed points.
-import { describe, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { cylindricalUV, sphericalUV, triplanarUV, TRIPLANAR_SHARPNESS } from '../../src/scene/mapping';
 import type { Bounds } from '../../src/scene/scene';
 import { expectClose } from './helpers';
@@ -29,7 +29,7 @@ describe('spherical', () => {
 });
 
 describe('triplanar', () => {
-  it('weights |n_i|^k normalised; each projection maps the bounds cube onto [0, 1]²', () => {
+  it('weights abs(n_i)^k normalised; each projection maps the bounds cube onto [0, 1]²', () => {
     const w = [0, 0, 0], uvs = [0, 0, 0, 0, 0, 0];
     triplanarUV(w, uvs, [0.5, -0.5, 1], [0, 0, 1], UNIT);
     expectClose(w, [0, 0, 1]);
@@ -39,10 +39,12 @@ describe('triplanar', () => {
     triplanarUV(w, uvs, [3, 2, 3], [s, -s, 0], OFF);
     expectClose(w, [0.5, 0.5, 0]);
     expectClose(uvs, [0.5, 0.5, 1, 0.5, 1, 0.5]); // x: ½ + 2/4 = 1, y: ½, z: ½
-    const k = TRIPLANAR_SHARPNESS;
+    // k = 4, as shaders/standard.frag writes it (n·n·n·n): 0.6⁴ = 0.1296, 0.8⁴ = 0.4096, sum 0.5392.
+    expect(TRIPLANAR_SHARPNESS).toBe(4);
     triplanarUV(w, uvs, [0, 0, 0], [0.6, 0.8, 0], UNIT);
-    const a = 0.6 ** k, b = 0.8 ** k;
-    expectClose(w, [a / (a + b), b / (a + b), 0]);
+    expectClose(w, [0.1296 / 0.5392, 0.4096 / 0.5392, 0]);
+    triplanarUV(w, uvs, [0, 0, 0], [-0.48, 0.6, -0.64], UNIT); // signs do not matter: 0.48⁴, 0.6⁴, 0.64⁴
+    expectClose(w, [0.05308416 / 0.35045632, 0.1296 / 0.35045632, 0.16777216 / 0.35045632]);
     triplanarUV(w, uvs, [0, 0, 0], [0, 0, 0], UNIT);
     expectClose(w, [1 / 3, 1 / 3, 1 / 3]);
   });

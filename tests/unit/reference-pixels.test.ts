@@ -173,6 +173,29 @@ describe('Fresnel anchors through a glass pixel with nothing behind or reflected
     expectRgb(rgbAt(renderReference(s), 16, 16), glassEquation(F, 0.5));
   });
 
+  it('transparency 0.2 and 0.9, where T and 1 − T differ: the glass equation at normal incidence', () => {
+    for (const t of [0.2, 0.9]) {
+      for (const fresnel of ['exact', 'schlick'] as const) {
+        expectRgb(rgbAt(renderReference({ ...headOn, fresnel, transparency: t }), 16, 16), glassEquation(0.04, t));
+      }
+    }
+  });
+
+  it('each model at 56.31° with T = 0.2: exact, Schlick R0 + (1 − R0)(1 − cos θ)^5, classic (1 − cos θ)^3', () => {
+    const theta = Math.atan(1.5), c = Math.cos(theta), t = 0.2;
+    const f = [-Math.sin(theta), 0, -Math.cos(theta)];
+    const eye: [number, number, number] = [GLASS_POINT[0] - 4 * f[0], GLASS_POINT[1], -4 * f[2]];
+    const s: ReferenceState = { ...STATE, cameraPosition: eye, yaw: -90 - (theta * 180) / Math.PI, transparency: t };
+    expectRgb(rgbAt(renderReference({ ...s, fresnel: 'exact' }), 16, 16), glassEquation(0.5 * (1.25 / 3.25) ** 2, t));
+    const schlick = 0.04 + 0.96 * (1 - c) ** 5;
+    expect(rgbAt(renderReference({ ...s, fresnel: 'schlick', view: 'fresnel' }), 16, 16)[0]).toBeCloseTo(schlick, 12);
+    expectRgb(rgbAt(renderReference({ ...s, fresnel: 'schlick' }), 16, 16), glassEquation(schlick, t));
+    // Classic: colour = mix(D, R, F), a = (1 − T)(0.2 + 0.8F), straight alpha over B; R = B = background here.
+    const classic = (1 - c) ** 3, a = (1 - t) * (0.2 + 0.8 * classic);
+    const expected = TINT_DARK.map((k) => (GLASS_TEX * k + (BG - GLASS_TEX * k) * classic) * a + BG * (1 - a));
+    expectRgb(rgbAt(renderReference({ ...s, fresnel: 'classic' }), 16, 16), expected);
+  });
+
   it('near grazing incidence (cos θ = 0.01) F is close to 1, as the textbook formula says', () => {
     // Eye 0.02 above the plane, yaw 180° + asin(0.01): the centre ray meets the glass 2 units on.
     const yaw = 180 + (Math.asin(0.01) * 180) / Math.PI;

@@ -1,4 +1,7 @@
 // Unit-edge box centred at the origin; each face carries UVs over [0,1]² (SPEC §3).
+// BOX_FACES is shared by the reference's analytic box (reference/analytic-tracers.ts) and both
+// renderers' mesh: tied down by tests/unit/geometry.test.ts (faces, winding, UV corners) and
+// reference-pixels.test.ts's texels of the +Z and top faces worked out by hand.
 import { type MeshData } from './mesh-data';
 
 type V3 = readonly [number, number, number];

@@ -1,0 +1,82 @@
+// The float64 reference's own formulas: its glass mix, its clip, its shading, its sampler, its blend;
+// then the modules it shares with the renderers (R8 on), which the software-vs-reference comparison
+// cannot see, each caught by its own hand-computed test.
+// Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
+const PIXELS = 'tests/unit/reference-pixels.test.ts';
+const ANY = 'tests/unit/reference-any-scene.test.ts';
+const unit = (name) => `tests/unit/${name}.test.ts`;
+
+export default [
+  {
+    name: 'R1 glass mix: T and 1 − T swapped',
+    edits: [{ file: 'src/reference/shade.ts', find: ': f * r[k] + (1 - f) * (t * b[k] + (1 - t) * d);', replace: ': f * r[k] + (1 - f) * ((1 - t) * b[k] + t * d);' }],
+    tests: [PIXELS],
+  },
+  {
+    name: 'R2 classic glass: mix(R, D, F) for mix(D, R, F)',
+    edits: [{ file: 'src/reference/shade.ts', find: '? (d + (r[k] - d) * f) * a + b[k] * (1 - a)', replace: '? (r[k] + (d - r[k]) * f) * a + b[k] * (1 - a)' }],
+    tests: [PIXELS],
+  },
+  {
+    name: 'R3 Fresnel cos θ = N·V without abs()',
+    edits: [{
+      file: 'src/reference/shade.ts',
+      find: 'const c = Math.abs(n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) / Math.hypot(d[0], d[1], d[2]);',
+      replace: 'const c = (n[0] * d[0] + n[1] * d[1] + n[2] * d[2]) / Math.hypot(d[0], d[1], d[2]);',
+    }],
+    tests: [PIXELS],
+  },
+  {
+    name: 'R4 Blinn-Phong half vector L − V',
+    edits: [{ file: 'src/reference/shade.ts', find: 'const hx = lx + vx, hy = ly + vy, hz = lz + vz;', replace: 'const hx = lx - vx, hy = ly - vy, hz = lz - vz;' }],
+    tests: [PIXELS],
+  },
+  {
+    name: 'R5 mirrored pass keeps the far side of the glass (clip sign flipped)',
+    edits: [{
+      file: 'src/reference/clip.ts',
+      find: 'return hit.t > tMin && visible(hit.t) && (clipSide === 0 || clipSide * signedDistance(plane!, hit.p) >= 0);',
+      replace: 'return hit.t > tMin && visible(hit.t) && (clipSide === 0 || clipSide * signedDistance(plane!, hit.p) <= 0);',
+    }],
+    tests: [PIXELS],
+  },
+  {
+    name: 'R6 bilinear sampler: x and y weights swapped',
+    edits: [{
+      file: 'src/reference/texture-sampler.ts',
+      find: '    return t00 + (t10 - t00) * x + (t01 - t00) * y + (t11 - t10 - t01 + t00) * x * y;',
+      replace: '    return t00 + (t10 - t00) * y + (t01 - t00) * x + (t11 - t10 - t01 + t00) * x * y;',
+    }],
+    tests: [PIXELS],
+  },
+  {
+    name: 'R7 transparency: colour·(1 − α) + behind·α',
+    edits: [{ file: 'src/reference/sample-tracer.ts', find: 'out[k] = clamp01(out[k] * alpha + behind[k] * (1 - alpha));', replace: 'out[k] = clamp01(out[k] * (1 - alpha) + behind[k] * alpha);' }],
+    tests: [ANY],
+  },
+  {
+    name: 'R8 shared mapping.ts: spherical v flipped (v = 0 at the top pole)',
+    edits: [{ file: 'src/scene/mapping.ts', find: 'Math.acos(Math.max(-1, Math.min(1, -ny)))', replace: 'Math.acos(Math.max(-1, Math.min(1, ny)))' }],
+    tests: [unit('mapping')],
+  },
+  {
+    name: 'R9 shared mapping.ts: triplanar sharpness 2 (the shader has 4)',
+    edits: [{ file: 'src/scene/mapping.ts', find: 'export const TRIPLANAR_SHARPNESS = 4;', replace: 'export const TRIPLANAR_SHARPNESS = 2;' }],
+    tests: [unit('mapping')],
+  },
+  {
+    name: 'R10 shared fresnel.ts: Schlick\'s exponent 4',
+    edits: [{ file: 'src/math/fresnel.ts', find: '(1 - clamp01(cosTheta)) ** 5', replace: '(1 - clamp01(cosTheta)) ** 4' }],
+    tests: [unit('fresnel')],
+  },
+  {
+    name: 'R11 shared glass-frame.ts: plane offset d = +n·c',
+    edits: [{ file: 'src/scene/glass-frame.ts', find: 'plane: [nx, ny, nz, -(nx * cx + ny * cy + nz * cz)],', replace: 'plane: [nx, ny, nz, nx * cx + ny * cy + nz * cz],' }],
+    tests: [unit('glass-frame')],
+  },
+  {
+    name: 'R12 shared course-depth.ts: the far margin (×1.001) forgotten on the mirrored points',
+    edits: [{ file: 'src/scene/course-depth.ts', find: 'far = Math.max(far, z * 1.001);', replace: 'far = Math.max(far, z);' }],
+    tests: [unit('course-depth')],
+  },
+];
