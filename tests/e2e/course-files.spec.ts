@@ -241,10 +241,11 @@ test('a negative hx mirrors the picture left to right (culled built-ins too)', a
   await settle(page);
   const b = await capture(page);
   const covered = a.data.filter((_, i) => i % 4 === 0 && a.data[i] + a.data[i + 1] + a.data[i + 2] > 0).length;
-  expect(covered).toBeGreaterThan(300);
+  expect(covered).toBeGreaterThan(1000); // measured 1073
   const differ = mirroredDifference(a, b);
   console.log(`negative hx: ${differ} of ${W * H} pixels differ from the mirrored picture (${covered} covered)`);
-  expect(differ).toBeLessThan(covered * 0.03);
+  // Measured 8 (edge pixels whose coverage rounds differently mirrored); an unmirrored picture differs in hundreds.
+  expect(differ).toBeLessThan(16);
 });
 
 test('a camera-src that fails fires error (url, line) on the scene element and keeps the camera it had', async ({ page, consoleLog }) => {
@@ -288,7 +289,7 @@ async function sceneOf(page: Page): Promise<Scene> {
 }
 
 for (const glass of [false, true]) {
-  test(`a course scene (camera, lighting, mesh and Bézier .byu${glass ? ', glass' : ''}) matches the reference ≥ 40 dB`, async ({ page }) => {
+  test(`a course scene (camera, lighting, mesh and Bézier .byu${glass ? ', glass' : ''}) matches the reference`, async ({ page }) => {
     await openPage(page);
     const glassAttrs = glass ? 'glass-center="0 0 -0.5" glass-normal="0 0 1" glass-size="8 5" transparency="0.4"' : 'glass-size="0 0"';
     await mountHtml(page, `<glass-plane-scene time="0" spin="0" samples="4" ${glassAttrs} camera-src="${URL_BASE}camera.cfg">
@@ -309,6 +310,11 @@ for (const glass of [false, true]) {
     console.log(line);
     test.info().annotations.push({ type: 'psnr', description: line });
     expect(cmp.pixels.objects).toBeGreaterThan(300);
-    expect(cmp.psnr.all, line).toBeGreaterThanOrEqual(40);
+    // Measured (SwiftShader, 4× MSAA against 4×4 reference samples): 46.3 / 46.4 dB overall, objects 45.6 / 45.6,
+    // edges 37.8 / 41.2, glass 54.5 (with glass). Bounds 2 dB below.
+    expect(cmp.psnr.all, line).toBeGreaterThanOrEqual(44.3);
+    expect(cmp.psnr.objects, line).toBeGreaterThanOrEqual(43.6);
+    expect(cmp.psnr.edges, line).toBeGreaterThanOrEqual(glass ? 39.2 : 35.8);
+    if (glass) expect(cmp.psnr.glass, line).toBeGreaterThanOrEqual(52.5);
   });
 }
