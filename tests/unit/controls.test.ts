@@ -75,16 +75,32 @@ describe('inertia', () => {
     expect(a).toBeCloseTo(2 * INERTIA_TAU, 3);
   });
 
-  it('stops once below 0.05°/s, and a 1-second frame moves no more than one 30 Hz frame', () => {
+  it('stops at the first step once below 0.05°/s: τ·ln(r₀ ÷ 0.05°/s) after the start', () => {
     const it = new Inertia(1), out = new Float64Array(1);
     it.start([1]);
     let frames = 0;
     while (it.active && frames < 10_000) { it.step(1 / 60, out); frames++; }
-    expect(frames).toBeLessThan(60 * 10); // ln(1 rad/s ÷ 0.05°/s)·τ ≈ 3.5 s
-    const a = new Inertia(1), b = new Inertia(1), oa = new Float64Array(1), ob = new Float64Array(1);
-    a.start([1]); b.start([1]);
-    a.step(1, oa); b.step(MAX_STEP, ob);
-    expect(oa[0]).toBe(ob[0]);
+    // ln(1 rad/s ÷ 0.05°/s)·τ = 2.756 s: the 166th frame at 60 Hz is the first at or past it.
+    const T = INERTIA_TAU * Math.log(1 / INERTIA_STOP);
+    expect(INERTIA_STOP).toBeCloseTo(0.05 * DEG, 15);
+    expect(frames).toBe(Math.ceil(T * 60));
+  });
+
+  it('decays by the wall clock at any frame time: 13 Hz frames, or one of 1 s, take the rates down by e^(−dt/τ)', () => {
+    const it = new Inertia(1), out = new Float64Array(1);
+    it.start([2]);
+    for (let i = 0; i < 13; i++) it.step(1 / 13, out);
+    expect(it.rates[0]).toBeCloseTo(2 * Math.exp(-1 / INERTIA_TAU), 12);
+    const a = new Inertia(1), oa = new Float64Array(1);
+    a.start([2]);
+    a.step(1, oa);
+    expect(a.rates[0]).toBeCloseTo(2 * Math.exp(-1 / INERTIA_TAU), 12);
+  });
+
+  it('a stall turns no further than a MAX_STEP frame (a quarter second), and a 13 Hz frame is not a stall', () => {
+    const turn = (dt: number) => { const it = new Inertia(1), out = new Float64Array(1); it.start([2]); it.step(dt, out); return out[0]; };
+    expect(turn(1)).toBe(turn(MAX_STEP));
+    expect(turn(1 / 13)).toBeCloseTo(2 * INERTIA_TAU * (1 - Math.exp(-1 / 13 / INERTIA_TAU)), 12);
   });
 
   it('caps the release rate at MAX_RATE and ignores non-finite rates', () => {
