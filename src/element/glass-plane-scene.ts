@@ -195,8 +195,9 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       pose: () => this.flyby.pose,
       target: () => this.values.cameraTarget ?? boundsCenter(this.scene.objects),
       fov: () => this.values.fov,
-      changed: () => {
-        this.cameraDirty = true;
+      changed: (camera) => {
+        // A trackball turn moves objects, not the camera: no write-back, no camera-change for it.
+        if (camera) this.cameraDirty = true;
         this.sceneValue = null;
         this.requestRender();
       },
@@ -519,7 +520,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     // The motion after release, by the wall clock (SPEC §10), not the frame's timestamp.
     if (this.pointerControls.update(performance.now())) {
       this.sceneValue = null;
-      this.cameraDirty = true;
+      if (this.values.controls === 'orbit') this.cameraDirty = true; // the trackball's turns the objects
     }
     this.draw(now);
     if (this.animating()) this.scheduleFrame();

@@ -72,6 +72,23 @@ test.describe('trackball', () => {
     for (let i = 0; i < 3; i++) expect(keyed.axis[i], `key axis[${i}]`).toBeCloseTo(up[i], 6);
   });
 
+  test('turning the objects moves no camera: no camera-change and nothing written, after the inertia too; the wheel\'s dolly fires one', async ({ page }) => {
+    await openPage(page);
+    const { selector } = await mount(page, { time: 0, spin: 0, controls: 'trackball' }, SIZE);
+    const changes = await recordCameraChanges(page, selector);
+    const b = await box(page, selector);
+    const cdp = await page.context().newCDPSession(page);
+    // A flick (inertia after it), then a right-drag (the light).
+    await drag(cdp, { x: b.cx - 20, y: b.cy }, { x: b.cx + 20, y: b.cy }, { t0: 17, steps: 8, dtMs: 16, restMs: 8 });
+    await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 30, y: b.cy }, { t0: 18, steps: 8, dtMs: 16, restMs: 200, button: 'right' });
+    await expect.poll(() => page.evaluate((s) => { const el = document.querySelector(s)!; return new Promise((r) => { let n = 0; const f = () => n++; el.addEventListener('frame', f); setTimeout(() => { el.removeEventListener('frame', f); r(n); }, 300); }); }, selector), { message: 'the spin stopped' }).toBe(0);
+    expect(await changes(), 'no camera-change for turning objects').toHaveLength(0);
+    expect(await page.evaluate((s) => document.querySelector(s)!.hasAttribute('camera-position'), selector), 'camera-position not written').toBe(false);
+    await page.mouse.move(b.cx, b.cy);
+    await page.mouse.wheel(0, 100);
+    await expect.poll(async () => (await changes()).length).toBe(1);
+  });
+
   test('right-drag and Shift-drag turn the light, not the objects: the lighting changes', async ({ page }) => {
     await openPage(page);
     const { selector } = await mount(page, { time: 0, spin: 0, controls: 'trackball' }, SIZE);

@@ -175,6 +175,13 @@ describe('OrbitCamera', () => {
     expect(Math.hypot(...moved)).toBeCloseTo(0.1 * d * Math.tan(30 * DEG), 12);
     const f = forwardFromYawPitch([0, 0, 0], p.yaw, p.pitch);
     expect(moved[0] * f[0] + moved[1] * f[1] + moved[2] * f[2]).toBeCloseTo(0, 12);
+    // A drag to the right carries the scene right: camera and target go left, along −right.
+    const h = Math.hypot(f[0], f[2]), right = [-f[2] / h, 0, f[0] / h];
+    expect(moved[0] * right[0] + moved[2] * right[2]).toBeCloseTo(-0.1 * d * Math.tan(30 * DEG), 12);
+    // And a drag down carries it down: they go up (+Y, the view's up having a positive Y).
+    const y0 = p.position[1];
+    o.pan(p, 0, 10, 100, 60);
+    expect(p.position[1] - y0).toBeGreaterThan(0);
     o.dolly(p, NaN);
     expect(o.distance).toBeCloseTo(d / 2, 12);
   });

@@ -22,9 +22,9 @@ export interface PointerControlsHooks {
   target(): ArrayLike<number>;
   /** Vertical field of view, degrees. */
   fov(): number;
-  /** The camera or the trackball moved: draw. */
-  changed(): void;
-  /** A gesture ended (pointer up, 150 ms after the wheel, a key): write back and announce. */
+  /** The camera (`camera` true) or the trackball's objects or light moved: draw. */
+  changed(camera: boolean): void;
+  /** A gesture ended (pointer up, 150 ms after the wheel, a key): write back and announce if the camera moved. */
   gestureEnd(): void;
 }
 
@@ -234,7 +234,7 @@ export class PointerControls {
       this.last.y = p.y;
     }
     this.moved = true;
-    this.hooks.changed();
+    this.hooks.changed(this.drag === 'pinch' || this.drag === 'pan' || mode === 'orbit');
   };
 
   private readonly onUp = (e: PointerEvent): void => {
@@ -251,7 +251,7 @@ export class PointerControls {
       this.spinTime = performance.now(); // the motion runs from the release, on the wall clock
     }
     this.drag = null;
-    if (this.spin.active) this.hooks.changed();
+    if (this.spin.active) this.hooks.changed(this.spinKind === 'orbit');
     else if (this.moved) this.end();
   };
 
@@ -294,7 +294,7 @@ export class PointerControls {
     if (this.wheelTimer === undefined) this.orbit.begin(this.hooks.pose(), this.hooks.target());
     this.orbit.dolly(this.hooks.pose(), Math.exp(dy * WHEEL_RATE));
     this.moved = true;
-    this.hooks.changed();
+    this.hooks.changed(true);
     clearTimeout(this.wheelTimer);
     this.wheelTimer = setTimeout(() => {
       this.wheelTimer = undefined;
@@ -329,7 +329,7 @@ export class PointerControls {
       this.arcball(r, r, r + Math.sin(yaw * DEG) * r, r - Math.sin(pitch * DEG) * r, this.objectRotation);
     }
     this.moved = true;
-    this.hooks.changed();
+    this.hooks.changed(dolly !== 1 || mode === 'orbit');
     this.end();
   };
 
