@@ -175,8 +175,12 @@ test.describe('orbit', () => {
     const { selector } = await mount(page, { time: 0, spin: 0, controls: 'orbit', 'camera-position': '0 1 6', 'camera-target': '0 0 0' }, SIZE);
     const changes = await recordCameraChanges(page, selector);
     const b = await box(page, selector);
-    await page.mouse.move(b.cx, b.cy);
-    for (let i = 0; i < 3; i++) await page.mouse.wheel(0, -100);
+    // Three notches up in one task, so that no pause on a busy machine splits them into two
+    // gestures (the gesture ends 150 ms after the last one).
+    await page.evaluate(([s, x, y]) => {
+      const canvas = document.querySelector(s as string)!.shadowRoot!.querySelector('canvas')!;
+      for (let i = 0; i < 3; i++) canvas.dispatchEvent(new WheelEvent('wheel', { deltaY: -100, deltaMode: 0, clientX: x as number, clientY: y as number, bubbles: true, cancelable: true, composed: true }));
+    }, [selector, b.cx, b.cy] as const);
     await expect.poll(async () => (await changes()).length).toBe(1);
     const end = await pose(page, selector);
     expect(Math.hypot(...end.position), 'distance × e^(−3·100·0.0015)').toBeCloseTo(Math.hypot(0, 1, 6) * Math.exp(-0.45), 6);
