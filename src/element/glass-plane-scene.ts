@@ -520,7 +520,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     // The motion after release, by the wall clock (SPEC §10), not the frame's timestamp.
     if (this.pointerControls.update(performance.now())) {
       this.sceneValue = null;
-      if (this.values.controls === 'orbit') this.cameraDirty = true; // the trackball's turns the objects
+      if (this.values.controls === 'orbit') this.cameraDirty = true; // a trackball's spin turns objects, not the camera
     }
     this.draw(now);
     if (this.animating()) this.scheduleFrame();
