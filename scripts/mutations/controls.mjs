@@ -1,12 +1,14 @@
 // Controls: orbit, pan, trackball, flyby, inertia, gesture end.
 // Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
 const CONTROLS = 'tests/e2e/controls.spec.ts';
+const INERTIA = 'tests/e2e/inertia.spec.ts';
+const POINTER = 'src/element/controls/pointer-controls.ts';
 
 export default [
   {
     name: '9 inertia stepped by Euler (frame-rate dependent)',
-    edits: [{ file: 'src/element/controls/inertia.ts', find: '    const f = INERTIA_TAU * (1 - k);', replace: '    const f = t;' }],
-    tests: [CONTROLS],
+    edits: [{ file: 'src/element/controls/inertia.ts', find: '    const f = INERTIA_TAU * (1 - ks);', replace: '    const f = s;' }],
+    tests: [INERTIA],
   },
   {
     name: '10 touch-action none without controls',
@@ -17,5 +19,83 @@ export default [
     name: '11 pointer-lock entry movement turned by',
     edits: [{ file: 'src/element/flyby-input.ts', find: '    this.skipNext = true;', replace: '' }],
     tests: [CONTROLS],
+  },
+  {
+    name: 'C1 orbit pan moves the wrong way',
+    edits: [{ file: 'src/element/controls/orbit.ts', find: 'const sx = -dx * unitsPerPx, sy = dy * unitsPerPx;', replace: 'const sx = dx * unitsPerPx, sy = dy * unitsPerPx;' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C2 orbit drag up tilts the camera down',
+    edits: [{ file: POINTER, find: 'pitch = -dy * ORBIT_DEG_PER_PX;', replace: 'pitch = dy * ORBIT_DEG_PER_PX;' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C3 trackball arcball y not flipped (a drag up turns the objects down)',
+    edits: [{ file: 'src/element/controls/arcball.ts', find: 'const y = (height / 2 - py) / r;', replace: 'const y = (py - height / 2) / r;' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C4 trackball axis from b × a (turns against the pointer)',
+    edits: [{ file: POINTER, find: 'vec3.cross(this.axis, this.a, this.b);', replace: 'vec3.cross(this.axis, this.b, this.a);' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C5 flyby strafe sign flipped (D moves left)',
+    edits: [{ file: 'src/element/flyby-controller.ts', find: 'const mx = fwd * fx - side * fz;', replace: 'const mx = fwd * fx + side * fz;' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C6 pinch dollies the wrong way (spread moves away)',
+    edits: [{ file: POINTER, find: 'this.orbit.dolly(pose, span / this.span);', replace: 'this.orbit.dolly(pose, this.span / span);' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C7 pinch zooms about the view centre, not the fingers',
+    edits: [{ file: POINTER, find: 'this.last.x - cx - (lx - cx) / k, this.last.y - cy - (ly - cy) / k,', replace: 'this.last.x - lx, this.last.y - ly,' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C8 wheel sign flipped (scrolling up dollies out)',
+    edits: [{ file: POINTER, find: 'Math.exp(dy * WHEEL_RATE)', replace: 'Math.exp(-dy * WHEEL_RATE)' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C9 camera-change fired at pointer up, before the inertia ends',
+    edits: [{ file: POINTER, find: "    if (this.spin.active) this.hooks.changed(this.spinKind === 'orbit');\n    else if (this.moved) this.end();", replace: "    if (this.spin.active) this.hooks.changed(this.spinKind === 'orbit');\n    if (this.moved) this.end();" }],
+    tests: [INERTIA],
+  },
+  {
+    name: 'C10 camera-target left out of the write-back after a pan',
+    edits: [{ file: 'src/element/glass-plane-scene.ts', find: "        this.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);\n", replace: '' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C11 a trackball turn fires camera-change (the camera did not move)',
+    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '        if (camera) this.cameraDirty = true;', replace: '        this.cameraDirty = true;' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C12 orbit inertia in degrees per second again (capped at 6.3°/s, stops at 0.00087°/s)',
+    edits: [
+      { file: POINTER, find: 'this.delta[0] = yaw * DEG; this.delta[1] = pitch * DEG;', replace: 'this.delta[0] = yaw; this.delta[1] = pitch;' },
+      { file: POINTER, find: 'this.orbit.rotate(this.hooks.pose(), d[0] / DEG, d[1] / DEG);', replace: 'this.orbit.rotate(this.hooks.pose(), d[0], d[1]);' },
+    ],
+    tests: [INERTIA],
+  },
+  {
+    name: 'C13 stop threshold 0.05 rad/s, not 0.05°/s',
+    edits: [{ file: 'src/element/controls/inertia.ts', find: 'export const INERTIA_STOP = (0.05 * Math.PI) / 180;', replace: 'export const INERTIA_STOP = 0.05;' }],
+    tests: [INERTIA],
+  },
+  {
+    name: 'C14 MAX_STEP clamp back on the clock (slow frames slow the decay)',
+    edits: [{ file: 'src/element/controls/inertia.ts', find: '    const t = dt > 0 ? dt : 0;', replace: '    const t = dt > 0 ? Math.min(dt, 1 / 30) : 0;' }],
+    tests: [INERTIA],
+  },
+  {
+    name: 'C15 inertia clock not restarted at release',
+    edits: [{ file: POINTER, find: '      this.spinTime = performance.now(); // the motion runs from the release, on the wall clock\n', replace: '' }],
+    tests: [INERTIA],
   },
 ];

@@ -103,8 +103,6 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private readonly input: FlybyInput;
   /** orbit and trackball input, and the trackball's rotations. */
   private readonly pointerControls: PointerControls;
-  /** rAF time of the last frame, for the motion after release (0: none yet). */
-  private lastFrameNow = 0;
   /** The flyby's mouse look ends 150 ms after its last movement. */
   private lookTimer: ReturnType<typeof setTimeout> | undefined;
   /** A camera attribute set by the page: one camera-change after the current task. */
@@ -197,8 +195,9 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       pose: () => this.flyby.pose,
       target: () => this.values.cameraTarget ?? boundsCenter(this.scene.objects),
       fov: () => this.values.fov,
-      changed: () => {
-        this.cameraDirty = true;
+      changed: (camera) => {
+        // A trackball turn moves objects, not the camera: no write-back, no camera-change for it.
+        if (camera) this.cameraDirty = true;
         this.sceneValue = null;
         this.requestRender();
       },
@@ -496,7 +495,6 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     cancelAnimationFrame(this.rafId);
     this.rafId = 0;
     this.lastNow = 0;
-    this.lastFrameNow = 0;
   }
 
   /**
@@ -519,18 +517,15 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.rafId = 0;
     if ((!this.glRenderer && !this.software) || this.failed) return;
     this.advanceFlyby();
-    // The motion after release, by the frames' own clock (exact for any frame time).
-    const dt = this.lastFrameNow ? (now - this.lastFrameNow) / 1000 : 0;
-    this.lastFrameNow = now;
-    if (this.pointerControls.update(dt)) {
+    // The motion after release, by the wall clock (SPEC §10), not the frame's timestamp.
+    if (this.pointerControls.update(performance.now())) {
       this.sceneValue = null;
-      this.cameraDirty = true;
+      if (this.values.controls === 'orbit') this.cameraDirty = true; // a trackball's spin turns objects, not the camera
     }
     this.draw(now);
     if (this.animating()) this.scheduleFrame();
     else {
       this.lastNow = 0;
-      this.lastFrameNow = 0;
       if (this.cameraDirty && this.flybyMoved) this.gestureEnd();
     }
   };

@@ -75,16 +75,32 @@ describe('inertia', () => {
     expect(a).toBeCloseTo(2 * INERTIA_TAU, 3);
   });
 
-  it('stops once below 0.05°/s, and a 1-second frame moves no more than one 30 Hz frame', () => {
+  it('stops at the first step once below 0.05°/s: τ·ln(r₀ ÷ 0.05°/s) after the start', () => {
     const it = new Inertia(1), out = new Float64Array(1);
     it.start([1]);
     let frames = 0;
     while (it.active && frames < 10_000) { it.step(1 / 60, out); frames++; }
-    expect(frames).toBeLessThan(60 * 10); // ln(1 rad/s ÷ 0.05°/s)·τ ≈ 3.5 s
-    const a = new Inertia(1), b = new Inertia(1), oa = new Float64Array(1), ob = new Float64Array(1);
-    a.start([1]); b.start([1]);
-    a.step(1, oa); b.step(MAX_STEP, ob);
-    expect(oa[0]).toBe(ob[0]);
+    // ln(1 rad/s ÷ 0.05°/s)·τ = 2.756 s: the 166th frame at 60 Hz is the first at or past it.
+    const T = INERTIA_TAU * Math.log(1 / INERTIA_STOP);
+    expect(INERTIA_STOP).toBeCloseTo(0.05 * DEG, 15);
+    expect(frames).toBe(Math.ceil(T * 60));
+  });
+
+  it('decays by the wall clock at any frame time: 13 Hz frames, or one of 1 s, take the rates down by e^(−dt/τ)', () => {
+    const it = new Inertia(1), out = new Float64Array(1);
+    it.start([2]);
+    for (let i = 0; i < 13; i++) it.step(1 / 13, out);
+    expect(it.rates[0]).toBeCloseTo(2 * Math.exp(-1 / INERTIA_TAU), 12);
+    const a = new Inertia(1), oa = new Float64Array(1);
+    a.start([2]);
+    a.step(1, oa);
+    expect(a.rates[0]).toBeCloseTo(2 * Math.exp(-1 / INERTIA_TAU), 12);
+  });
+
+  it('a stall turns no further than a MAX_STEP frame (a quarter second), and a 13 Hz frame is not a stall', () => {
+    const turn = (dt: number) => { const it = new Inertia(1), out = new Float64Array(1); it.start([2]); it.step(dt, out); return out[0]; };
+    expect(turn(1)).toBe(turn(MAX_STEP));
+    expect(turn(1 / 13)).toBeCloseTo(2 * INERTIA_TAU * (1 - Math.exp(-1 / 13 / INERTIA_TAU)), 12);
   });
 
   it('caps the release rate at MAX_RATE and ignores non-finite rates', () => {
@@ -159,6 +175,13 @@ describe('OrbitCamera', () => {
     expect(Math.hypot(...moved)).toBeCloseTo(0.1 * d * Math.tan(30 * DEG), 12);
     const f = forwardFromYawPitch([0, 0, 0], p.yaw, p.pitch);
     expect(moved[0] * f[0] + moved[1] * f[1] + moved[2] * f[2]).toBeCloseTo(0, 12);
+    // A drag to the right carries the scene right: camera and target go left, along −right.
+    const h = Math.hypot(f[0], f[2]), right = [-f[2] / h, 0, f[0] / h];
+    expect(moved[0] * right[0] + moved[2] * right[2]).toBeCloseTo(-0.1 * d * Math.tan(30 * DEG), 12);
+    // And a drag down carries it down: they go up (+Y, the view's up having a positive Y).
+    const y0 = p.position[1];
+    o.pan(p, 0, 10, 100, 60);
+    expect(p.position[1] - y0).toBeGreaterThan(0);
     o.dolly(p, NaN);
     expect(o.distance).toBeCloseTo(d / 2, 12);
   });

@@ -1,7 +1,8 @@
-// Motion after release (SPEC §10): rates that decay as e^(−t/τ), advanced exactly for any frame
-// time, so the motion after release is the same at 30, 60 and 144 frames per second. Each
-// step turns by ∫ r·e^(−s/τ) ds over the step = r·τ·(1 − e^(−dt/τ)), and the rates become
-// r·e^(−dt/τ): the steps telescope to r₀·τ·(1 − e^(−T/τ)) whatever the frames were.
+// Motion after release (SPEC §10): rates that decay as e^(−t/τ), t the wall-clock time since
+// the release, advanced exactly for any frame time, so the motion after release is the same at
+// 13, 30 and 144 frames per second. Each step turns by ∫ r·e^(−s/τ) ds over the step =
+// r·τ·(1 − e^(−dt/τ)), and the rates become r·e^(−dt/τ): the steps telescope to
+// r₀·τ·(1 − e^(−T/τ)) whatever the frames were. Rates are in radians per second throughout.
 
 /** Decay time constant, seconds (SPEC: ≤ 0.5 s). */
 export const INERTIA_TAU = 0.35;
@@ -12,15 +13,17 @@ export const REST_MS = 100;
 /** The release rate is measured over the last this-many ms of the drag. */
 export const VELOCITY_WINDOW_MS = 80;
 /**
- * Longest step, seconds: a frame after a stall (a hidden tab, a 1-second frame) moves no more
- * than one 30 Hz frame would. Exact for every frame rate at or above 30 Hz.
+ * Longest stretch of time one step turns by, seconds: a frame after a stall (a hidden tab, a
+ * 1-second frame) turns no further than a 4 Hz frame would, while the rates still decay by the
+ * whole time, so a stall never slows the clock. Exact for every frame rate at or above 4 Hz
+ * (a slow software frame included).
  */
-export const MAX_STEP = 1 / 30;
+export const MAX_STEP = 0.25;
 /** Fastest release rate, rad/s (a flick faster than a turn per second spins at one). */
 export const MAX_RATE = 2 * Math.PI;
 
 export class Inertia {
-  /** Current rates per component (rad/s, or whatever unit the owner uses per second). */
+  /** Current rates per component, rad/s. */
   readonly rates: Float64Array;
 
   constructor(components: number) {
@@ -44,15 +47,18 @@ export class Inertia {
   }
 
   /**
-   * Advances by `dt` seconds (clamped to [0, MAX_STEP]) and writes the displacement of this
-   * step into `out`; returns false (and writes zeros) when at rest.
+   * Advances by `dt` seconds of wall-clock time (NaN or negative: none) and writes the
+   * displacement of this step, over at most MAX_STEP of it, into `out`; returns false (and
+   * writes zeros) when at rest.
    */
   step(dt: number, out: Float64Array): boolean {
     out.fill(0);
     if (!this.active) return false;
-    const t = dt > 0 ? Math.min(dt, MAX_STEP) : 0;
+    const t = dt > 0 ? dt : 0;
     const k = Math.exp(-t / INERTIA_TAU);
-    const f = INERTIA_TAU * (1 - k);
+    const s = Math.min(t, MAX_STEP);
+    const ks = s === t ? k : Math.exp(-s / INERTIA_TAU);
+    const f = INERTIA_TAU * (1 - ks);
     for (let i = 0; i < this.rates.length; i++) {
       out[i] = this.rates[i] * f;
       this.rates[i] *= k;

@@ -22,9 +22,9 @@ export interface PointerControlsHooks {
   target(): ArrayLike<number>;
   /** Vertical field of view, degrees. */
   fov(): number;
-  /** The camera or the trackball moved: draw. */
-  changed(): void;
-  /** A gesture ended (pointer up, 150 ms after the wheel, a key): write back and announce. */
+  /** The camera (`camera` true) or the trackball's objects or light moved: draw. */
+  changed(camera: boolean): void;
+  /** A gesture ended (pointer up, 150 ms after the wheel, a key): write back and announce if the camera moved. */
   gestureEnd(): void;
 }
 
@@ -55,8 +55,10 @@ export class PointerControls {
   private wheelTimer: ReturnType<typeof setTimeout> | undefined;
   private moved = false;
   private panned = false;
-  // Rotation rates after release: trackball (world rotation vector, rad/s) or orbit (deg/s yaw, pitch).
+  // Rotation rates after release, rad/s: trackball (world rotation vector) or orbit (yaw, pitch).
   private readonly spin = new Inertia(3);
+  /** Wall-clock time (performance.now(), ms) the motion after release has been advanced to. */
+  private spinTime = 0;
   private spinKind: 'trackball' | 'orbit' = 'trackball';
   private readonly velocity = new VelocityTracker(3);
   // Scratch, so events allocate nothing.
@@ -120,8 +122,11 @@ export class PointerControls {
     return this.spin.active;
   }
 
-  /** Advances the motion after release by `dt` seconds; true if anything moved. */
-  update(dt: number): boolean {
+  /**
+   * Advances the motion after release to `now` (performance.now(), ms: the wall clock, whatever
+   * the frames' own timestamps); true if anything moved.
+   */
+  update(now: number): boolean {
     if (!this.spin.active) return false;
     const mode = this.hooks.mode();
     if (mode === null) {
@@ -129,9 +134,11 @@ export class PointerControls {
       return false;
     }
     const d = this.delta;
+    const dt = (now - this.spinTime) / 1000;
+    this.spinTime = now;
     if (!this.spin.step(dt, d)) return false;
     if (this.spinKind === 'orbit') {
-      this.orbit.rotate(this.hooks.pose(), d[0], d[1]);
+      this.orbit.rotate(this.hooks.pose(), d[0] / DEG, d[1] / DEG);
     } else {
       const angle = Math.hypot(d[0], d[1], d[2]);
       if (angle > 0) {
@@ -199,10 +206,13 @@ export class PointerControls {
     p.y = e.clientY - this.rect.top;
     const pose = this.hooks.pose();
     if (this.drag === 'pinch') {
-      const lx = this.last.x, ly = this.last.y, span = this.span;
+      const lx = this.last.x, ly = this.last.y, span = this.span, d = this.orbit.distance;
       this.pinchState();
       if (span > 0 && this.span > 0) this.orbit.dolly(pose, span / this.span);
-      this.orbit.pan(pose, this.last.x - lx, this.last.y - ly, this.rect.height, this.hooks.fov());
+      // About the fingers: the dolly moves a point drawn m px off the centre (at the target's
+      // depth) to m/k, so the pan takes it from there to under the fingers' new midpoint.
+      const k = this.orbit.distance / d, cx = this.rect.width / 2, cy = this.rect.height / 2;
+      this.orbit.pan(pose, this.last.x - cx - (lx - cx) / k, this.last.y - cy - (ly - cy) / k, this.rect.height, this.hooks.fov());
       this.panned = true;
     } else {
       const dx = p.x - this.last.x, dy = p.y - this.last.y;
@@ -214,7 +224,7 @@ export class PointerControls {
         const m = Math.hypot(yaw, pitch);
         if (m > MAX_EVENT_TURN) { yaw *= MAX_EVENT_TURN / m; pitch *= MAX_EVENT_TURN / m; }
         this.orbit.rotate(pose, yaw, pitch);
-        this.delta[0] = yaw; this.delta[1] = pitch; this.delta[2] = 0;
+        this.delta[0] = yaw * DEG; this.delta[1] = pitch * DEG; this.delta[2] = 0;
         this.velocity.add(e.timeStamp, this.delta);
       } else {
         this.arcball(this.last.x, this.last.y, p.x, p.y, this.drag === 'light' ? this.lightRotation : this.objectRotation);
@@ -224,7 +234,7 @@ export class PointerControls {
       this.last.y = p.y;
     }
     this.moved = true;
-    this.hooks.changed();
+    this.hooks.changed(this.drag === 'pinch' || this.drag === 'pan' || mode === 'orbit');
   };
 
   private readonly onUp = (e: PointerEvent): void => {
@@ -238,9 +248,10 @@ export class PointerControls {
     if (this.drag === 'rotate') {
       this.velocity.rates(e.timeStamp, this.delta);
       this.spin.start(this.delta);
+      this.spinTime = performance.now(); // the motion runs from the release, on the wall clock
     }
     this.drag = null;
-    if (this.spin.active) this.hooks.changed();
+    if (this.spin.active) this.hooks.changed(this.spinKind === 'orbit');
     else if (this.moved) this.end();
   };
 
@@ -283,7 +294,7 @@ export class PointerControls {
     if (this.wheelTimer === undefined) this.orbit.begin(this.hooks.pose(), this.hooks.target());
     this.orbit.dolly(this.hooks.pose(), Math.exp(dy * WHEEL_RATE));
     this.moved = true;
-    this.hooks.changed();
+    this.hooks.changed(true);
     clearTimeout(this.wheelTimer);
     this.wheelTimer = setTimeout(() => {
       this.wheelTimer = undefined;
@@ -318,7 +329,7 @@ export class PointerControls {
       this.arcball(r, r, r + Math.sin(yaw * DEG) * r, r - Math.sin(pitch * DEG) * r, this.objectRotation);
     }
     this.moved = true;
-    this.hooks.changed();
+    this.hooks.changed(dolly !== 1 || mode === 'orbit');
     this.end();
   };
 

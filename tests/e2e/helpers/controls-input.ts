@@ -1,0 +1,78 @@
+// Input and camera helpers for the controls tests: drags through CDP with explicit timestamps,
+// the element's box and camera pose, camera-change recording, and where a world point lands on
+// the element (CSS px from its centre, y down) for a pose.
+import type { CDPSession, Page } from '@playwright/test';
+import type { SceneElement } from '../fixtures';
+import { forwardFromYawPitch } from '../../../src/math/camera';
+
+export const DEG = 180 / Math.PI;
+export type Quat = [number, number, number, number];
+export interface ControlsElement extends SceneElement { objectRotation: Quat }
+export interface Pose { position: number[]; rotation: number[] }
+export interface CameraChange { position: number[]; rotation: number[]; target?: number[] }
+
+/** Angle in degrees between two unit quaternions' rotations. */
+export const quatAngle = (a: Quat, b: Quat) => 2 * Math.acos(Math.min(1, Math.abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3]))) * DEG;
+
+export async function box(page: Page, selector: string) {
+  return page.evaluate((s) => {
+    const r = document.querySelector(s)!.getBoundingClientRect();
+    return { x: r.left, y: r.top, width: r.width, height: r.height, cx: r.left + r.width / 2, cy: r.top + r.height / 2 };
+  }, selector);
+}
+
+export const pose = (page: Page, s: string): Promise<Pose> => page.evaluate((s) => {
+  const el = document.querySelector(s) as SceneElement & { cameraPosition: number[]; cameraRotation: number[] };
+  return { position: [...el.cameraPosition], rotation: [...el.cameraRotation] };
+}, s);
+
+export const rotationOf = (page: Page, s: string) => page.evaluate((s) => (document.querySelector(s) as unknown as ControlsElement).objectRotation, s);
+
+/** CDP timestamps are seconds since the epoch; events before the page's time origin read 0. */
+export const EPOCH = Date.now() / 1000 + 60;
+
+/**
+ * Mouse drag through CDP: press at `from`, `steps` moves to `to`, `dtMs` apart, release `restMs`
+ * after the last move; `t0` seconds after EPOCH (only differences matter to the element).
+ */
+export async function drag(cdp: CDPSession, from: { x: number; y: number }, to: { x: number; y: number }, o: { t0: number; steps: number; dtMs: number; restMs: number; button?: 'left' | 'right'; modifiers?: number }) {
+  const button = o.button ?? 'left', buttons = button === 'left' ? 1 : 2, modifiers = o.modifiers ?? 0;
+  let t = EPOCH + o.t0;
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: from.x, y: from.y, timestamp: t, modifiers });
+  t += 0.01;
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: from.x, y: from.y, button, buttons, clickCount: 1, timestamp: t, modifiers });
+  for (let k = 1; k <= o.steps; k++) {
+    t += o.dtMs / 1000;
+    const x = from.x + ((to.x - from.x) * k) / o.steps, y = from.y + ((to.y - from.y) * k) / o.steps;
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x, y, button, buttons, timestamp: t, modifiers });
+  }
+  t += o.restMs / 1000;
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: to.x, y: to.y, button, buttons: 0, clickCount: 1, timestamp: t, modifiers });
+}
+
+/** Collects camera-change details on the element from now on, each with performance.now() when it came. */
+export async function recordCameraChanges(page: Page, s: string): Promise<() => Promise<(CameraChange & { at: number })[]>> {
+  await page.evaluate((s) => {
+    const w = window as unknown as { __changes: unknown[] };
+    w.__changes = [];
+    document.querySelector(s)!.addEventListener('camera-change', (e) => w.__changes.push({ ...(e as CustomEvent).detail, at: performance.now() }));
+  }, s);
+  return () => page.evaluate(() => (window as unknown as { __changes: (CameraChange & { at: number })[] }).__changes);
+}
+
+/**
+ * Where world point `p` is drawn for camera `pose` (perspective, vertical field of view `fov`
+ * degrees) on an element `height` CSS px tall: CSS px right of and below its centre. The view is
+ * lookAt along forwardFromYawPitch with +Y up, as SPEC §2 defines yaw and pitch.
+ */
+export function screenOffset(pose: Pose, p: ArrayLike<number>, fov: number, height: number): { x: number; y: number } {
+  const f = forwardFromYawPitch([0, 0, 0], pose.rotation[0], pose.rotation[1]);
+  const h = Math.hypot(f[0], f[2]);
+  const right = [-f[2] / h, 0, f[0] / h];
+  const up = [right[1] * f[2] - right[2] * f[1], right[2] * f[0] - right[0] * f[2], right[0] * f[1] - right[1] * f[0]];
+  const rel = [0, 1, 2].map((i) => p[i] - pose.position[i]);
+  const dot = (a: number[], b: number[]) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  const depth = dot(rel, f);
+  const pxPerUnit = height / 2 / Math.tan(fov / 2 / DEG) / depth;
+  return { x: dot(rel, right) * pxPerUnit, y: -dot(rel, up) * pxPerUnit };
+}
