@@ -4,6 +4,7 @@ const LEAKS = 'tests/e2e/gl-leaks.spec.ts';
 const ON_DEMAND = 'tests/e2e/on-demand.spec.ts';
 const LOD = 'tests/e2e/reflection-lod.spec.ts';
 const SCISSOR = 'tests/unit/reflection-scissor.test.ts';
+const PASSES = 'tests/e2e/passes.spec.ts';
 
 export default [
   {
@@ -53,5 +54,19 @@ export default [
     name: 'D7 the sphere\'s auto tessellation sizes it with tan(fov) instead of tan(fov / 2)',
     edits: [{ file: 'src/render/sphere-screen.ts', find: 'Math.tan((state.fov * DEG) / 2)', replace: 'Math.tan(state.fov * DEG)' }],
     tests: ['tests/unit/quality-knobs.test.ts'],
+  },
+  {
+    name: 'D8 the reflection scissored to the glass rectangle with x and y swapped',
+    edits: [{
+      file: 'src/render/passes/reflection-pass.ts',
+      find: 'gl.scissor(scissor.x, scissor.y, scissor.width, scissor.height);',
+      replace: 'gl.scissor(scissor.y, scissor.x, scissor.width, scissor.height);',
+    }],
+    tests: [PASSES],
+  },
+  {
+    name: 'D9 culling by the wrong sign of the radius: an object straddling the glass is dropped from the reflection',
+    edits: [{ file: 'src/render/passes/draw-objects.ts', find: '<= -m.radius) continue;', replace: '<= m.radius) continue;' }],
+    tests: [PASSES],
   },
 ];
