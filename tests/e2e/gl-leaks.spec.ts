@@ -118,19 +118,23 @@ test('the clustered copies a dense mesh\'s reflection draws are freed with the e
 
 test('an image texture is deleted with the element that drew it', async ({ page }) => {
   const before = (await glCensus(page)).live;
-  const selector = await page.evaluate(() => new Promise<string>((resolve, reject) => {
+  const mountCube = (texture: string) => page.evaluate((texture) => new Promise<string>((resolve, reject) => {
     const host = document.createElement('div');
-    host.innerHTML = `<glass-plane-scene id="textured" time="0" spin="0" glass-size="0 0" camera-position="0 0 2.5" camera-rotation="-90 0"
-      style="width: 160px; height: 90px"><glass-object shape="cube" texture="/tests/e2e/pages/models/checker.png"></glass-object></glass-plane-scene>`;
+    host.innerHTML = `<glass-plane-scene id="cube" time="0" spin="0" glass-size="0 0" camera-position="0 0 2.5" camera-rotation="-90 0"
+      style="width: 160px; height: 90px"><glass-object shape="cube" ${texture}></glass-object></glass-plane-scene>`;
     const el = host.firstElementChild!;
     const t = setTimeout(() => reject(new Error('no ready event')), 30_000);
-    el.addEventListener('ready', () => { clearTimeout(t); resolve('#textured'); }, { once: true });
+    el.addEventListener('ready', () => { clearTimeout(t); resolve('#cube'); }, { once: true });
     document.body.append(el);
-  }));
+  }), texture);
   const textures = async () => (await glCensus(page)).live.textures;
-  const drawing = await textures();
-  // The image arrives after the first frame and is uploaded as one more texture (not vacuous).
-  await expect.poll(textures, { message: 'the image uploaded' }).toBe(drawing + 1);
+  // The same cube with the procedural texture: what it holds without an image.
+  const plainCube = await mountCube('');
+  const plain = await textures();
+  await remove(page, plainCube);
+  const selector = await mountCube('texture="/tests/e2e/pages/models/checker.png"');
+  // The image (decoded after the first frame, or before it) is one more texture (not vacuous).
+  await expect.poll(textures, { message: 'the image uploaded' }).toBe(plain + 1);
   expect(await remove(page, selector), 'live GL objects after removal, per kind').toEqual(before);
 });
 
