@@ -1,6 +1,9 @@
 // The element's lifecycle: dispose, context loss and restore, renderer switch, off-screen, idle.
 // Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
 const LEAKS = 'tests/e2e/gl-leaks.spec.ts';
+const LIFECYCLE = 'tests/e2e/lifecycle.spec.ts';
+const ON_DEMAND = 'tests/e2e/on-demand.spec.ts';
+const ELEMENT = 'src/element/glass-plane-scene.ts';
 
 export default [
   {
@@ -10,7 +13,56 @@ export default [
   },
   {
     name: '14 the software renderer never given the decoded images',
-    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '      this.images.attach(host);\n', replace: '' }],
+    edits: [{ file: ELEMENT, find: '      this.images.attach(host);\n', replace: '' }],
     tests: ['tests/e2e/model-reference.spec.ts'],
+  },
+  {
+    name: 'E1 image textures lost after a context restore (a new renderer is not handed the images decoded so far)',
+    edits: [{ file: 'src/element/texture-images.ts', find: '    if (sink) for (const [url, image] of this.ready) sink.setImage(url, image);\n', replace: '' }],
+    tests: [LIFECYCLE],
+  },
+  {
+    name: 'E2 dispose() skips the image textures',
+    edits: [{ file: 'src/render/renderer.ts', find: '    this.textures.dispose();\n', replace: '' }],
+    tests: [LEAKS],
+  },
+  {
+    name: 'E3 after webgl → software the canvas keeps the stale WebGL frame (generation test inverted)',
+    edits: [{
+      file: ELEMENT,
+      find: 'if (generation === this.softwareGeneration) (out as ImageBitmapRenderingContext).transferFromImageBitmap(b);',
+      replace: 'if (generation !== this.softwareGeneration) (out as ImageBitmapRenderingContext).transferFromImageBitmap(b);',
+    }],
+    tests: [LEAKS],
+  },
+  {
+    name: 'E4 switching back to webgl asks for the context, not the renderer: it stays software',
+    edits: [{ file: ELEMENT, find: '(!wantSoftware && this.glRenderer)) return;', replace: '(!wantSoftware && this.shared)) return;' }],
+    tests: [LEAKS],
+  },
+  {
+    name: 'E5 off-screen elements keep drawing (frames scheduled whatever the IntersectionObserver said)',
+    edits: [{ file: ELEMENT, find: '|| this.failed || !this.inView || document.hidden) return;', replace: '|| this.failed || document.hidden) return;' }],
+    tests: [ON_DEMAND],
+  },
+  {
+    name: 'E6 idle broken: the live clock alone keeps frames coming (&& for ||)',
+    edits: [{ file: ELEMENT, find: 'return (this.values.time === null && sceneSpins(this.scene))', replace: 'return (this.values.time === null || sceneSpins(this.scene))' }],
+    tests: [ON_DEMAND],
+  },
+  {
+    name: 'E7 idle broken: spin counted for a scene of children, which has no cube to turn',
+    edits: [{ file: ELEMENT, find: 'return (this.values.time === null && sceneSpins(this.scene))', replace: 'return (this.values.time === null && this.effectiveSpin() !== 0)' }],
+    tests: [ON_DEMAND],
+  },
+  {
+    name: 'E8 removal leaves the element a client of the shared context (rebuilt on a restore)',
+    edits: [{ file: ELEMENT, find: '    this.shared?.release(this);\n', replace: '' }],
+    tests: [LEAKS],
+  },
+  {
+    name: 'E9 removal leaves the reduced-motion listener',
+    edits: [{ file: ELEMENT, find: "    this.reducedMotion?.removeEventListener('change', this.onMotionPreference);\n", replace: '' }],
+    tests: [LIFECYCLE],
   },
 ];

@@ -27,3 +27,13 @@ export function composeScene(v: SceneInputs, parts: ChildParts): Scene {
     background: [...v.background],
   };
 }
+
+/**
+ * True when something in the scene turns by the clock (an object with a spin): only then do
+ * frames come without a change (SPEC §7). `spin` turns the default cube alone, so a scene of
+ * children, which has no such cube, is still once its models are drawn.
+ */
+export function sceneSpins(scene: Scene): boolean {
+  for (const o of scene.objects) if (o.transform.spin !== 0) return true;
+  return false;
+}

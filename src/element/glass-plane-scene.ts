@@ -18,7 +18,7 @@ import type { FrameReport, FrameState, RenderStats } from '../render/types';
 import type { CameraChangeDetail, CapturePass, ErrorType, GlassPlaneSceneEventMap } from './types';
 import { SceneSource } from './scene-source';
 import { TextureImages } from './texture-images';
-import { composeScene } from './compose-scene';
+import { composeScene, sceneSpins } from './compose-scene';
 import { CameraSource } from './camera-source';
 import type { Scene } from '../scene/scene';
 
@@ -623,8 +623,9 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     return this.reducedMotion?.matches && !this.hasAttribute('spin') ? 0 : this.values.spin;
   }
 
+  /** Frames keep coming while the clock turns something in the scene, or the camera moves. */
   private animating(): boolean {
-    return (this.effectiveSpin() !== 0 && this.values.time === null) || this.flyby.active || this.pointerControls.active;
+    return (this.values.time === null && sceneSpins(this.scene)) || this.flyby.active || this.pointerControls.active;
   }
 
   private frameState(now: number): FrameState {

@@ -2,6 +2,7 @@
 // <model-viewer> do), the flyby works from the keyboard alone, and prefers-reduced-motion stops
 // the cube's spin unless `spin` is set explicitly.
 import { test, expect, mount, openPage, capture, type SceneElement } from './fixtures';
+import { note } from './helpers/bounds';
 import type { Page } from '@playwright/test';
 import { compareImages } from './helpers/golden';
 import type { CameraChangeDetail } from '../../src/element/types';
@@ -144,6 +145,9 @@ test.describe('keyboard only', () => {
     // Frames were drawn while flying; how many per second is the machine's speed (npm run bench).
     expect(await frames(page, selector), 'frames drawn while flying').toBeGreaterThan(f0);
     const image1 = await capture(page, undefined, selector);
+    note(`keyboard flight: ${compareImages(image1, image0).differing} px changed`);
+    // Measured 4,858 px; how far the camera flew follows the key's 300 ms and the machine's
+    // scheduling, so the bound is a tenth of that: the view changed, not by how much.
     expect(compareImages(image1, image0).differing, 'the view changed').toBeGreaterThan(500);
   });
 });
@@ -174,7 +178,11 @@ test.describe('prefers-reduced-motion', () => {
     const a = await capture(page, undefined, selector);
     // It keeps drawing (a liveness check; the frame rate is the bench's business).
     await expect.poll(() => frames(page, selector), { message: 'frames keep coming' }).toBeGreaterThan(f0 + 3);
-    expect(compareImages(await capture(page, undefined, selector), a).differing, 'the cube turned').toBeGreaterThan(20);
+    const turned = compareImages(await capture(page, undefined, selector), a).differing;
+    note(`reduced motion with spin: ${turned} px changed`);
+    // Measured 671 px; how far the cube turned follows the time the frames took (at least 4
+    // frames, ~70 ms on a fast machine): the bound says it turned, not by how much.
+    expect(turned, 'the cube turned').toBeGreaterThan(20);
   });
 
   test('the preference is followed live: spin stops when it turns on and resumes when it turns off', async ({ page }) => {

@@ -10,6 +10,7 @@ import { withoutWebGL2 } from './helpers/no-webgl2';
 import fs from 'node:fs';
 import path from 'node:path';
 import { test, expect, openPage, mount, capture, type SceneElement } from './fixtures';
+import { note } from './helpers/bounds';
 import type { Page } from '@playwright/test';
 import { countUnlike } from './helpers/pixels';
 import type { FrameReport, GlassPlaneSceneErrorDetail } from '../../src/element/types';
@@ -66,8 +67,9 @@ function change(page: Page, selector: string, attrs: Record<string, string | nul
 }
 
 test.describe("under Content-Security-Policy: default-src 'self'", () => {
+  // Built by `npm test` first; without it this fails rather than passing unseen.
   test.beforeEach(() => {
-    test.skip(!fs.existsSync(STANDALONE), `${path.relative(process.cwd(), STANDALONE)} is missing: run \`npm run build\` first`);
+    expect(fs.existsSync(STANDALONE), `${path.relative(process.cwd(), STANDALONE)} is missing: run \`npm run build\``).toBe(true);
   });
 
   test('renders, flies, switches views, resizes and goes away without a policy violation', async ({ page, consoleLog }) => {
@@ -77,9 +79,13 @@ test.describe("under Content-Security-Policy: default-src 'self'", () => {
 
     const a = await mount(page, { time: 1.25 }, SIZE);
     const b = await mount(page, { time: 2, transparency: 0.8, controls: true }, SIZE);
+    // Pixels unlike the background, measured: 7,022 (a) and 2,917 (b, more transparent glass
+    // over the dark background); 10 % under at most.
+    const drawn = { [a.selector]: 7022, [b.selector]: 2917 };
     for (const { selector, ready } of [a, b]) {
       expect([ready.width, ready.height]).toEqual([SIZE.width, SIZE.height]);
-      expect(countUnlike(await capture(page, undefined, selector), [26, 26, 26], 3), `${selector} renders`).toBeGreaterThan(250);
+      note(`${selector}: ${countUnlike(await capture(page, undefined, selector), [26, 26, 26], 3)} px unlike the background`);
+      expect(countUnlike(await capture(page, undefined, selector), [26, 26, 26], 3), `${selector} renders`).toBeGreaterThanOrEqual(0.9 * drawn[selector]);
     }
     // Every view, every pass, the flyby, a resize and a removal: whatever code they need must run.
     for (const view of ['reflection', 'scene', 'fresnel', 'passes', 'none']) await change(page, a.selector, { 'debug-view': view });
@@ -121,7 +127,8 @@ test.describe("under Content-Security-Policy: default-src 'self'", () => {
     const { selector: b } = await mount(page, { time: 1.25 }, SIZE);
     const stats = await page.evaluate((s) => (document.querySelector(s) as unknown as { stats: { renderer: string; thread: string } }).stats, b);
     expect(stats).toMatchObject({ renderer: 'software', thread: 'worker' });
-    expect(countUnlike(await capture(page, undefined, b), [26, 26, 26], 3), 'drawn').toBeGreaterThan(5000);
+    note(`software under CSP: ${countUnlike(await capture(page, undefined, b), [26, 26, 26], 3)} px unlike the background`);
+    expect(countUnlike(await capture(page, undefined, b), [26, 26, 26], 3), 'drawn (measured 6,526 px)').toBeGreaterThanOrEqual(0.9 * 6526);
     expect(await violations(page)).toEqual([]);
   });
 
@@ -195,7 +202,10 @@ test.describe('attribute values are text, never HTML', () => {
     const warnings = consoleLog.take('warning');
     expect(warnings.length).toBeGreaterThan(0);
     for (const w of warnings) expect(w).toMatch(/^glass-plane-scene:/);
-    expect(countUnlike(await capture(page, undefined, selector), [26, 26, 26], 3), 'still renders').toBeGreaterThan(250);
+    note(`markup attributes: ${countUnlike(await capture(page, undefined, selector), [26, 26, 26], 3)} px unlike the background`);
+    // Measured 6,949 and 6,966 px: every attribute is markup, so `time` is not set and the cube
+    // spins on the live clock, moving the count by a few percent; 10 % under at most.
+    expect(countUnlike(await capture(page, undefined, selector), [26, 26, 26], 3), 'still renders (measured 6,949 px)').toBeGreaterThanOrEqual(0.9 * 6949);
   });
 
   test('without WebGL2: the message box is text, the alt payload is not injected', async ({ page }) => {
@@ -221,9 +231,8 @@ test.describe('attribute values are text, never HTML', () => {
 });
 
 test('the built bundles contain no eval and no new Function', () => {
-  const present = BUNDLES.filter((f) => fs.existsSync(f));
-  test.skip(present.length === 0, 'dist/ is missing: run `npm run build` first');
-  for (const file of present) {
+  for (const file of BUNDLES) {
+    expect(fs.existsSync(file), `${path.relative(process.cwd(), file)} is missing: run \`npm run build\``).toBe(true);
     const code = fs.readFileSync(file, 'utf8');
     const hits = code.match(/\beval\s*\(|\bnew\s+Function\s*\(|\bFunction\s*\(\s*["'`]|set(?:Timeout|Interval)\s*\(\s*["'`]/g) ?? [];
     expect(hits, path.relative(process.cwd(), file)).toEqual([]);

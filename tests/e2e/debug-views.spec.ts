@@ -2,6 +2,7 @@
 // view shows the same F as the TypeScript Fresnel functions.
 import { test, expect, mount, openPage, capture, setAttributes } from './fixtures';
 import { pixelRay, type Camera } from './helpers/projection';
+import { note } from './helpers/bounds';
 import { fresnel, FRESNEL_MODELS } from '../../src/math/fresnel';
 
 test.describe('debug-view passes', () => {
@@ -77,9 +78,12 @@ test.describe('debug-view fresnel matches fresnel() of src/math/fresnel.ts', () 
           }
         }
       }
+      note(`fresnel ${model}: ${compared} glass px compared, largest F ${(largestF / 255).toFixed(3)}, worst ${worst.diff.toFixed(2)} levels at ${worst.at}`);
       expect(compared, 'glass pixels compared').toBeGreaterThan(1000);
       expect(largestF, 'the views reach strong reflectance, where the models differ most').toBeGreaterThan(0.3 * 255);
-      expect(worst.diff, `largest difference in grey levels, at ${worst.at}`).toBeLessThanOrEqual(1.5);
+      // Measured 0.59–0.61 levels for the three models (0.5 of it is the 8-bit rounding of the
+      // shader's F); the bound, 0.85, is √2 × that (3 dB).
+      expect(worst.diff, `largest difference in grey levels, at ${worst.at}`).toBeLessThanOrEqual(0.85);
     });
   }
 });

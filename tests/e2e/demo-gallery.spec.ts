@@ -1,6 +1,7 @@
 // The demo's model gallery (issue 9): three textured models over a glass floor, switchable, each
 // control writing an attribute of the children, the controls following attribute changes.
 import { test, expect, capture } from './fixtures';
+import { note } from './helpers/bounds';
 import { compareImages, writePng, OUTPUT_DIR } from './helpers/golden';
 import path from 'node:path';
 
@@ -37,15 +38,19 @@ test('three textured models over a glass floor, switchable; sliders write the ch
     shots.push(await capture(page, undefined, '#scene'));
   }
   for (let i = 0; i < shots.length; i++) writePng(path.join(OUTPUT_DIR, `gallery-${i}.png`), shots[i]);
-  expect(compareImages(shots[0], shots[1]).differing, 'bunny vs dragon').toBeGreaterThan(2000);
-  expect(compareImages(shots[1], shots[2]).differing, 'dragon vs torus').toBeGreaterThan(2000);
+  note(`gallery: bunny vs dragon ${compareImages(shots[0], shots[1]).differing} px, dragon vs torus ${compareImages(shots[1], shots[2]).differing} px`);
+  // Measured 55,548 and 40,016 px; 10 % under at most.
+  expect(compareImages(shots[0], shots[1]).differing, 'bunny vs dragon').toBeGreaterThanOrEqual(0.9 * 55_548);
+  expect(compareImages(shots[1], shots[2]).differing, 'dragon vs torus').toBeGreaterThanOrEqual(0.9 * 40_016);
 
   // A slider writes its attribute (Kd as "x x x") and the picture changes.
   const before = await capture(page, undefined, '#scene');
   await page.locator('input[data-target="model"][data-attr="diffuse"]').fill('0.2');
   expect(await page.getAttribute('#model', 'diffuse')).toBe('0.2 0.2 0.2');
   await settle(page, 100);
-  expect(compareImages(before, await capture(page, undefined, '#scene')).differing, 'Kd 0.8 → 0.2').toBeGreaterThan(1000);
+  const kd = compareImages(before, await capture(page, undefined, '#scene')).differing;
+  note(`gallery: Kd 0.8 → 0.2 ${kd} px`);
+  expect(kd, 'Kd 0.8 → 0.2 (measured 23,015 px)').toBeGreaterThanOrEqual(0.9 * 23_015);
   // And follows an attribute set elsewhere.
   await page.evaluate(() => document.getElementById('light')!.setAttribute('specular', '1.7 1.7 1.7'));
   await expect(page.locator('input[data-target="light"][data-attr="specular"]')).toHaveValue('1.7');

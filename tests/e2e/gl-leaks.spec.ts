@@ -5,6 +5,7 @@
 import type { Page } from '@playwright/test';
 import { test, expect, mount, openPage, capture, setAttributes, type SceneElement } from './fixtures';
 import { countGlObjects, glCensus, liveTotal, type Census } from './helpers/gl-census';
+import { compareImages } from './helpers/golden';
 
 const SIZE = { width: 160, height: 90 };
 
@@ -113,4 +114,76 @@ test('the clustered copies a dense mesh\'s reflection draws are freed with the e
   expect(near.reflection).not.toBe(far.reflection);
   expect(liveTotal(await remove(page, selector)), 'live GL objects after removal: the other element\'s only').toBe(onlyOther);
   expect(liveTotal(await remove(page, other)), 'after both').toBe(0);
+});
+
+test('an image texture is deleted with the element that drew it', async ({ page }) => {
+  const before = (await glCensus(page)).live;
+  const mountCube = (texture: string) => page.evaluate((texture) => new Promise<string>((resolve, reject) => {
+    const host = document.createElement('div');
+    host.innerHTML = `<glass-plane-scene id="cube" time="0" spin="0" glass-size="0 0" camera-position="0 0 2.5" camera-rotation="-90 0"
+      style="width: 160px; height: 90px"><glass-object shape="cube" ${texture}></glass-object></glass-plane-scene>`;
+    const el = host.firstElementChild!;
+    const t = setTimeout(() => reject(new Error('no ready event')), 30_000);
+    el.addEventListener('ready', () => { clearTimeout(t); resolve('#cube'); }, { once: true });
+    document.body.append(el);
+  }), texture);
+  const textures = async () => (await glCensus(page)).live.textures;
+  // The same cube with the procedural texture: what it holds without an image.
+  const plainCube = await mountCube('');
+  const plain = await textures();
+  await remove(page, plainCube);
+  const selector = await mountCube('texture="/tests/e2e/pages/models/checker.png"');
+  // The image (decoded after the first frame, or before it) is one more texture (not vacuous).
+  await expect.poll(textures, { message: 'the image uploaded' }).toBe(plain + 1);
+  expect(await remove(page, selector), 'live GL objects after removal, per kind').toEqual(before);
+});
+
+test('renderer webgl → software → webgl: every GL object freed while software draws, rebuilt after; the canvas shows each renderer\'s frame', async ({ page }) => {
+  const before = (await glCensus(page)).live;
+  const { selector } = await mount(page, { time: 1.25 }, SIZE);
+  const gl = await capture(page, undefined, selector);
+  const live = (await glCensus(page)).live;
+  expect(liveTotal(live), 'GL objects while WebGL draws').toBeGreaterThan(0);
+  // A software frame of the same state, drawn by an element that never used WebGL.
+  const reference = (await mount(page, { time: 1.25, renderer: 'software' }, SIZE)).selector;
+  const soft = await capture(page, undefined, reference);
+  expect(compareImages(gl, soft).differing, 'the two renderers\' frames differ (the check is not vacuous)').toBeGreaterThan(0);
+
+  await setAttributes(page, selector, { renderer: 'software' });
+  expect(await page.evaluate((s) => (document.querySelector(s) as SceneElement).stats.renderer, selector)).toBe('software');
+  expect((await glCensus(page)).live, 'live GL objects while the software renderer draws').toEqual(before);
+  // The software frame reached the canvas that held WebGL's (no stale frame).
+  expect(compareImages(await capture(page, undefined, selector), soft).differing, 'canvas after the switch to software').toBe(0);
+
+  await setAttributes(page, selector, { renderer: 'webgl' });
+  expect(await page.evaluate((s) => (document.querySelector(s) as SceneElement).stats.renderer, selector)).toBe('webgl');
+  expect((await glCensus(page)).live, 'live GL objects after the switch back').toEqual(live);
+  expect(compareImages(await capture(page, undefined, selector), gl).differing, 'canvas after the switch back to webgl').toBe(0);
+  expect(await remove(page, selector)).toEqual(before);
+});
+
+test('a removed element takes no part in a later context loss and restore: no error event, no GL object rebuilt', async ({ page }) => {
+  const a = (await mount(page, { time: 1.25 }, SIZE)).selector;
+  const b = (await mount(page, { time: 2 }, SIZE)).selector;
+  await page.evaluate((s) => {
+    const w = window as unknown as { __removedErrors: number };
+    w.__removedErrors = 0;
+    document.querySelector(s)!.addEventListener('error', () => w.__removedErrors++);
+  }, b);
+  const onlyA = await remove(page, b);
+  await page.evaluate((s) => new Promise<void>((resolve, reject) => {
+    const gl = (globalThis as { __GLASS_PLANE_SCENE_GL__?: WebGL2RenderingContext }).__GLASS_PLANE_SCENE_GL__;
+    const ext = gl?.getExtension('WEBGL_lose_context');
+    if (!ext) return reject(new Error('WEBGL_lose_context unavailable'));
+    const el = document.querySelector(s)!;
+    const t = setTimeout(() => reject(new Error('no frame after the restore')), 15_000);
+    el.addEventListener('error', () => {
+      el.addEventListener('frame', () => { clearTimeout(t); resolve(); }, { once: true });
+      setTimeout(() => ext.restoreContext(), 100); // not from within the loss's own dispatch
+    }, { once: true });
+    ext.loseContext();
+  }), a);
+  await page.evaluate(() => new Promise((r) => setTimeout(r, 300)));
+  expect(await page.evaluate(() => (window as unknown as { __removedErrors: number }).__removedErrors), 'error events on the removed element').toBe(0);
+  expect((await glCensus(page)).live, 'live GL objects after the restore: the remaining element\'s only').toEqual(onlyA);
 });

@@ -5,6 +5,7 @@
 import { test, expect, mount, openPage, capture, type SceneElement } from './fixtures';
 import type { Page } from '@playwright/test';
 import { compareImages } from './helpers/golden';
+import { mountHtml } from './helpers/scene-children';
 import type { FrameReport, GlassPlaneSceneErrorDetail } from '../../src/element/types';
 
 const SIZE = { width: 160, height: 90 };
@@ -313,5 +314,35 @@ test.describe('context loss', () => {
     expect(compareImages(await capture(page, undefined, a), beforeA).differing, `${a}: same frame after the restore`).toBe(0);
     expect(compareImages(await capture(page, undefined, b), beforeB).differing, `${b}: same frame after the restore`).toBe(0);
     expect(await resources(), 'live GL resources rebuilt to the same counts').toEqual(resourcesBefore);
+  });
+
+  test('an image texture survives the loss: after the restore a textured object draws the pixels it drew before', async ({ page }) => {
+    await openPage(page);
+    const cube = (texture: string) => `<glass-plane-scene time="0" spin="0" glass-size="0 0" camera-position="0 0 2.5" camera-rotation="-90 0"
+      style="width: 160px; height: 90px"><glass-object shape="cube" ${texture}></glass-object></glass-plane-scene>`;
+    await mountHtml(page, cube(''));
+    const procedural = await capture(page);
+    await page.evaluate(() => document.querySelector('glass-plane-scene')!.remove());
+    await mountHtml(page, cube('texture="/tests/e2e/pages/models/checker.png"'));
+    // The image decodes after the first frame; its arrival draws once more.
+    // 1,226 px differ once it is (texture-images.spec.ts).
+    await expect.poll(async () => compareImages(procedural, await capture(page)).differing, { message: 'the image texture is drawn' }).toBeGreaterThanOrEqual(0.9 * 1226);
+    const before = await capture(page);
+
+    await page.evaluate(() => new Promise<void>((resolve, reject) => {
+      const gl = (globalThis as { __GLASS_PLANE_SCENE_GL__?: WebGL2RenderingContext }).__GLASS_PLANE_SCENE_GL__;
+      const ext = gl?.getExtension('WEBGL_lose_context');
+      if (!ext) return reject(new Error('WEBGL_lose_context unavailable'));
+      const el = document.querySelector('glass-plane-scene')!;
+      const t = setTimeout(() => reject(new Error('no frame after the restore')), 15_000);
+      el.addEventListener('error', () => {
+        el.addEventListener('frame', () => { clearTimeout(t); resolve(); }, { once: true });
+        setTimeout(() => ext.restoreContext(), 100); // not from within the loss's own dispatch
+      }, { once: true });
+      ext.loseContext();
+    }));
+    const after = await capture(page);
+    // Not the procedural texture again: the decoded image was handed to the new renderer.
+    expect(compareImages(after, before).differing, 'pixels changed by the loss and restore').toBe(0);
   });
 });

@@ -82,6 +82,67 @@ test.describe('render on demand', () => {
   });
 });
 
+test.describe('a scene of children goes idle', () => {
+  /**
+   * Mounts a <glass-plane-scene> with `attrs` and `children` (HTML), the live clock, and resolves
+   * once it is ready (its children's models loaded) with its selector.
+   */
+  const mountScene = (page: Page, attrs: string, children: string) =>
+    page.evaluate(({ attrs, children }) => new Promise<string>((resolve, reject) => {
+      const w = window as unknown as { __gpsCount?: number };
+      const id = `gps-${(w.__gpsCount = (w.__gpsCount ?? 0) + 1)}`;
+      const host = document.createElement('div');
+      host.innerHTML = `<glass-plane-scene id="${id}" ${attrs} style="width: 160px; height: 90px">${children}</glass-plane-scene>`;
+      const el = host.firstElementChild!;
+      const timer = setTimeout(() => reject(new Error(`#${id}: no ready event within 30 s`)), 30_000);
+      el.addEventListener('ready', () => {
+        clearTimeout(timer);
+        resolve(`#${id}`);
+      }, { once: true });
+      el.addEventListener('error', (e) => reject(new Error(`#${id}: error ${JSON.stringify((e as CustomEvent).detail)}`)), { once: true });
+      document.body.append(el);
+    }), { attrs, children });
+
+  // SPEC §7: `spin` turns only the default scene's cube. A scene of <glass-object> children has
+  // nothing that turns, so with the live clock, with or without a `spin` attribute, it draws
+  // nothing once its models are on screen; the default scene beside it keeps spinning.
+  test('built-in and loaded children: no frame once ready and loaded, with and without spin; the default scene still spins', async ({ page }) => {
+    const sphere = await mountScene(page, '', '<glass-object shape="sphere" position="0 1 1"></glass-object>');
+    const spun = await mountScene(page, 'spin="0.8"', '<glass-object shape="sphere" position="0 1 1"></glass-object>');
+    const model = await mountScene(page, 'spin="2"', '<glass-object src="models/tetra.obj" normalize position="0 1 1"></glass-object>');
+    const defaults = (await mount(page, {}, SIZE)).selector; // no children: the cube spins at 0.8 rad/s
+
+    // A model added after `ready`: its load draws (the model appears), then nothing more.
+    const drawn = await page.evaluate((s) => new Promise<number>((resolve, reject) => {
+      const el = document.querySelector(s) as SceneElement;
+      const before = el.stats.frames;
+      const child = document.createElement('glass-object');
+      child.setAttribute('src', 'models/tetra-copy.obj');
+      child.setAttribute('position', '-1 1 1');
+      child.addEventListener('error', () => reject(new Error('tetra-copy.obj did not load')));
+      child.addEventListener('load', () => requestAnimationFrame(() => requestAnimationFrame(() => resolve(el.stats.frames - before))));
+      el.append(child);
+    }), model);
+    expect(drawn, 'frames drawn for the model that arrived').toBeGreaterThan(0);
+
+    const idle = [sphere, spun, model];
+    const start = Object.fromEntries(await Promise.all([...idle, defaults].map(async (s) => [s, await frames(page, s)] as const)));
+    await countFrameEvents(page, [...idle, defaults]);
+    await page.waitForTimeout(1500); // ~90 animation frames
+    const events = await frameEvents(page);
+    for (const s of idle) {
+      expect(events[s], `${s}: frame events in 1.5 s with nothing changing`).toHaveLength(0);
+      expect(await frames(page, s), `${s}: stats.frames in 1.5 s`).toBe(start[s]);
+    }
+    expect(events[defaults].length, 'the default scene spins on').toBeGreaterThan(3);
+
+    // Idle is not dead: a change to a child draws exactly one frame.
+    await page.evaluate((s) => document.querySelector(`${s} glass-object`)!.setAttribute('position', '0 1.2 1'), sphere);
+    await page.waitForTimeout(1000);
+    expect((await frameEvents(page))[sphere], 'one frame for a child\'s change').toHaveLength(1);
+  });
+});
+
 test.describe('reflection pass', () => {
   test('the frame event says when and why the reflection (and glass) pass did not run; stats count it', async ({ page }) => {
     const { selector, ready } = await mount(page, { time: 1.25 }, SIZE);

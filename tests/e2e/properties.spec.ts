@@ -8,6 +8,7 @@ import { compareImages, PIXEL_THRESHOLD } from './helpers/golden';
 import { dominant, dominantPixels, countUnlike } from './helpers/pixels';
 import { project, mirrorZ, forward, type Camera, type Vec3 } from './helpers/projection';
 import type { CameraChangeDetail, GlassPlaneSceneErrorDetail } from '../../src/element/types';
+import { note } from './helpers/bounds';
 
 const SIZE = { width: 320, height: 180 };
 const W = SIZE.width;
@@ -44,7 +45,9 @@ test.describe('reflection pass', () => {
     const reflection = await capture(page, 'reflection');
     const scene = await capture(page, 'scene');
     expect(reflection.width * reflection.height).toBeGreaterThan(0);
-    expect(dominant(scene, 'g').count, 'green sphere pixels in the scene pass (the detector works)').toBeGreaterThan(200);
+    note(`sphere behind the glass: green px in the scene pass ${dominant(scene, 'g').count}, in the reflection ${dominant(reflection, 'g').count}`);
+    // Measured 514 green px; 10 % under it at most (the sphere's edge pixels).
+    expect(dominant(scene, 'g').count, 'green sphere pixels in the scene pass (the detector works)').toBeGreaterThanOrEqual(0.9 * 514);
     expect(dominant(reflection, 'g').count, 'green pixels in the reflection pass').toBe(0);
   });
 
@@ -63,9 +66,13 @@ test.describe('reflection pass', () => {
     const sx = W / reflection.width;
     const sy = H / reflection.height;
     const red = dominant(reflection, 'r');
-    expect(red.count * sx * sy, 'red cube pixels in the reflection pass').toBeGreaterThan(30);
-    expect(Math.abs(red.cx * sx - expected.x), `red centroid x ${(red.cx * sx).toFixed(1)} vs ${expected.x.toFixed(1)}`).toBeLessThan(tol);
-    expect(Math.abs(red.cy * sy - expected.y), `red centroid y ${(red.cy * sy).toFixed(1)} vs ${expected.y.toFixed(1)}`).toBeLessThan(tol);
+    note(`mirrored cube: ${(red.count * sx * sy).toFixed(0)} red px, centroid (${(red.cx * sx).toFixed(1)}, ${(red.cy * sy).toFixed(1)}) vs (${expected.x.toFixed(1)}, ${expected.y.toFixed(1)})`);
+    // Measured: 99 red px, the centroid 1.3 px from the cube centre's mirror image in x and 8.3 px
+    // in y (the red blob is the cube's faces that face the mirrored eye, not its centre). Bounds:
+    // the count 10 % under, each offset 2 px over the measured one.
+    expect(red.count * sx * sy, 'red cube pixels in the reflection pass').toBeGreaterThanOrEqual(0.9 * 99);
+    expect(Math.abs(red.cx * sx - expected.x), `red centroid x ${(red.cx * sx).toFixed(1)} vs ${expected.x.toFixed(1)}`).toBeLessThan(1.3 + 2);
+    expect(Math.abs(red.cy * sy - expected.y), `red centroid y ${(red.cy * sy).toFixed(1)} vs ${expected.y.toFixed(1)}`).toBeLessThan(8.3 + 2);
   });
 
   test('clips an object that crosses the glass: only its near part is reflected', async ({ page }) => {
@@ -76,8 +83,11 @@ test.describe('reflection pass', () => {
     const front = dominant(await capture(page, 'reflection'), 'r').count;
     await setAttributes(page, 'glass-plane-scene', { 'cube-distance': -0.45 });
     const crossing = dominant(await capture(page, 'reflection'), 'r').count;
-    expect(front, 'cube in front: its reflection').toBeGreaterThan(100);
-    expect(crossing, 'cube mostly behind: a sliver at most').toBeLessThan(0.25 * front);
+    note(`clipped cube: ${front} red px in front, ${crossing} crossing`);
+    // Measured: 305 red px in front, 18 crossing (the 0.05 slab's sliver). Bounds: 10 % under
+    // the first; the second 1.5× the measured (a whole cube would be ~300).
+    expect(front, 'cube in front: its reflection').toBeGreaterThanOrEqual(0.9 * 305);
+    expect(crossing, 'cube mostly behind: a sliver at most').toBeLessThanOrEqual(1.5 * 18);
   });
 });
 
@@ -94,9 +104,11 @@ test.describe('final image', () => {
       await setAttributes(page, 'glass-plane-scene', { transparency: t });
       green.push(dominant(await capture(page), 'g').excess);
     }
-    expect(green[0], 'some green at T 0.2').toBeGreaterThan(0);
-    expect(green[1], 'T 0.8 vs 0.2').toBeGreaterThan(green[0] * 1.5);
-    expect(green[2], 'T 1 vs 0.8').toBeGreaterThan(green[1]);
+    note(`green excess at T 0.2, 0.8, 1: ${green.map((g) => g.toFixed(0)).join(', ')}`);
+    // Measured excess 3,666, 27,647 and 35,919: ratios 7.54 and 1.30. Bounds 10 % under each.
+    expect(green[0], 'some green at T 0.2').toBeGreaterThanOrEqual(0.9 * 3666);
+    expect(green[1], 'T 0.8 vs 0.2').toBeGreaterThan(green[0] * 0.9 * 7.54);
+    expect(green[2], 'T 1 vs 0.8').toBeGreaterThan(green[1] * 0.9 * 1.30);
 
     // T = 1: out = F·R + (1 − F)·B with R the background (nothing reflected here), F ≤ ~0.05.
     const final = await capture(page);
@@ -114,8 +126,10 @@ test.describe('final image', () => {
         sum += Math.abs(final.data[p * 4 + c] - b);
       }
     }
+    note(`T 1 over the sphere (${sphere.length} px): worst excess ${worst.toFixed(2)}, mean |final − scene| ${(sum / (sphere.length * 3)).toFixed(2)}`);
     expect(worst, 'largest deviation beyond F·|R − B| + 2 on a sphere pixel').toBeLessThanOrEqual(0);
-    expect(sum / (sphere.length * 3), 'mean |final − scene| over the sphere').toBeLessThan(6);
+    // Measured 1.44 levels; bound 1.5× that.
+    expect(sum / (sphere.length * 3), 'mean |final − scene| over the sphere').toBeLessThan(1.5 * 1.44);
   });
 
   test('moving cube-distance moves the cube, and it grows as it comes closer', async ({ page }) => {
@@ -127,14 +141,17 @@ test.describe('final image', () => {
     const near = dominant(await capture(page), 'r');
     const pFar = project(cam, CUBE(1), W, H);
     const pNear = project(cam, CUBE(4), W, H);
-    expect(far.count).toBeGreaterThan(50);
-    expect(near.count, `apparent size, d 4 (${near.count} px) vs d 1 (${far.count} px)`).toBeGreaterThan(far.count * 1.8);
+    note(`cube at d 1: ${far.count} px, centroid (${far.cx.toFixed(1)}, ${far.cy.toFixed(1)}) vs (${pFar.x.toFixed(1)}, ${pFar.y.toFixed(1)}); at d 4: ${near.count} px, (${near.cx.toFixed(1)}, ${near.cy.toFixed(1)}) vs (${pNear.x.toFixed(1)}, ${pNear.y.toFixed(1)})`);
+    // Measured: 570 px at d 1, 2,058 at d 4 (3.61×); the centroids within 3.4 px of the projected
+    // centres. Bounds: 10 % under the counts and the ratio, 2 px over the offsets.
+    expect(far.count).toBeGreaterThanOrEqual(0.9 * 570);
+    expect(near.count, `apparent size, d 4 (${near.count} px) vs d 1 (${far.count} px)`).toBeGreaterThan(far.count * 0.9 * 3.61);
     // Closer to the camera, x = −1 lands further left of the centre.
     expect(pNear.x).toBeLessThan(pFar.x - 10);
     expect(near.cx, 'centroid moves left').toBeLessThan(far.cx - 0.5 * (pFar.x - pNear.x));
     for (const [blob, p] of [[far, pFar], [near, pNear]] as const) {
-      expect(Math.abs(blob.cx - p.x)).toBeLessThan(0.1 * W);
-      expect(Math.abs(blob.cy - p.y)).toBeLessThan(0.1 * W);
+      expect(Math.abs(blob.cx - p.x)).toBeLessThan(3.4 + 2);
+      expect(Math.abs(blob.cy - p.y)).toBeLessThan(3.4 + 2);
     }
   });
 
@@ -148,7 +165,8 @@ test.describe('final image', () => {
     // Chromium, so the compositor copies the bytes: the tight golden threshold, no budget.
     const { differing } = compareImages(screen, pixels, PIXEL_THRESHOLD);
     expect(differing).toBe(0);
-    expect(countUnlike(pixels, [26, 26, 26], 3), 'not a blank frame').toBeGreaterThan(1000);
+    note(`capture(): ${countUnlike(pixels, [26, 26, 26], 3)} px unlike the background`);
+    expect(countUnlike(pixels, [26, 26, 26], 3), 'not a blank frame (measured 27,657 px)').toBeGreaterThanOrEqual(0.9 * 27_657);
   });
 });
 

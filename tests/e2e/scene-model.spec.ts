@@ -7,11 +7,14 @@ import { dominant, dominantPixels } from './helpers/pixels';
 import { compareImages } from './helpers/golden';
 import { project, type Vec3 } from './helpers/projection';
 import { lookAt } from './helpers/stability';
+import { note } from './helpers/bounds';
 import { defaultScene, DEFAULT_LIGHT } from '../../src/scene/default-scene';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import type { Light, Material, Scene, SceneObject } from '../../src/scene/scene';
 import type { FrameState } from '../../src/render/types';
 import type { RgbaImage } from './helpers/golden';
+import { clusterMesh } from '../../src/scene/geometry/cluster';
+import { gaussianMesh } from '../../src/scene/geometry/gaussian';
 
 const W = 320, H = 180;
 
@@ -56,6 +59,8 @@ test('the default scene value draws what the element draws', async ({ page }) =>
   await openPage(page);
   await mount(page, { time: 1.25 }, { width: W, height: H });
   const { differing } = compareImages(fromValue, await capture(page));
+  note(`default scene value vs the element: ${differing} px differ`);
+  // Measured 0; the golden budget (0.1 %, helpers/golden.ts) for rasterization ties.
   expect(differing, 'pixels differing between the scene value and the element').toBeLessThanOrEqual(Math.floor(W * H * 0.001));
 });
 
@@ -71,15 +76,19 @@ test('a glass floor reflects a cube above it: the reflection pass is the mirrore
   const RED = 5;
   const reflection = dominantPixels(await drawScene(page, { ...s, view: 'reflection' }, floor), 'r', RED);
   const mirrored = dominantPixels(await drawScene(page, { ...s, view: 'scene' }, scene([box([0, -1, 0], [0.8, 0.2, 0.2])])), 'r', RED);
-  expect(mirrored.length, 'red pixels of the mirrored cube').toBeGreaterThan(500);
   const a = new Set(reflection), both = mirrored.filter((p) => a.has(p)).length;
-  expect(both / (reflection.length + mirrored.length - both), 'overlap (intersection over union)').toBeGreaterThan(0.97);
+  note(`glass floor: ${reflection.length} red px in the reflection, ${mirrored.length} of the mirrored cube, IoU ${(both / (reflection.length + mirrored.length - both)).toFixed(4)}`);
+  // Measured: 860 red px in both, intersection over union 1. Bounds: 10 % under the count, 1 %
+  // under the overlap (edge pixels lit a little differently may fall either side of RED).
+  expect(mirrored.length, 'red pixels of the mirrored cube').toBeGreaterThanOrEqual(0.9 * 860);
+  expect(both / (reflection.length + mirrored.length - both), 'overlap (intersection over union)').toBeGreaterThanOrEqual(0.99);
   // And the final frame shows it where the mirrored cube projects: redder than with no reflection.
   const final = await drawScene(page, s, floor);
   const none = await drawScene(page, { ...s, ior: 1 }, floor);
   const m = project({ position: eye, yaw: s.yaw, pitch: s.pitch }, [0, -1, 0], W, H);
   const i = (Math.round(m.y) * W + Math.round(m.x)) * 4;
-  expect(final.data[i] - none.data[i], 'red the reflection adds where it lands (measured 9)').toBeGreaterThan(5);
+  note(`glass floor: red added where the reflection lands ${final.data[i] - none.data[i]}`);
+  expect(final.data[i] - none.data[i], 'red the reflection adds where it lands (measured 9; 1 level for rounding)').toBeGreaterThanOrEqual(9 - 1);
 });
 
 test('a point light lights what faces it; a second light adds', async ({ page }) => {
@@ -92,9 +101,12 @@ test('a point light lights what faces it; a second light adds', async ({ page })
   // Front face (+Z) is lit by both at the same angle; pixel columns left and right of centre.
   const at = (img: RgbaImage, x: number) => img.data[(Math.round(H / 2) * W + x) * 4];
   // Symmetric lights on a symmetric view: twice the light (within rounding).
-  expect(sum(both) / sum(one), 'two lights give twice the light of one').toBeCloseTo(2, 1);
+  note(`two point lights: ratio ${(sum(both) / sum(one)).toFixed(4)}; one light, left ${at(one, Math.round(W / 2) - 30)} vs right ${at(one, Math.round(W / 2) + 30)}`);
+  // Measured 2.0000 (within ±0.005 here).
+  expect(sum(both) / sum(one), 'two lights give twice the light of one').toBeCloseTo(2, 2);
   // A point light's direction varies over the face: the side nearer the light is brighter.
-  expect(at(one, Math.round(W / 2) - 30), 'nearer the left light').toBeGreaterThan(at(one, Math.round(W / 2) + 30) + 3);
+  // Measured 119 against 54 levels; bound 10 % under the difference.
+  expect(at(one, Math.round(W / 2) - 30), 'nearer the left light').toBeGreaterThan(at(one, Math.round(W / 2) + 30) + 0.9 * (119 - 54));
 });
 
 test('tessellation auto: the reflection of a dense mesh draws a clustered copy, a number draws it whole', async ({ page }) => {
@@ -109,10 +121,12 @@ test('tessellation auto: the reflection of a dense mesh draws a clustered copy, 
     return page.evaluate(() => (window as unknown as { __renderer: { stats(): { triangles: { scene: number; reflection: number } } } }).__renderer.stats().triangles);
   };
   const dense = await triangles({ ...state(eye, [0, 0.4, 0]), tessellation: 'auto' }, floor(gaussian(225)));
+  note(`dense Gaussian: ${JSON.stringify(dense)}`);
   expect(dense.scene).toBe(100_352);
-  // 320×180, the mesh 4 units wide ~7 units from the mirrored eye: ~22 px per unit, the 32 grid.
-  expect(dense.reflection, 'reflection triangles, clustered').toBeLessThan(dense.scene / 10);
-  expect(dense.reflection).toBeGreaterThan(1000);
+  // 320×180, the mesh 4 units wide ~7 units from the mirrored eye: ~22 px per unit, the 32 grid:
+  // exactly its clustered copy (2,706 triangles).
+  const clustered = (grid: number) => clusterMesh(gaussianMesh(225), grid).indices.length / 3;
+  expect(dense.reflection, 'reflection triangles: the 32 grid\'s clustered copy').toBe(clustered(32));
   const whole = await triangles({ ...state(eye, [0, 0.4, 0]), tessellation: 64 }, floor(gaussian(225)));
   expect(whole).toEqual({ scene: 100_352, reflection: 100_352 });
   // A mesh already about as coarse as its cells: clustering would save too little, drawn whole.
@@ -120,7 +134,8 @@ test('tessellation auto: the reflection of a dense mesh draws a clustered copy, 
   expect(coarse.reflection).toBe(coarse.scene);
   // Nearer, larger on screen: a finer grid.
   const near = await triangles({ ...state([1.6, 1.2, 2], [0, 0.4, 0]), tessellation: 'auto' }, floor(gaussian(225)));
-  expect(near.reflection).toBeGreaterThan(dense.reflection);
+  note(`dense Gaussian, nearer: ${JSON.stringify(near)}`);
+  expect(near.reflection, 'nearer: the 64 grid\'s copy (10,642 triangles)').toBe(clustered(64));
 });
 
 test('an object with opacity 0.5 blends over what is behind it', async ({ page }) => {
@@ -145,8 +160,10 @@ test('image textures follow the OBJ convention: v = 0 is the bottom row of the i
   const out = await drawScene(page, s, scene([box([0, 0, 0], grey(1), { texture: { kind: 'image', url: 'rb' } })], { lights: [flatLight] }), img);
   const px = (y: number) => out.data.subarray((y * W + W / 2) * 4, (y * W + W / 2) * 4 + 3);
   const upper = px(Math.round(H / 2) - 15), lower = px(Math.round(H / 2) + 15);
-  expect(upper[0], 'upper half red').toBeGreaterThan(upper[2] + 100);
-  expect(lower[2], 'lower half blue').toBeGreaterThan(lower[0] + 100);
+  note(`image texture: upper ${Array.from(upper)}, lower ${Array.from(lower)}`);
+  // Measured: upper (246, 0, 9), lower (1, 0, 254). Bounds 10 % under the differences.
+  expect(upper[0], 'upper half red').toBeGreaterThan(upper[2] + 0.9 * (246 - 9));
+  expect(lower[2], 'lower half blue').toBeGreaterThan(lower[0] + 0.9 * (254 - 1));
 });
 
 test('with no glass the final image is the scene pass alone', async ({ page }) => {
@@ -155,7 +172,8 @@ test('with no glass the final image is the scene pass alone', async ({ page }) =
   const final = await drawScene(page, s, sc);
   const scenePass = await drawScene(page, { ...s, view: 'scene' }, sc);
   expect(compareImages(final, scenePass).differing).toBe(0);
-  expect(dominant(final, 'g').count, 'the object is drawn').toBeGreaterThan(500);
+  note(`no glass: ${dominant(final, 'g').count} green px`);
+  expect(dominant(final, 'g').count, 'the object is drawn (measured 830 px)').toBeGreaterThanOrEqual(0.9 * 830);
 });
 
 test('flat shading lights each triangle once, from its face normal (a coarse Gaussian surface)', async ({ page }) => {

@@ -1,10 +1,13 @@
 // Issue 9's accuracy bar: for scenes beyond the default one, the WebGL renderer's image matches
 // the float64 reference's (renderScene) at ≥ 35 dB PSNR. Each scene is drawn by the Renderer
 // (renderer page) at samples 4 and reflection-scale 1, against the reference at 4×4 samples per
-// pixel; the figure of each is printed and annotated.
+// pixel; the figure of each is printed and annotated. Each case's bounds sit MARGIN_DB (2 dB)
+// under the figures measured here (SwiftShader, 320×180, the same to 0.1 dB from run to run),
+// over the whole image and each region; issue 9's 35 dB is below all of them.
 import { test, expect } from './fixtures';
 import { drawScene, openRendererPage, type Images } from './helpers/scene-json';
 import { lookAt } from './helpers/stability';
+import { expectPsnr, note } from './helpers/bounds';
 import { renderScene, compareImages } from '../../src/reference';
 import { DEFAULT_LIGHT } from '../../src/scene/default-scene';
 import type { Light, Material, Scene, SceneObject, Vec3 } from '../../src/scene/scene';
@@ -12,7 +15,7 @@ import type { FrameState, Shading } from '../../src/render/types';
 import { bezierPatchMesh } from '../../src/scene/geometry/bezier';
 
 const W = 320, H = 180;
-const BOUND_DB = 35;
+const ISSUE_BAR_DB = 35;
 
 function state(position: Vec3, target: Vec3, shading: Shading = 'phong'): FrameState {
   const { yaw, pitch } = lookAt(position, target);
@@ -37,10 +40,12 @@ const gaussian = (resolution: number, position: Vec3 = [0, 0, 0]): SceneObject =
 const floor = { center: [0, 0, 0] as Vec3, normal: [0, 1, 0] as Vec3, size: [8, 8] as const };
 const point = (p: Vec3, c: Vec3): Light => ({ kind: 'point', vector: p, ambient: grey(0.05), diffuse: c, specular: c });
 
+type Measured = { all: number; objects: number; glass?: number; edges: number };
+
 interface Case {
   name: string; scene: Scene; state: FrameState; images?: Images;
-  /** A tighter bound on the objects' region, where a subtle error hides in the whole image's figure. */
-  objectsDb?: number;
+  /** PSNR measured here (dB), whole image and regions: the bounds sit MARGIN_DB under them. */
+  measured: Measured;
 }
 
 const CASES: Case[] = [
@@ -48,12 +53,14 @@ const CASES: Case[] = [
     name: 'a glass floor under objects (the Gaussian at 40, a box)',
     scene: { glass: floor, objects: [gaussian(40, [0, 0.3, 0]), box([2.2, 0.8, 0.5], [0.8, 0.3, 0.3])], lights: [DEFAULT_LIGHT], background: grey(0.1) },
     state: state([4, 2.2, 5], [0.5, 0.3, 0]),
+    measured: { all: 48.4, objects: 43.5, glass: 52.8, edges: 40.5 },
   },
   {
     // Tessellation 'auto': the reflection draws a vertex-clustered copy (~2.7k of 100k triangles here).
     name: 'a dense Gaussian (225², 100k triangles) over a glass floor, its reflection from the clustered copy',
     scene: { glass: floor, objects: [gaussian(225, [0, 0.4, 0])], lights: [DEFAULT_LIGHT], background: grey(0.1) },
     state: state([4, 2.2, 5], [0, 0.4, 0]),
+    measured: { all: 48.3, objects: 42.3, glass: 52.5, edges: 39.6 },
   },
   {
     // Seed 002's Bézier surface: a bicubic bump at E = 40, as the course's .byu loader makes it.
@@ -70,6 +77,7 @@ const CASES: Case[] = [
       }],
     },
     state: state([3, 2.2, 4], [0, 0.5, 0]),
+    measured: { all: 49.0, objects: 43.6, glass: 52.5, edges: 39.5 },
   },
   {
     name: 'two point lights',
@@ -78,6 +86,7 @@ const CASES: Case[] = [
       lights: [point([-3, 2, 3], [0.9, 0.6, 0.5]), point([3, 1, 2], [0.4, 0.5, 0.9])], background: grey(0.1),
     },
     state: state([0.5, 1.5, 4], [0, 0, 0]),
+    measured: { all: 49.1, objects: 43.2, edges: 37.3 },
   },
   {
     name: 'a half-transparent object over another',
@@ -86,14 +95,29 @@ const CASES: Case[] = [
       lights: [DEFAULT_LIGHT], background: grey(0.1),
     },
     state: state([1.5, 1.5, 4], [0, 0, 0]),
+    measured: { all: 51.1, objects: 46.1, edges: 40.4 },
   },
 ];
+/** The Gaussian alone, by resolution and shading: PSNR measured here (dB). */
+const GAUSSIAN_MEASURED: Record<number, Record<Shading, Measured>> = {
+  40: {
+    phong: { all: 48.3, objects: 44.7, edges: 36.3 },
+    gouraud: { all: 48.0, objects: 44.1, edges: 36.2 },
+    flat: { all: 46.0, objects: 39.0, edges: 36.3 },
+  },
+  400: {
+    phong: { all: 48.3, objects: 44.4, edges: 36.6 },
+    gouraud: { all: 48.3, objects: 44.4, edges: 36.6 },
+    flat: { all: 48.3, objects: 44.2, edges: 36.6 },
+  },
+};
 for (const resolution of [40, 400]) {
   for (const shading of ['phong', 'gouraud', 'flat'] as const) {
     CASES.push({
       name: `the Gaussian at ${resolution}², ${shading}`,
       scene: { glass: null, objects: [gaussian(resolution)], lights: [DEFAULT_LIGHT], background: grey(0.1) },
       state: state([3, 3, 4], [0, 0.3, 0], shading),
+      measured: GAUSSIAN_MEASURED[resolution][shading],
     });
   }
 }
@@ -112,8 +136,8 @@ CASES.push({
     ],
   },
   state: state([0, 2.5, 5.5], [0, 0.3, 0]),
-  // Objects 40.3 dB; with triplanar's X and Z projections swapped 34.8, with every mapping read as uv 16.5.
-  objectsDb: 37,
+  // With triplanar's X and Z projections swapped the objects fall to 34.8 dB, with every mapping read as uv 16.5.
+  measured: { all: 45.3, objects: 40.3, edges: 33.7 },
 });
 
 test.beforeEach(async ({ page }) => {
@@ -121,14 +145,13 @@ test.beforeEach(async ({ page }) => {
 });
 
 for (const c of CASES) {
-  test(`${c.name}: ≥ ${BOUND_DB} dB against the reference`, async ({ page }) => {
+  test(`${c.name}: within 2 dB of its measured PSNR against the reference (≥ ${ISSUE_BAR_DB} dB)`, async ({ page }) => {
     const image = await drawScene(page, c.state, c.scene, c.images);
     const ref = renderScene(c.scene, c.state, { samplesPerAxis: 4 });
     const cmp = compareImages(ref, image.data);
     const line = `${c.name}: PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}, glass ${cmp.psnr.glass.toFixed(1)}, edges ${cmp.psnr.edges.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;
-    console.log(line);
-    test.info().annotations.push({ type: 'psnr', description: line });
-    expect(cmp.psnr.all, line).toBeGreaterThanOrEqual(BOUND_DB);
-    if (c.objectsDb !== undefined) expect(cmp.psnr.objects, line).toBeGreaterThanOrEqual(c.objectsDb);
+    note(line);
+    expect(cmp.psnr.all, line).toBeGreaterThanOrEqual(ISSUE_BAR_DB);
+    expectPsnr(cmp, c.measured, c.name);
   });
 }

@@ -1,6 +1,7 @@
 // Image textures in the element (SPEC §9 `texture`, MTL map_Kd): decoded once per URL, drawn when
 // ready; a missing image warns once and the object keeps the procedural texture.
 import { test, expect, openPage, capture } from './fixtures';
+import { note } from './helpers/bounds';
 import { mountHtml } from './helpers/scene-children';
 import { compareImages } from './helpers/golden';
 
@@ -22,7 +23,9 @@ test('a texture image replaces the procedural texture once decoded', async ({ pa
   await settle(page);
   const image = await capture(page);
   // The cube fills the middle of the frame: most of it changes with the texture.
-  expect(compareImages(procedural, image).differing, 'pixels changed by the image texture').toBeGreaterThan(1000);
+  note(`image texture vs procedural: ${compareImages(procedural, image).differing} px differ`);
+  // Measured 1,226 px; 10 % under it at most (edge pixels).
+  expect(compareImages(procedural, image).differing, 'pixels changed by the image texture').toBeGreaterThanOrEqual(0.9 * 1226);
 });
 
 test('a missing texture image warns once and keeps the procedural texture', async ({ page, consoleLog }) => {

@@ -1,7 +1,7 @@
 // The scene value from attributes and children: with no children it is SPEC §3's default
 // scene exactly; children's objects and lights replace the defaults; "0 0" removes the glass.
 import { describe, expect, it } from 'vitest';
-import { composeScene, type SceneInputs } from '../../src/element/compose-scene';
+import { composeScene, sceneSpins, type SceneInputs } from '../../src/element/compose-scene';
 import { defaultAttributes } from '../../src/element/attributes';
 import { defaultScene, DEFAULT_LIGHT } from '../../src/scene/default-scene';
 import type { SceneObject } from '../../src/scene/scene';
@@ -29,5 +29,14 @@ describe('composeScene', () => {
     expect(s.background).toEqual([1, 0, 0]);
     expect(composeScene(inputs({ glassSize: [0, 0] }), { objects: null, lights: null }).glass).toBeNull();
     expect(composeScene(inputs({ glassSize: [3, 0] }), { objects: null, lights: null }).glass).toBeNull();
+  });
+
+  it('spins only where the default cube is: spin is its alone (SPEC §7)', () => {
+    const none = { objects: null, lights: null };
+    expect(sceneSpins(composeScene(inputs({ spin: 0.8 }), none)), 'default scene, spin 0.8').toBe(true);
+    expect(sceneSpins(composeScene(inputs({ spin: 0 }), none)), 'default scene, spin 0').toBe(false);
+    const sphere = defaultScene(0, 0).objects[1] as SceneObject;
+    expect(sceneSpins(composeScene(inputs({ spin: 0.8 }), { objects: [sphere], lights: null })), 'children, spin 0.8').toBe(false);
+    expect(sceneSpins(composeScene(inputs({ spin: 0.8 }), { objects: [], lights: null })), 'a child still loading').toBe(false);
   });
 });
