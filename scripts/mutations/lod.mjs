@@ -14,7 +14,7 @@ export default [
   },
   {
     name: 'D1 the reflection pass runs with the glass off screen or edge-on (the optimize test inverted)',
-    edits: [{ file: 'src/render/renderer.ts', find: ': !this.optimize ? undefined', replace: ': this.optimize ? undefined' }],
+    edits: [{ file: 'src/frame/pass-reports.ts', find: ': !optimize ? undefined', replace: ': optimize ? undefined' }],
     tests: [ON_DEMAND],
   },
   {
@@ -28,12 +28,12 @@ export default [
   },
   {
     name: 'D3 the reflection scissor loses its texel of margin on the low side (off by one)',
-    edits: [{ file: 'src/render/reflection-scissor.ts', find: 'Math.max(0, Math.floor(rect.x0 * sx) - 1)', replace: 'Math.max(0, Math.floor(rect.x0 * sx))' }],
+    edits: [{ file: 'src/frame/reflection-scissor.ts', find: 'Math.max(0, Math.floor(rect.x0 * sx) - 1)', replace: 'Math.max(0, Math.floor(rect.x0 * sx))' }],
     tests: [SCISSOR],
   },
   {
     name: 'D4 the reflection scissor scales y by the width ratio (wrong once the target is clamped)',
-    edits: [{ file: 'src/render/reflection-scissor.ts', find: 'const sy = targetHeight / height;', replace: 'const sy = targetWidth / width;' }],
+    edits: [{ file: 'src/frame/reflection-scissor.ts', find: 'const sy = targetHeight / height;', replace: 'const sy = targetWidth / width;' }],
     tests: [SCISSOR],
   },
   {
@@ -52,7 +52,7 @@ export default [
   },
   {
     name: 'D7 the sphere\'s auto tessellation sizes it with tan(fov) instead of tan(fov / 2)',
-    edits: [{ file: 'src/render/sphere-screen.ts', find: 'Math.tan((state.fov * DEG) / 2)', replace: 'Math.tan(state.fov * DEG)' }],
+    edits: [{ file: 'src/frame/sphere-screen.ts', find: 'Math.tan((state.fov * DEG) / 2)', replace: 'Math.tan(state.fov * DEG)' }],
     tests: ['tests/unit/quality-knobs.test.ts'],
   },
   {

@@ -1,13 +1,15 @@
 // Flyby camera pose → forward vector, view and projection matrices (float64, SPEC §3, §10).
 // Shared by the reference (reference/view-camera.ts: the view basis, the projections' scale,
-// orthoHalfHeight; sample-tracer.ts: viewerSide) and both renderers (render/frame-setup.ts): tied
+// orthoHalfHeight; sample-tracer.ts: viewerSide) and both renderers (frame/frame-setup.ts): tied
 // down by tests/unit/camera.test.ts and orthographic.test.ts with values worked out by hand
 // (forward vectors, the fov's edge at NDC ±1, near and far at ∓1, no roll, orthographic sizes),
 // and reference-pixels.test.ts casts its camera rays by hand.
 import { mat4 } from 'gl-matrix';
 import type { ReadonlyVec3 } from 'gl-matrix';
 import { signedDistance, type Plane } from './mirror';
-import { CAMERA } from '../scene/default-scene';
+
+/** Near and far planes of every projection (SPEC §3); scene/default-scene.ts re-exports them. */
+export const CAMERA = { near: 0.1, far: 100 } as const;
 
 export const PITCH_LIMIT = 89.9;
 const DEG = Math.PI / 180;

@@ -1,6 +1,6 @@
 // Reflection across a plane: points, directions and the reflection matrix (float64).
 // Shared by the reference (reference/ray.ts, clip.ts, sample-tracer.ts) and both renderers
-// (render/frame-setup.ts, software/software-renderer.ts): tied down by tests/unit/mirror.test.ts's
+// (frame/frame-setup.ts, software/software-renderer.ts): tied down by tests/unit/mirror.test.ts's
 // reflections across z = 0 and oblique planes worked out by hand.
 import type { ReadonlyVec3 } from 'gl-matrix';
 

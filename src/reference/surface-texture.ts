@@ -1,7 +1,8 @@
 // The texture value at a hit: which texture, which mapping, and a point sample or its footprint's mean.
 import { cylindricalUV, sphericalUV, triplanarUV, boundsScale } from '../scene/mapping';
 import type { Bounds, Material } from '../scene/scene';
-import { imageTexture, type ChannelTexture, type DecodedImage } from './image-texture';
+import { imageTexture, type ChannelTexture } from './image-texture';
+import type { DecodedImage } from '../scene/decoded-image';
 import type { Ray } from './ray';
 import type { SurfaceHit } from './surface-hit';
 import { TextureSampler } from './texture-sampler';

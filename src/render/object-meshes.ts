@@ -12,11 +12,11 @@ import { gaussianMesh } from '../scene/geometry/gaussian';
 import { flatMesh } from '../scene/geometry/flat';
 import { clusterMesh, meshExtent } from '../scene/geometry/cluster';
 import { GAUSSIAN_EXTENT } from '../scene/geometry/gaussian';
-import { REFLECTION_MAX_FRACTION, reflectionGrid } from './reflection-lod';
+import { REFLECTION_MAX_FRACTION, reflectionGrid } from '../frame/reflection-lod';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import type { Geometry } from '../scene/scene';
-import type { ObjectMatrices } from './frame-setup';
-import type { FrameState } from './types';
+import type { ObjectMatrices } from '../frame/frame-setup';
+import type { FrameState } from '../frame/types';
 
 interface Slot {
   geometry: Geometry | null;

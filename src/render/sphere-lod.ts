@@ -4,10 +4,9 @@ import { Mesh } from './gl/mesh';
 import type { ResourceCounter } from './gl/resource-counter';
 import { segmentsForScreenRadius, sphereMesh } from '../scene/geometry/sphere';
 import { flatMesh } from '../scene/geometry/flat';
-import type { FrameState } from './types';
-import { AUTO_SILHOUETTE_ERROR_PX, sphereScreenRadius } from './sphere-screen';
+import type { FrameState } from '../frame/types';
+import { AUTO_SILHOUETTE_ERROR_PX, sphereScreenRadius } from '../frame/sphere-screen';
 
-export { AUTO_SILHOUETTE_ERROR_PX, sphereScreenRadius } from './sphere-screen';
 
 export class SphereLod {
   mesh: Mesh | null = null;

@@ -40,7 +40,8 @@ export const LIGHT = {
 
 export const MATERIAL = { ks: 0.5, shininess: 32 } as const;
 
-export const CAMERA = { near: 0.1, far: 100 } as const;
+/** Near and far (SPEC §3): defined with the camera maths, which needs them (math imports no scene). */
+export { CAMERA } from '../math/camera';
 
 export const TEXTURE_SIZE = 512;
 

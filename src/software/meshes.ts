@@ -6,8 +6,8 @@ import { gaussianMesh } from '../scene/geometry/gaussian';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import { segmentsForScreenRadius, sphereMesh } from '../scene/geometry/sphere';
 import type { Geometry } from '../scene/scene';
-import { AUTO_SILHOUETTE_ERROR_PX, sphereScreenRadius } from '../render/sphere-screen';
-import type { FrameState } from '../render/types';
+import { AUTO_SILHOUETTE_ERROR_PX, sphereScreenRadius } from '../frame/sphere-screen';
+import type { FrameState } from '../frame/types';
 
 /** Built-ins are closed and wound outwards (back faces culled); meshes from files are neither. */
 export const isTwoSided = (g: Geometry): boolean => g.kind === 'mesh' || g.kind === 'gaussian';

@@ -5,7 +5,7 @@
 import { cylindricalUV, sphericalUV, boundsScale, TRIPLANAR_SHARPNESS } from '../scene/mapping';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import type { Bounds, Material } from '../scene/scene';
-import type { Shading } from '../render/types';
+import type { Shading } from '../frame/types';
 import { blinnPhong, type Lights } from './lighting';
 import type { MipTexture } from './mip-texture';
 import { CLIP_DISTANCE, VARYINGS, type FragmentShader, type Rasterizer } from './raster';

@@ -3,9 +3,9 @@
 // in a worker. Pixels come back as RGBA8, top row first, like `capture()` and the reference.
 import { mat3, mat4 } from 'gl-matrix';
 import { reflectionMatrix, signedDistance } from '../math/mirror';
-import { FrameSetup } from '../render/frame-setup';
-import type { FrameState } from '../render/types';
-import type { DecodedImage } from '../reference/image-texture';
+import { FrameSetup } from '../frame/frame-setup';
+import type { FrameState } from '../frame/types';
+import type { DecodedImage } from '../scene/decoded-image';
 import { defaultScene } from '../scene/default-scene';
 import type { Scene, SceneObject } from '../scene/scene';
 import { GlassShader, GLASS_INDICES } from './glass-shader';

@@ -4,13 +4,13 @@
 // (GL errors, non-finite uniforms, NaN pixels, continuity) is tests/e2e/stability.spec.ts.
 import { describe, expect, it } from 'vitest';
 import { mat4 } from 'gl-matrix';
-import { FrameSetup, type DrawMatrices } from '../../src/render/frame-setup';
-import type { FrameState } from '../../src/render/types';
+import { FrameSetup, type DrawMatrices } from '../../src/frame/frame-setup';
+import type { FrameState } from '../../src/frame/types';
 import { clampPitch, forwardFromYawPitch, PITCH_LIMIT, projectionMatrix, rotationOnlyView } from '../../src/math/camera';
 import { fresnel, FRESNEL_MODELS } from '../../src/math/fresnel';
 import { ATTRIBUTE_BY_NAME } from '../../src/element/attributes';
 import { MAX_SEGMENTS, MIN_SEGMENTS, segmentsForScreenRadius, sphereMesh } from '../../src/scene/geometry/sphere';
-import { sphereScreenRadius } from '../../src/render/sphere-lod';
+import { sphereScreenRadius } from '../../src/frame/sphere-screen';
 import { defaultScene, SPHERE } from '../../src/scene/default-scene';
 import { renderReference } from '../../src/reference';
 import { project, type Vec3 } from '../e2e/helpers/projection';

@@ -2,7 +2,7 @@
 // mirrored one (pass 1): opaque ones first, then those with opacity < 1 blended over them
 // (depth-tested, no depth write), as SPEC §9 and seed 002 ask.
 import { signedDistance } from '../../math/mirror';
-import { orthoPixelsPerUnit } from '../reflection-lod';
+import { orthoPixelsPerUnit } from '../../frame/reflection-lod';
 import type { Program } from '../gl/program';
 import type { Texture } from '../gl/texture';
 import type { ClipMode, ObjectVariant } from '../programs';
