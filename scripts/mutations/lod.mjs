@@ -40,8 +40,8 @@ export default [
     name: 'D5 the reflection LOD\'s pixel size from tan(fov) instead of tan(fov / 2)',
     edits: [{
       file: 'src/render/passes/draw-objects.ts',
-      find: 'const focal = targetHeight / (2 * Math.tan((ctx.state.fov * Math.PI) / 360));',
-      replace: 'const focal = targetHeight / (2 * Math.tan((ctx.state.fov * Math.PI) / 180));',
+      find: 'const focal = focalPixels(targetHeight, ctx.state.fov);',
+      replace: 'const focal = focalPixels(targetHeight, 2 * ctx.state.fov);',
     }],
     tests: [LOD],
   },
@@ -52,7 +52,7 @@ export default [
   },
   {
     name: 'D7 the sphere\'s auto tessellation sizes it with tan(fov) instead of tan(fov / 2)',
-    edits: [{ file: 'src/frame/sphere-screen.ts', find: 'Math.tan((state.fov * DEG) / 2)', replace: 'Math.tan(state.fov * DEG)' }],
+    edits: [{ file: 'src/frame/sphere-screen.ts', find: 'focalPixels(state.height, state.fov)', replace: 'focalPixels(state.height, 2 * state.fov)' }],
     tests: ['tests/unit/quality-knobs.test.ts'],
   },
   {
@@ -68,5 +68,10 @@ export default [
     name: 'D9 culling by the wrong sign of the radius: an object straddling the glass is dropped from the reflection',
     edits: [{ file: 'src/render/passes/draw-objects.ts', find: '<= -m.radius) continue;', replace: '<= m.radius) continue;' }],
     tests: [PASSES],
+  },
+  {
+    name: 'D10 tan(fov / 2), written once, becomes tan(fov): the orthographic size (and every size on screen) off',
+    edits: [{ file: 'src/math/camera.ts', find: 'return Math.tan((fovDeg * DEG) / 2);', replace: 'return Math.tan(fovDeg * DEG);' }],
+    tests: ['tests/unit/orthographic.test.ts'],
   },
 ];

@@ -50,6 +50,15 @@ export function rotationOnlyView<T extends Float64Array | number[]>(
   return mat4.lookAt(out as mat4, ORIGIN, scratch, UP) as T;
 }
 
+/**
+ * tan(fov/2) of a vertical field of view `fovDeg` in degrees: half the view's height at unit
+ * depth. The one place it is written: the orthographic size, the size of things on screen (level
+ * of detail) and the orbit's pan all read it.
+ */
+export function tanHalfFov(fovDeg: number): number {
+  return Math.tan((fovDeg * DEG) / 2);
+}
+
 /** out = perspective projection, OpenGL clip depth (−1..1). */
 export function projectionMatrix<T extends Float64Array | number[]>(
   out: T, fovDeg: number, aspect: number, near: number, far: number,
@@ -87,7 +96,7 @@ export function orthoHalfHeight(state: OrthoView, glassCenter: ReadonlyVec3 | nu
   const e = state.cameraPosition;
   const depth = (point[0] - e[0]) * Math.cos(p) * Math.cos(y) + (point[1] - e[1]) * Math.sin(p)
     + (point[2] - e[2]) * Math.cos(p) * Math.sin(y);
-  return Math.max(depth, MIN_ORTHO_DEPTH) * Math.tan((state.fov * DEG) / 2);
+  return Math.max(depth, MIN_ORTHO_DEPTH) * tanHalfFov(state.fov);
 }
 
 /** out = orthographic projection of half-height `halfHeight` (width by `aspect`), OpenGL clip depth. */

@@ -2,7 +2,7 @@
 // mirrored one (pass 1): opaque ones first, then those with opacity < 1 blended over them
 // (depth-tested, no depth write), as SPEC §9 and seed 002 ask.
 import { signedDistance } from '../../math/mirror';
-import { orthoPixelsPerUnit } from '../../frame/reflection-lod';
+import { focalPixels, orthoPixelsPerUnit } from '../../frame/reflection-lod';
 import type { Program } from '../gl/program';
 import type { Texture } from '../gl/texture';
 import type { ClipMode, ObjectVariant } from '../programs';
@@ -36,7 +36,7 @@ function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
 export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean, targetHeight: number): number {
   const { gl, setup, scene } = ctx;
   const eye = setup.mirroredEye;
-  const focal = targetHeight / (2 * Math.tan((ctx.state.fov * Math.PI) / 360));
+  const focal = focalPixels(targetHeight, ctx.state.fov);
   // The mirrored camera is orthographic too: the same pixels per unit at every depth.
   const orthoPpu = setup.orthographic ? orthoPixelsPerUnit(targetHeight, setup.halfHeight) : 0;
   const objects = scene.objects;
