@@ -28,6 +28,15 @@ export function clampPitch(pitch: number): number {
   return Math.max(-PITCH_LIMIT, Math.min(PITCH_LIMIT, pitch));
 }
 
+/**
+ * Degrees wrapped into [−180, 180): 180 becomes −180. The one yaw convention (the
+ * camera-rotation attribute, the flyby, the orbit), so huge values keep their precision and a
+ * pose read back is the pose written.
+ */
+export function wrapYaw(yaw: number): number {
+  return ((((yaw + 180) % 360) + 360) % 360) - 180;
+}
+
 /** out = (cos p·cos y, sin p, cos p·sin y), angles in degrees. */
 export function forwardFromYawPitch<T extends Float64Array | number[]>(out: T, yaw: number, pitch: number): T {
   const y = yaw * DEG;

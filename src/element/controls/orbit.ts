@@ -1,6 +1,6 @@
 // The orbit camera (SPEC §10): turns about a target at a fixed distance, dollies along its view
 // and pans with the target. Reads and writes the element's camera pose; no DOM.
-import { clampPitch, forwardFromYawPitch, tanHalfFov, type CameraPose } from '../../math/camera';
+import { clampPitch, forwardFromYawPitch, tanHalfFov, wrapYaw, type CameraPose } from '../../math/camera';
 
 /** Degrees the camera turns per CSS pixel of drag. */
 export const ORBIT_DEG_PER_PX = 0.4;
@@ -30,7 +30,7 @@ export class OrbitCamera {
 
   /** Turns by degrees (yaw right, pitch up of the view) about the target. */
   rotate(pose: CameraPose, dYaw: number, dPitch: number): void {
-    pose.yaw = ((((pose.yaw + dYaw + 180) % 360) + 360) % 360) - 180;
+    pose.yaw = wrapYaw(pose.yaw + dYaw);
     pose.pitch = Math.max(-ORBIT_PITCH_LIMIT, Math.min(ORBIT_PITCH_LIMIT, clampPitch(pose.pitch + dPitch)));
     this.place(pose);
   }
