@@ -14,6 +14,12 @@ export const GLASS = {
   darkness: 0.35,
 } as const;
 
+/**
+ * tint ⊙ darkness: the glass body's colour before the texture (D = tex ⊙ GLASS_BODY), for all
+ * three renderers; reference-pixels.test.ts writes it out by hand.
+ */
+export const GLASS_BODY: readonly number[] = GLASS.tint.map((c) => c * GLASS.darkness);
+
 export const CUBE = {
   edge: 1,
   /** Centre x, y; z is `cube-distance`. */
