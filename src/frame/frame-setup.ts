@@ -3,7 +3,7 @@
 // Reads the scene value (SPEC §9): any number of objects, any glass placement, up to 4 lights.
 import { mat3, mat4 } from 'gl-matrix';
 import { forwardFromYawPitch, orthoHalfHeight, orthographicMatrix, projectionMatrix, rotationOnlyView, viewerSide } from '../math/camera';
-import { reflectDirection, reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
+import { eyeRelativePlane, reflectDirection, reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
 import { courseViewProjection, type CourseCamera } from '../math/course-camera';
 import { courseSceneRange, type CourseDepthRange } from '../scene/course-depth';
 import { CAMERA, DEFAULT_GLASS } from '../scene/default-scene';
@@ -21,6 +21,8 @@ export class DrawMatrices {
 /** One object's matrices for both eyes, and its bounding sphere in world space. */
 export class ObjectMatrices {
   readonly model = new Float64Array(16);
+  /** The model's normal matrix (inverse transpose, 3×3), float64: the same for both eyes. */
+  readonly normal = new Float64Array(9);
   readonly main = new DrawMatrices();
   readonly mirrored = new DrawMatrices();
   readonly center = new Float64Array(3);
@@ -92,17 +94,21 @@ export class FrameSetup {
   pointMask = 0;
   /** The glass projected by the mirrored camera (for the reflection lookup). */
   readonly reflectionViewProjection = new Float32Array(16);
-  /** Clip plane in mirrored-eye-relative coordinates; keeps the eye's side. */
+  /** Clip plane in mirrored-eye-relative coordinates (float64); keeps the eye's side. */
+  readonly mirroredClip = f64(4);
+  /** mirroredClip in float32, for upload. */
   readonly clipPlane = new Float32Array(4);
 
   /** Projection × rotation-only view: maps eye-relative points to clip space. */
   readonly viewProjection = f64(16);
+  /** The same for mirrored-eye-relative points: viewProjection · L, L the plane's linear reflection. */
+  readonly mirroredViewProjection = f64(16);
   private readonly viewRotation = f64(16);
-  private readonly mirroredViewProjection = f64(16);
   private readonly reflectionLinear = f64(16);
   private readonly relative = f64(16);
   private readonly temp = f64(16);
-  private readonly normal3 = f64(9);
+  /** The glass's normal matrix: its mesh is in world coordinates. */
+  private readonly identityNormal = mat3.identity(f64(9) as unknown as mat3) as unknown as Float64Array;
   private readonly scratch3 = f64(3);
   private readonly identity = mat4.identity(f64(16) as unknown as mat4) as unknown as Float64Array;
   private lastGlass: Glass | null | undefined = undefined;
@@ -167,11 +173,12 @@ export class FrameSetup {
     for (let i = 0; i < objects.length; i++) {
       const o = this.objects[i];
       this.modelMatrix(o, objects[i], s.time);
-      this.compose(o.main, o.model, eye, this.viewProjection);
-      this.compose(o.mirrored, o.model, mirroredEye, this.mirroredViewProjection);
+      mat3.normalFromMat4(o.normal as unknown as mat3, o.model as unknown as mat4);
+      this.compose(o.main, o.model, o.normal, eye, this.viewProjection);
+      this.compose(o.mirrored, o.model, o.normal, mirroredEye, this.mirroredViewProjection);
     }
-    this.compose(this.glassMain, this.identity, eye, this.viewProjection);
-    this.compose(this.glassMirrored, this.identity, mirroredEye, this.mirroredViewProjection);
+    this.compose(this.glassMain, this.identity, this.identityNormal, eye, this.viewProjection);
+    this.compose(this.glassMirrored, this.identity, this.identityNormal, mirroredEye, this.mirroredViewProjection);
     this.reflectionViewProjection.set(this.glassMirrored.modelViewProjection);
     lightVectors(this.lightsMain, scene, eye);
     lightVectors(this.lightsMirrored, scene, mirroredEye);
@@ -188,11 +195,7 @@ export class FrameSetup {
     }
 
     // Keep what lies on the viewer's side: side·(n·(rel + e′) + d) ≥ 0 (exact in either projection).
-    const p = plane;
-    this.clipPlane[0] = this.side * p[0];
-    this.clipPlane[1] = this.side * p[1];
-    this.clipPlane[2] = this.side * p[2];
-    this.clipPlane[3] = this.side * signedDistance(p, mirroredEye);
+    this.clipPlane.set(eyeRelativePlane(this.mirroredClip, plane, mirroredEye, this.side));
   }
 
   private copyForward(n: ArrayLike<number>): Float64Array {
@@ -249,15 +252,14 @@ export class FrameSetup {
     out.radius = object.bounds.radius * Math.max(Math.abs(scale[0]), Math.abs(scale[1]), Math.abs(scale[2]));
   }
 
-  private compose(out: DrawMatrices, model: Float64Array, eye: Float64Array, viewProjection: Float64Array): void {
+  private compose(out: DrawMatrices, model: Float64Array, normal: Float64Array, eye: Float64Array, viewProjection: Float64Array): void {
     const rel = this.relative;
     rel.set(model);
     rel[12] -= eye[0]; rel[13] -= eye[1]; rel[14] -= eye[2];
     out.modelRelative.set(rel);
     mat4.multiply(this.temp as unknown as mat4, viewProjection as unknown as mat4, rel as unknown as mat4);
     out.modelViewProjection.set(this.temp);
-    mat3.normalFromMat4(this.normal3 as unknown as mat3, model as unknown as mat4);
-    out.normal.set(this.normal3);
+    out.normal.set(normal);
   }
 }
 
