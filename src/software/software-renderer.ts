@@ -9,7 +9,8 @@ import { defaultScene } from '../scene/default-scene';
 import type { Scene, SceneObject } from '../scene/scene';
 import { GlassShader, GLASS_INDICES } from './glass-shader';
 import { Lights } from './lighting';
-import { isTwoSided, SoftwareMeshes } from './meshes';
+import { isTwoSided } from '../frame/mesh-choice';
+import { SoftwareMeshes } from './meshes';
 import { imageMipTexture, proceduralMipTexture, type MipTexture } from './mip-texture';
 import { ObjectShader, type ObjectDraw, type SoftwareTiming } from './object-shader';
 import { Rasterizer } from './raster';
@@ -261,7 +262,7 @@ export class SoftwareRenderer {
       const m = s.objects[i];
       // Culling, not selection (SPEC §4): bounds wholly beyond the glass cannot be reflected.
       if (mirrored && s.side * signedDistance(plane, m.center) <= -m.radius) continue;
-      d.mesh = this.meshes.get(o.geometry, state, m.center, m.radius, r.width / Math.max(1, state.width));
+      d.mesh = this.meshes.get(o.geometry, state, m.center, m.radius, s.halfHeight, r.width / Math.max(1, state.width));
       d.model = m.model;
       d.normal = m.normal;
       d.eye = eye;

@@ -78,6 +78,3 @@ export function setMatrices(gl: WebGL2RenderingContext, p: Program, m: DrawMatri
   gl.uniformMatrix4fv(p.location('uModelRelative'), false, m.modelRelative);
   gl.uniformMatrix3fv(p.location('uNormalMatrix'), false, m.normal);
 }
-
-/** Built-ins are closed and wound outwards (back faces culled); meshes from files are neither. */
-export const isTwoSided = (kind: string): boolean => kind === 'mesh' || kind === 'gaussian';
