@@ -135,6 +135,24 @@ export class FrameSetup {
     this.side = viewerSide(plane, eye, forward, projection);
     this.viewDot = plane[0] * forward[0] + plane[1] * forward[1] + plane[2] * forward[2];
 
+    this.viewAndProjection(s, scene, forward);
+    // Mirrored eye-relative: V·R·x = Vrot·L·(x − mirroredEye), L the plane's linear reflection.
+    reflectionMatrix(this.reflectionLinear, plane);
+    this.reflectionLinear[12] = this.reflectionLinear[13] = this.reflectionLinear[14] = 0;
+    mat4.multiply(this.mirroredViewProjection as unknown as mat4, this.viewProjection as unknown as mat4, this.reflectionLinear as unknown as mat4);
+    this.drawMatrices(scene, s.time);
+    this.lightValues(scene);
+
+    // Keep what lies on the viewer's side: side·(n·(rel + e′) + d) ≥ 0 (exact in either projection).
+    this.clipPlane.set(eyeRelativePlane(this.mirroredClip, plane, mirroredEye, this.side));
+  }
+
+  /**
+   * projection and viewProjection of this frame's camera (the course's, an orthographic or a
+   * perspective one), the orthographic half-height and each eye's view vector.
+   */
+  private viewAndProjection(s: FrameState, scene: Scene, forward: Float64Array): void {
+    const course = s.courseCamera ?? null;
     // Same near and far for both projections (SPEC §2): the orthographic eye is a point on the
     // view plane's centre like the perspective one, and draws depths near..far ahead of it.
     const aspect = s.width / Math.max(1, s.height);
@@ -145,13 +163,15 @@ export class FrameSetup {
       this.viewVectorMain.set(PERSPECTIVE_VIEW);
       this.viewVectorMirrored.set(PERSPECTIVE_VIEW);
       this.courseViewProjection(course, scene, s.time);
-    } else if (this.orthographic) {
+      return;
+    }
+    if (this.orthographic) {
       this.halfHeight = orthoHalfHeight(s, scene.glass?.center ?? null);
       orthographicMatrix(this.projection, this.halfHeight, aspect, CAMERA.near, CAMERA.far);
       const vm = this.viewVectorMain, vr = this.viewVectorMirrored, t = this.scratch3;
       vm[0] = -forward[0]; vm[1] = -forward[1]; vm[2] = -forward[2]; vm[3] = 0;
       t[0] = -forward[0]; t[1] = -forward[1]; t[2] = -forward[2];
-      reflectDirection(t, t, plane);
+      reflectDirection(t, t, this.glass.plane);
       vr[0] = t[0]; vr[1] = t[1]; vr[2] = t[2]; vr[3] = 0;
     } else {
       this.halfHeight = 0;
@@ -159,20 +179,18 @@ export class FrameSetup {
       this.viewVectorMain.set(PERSPECTIVE_VIEW);
       this.viewVectorMirrored.set(PERSPECTIVE_VIEW);
     }
-    if (!course) {
-      rotationOnlyView(this.viewRotation, s.yaw, s.pitch, this.scratch3);
-      mat4.multiply(this.viewProjection as unknown as mat4, this.projection as unknown as mat4, this.viewRotation as unknown as mat4);
-    }
-    // Mirrored eye-relative: V·R·x = Vrot·L·(x − mirroredEye), L the plane's linear reflection.
-    reflectionMatrix(this.reflectionLinear, plane);
-    this.reflectionLinear[12] = this.reflectionLinear[13] = this.reflectionLinear[14] = 0;
-    mat4.multiply(this.mirroredViewProjection as unknown as mat4, this.viewProjection as unknown as mat4, this.reflectionLinear as unknown as mat4);
+    rotationOnlyView(this.viewRotation, s.yaw, s.pitch, this.scratch3);
+    mat4.multiply(this.viewProjection as unknown as mat4, this.projection as unknown as mat4, this.viewRotation as unknown as mat4);
+  }
 
+  /** Every object's matrices and the glass's, for both eyes. */
+  private drawMatrices(scene: Scene, time: number): void {
+    const { eye, mirroredEye } = this;
     const objects = scene.objects;
     while (this.objects.length < objects.length) this.objects.push(new ObjectMatrices());
     for (let i = 0; i < objects.length; i++) {
       const o = this.objects[i];
-      this.modelMatrix(o, objects[i], s.time);
+      this.modelMatrix(o, objects[i], time);
       mat3.normalFromMat4(o.normal as unknown as mat3, o.model as unknown as mat4);
       this.compose(o.main, o.model, o.normal, eye, this.viewProjection);
       this.compose(o.mirrored, o.model, o.normal, mirroredEye, this.mirroredViewProjection);
@@ -180,8 +198,12 @@ export class FrameSetup {
     this.compose(this.glassMain, this.identity, this.identityNormal, eye, this.viewProjection);
     this.compose(this.glassMirrored, this.identity, this.identityNormal, mirroredEye, this.mirroredViewProjection);
     this.reflectionViewProjection.set(this.glassMirrored.modelViewProjection);
-    lightVectors(this.lightsMain, scene, eye);
-    lightVectors(this.lightsMirrored, scene, mirroredEye);
+  }
+
+  /** The lights' vectors from each eye, their colours, how many and which are points. */
+  private lightValues(scene: Scene): void {
+    lightVectors(this.lightsMain, scene, this.eye);
+    lightVectors(this.lightsMirrored, scene, this.mirroredEye);
     this.lightCount = Math.min(scene.lights.length, MAX_LIGHTS);
     this.pointMask = 0;
     for (let i = 0; i < this.lightCount; i++) {
@@ -193,9 +215,6 @@ export class FrameSetup {
         this.lightSpecular[3 * i + c] = l.specular[c];
       }
     }
-
-    // Keep what lies on the viewer's side: side·(n·(rel + e′) + d) ≥ 0 (exact in either projection).
-    this.clipPlane.set(eyeRelativePlane(this.mirroredClip, plane, mirroredEye, this.side));
   }
 
   private copyForward(n: ArrayLike<number>): Float64Array {
