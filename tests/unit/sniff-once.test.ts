@@ -11,6 +11,7 @@ const { sniffModel } = await import('../../src/loaders/sniff');
 const { parseModelBytes } = await import('../../src/element/children/model-parse');
 const { runObjJob } = await import('../../src/loaders/obj-job');
 const { LoadError } = await import('../../src/loaders/load-error');
+const { parseMtlBytes } = await import('../../src/loaders/mtl');
 
 const bytes = (text: string) => new TextEncoder().encode(text);
 const OBJ = 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n';
@@ -31,6 +32,11 @@ describe('one sniff per load', () => {
 
   it('an HTML page is refused after that one sniff', async () => {
     await expect(parseModelBytes(bytes('<!doctype html><p>404</p>'), 'a.obj')).rejects.toBeInstanceOf(LoadError);
+    expect(calls()).toBe(1);
+  });
+
+  it('a material library, once too', () => {
+    expect(parseMtlBytes(bytes('newmtl red\nKd 1 0 0\n'), { url: 'a.mtl' }).materials.get('red')?.diffuse).toEqual([1, 0, 0]);
     expect(calls()).toBe(1);
   });
 
