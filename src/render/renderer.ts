@@ -20,7 +20,7 @@ import { reflectionPass } from './passes/reflection-pass';
 import { scenePass } from './passes/scene-pass';
 import { glassPass } from './passes/glass-pass';
 import { glassMesh } from '../scene/geometry/rectangle';
-import { defaultScene } from '../scene/default-scene';
+import { DefaultSceneCache } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
 import type { Scene } from '../scene/scene';
 import type { FrameReport, FrameState, RenderStats, Viewport } from '../frame/types';
@@ -60,7 +60,7 @@ export class Renderer {
   /** The glass frame `glassMesh` was built for. */
   private glassMeshFrame: GlassFrame | null = null;
   /** SPEC §3's scene for callers that pass none (the bench, tests), rebuilt only when it changes. */
-  private defaultScene: { cubeDistance: number; spin: number; scene: Scene } | null = null;
+  private readonly defaultScene = new DefaultSceneCache();
   /** Programs, the procedural texture and meshes, shared with every renderer on this context. */
   private readonly shared: SharedResources;
   private readonly texture: Texture;
@@ -127,7 +127,7 @@ export class Renderer {
 
   /** Draws one frame of `state.view` to the canvas and returns its report (reused object; its `passes` are frozen and shared). */
   render(state: FrameState, scene?: Scene): FrameReport {
-    this.ctx.scene = scene ?? this.defaultSceneFor(state);
+    this.ctx.scene = scene ?? this.defaultScene.get(state.cubeDistance, state.spin);
     const drawCalls = this.draw(state, null);
     const r = this.report;
     this.counts.frames++;
@@ -151,7 +151,7 @@ export class Renderer {
    * buffer is not preserved between frames); the others draw one pass off screen.
    */
   read(source: ReadbackSource, state: FrameState, scene?: Scene): Pixels {
-    this.ctx.scene = scene ?? this.defaultSceneFor(state);
+    this.ctx.scene = scene ?? this.defaultScene.get(state.cubeDistance, state.spin);
     const gl = this.gl;
     if (source === 'screen') {
       this.draw(state, null);
@@ -241,13 +241,6 @@ export class Renderer {
     const scale = state.reflectionScale;
     const max = this.maxTargetSize;
     this.reflection.setSize(reflectionTargetSide(state.width, scale, max), reflectionTargetSide(state.height, scale, max));
-  }
-
-  private defaultSceneFor(state: FrameState): Scene {
-    const d = this.defaultScene;
-    if (d && Object.is(d.cubeDistance, state.cubeDistance) && Object.is(d.spin, state.spin)) return d.scene;
-    this.defaultScene = { cubeDistance: state.cubeDistance, spin: state.spin, scene: defaultScene(state.cubeDistance, state.spin) };
-    return this.defaultScene.scene;
   }
 
   private samplesFor(state: FrameState): number {

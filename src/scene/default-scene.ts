@@ -105,3 +105,18 @@ export function defaultScene(cubeDistance: number, spin: number): Scene {
     background: BACKGROUND,
   };
 }
+
+/**
+ * SPEC §3's scene for renderers called without one (the bench, tests): the same value while the
+ * cube distance and spin stay, a new one when either changes.
+ */
+export class DefaultSceneCache {
+  private last: { cubeDistance: number; spin: number; scene: Scene } | null = null;
+
+  get(cubeDistance: number, spin: number): Scene {
+    const d = this.last;
+    if (d && Object.is(d.cubeDistance, cubeDistance) && Object.is(d.spin, spin)) return d.scene;
+    this.last = { cubeDistance, spin, scene: defaultScene(cubeDistance, spin) };
+    return this.last.scene;
+  }
+}

@@ -5,7 +5,7 @@ import { eyeRelativePlane, signedDistance } from '../math/mirror';
 import { FrameSetup } from '../frame/frame-setup';
 import type { FrameState } from '../frame/types';
 import type { DecodedImage } from '../scene/decoded-image';
-import { defaultScene } from '../scene/default-scene';
+import { DefaultSceneCache } from '../scene/default-scene';
 import type { Scene, SceneObject } from '../scene/scene';
 import { GlassShader, GLASS_INDICES } from './glass-shader';
 import { Lights } from './lighting';
@@ -54,7 +54,7 @@ export class SoftwareRenderer {
   private tiled = new Uint8ClampedArray(0);
   private readonly tileState = {} as FrameState;
   private readonly draw: ObjectDraw;
-  private defaultScene: { cubeDistance: number; spin: number; scene: Scene } | null = null;
+  private readonly defaultScene = new DefaultSceneCache();
 
   constructor(options: SoftwareRendererOptions = {}) {
     this.samplesPerAxis = options.samplesPerAxis ?? 1;
@@ -114,7 +114,7 @@ export class SoftwareRenderer {
   }
 
   private frame(state: FrameState, scene?: Scene, images?: ReadonlyMap<string, DecodedImage>): Uint8ClampedArray {
-    scene ??= this.defaultSceneFor(state);
+    scene ??= this.defaultScene.get(state.cubeDistance, state.spin);
     const n = Math.max(1, Math.min(8, Math.floor(this.samplesPerAxis)));
     const width = Math.max(0, Math.floor(state.width)), height = Math.max(0, Math.floor(state.height));
     const W = width * n, H = height * n;
@@ -319,13 +319,6 @@ export class SoftwareRenderer {
         out[p + 3] = 255;
       }
     }
-  }
-
-  private defaultSceneFor(state: FrameState): Scene {
-    const d = this.defaultScene;
-    if (d && Object.is(d.cubeDistance, state.cubeDistance) && Object.is(d.spin, state.spin)) return d.scene;
-    this.defaultScene = { cubeDistance: state.cubeDistance, spin: state.spin, scene: defaultScene(state.cubeDistance, state.spin) };
-    return this.defaultScene.scene;
   }
 }
 
