@@ -2,12 +2,12 @@
 // three.js peer), times batches of frames closed by a 1-pixel readback, returns pixels.
 import { Renderer } from '../src/render/renderer';
 import { DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
-import type { FrameState } from '../src/render/types';
+import type { FrameState } from '../src/frame/types';
 import { ThreePeer } from './three-peer';
 import { DEFAULTS, type Knobs } from './configs';
 import type { BenchView } from './views';
 import { BENCH_SCENES } from './scenes';
-import type { Shading } from '../src/render/types';
+import type { Shading } from '../src/frame/types';
 
 export interface Scene {
   width: number;

@@ -3,7 +3,7 @@
 // E×E grid mesh. White 1×1 image texture, so the error measured is the geometry's, not texture
 // filtering's. Built the same way in Node (reference, software renderer) and in the page (WebGL).
 import { bezierPatchMesh, type BezierPatch } from '../src/scene/geometry/bezier';
-import type { DecodedImage } from '../src/reference/image-texture';
+import type { DecodedImage } from '../src/scene/decoded-image';
 import type { Scene } from '../src/scene/scene';
 import type { BenchView } from './views';
 

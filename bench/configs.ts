@@ -1,7 +1,7 @@
 // Bench configurations: a high-quality baseline, one knob at a time from it, and the grids
 // shading × tessellation and reflection-scale × samples (deduplicated).
 import type { FresnelModel } from '../src/math/fresnel';
-import type { ReflectionFormat, Shading } from '../src/render/types';
+import type { ReflectionFormat, Shading } from '../src/frame/types';
 
 export interface BenchConfig {
   name: string;

@@ -6,7 +6,7 @@ import { writeFileSync } from 'node:fs';
 import { test, expect } from '../tests/e2e/fixtures';
 import { renderReference, compareImages } from '../src/reference';
 import { DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
-import type { Projection } from '../src/render/types';
+import type { Projection } from '../src/frame/types';
 import { DEFAULTS } from './configs';
 import { VIEWS, type BenchView } from './views';
 import { summary, shuffled } from './stats';

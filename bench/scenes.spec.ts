@@ -5,7 +5,7 @@
 import { writeFileSync } from 'node:fs';
 import { test, expect } from '../tests/e2e/fixtures';
 import { renderScene, compareImages, type ReferenceImage } from '../src/reference';
-import type { FrameState, Shading } from '../src/render/types';
+import type { FrameState, Shading } from '../src/frame/types';
 import { BENCH_SCENES } from './scenes';
 import { summary, shuffled } from './stats';
 import type { Scene } from './bench-page';

@@ -4,7 +4,7 @@
 import { SoftwareHost } from '../src/element/software-host';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
 import { Renderer } from '../src/render/renderer';
-import type { FrameState } from '../src/render/types';
+import type { FrameState } from '../src/frame/types';
 import type { SoftwareTiming } from '../src/software';
 import { defaultScene } from '../src/scene/default-scene';
 import { DEFAULTS } from './configs';

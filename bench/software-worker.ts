@@ -3,7 +3,7 @@
 // tell the worker's work from the round trip. Scenes are named, not sent: built here.
 /// <reference lib="webworker" />
 import { SoftwareRenderer, type SoftwareTiming } from '../src/software';
-import type { FrameState } from '../src/render/types';
+import type { FrameState } from '../src/frame/types';
 import { BENCH_SCENES } from './scenes';
 
 export interface BenchWorkerRequest {

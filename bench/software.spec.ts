@@ -13,7 +13,7 @@ import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE
 import { bezierPatchMesh } from '../src/scene/geometry/bezier';
 import { defaultScene } from '../src/scene/default-scene';
 import { SoftwareRenderer, type SoftwareTiming } from '../src/software';
-import type { FrameState } from '../src/render/types';
+import type { FrameState } from '../src/frame/types';
 import { BENCH_SCENES } from './scenes';
 import { BEZIER_PATCH, BEZIER_VIEW, bezierScene, WHITE, WHITE_URL } from './bezier-scene';
 import { summary, shuffled } from './stats';

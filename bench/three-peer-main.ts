@@ -5,7 +5,7 @@
 // changes the frame. bench/check-peer.mjs loads it headless and reads `window.__peerCheck`.
 import { Renderer } from '../src/render/renderer';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
-import type { FrameState } from '../src/render/types';
+import type { FrameState } from '../src/frame/types';
 import { ThreePeer, type PeerOptions } from './three-peer';
 
 const q = new URLSearchParams(location.search);

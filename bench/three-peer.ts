@@ -49,7 +49,7 @@
 import lighting from '../shaders/lighting.glsl?raw';
 import * as THREE from 'three';
 import { Reflector } from 'three/addons/objects/Reflector.js';
-import type { FrameState } from '../src/render/types';
+import type { FrameState } from '../src/frame/types';
 import type { MeshData } from '../src/scene/geometry/mesh-data';
 import { boxMesh } from '../src/scene/geometry/box';
 import { sphereMesh } from '../src/scene/geometry/sphere';

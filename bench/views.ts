@@ -1,7 +1,7 @@
 // The bench's camera views: incidences on the glass from near-normal to grazing, a camera
 // almost on the glass plane, one far away, and the element's default view.
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION } from '../src/element/attributes';
-import type { Projection } from '../src/render/types';
+import type { Projection } from '../src/frame/types';
 
 export interface BenchView {
   name: string;

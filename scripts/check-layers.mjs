@@ -55,29 +55,31 @@ export function importsOf(text) {
   return found;
 }
 
-/** The folder of src/ a file belongs to ('index' for src/index.ts), or null outside src/. */
-function unitOf(file) {
-  const rel = path.relative(SRC, file);
+/** The folder of `src` a file belongs to ('index' for src/index.ts), or null outside it. */
+function unitOf(file, src) {
+  const rel = path.relative(src, file);
   if (rel.startsWith('..')) return null;
   const parts = rel.split(path.sep);
   return parts.length === 1 ? parts[0].replace(/\.ts$/, '') : parts[0];
 }
 
-export function check(layers) {
+/** Every import under `src` (default: this checkout's src/) that breaks `layers`, as a line each. */
+export function check(layers, src = SRC) {
+  const root = path.dirname(src);
   const level = new Map();
   layers.forEach((names, i) => names.forEach((n) => level.set(n, layers.length - i)));
   const problems = [];
-  for (const file of sourceFiles(SRC)) {
-    const from = unitOf(file);
+  for (const file of sourceFiles(src)) {
+    const from = unitOf(file, src);
     const text = fs.readFileSync(file, 'utf8');
-    const rel = path.relative(ROOT, file);
+    const rel = path.relative(root, file);
     if (!level.has(from)) {
       problems.push(`${rel}: src/${from} is in no layer of ARCHITECTURE.md`);
       continue;
     }
     for (const { spec, line } of importsOf(text)) {
       const target = path.resolve(path.dirname(file), spec.replace(/\?.*$/, ''));
-      const to = unitOf(target);
+      const to = unitOf(target, src);
       if (to === null || to === from) continue; // shaders/ and other non-src files; its own folder
       if (!level.has(to)) {
         problems.push(`${rel}:${line}: imports ${spec}, and src/${to} is in no layer`);

@@ -6,18 +6,18 @@ export default [
   {
     name: '1 reflection drawn from the unmirrored camera',
     edits: [{
-      file: 'src/render/frame-setup.ts',
-      find: 'this.compose(o.mirrored, o.model, mirroredEye, this.mirroredViewProjection);',
-      replace: 'this.compose(o.mirrored, o.model, eye, this.viewProjection);',
+      file: 'src/frame/frame-setup.ts',
+      find: 'this.compose(o.mirrored, o.model, o.normal, mirroredEye, this.mirroredViewProjection);',
+      replace: 'this.compose(o.mirrored, o.model, o.normal, eye, this.viewProjection);',
     }],
     tests: [PASSES],
   },
   {
     name: '2 clip plane sign flipped',
     edits: [{
-      file: 'src/render/frame-setup.ts',
-      find: 'this.clipPlane[0] = this.side * p[0];\n    this.clipPlane[1] = this.side * p[1];\n    this.clipPlane[2] = this.side * p[2];\n    this.clipPlane[3] = this.side * signedDistance(p, mirroredEye);',
-      replace: 'this.clipPlane[0] = -this.side * p[0];\n    this.clipPlane[1] = -this.side * p[1];\n    this.clipPlane[2] = -this.side * p[2];\n    this.clipPlane[3] = -this.side * signedDistance(p, mirroredEye);',
+      file: 'src/frame/frame-setup.ts',
+      find: 'eyeRelativePlane(this.mirroredClip, plane, mirroredEye, this.side)',
+      replace: 'eyeRelativePlane(this.mirroredClip, plane, mirroredEye, -this.side)',
     }],
     tests: [PASSES],
   },

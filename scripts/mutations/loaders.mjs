@@ -31,7 +31,7 @@ export default [
   },
   {
     name: 'L5 MTL Tr read as d (not inverted)',
-    edits: [{ file: 'src/loaders/mtl.ts', find: 'm.opacity = 1 - clamped(v[0], 0, 1, \'Tr\');', replace: 'm.opacity = clamped(v[0], 0, 1, \'Tr\');' }],
+    edits: [{ file: 'src/loaders/mtl.ts', find: 'm.opacity = 1 - clamped(s, v[0], 0, 1, \'Tr\');', replace: 'm.opacity = clamped(s, v[0], 0, 1, \'Tr\');' }],
     tests: [MTL],
   },
   {

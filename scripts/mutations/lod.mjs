@@ -14,7 +14,7 @@ export default [
   },
   {
     name: 'D1 the reflection pass runs with the glass off screen or edge-on (the optimize test inverted)',
-    edits: [{ file: 'src/render/renderer.ts', find: ': !this.optimize ? undefined', replace: ': this.optimize ? undefined' }],
+    edits: [{ file: 'src/frame/pass-reports.ts', find: ': !optimize ? undefined', replace: ': optimize ? undefined' }],
     tests: [ON_DEMAND],
   },
   {
@@ -28,20 +28,20 @@ export default [
   },
   {
     name: 'D3 the reflection scissor loses its texel of margin on the low side (off by one)',
-    edits: [{ file: 'src/render/reflection-scissor.ts', find: 'Math.max(0, Math.floor(rect.x0 * sx) - 1)', replace: 'Math.max(0, Math.floor(rect.x0 * sx))' }],
+    edits: [{ file: 'src/frame/reflection-scissor.ts', find: 'Math.max(0, Math.floor(rect.x0 * sx) - 1)', replace: 'Math.max(0, Math.floor(rect.x0 * sx))' }],
     tests: [SCISSOR],
   },
   {
     name: 'D4 the reflection scissor scales y by the width ratio (wrong once the target is clamped)',
-    edits: [{ file: 'src/render/reflection-scissor.ts', find: 'const sy = targetHeight / height;', replace: 'const sy = targetWidth / width;' }],
+    edits: [{ file: 'src/frame/reflection-scissor.ts', find: 'const sy = targetHeight / height;', replace: 'const sy = targetWidth / width;' }],
     tests: [SCISSOR],
   },
   {
     name: 'D5 the reflection LOD\'s pixel size from tan(fov) instead of tan(fov / 2)',
     edits: [{
       file: 'src/render/passes/draw-objects.ts',
-      find: 'const focal = targetHeight / (2 * Math.tan((ctx.state.fov * Math.PI) / 360));',
-      replace: 'const focal = targetHeight / (2 * Math.tan((ctx.state.fov * Math.PI) / 180));',
+      find: 'const focal = focalPixels(targetHeight, ctx.state.fov);',
+      replace: 'const focal = focalPixels(targetHeight, 2 * ctx.state.fov);',
     }],
     tests: [LOD],
   },
@@ -52,7 +52,7 @@ export default [
   },
   {
     name: 'D7 the sphere\'s auto tessellation sizes it with tan(fov) instead of tan(fov / 2)',
-    edits: [{ file: 'src/render/sphere-screen.ts', find: 'Math.tan((state.fov * DEG) / 2)', replace: 'Math.tan(state.fov * DEG)' }],
+    edits: [{ file: 'src/frame/sphere-screen.ts', find: 'focalPixels(state.height, state.fov)', replace: 'focalPixels(state.height, 2 * state.fov)' }],
     tests: ['tests/unit/quality-knobs.test.ts'],
   },
   {
@@ -68,5 +68,10 @@ export default [
     name: 'D9 culling by the wrong sign of the radius: an object straddling the glass is dropped from the reflection',
     edits: [{ file: 'src/render/passes/draw-objects.ts', find: '<= -m.radius) continue;', replace: '<= m.radius) continue;' }],
     tests: [PASSES],
+  },
+  {
+    name: 'D10 tan(fov / 2), written once, becomes tan(fov): the orthographic size (and every size on screen) off',
+    edits: [{ file: 'src/math/camera.ts', find: 'return Math.tan((fovDeg * DEG) / 2);', replace: 'return Math.tan(fovDeg * DEG);' }],
+    tests: ['tests/unit/orthographic.test.ts'],
   },
 ];

@@ -82,4 +82,9 @@ export default [
     edits: [{ file: 'src/software/mip-texture.ts', find: 'const lambda = rho2 > 1 ? 0.5 * Math.log2(rho2) : 0;', replace: 'const lambda = rho2 > 1 ? Math.log2(rho2) : 0;' }],
     tests: [VS_REFERENCE],
   },
+  {
+    name: 'S12 the software renderer sizes spheres as if in perspective in an orthographic view (its half-height dropped)',
+    edits: [{ file: 'src/software/software-renderer.ts', find: 'm.center, m.radius, s.halfHeight, r.width', replace: 'm.center, m.radius, 0, r.width' }],
+    tests: ['tests/unit/mesh-choice.test.ts'],
+  },
 ];

@@ -1,7 +1,7 @@
 // THE attribute table: name, type, default, range and fallback of every attribute (SPEC §2).
 // Parsing, property reflection, README and fuzz tests all read it; nothing here throws.
 import { FRESNEL_MODELS, type FresnelModel } from '../math/fresnel';
-import { clampPitch, type Projection } from '../math/camera';
+import { clampPitch, wrapYaw, type Projection } from '../math/camera';
 import { browserCssColor, parseCssColor } from './css-color';
 
 export const DEBUG_VIEWS = ['none', 'reflection', 'scene', 'fresnel', 'passes'] as const;
@@ -232,8 +232,7 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
       if (raw === null) return { value: [...DEFAULT_CAMERA_ROTATION] };
       const xs = tupleParse(raw, 2);
       if (!xs) return { value: [...DEFAULT_CAMERA_ROTATION], problem: 'expected "yaw pitch", using the default view' };
-      // Yaw wraps into (−180, 180] so huge values keep their precision meaningfully.
-      const yaw = ((((xs[0] + 180) % 360) + 360) % 360) - 180;
+      const yaw = wrapYaw(xs[0]);
       const pitch = clampPitch(xs[1]);
       return pitch !== xs[1] ? { value: [yaw, pitch], problem: 'pitch clamped to ±89.9' } : { value: [yaw, pitch] };
     },

@@ -8,6 +8,7 @@ import type { Scene } from '../scene/scene';
 import { acquireCourseFile, loadErrorDetail, type Handle } from './children/model-cache';
 import type { LoadedCamera } from './children/course-files';
 import { warn } from './warnings';
+import { absoluteUrl } from './absolute-url';
 
 const DEG = 180 / Math.PI;
 
@@ -29,7 +30,7 @@ export class CameraSource {
 
   /** The attribute's value (as written), on change and on connection; null: no course camera. */
   set(src: string | null): void {
-    const url = src === null || !this.host.isConnected ? null : absolute(src);
+    const url = src === null || !this.host.isConnected ? null : absoluteUrl(src);
     if (url === this.url && src !== null && url !== null) return;
     this.handle?.release();
     this.handle = null;
@@ -94,13 +95,5 @@ export class CameraSource {
   private fail(url: string, detail: ReturnType<typeof loadErrorDetail>): void {
     this.changed();
     queueMicrotask(() => this.host.dispatchEvent(new CustomEvent('error', { detail: { ...detail, url } })));
-  }
-}
-
-function absolute(url: string): string | null {
-  try {
-    return new URL(url, document.baseURI).href;
-  } catch {
-    return null;
   }
 }

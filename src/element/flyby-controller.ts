@@ -1,5 +1,5 @@
 // Keys and mouse → flyby camera pose (seed 000's updateCamera); no DOM, no GL.
-import { clampPitch, forwardFromYawPitch, type CameraPose } from '../math/camera';
+import { clampPitch, forwardFromYawPitch, wrapYaw, type CameraPose } from '../math/camera';
 
 export interface FlybyOptions {
   /** Units per second (seed 000: 3). */
@@ -33,11 +33,6 @@ const KEY_BITS: ReadonlyMap<string, number> = new Map([
   ['Space', UP], ['ShiftLeft', DOWN_L], ['ShiftRight', DOWN_R],
   ['ArrowLeft', TURN_LEFT], ['ArrowRight', TURN_RIGHT], ['ArrowUp', LOOK_UP], ['ArrowDown', LOOK_DOWN],
 ]);
-
-/** Wraps degrees into [−180, 180), the same formula the camera-rotation attribute parses with. */
-export function wrapYaw(yaw: number): number {
-  return ((((yaw + 180) % 360) + 360) % 360) - 180;
-}
 
 function option(value: number | undefined, fallback: number): number {
   return value !== undefined && Number.isFinite(value) && value >= 0 ? value : fallback;

@@ -2,9 +2,9 @@
 // stays responsive, and on the main thread where no worker can start (a strict CSP without
 // worker-src, a failed worker script). The renderer's code is a chunk of its own, fetched only
 // when a page uses it. One frame in flight at a time; the element asks again when it is back.
-import type { FrameState } from '../render/types';
+import type { FrameState } from '../frame/types';
 import type { Scene } from '../scene/scene';
-import type { DecodedImage } from '../reference/image-texture';
+import type { DecodedImage } from '../scene/decoded-image';
 import type { SoftwareRenderer } from '../software/software-renderer';
 import { SentResources, type SoftwareRequest, type SoftwareResponse } from '../software/protocol';
 

@@ -1,5 +1,5 @@
 // Public types of the element's events, stats and captures.
-import type { PassName, FrameReport, RenderStats } from '../render/types';
+import type { PassName, FrameReport, RenderStats } from '../frame/types';
 
 export type { PassName, FrameReport, RenderStats };
 

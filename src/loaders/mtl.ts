@@ -4,7 +4,7 @@
 import { isNumberToken } from './number-token';
 import { decodeText, type Bytes } from './decode-text';
 import { LoadError, type LoadWarning } from './load-error';
-import { sniffModel } from './sniff';
+import { sniffModel, type ModelFormat } from './sniff';
 import { logicalLines, stripComment } from './text-lines';
 import { readMapStatement, type MtlTexture } from './mtl-map';
 import { shown, Warnings } from './warnings';
@@ -40,10 +40,9 @@ const KNOWN_UNUSED = new Set(['ke', 'tf', 'pr', 'pm', 'ps', 'pc', 'pcr', 'aniso'
   'map_ns', 'map_d', 'map_bump', 'bump', 'disp', 'decal', 'refl', 'norm', 'map_pr', 'map_pm', 'map_ps', 'map_ke',
   'map_tr', 'map_refl', 'map_aat']);
 
-
-export function parseMtl(text: string, options: { url?: string } = {}): MtlResult {
+export function parseMtl(text: string, options: { url?: string; sniffed?: ModelFormat } = {}): MtlResult {
   const url = options.url ?? '';
-  const format = sniffModel(text);
+  const format = options.sniffed ?? sniffModel(text);
   if (format === 'html') throw new LoadError(url, 'an HTML page (or other markup), not an MTL file');
   if (format === 'binary') throw new LoadError(url, 'binary content, not an MTL file');
 
@@ -68,75 +67,101 @@ export function parseMtl(text: string, options: { url?: string } = {}): MtlResul
       warnings.add(line, `${shown(keyword)} before any newmtl; ignored`);
       continue;
     }
-    const m: MtlMaterial = current;
     const args = rest === '' ? [] : rest.split(/\s+/);
-    const numbers = (min: number, max: number): number[] | null => {
-      if (args.length < min || args.length > max || !args.every((a) => isNumberToken(a))) {
-        warnings.add(line, `${shown(keyword)} needs ${min === max ? min : `${min} to ${max}`} numbers, got ${shown(rest)}; ignored`);
-        return null;
-      }
-      return args.map(Number);
-    };
-    const clamped = (value: number, lo: number, hi: number, what: string): number => {
-      if (value >= lo && value <= hi) return value;
-      const c = Math.min(hi, Math.max(lo, value));
-      warnings.add(line, `${what} ${value} is outside ${lo}..${hi === Infinity ? '' : hi}; using ${c}`);
-      return c;
-    };
-    switch (key) {
-      case 'ka': case 'kd': case 'ks': {
-        const v = numbers(1, 3);
-        if (v === null) break;
-        const rgb: Rgb = v.length === 3 ? [v[0], v[1], v[2]] : [v[0], v[0], v[0]];
-        if (v.length === 2) warnings.add(line, `${shown(keyword)} with 2 values; read as grey ${v[0]}`);
-        if (key === 'ka') m.ambient = rgb;
-        else if (key === 'kd') m.diffuse = rgb;
-        else m.specular = rgb;
-        break;
-      }
-      case 'ns': {
-        const v = numbers(1, 1);
-        if (v) m.shininess = clamped(v[0], 0, Infinity, 'Ns');
-        break;
-      }
-      case 'd': {
-        const v = numbers(1, 1);
-        if (v) {
-          m.opacity = clamped(v[0], 0, 1, 'd');
-          fromD.add(m);
-        }
-        break;
-      }
-      case 'tr': {
-        // Some exporters write Tr meaning what d means; d is the standard, so it wins.
-        const v = numbers(1, 1);
-        if (v && !fromD.has(m)) m.opacity = 1 - clamped(v[0], 0, 1, 'Tr');
-        break;
-      }
-      case 'ni': {
-        const v = numbers(1, 1);
-        if (v) m.ior = clamped(v[0], 1, Infinity, 'Ni (ior)');
-        break;
-      }
-      case 'illum': {
-        const v = numbers(1, 1);
-        if (v) m.illum = v[0];
-        break;
-      }
-      case 'map_kd': case 'map_ka': {
-        const map = readMapStatement(rest, (message) => warnings.add(line, `${keyword}: ${message}`));
-        if (map && key === 'map_kd') m.diffuseMap = map;
-        else if (map) m.ambientMap = map;
-        break;
-      }
-      default:
-        if (!KNOWN_UNUSED.has(key)) warnings.addOncePerKeyword(keyword.slice(0, 64), line, `unknown statement ${shown(keyword)}; ignored`);
-    }
+    readStatement({ m: current, keyword, key, rest, args, line, warnings, fromD });
   }
   return { materials, warnings: warnings.result() };
 }
 
+/** One statement inside a material: where it is, what it says, and where its findings go. */
+interface Statement {
+  m: MtlMaterial;
+  keyword: string;
+  /** The keyword in lower case. */
+  key: string;
+  rest: string;
+  args: string[];
+  line: number;
+  warnings: Warnings;
+  /** Materials whose opacity came from d, which beats Tr. */
+  fromD: Set<MtlMaterial>;
+}
+
+/** Sets what statement `s` gives its material; a malformed or unknown one is a warning. */
+function readStatement(s: Statement): void {
+  const { m, key, keyword, line, warnings } = s;
+  switch (key) {
+    case 'ka': case 'kd': case 'ks': {
+      const v = numbers(s, 1, 3);
+      if (v === null) break;
+      const rgb: Rgb = v.length === 3 ? [v[0], v[1], v[2]] : [v[0], v[0], v[0]];
+      if (v.length === 2) warnings.add(line, `${shown(keyword)} with 2 values; read as grey ${v[0]}`);
+      if (key === 'ka') m.ambient = rgb;
+      else if (key === 'kd') m.diffuse = rgb;
+      else m.specular = rgb;
+      break;
+    }
+    case 'ns': {
+      const v = numbers(s, 1, 1);
+      if (v) m.shininess = clamped(s, v[0], 0, Infinity, 'Ns');
+      break;
+    }
+    case 'd': {
+      const v = numbers(s, 1, 1);
+      if (v) {
+        m.opacity = clamped(s, v[0], 0, 1, 'd');
+        s.fromD.add(m);
+      }
+      break;
+    }
+    case 'tr': {
+      // Some exporters write Tr meaning what d means; d is the standard, so it wins.
+      const v = numbers(s, 1, 1);
+      if (v && !s.fromD.has(m)) m.opacity = 1 - clamped(s, v[0], 0, 1, 'Tr');
+      break;
+    }
+    case 'ni': {
+      const v = numbers(s, 1, 1);
+      if (v) m.ior = clamped(s, v[0], 1, Infinity, 'Ni (ior)');
+      break;
+    }
+    case 'illum': {
+      const v = numbers(s, 1, 1);
+      if (v) m.illum = v[0];
+      break;
+    }
+    case 'map_kd': case 'map_ka': {
+      const map = readMapStatement(s.rest, (message) => warnings.add(line, `${keyword}: ${message}`));
+      if (map && key === 'map_kd') m.diffuseMap = map;
+      else if (map) m.ambientMap = map;
+      break;
+    }
+    default:
+      if (!KNOWN_UNUSED.has(key)) warnings.addOncePerKeyword(keyword.slice(0, 64), line, `unknown statement ${shown(keyword)}; ignored`);
+  }
+}
+
+/** The statement's min..max numbers, or null (with a warning) when it has not that many. */
+function numbers(s: Statement, min: number, max: number): number[] | null {
+  const { args } = s;
+  if (args.length < min || args.length > max || !args.every((a) => isNumberToken(a))) {
+    s.warnings.add(s.line, `${shown(s.keyword)} needs ${min === max ? min : `${min} to ${max}`} numbers, got ${shown(s.rest)}; ignored`);
+    return null;
+  }
+  return args.map(Number);
+}
+
+/** `value` within lo..hi, with a warning naming `what` when it had to be moved there. */
+function clamped(s: Statement, value: number, lo: number, hi: number, what: string): number {
+  if (value >= lo && value <= hi) return value;
+  const c = Math.min(hi, Math.max(lo, value));
+  s.warnings.add(s.line, `${what} ${value} is outside ${lo}..${hi === Infinity ? '' : hi}; using ${c}`);
+  return c;
+}
+
+/** Parses MTL bytes (UTF-8 or UTF-16 with a BOM), their content sniffed once. */
 export function parseMtlBytes(bytes: Bytes, options: { url?: string } = {}): MtlResult {
-  if (sniffModel(bytes) === 'binary') throw new LoadError(options.url ?? '', 'binary content, not an MTL file');
-  return parseMtl(decodeText(bytes), options);
+  const sniffed = sniffModel(bytes);
+  if (sniffed === 'binary') throw new LoadError(options.url ?? '', 'binary content, not an MTL file');
+  return parseMtl(decodeText(bytes), { ...options, sniffed });
 }

@@ -3,6 +3,7 @@
 import { LoadError, type LoadErrorDetail } from './load-error';
 import { parseObjBytes, type ObjResult } from './obj';
 import { parseByuModel, type ByuBezierInfo } from './course/byu-model';
+import type { ModelFormat } from './sniff';
 
 export interface ObjJobRequest {
   id: number;
@@ -10,6 +11,8 @@ export interface ObjJobRequest {
   bytes: ArrayBuffer;
   /** Absent: OBJ. */
   format?: 'obj' | 'byu';
+  /** The content's sniffModel, as the page sniffed it (not sniffed again here). */
+  sniffed?: ModelFormat;
 }
 
 export type ObjJobResponse =
@@ -18,8 +21,9 @@ export type ObjJobResponse =
 
 export function runObjJob(request: ObjJobRequest): { response: ObjJobResponse; transfer: ArrayBuffer[] } {
   try {
-    const byu = request.format === 'byu' ? parseByuModel(request.bytes, request.url) : null;
-    const result = byu ? byu.obj : parseObjBytes(request.bytes, { url: request.url });
+    const { url, sniffed } = request;
+    const byu = request.format === 'byu' ? parseByuModel(request.bytes, url, sniffed) : null;
+    const result = byu ? byu.obj : parseObjBytes(request.bytes, { url, sniffed });
     const arrays = [result.positions, result.normals, result.uvs, result.colors, result.indices];
     const transfer = arrays.flatMap((a) => (a ? [a.buffer as ArrayBuffer] : []));
     return { response: { id: request.id, ok: true, result, bezier: byu?.bezier ?? null }, transfer };

@@ -5,13 +5,15 @@ import { LoadError } from './load-error';
 import { buildMesh } from './obj/build-mesh';
 import { readObj } from './obj/reader';
 import type { ObjResult } from './obj/types';
-import { sniffModel } from './sniff';
+import { sniffModel, type ModelFormat } from './sniff';
 
 export type { Bounds, DrawGroup, ObjResult } from './obj/types';
 
 export interface ObjOptions {
   /** Named in warnings and errors. */
   url?: string;
+  /** The content's sniffModel, if the caller has it (a load sniffs once). */
+  sniffed?: ModelFormat;
 }
 
 /**
@@ -20,7 +22,7 @@ export interface ObjOptions {
  */
 export function parseObj(text: string, options: ObjOptions = {}): ObjResult {
   const url = options.url ?? '';
-  rejectNonObj(text, url);
+  rejectNonObj(text, url, options.sniffed ?? sniffModel(text));
   const raw = readObj(text);
   if (raw.triangles.length === 0) {
     const dropped = raw.droppedFaces;
@@ -34,15 +36,14 @@ export function parseObj(text: string, options: ObjOptions = {}): ObjResult {
 /** Parses OBJ bytes: UTF-8 with or without a BOM, UTF-16 LE/BE with a BOM. */
 export function parseObjBytes(bytes: Bytes, options: ObjOptions = {}): ObjResult {
   const url = options.url ?? '';
-  const format = sniffModel(bytes);
-  if (format === 'binary') throw new LoadError(url, 'binary content, not an OBJ file');
-  return parseObj(decodeText(bytes), options);
+  const sniffed = options.sniffed ?? sniffModel(bytes);
+  if (sniffed === 'binary') throw new LoadError(url, 'binary content, not an OBJ file');
+  return parseObj(decodeText(bytes), { ...options, sniffed });
 }
 
 export { normalizeObj } from './obj-normalize';
 
-function rejectNonObj(text: string, url: string): void {
-  const format = sniffModel(text);
+function rejectNonObj(text: string, url: string, format: ModelFormat): void {
   if (format === 'html') throw new LoadError(url, 'an HTML page (or other markup), not an OBJ file', lineOfFirstContent(text));
   if (format === 'binary') throw new LoadError(url, 'binary content, not an OBJ file');
   if (format === 'byu-mesh' || format === 'byu-bezier') throw new LoadError(url, 'a .byu model, not an OBJ file', lineOfFirstContent(text));

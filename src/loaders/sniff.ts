@@ -11,6 +11,10 @@ const OBJ_KEYWORDS = new Set([
   'v', 'vt', 'vn', 'vp', 'f', 'fo', 'l', 'p', 'o', 'g', 's', 'usemtl', 'mtllib', 'cstype', 'deg', 'curv', 'surf',
 ]);
 
+/**
+ * The format of a model file's content. A load sniffs once and hands the result on to the
+ * parsers (their `sniffed` option), which sniff again only when called without it.
+ */
 export function sniffModel(input: string | Bytes): ModelFormat {
   const sample = typeof input === 'string' ? input.slice(0, SAMPLE) : decodeText(input, SAMPLE);
   const text = sample.charCodeAt(0) === 0xfeff ? sample.slice(1) : sample;

@@ -1,13 +1,15 @@
 // Flyby camera pose → forward vector, view and projection matrices (float64, SPEC §3, §10).
 // Shared by the reference (reference/view-camera.ts: the view basis, the projections' scale,
-// orthoHalfHeight; sample-tracer.ts: viewerSide) and both renderers (render/frame-setup.ts): tied
+// orthoHalfHeight; sample-tracer.ts: viewerSide) and both renderers (frame/frame-setup.ts): tied
 // down by tests/unit/camera.test.ts and orthographic.test.ts with values worked out by hand
 // (forward vectors, the fov's edge at NDC ±1, near and far at ∓1, no roll, orthographic sizes),
 // and reference-pixels.test.ts casts its camera rays by hand.
 import { mat4 } from 'gl-matrix';
 import type { ReadonlyVec3 } from 'gl-matrix';
 import { signedDistance, type Plane } from './mirror';
-import { CAMERA } from '../scene/default-scene';
+
+/** Near and far planes of every projection (SPEC §3); scene/default-scene.ts re-exports them. */
+export const CAMERA = { near: 0.1, far: 100 } as const;
 
 export const PITCH_LIMIT = 89.9;
 const DEG = Math.PI / 180;
@@ -24,6 +26,15 @@ export interface CameraPose {
 
 export function clampPitch(pitch: number): number {
   return Math.max(-PITCH_LIMIT, Math.min(PITCH_LIMIT, pitch));
+}
+
+/**
+ * Degrees wrapped into [−180, 180): 180 becomes −180. The one yaw convention (the
+ * camera-rotation attribute, the flyby, the orbit), so huge values keep their precision and a
+ * pose read back is the pose written.
+ */
+export function wrapYaw(yaw: number): number {
+  return ((((yaw + 180) % 360) + 360) % 360) - 180;
 }
 
 /** out = (cos p·cos y, sin p, cos p·sin y), angles in degrees. */
@@ -46,6 +57,15 @@ export function rotationOnlyView<T extends Float64Array | number[]>(
 ): T {
   forwardFromYawPitch(scratch, yaw, pitch);
   return mat4.lookAt(out as mat4, ORIGIN, scratch, UP) as T;
+}
+
+/**
+ * tan(fov/2) of a vertical field of view `fovDeg` in degrees: half the view's height at unit
+ * depth. The one place it is written: the orthographic size, the size of things on screen (level
+ * of detail) and the orbit's pan all read it.
+ */
+export function tanHalfFov(fovDeg: number): number {
+  return Math.tan((fovDeg * DEG) / 2);
 }
 
 /** out = perspective projection, OpenGL clip depth (−1..1). */
@@ -85,7 +105,7 @@ export function orthoHalfHeight(state: OrthoView, glassCenter: ReadonlyVec3 | nu
   const e = state.cameraPosition;
   const depth = (point[0] - e[0]) * Math.cos(p) * Math.cos(y) + (point[1] - e[1]) * Math.sin(p)
     + (point[2] - e[2]) * Math.cos(p) * Math.sin(y);
-  return Math.max(depth, MIN_ORTHO_DEPTH) * Math.tan((state.fov * DEG) / 2);
+  return Math.max(depth, MIN_ORTHO_DEPTH) * tanHalfFov(state.fov);
 }
 
 /** out = orthographic projection of half-height `halfHeight` (width by `aspect`), OpenGL clip depth. */

@@ -1,6 +1,6 @@
 // Reflection across a plane: points, directions and the reflection matrix (float64).
 // Shared by the reference (reference/ray.ts, clip.ts, sample-tracer.ts) and both renderers
-// (render/frame-setup.ts, software/software-renderer.ts): tied down by tests/unit/mirror.test.ts's
+// (frame/frame-setup.ts, software/software-renderer.ts): tied down by tests/unit/mirror.test.ts's
 // reflections across z = 0 and oblique planes worked out by hand.
 import type { ReadonlyVec3 } from 'gl-matrix';
 
@@ -8,11 +8,24 @@ import type { ReadonlyVec3 } from 'gl-matrix';
 export type Plane = readonly [number, number, number, number] | Float64Array;
 
 type Out3 = Float64Array | Float32Array | number[];
+type Out4 = Float64Array | Float32Array | number[];
 type Out16 = Float64Array | Float32Array | number[];
 
 /** Signed distance of a point from the plane (positive on the side n points to). */
 export function signedDistance(plane: Plane, p: ReadonlyVec3): number {
   return plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3];
+}
+
+/**
+ * out = sign·(n, signedDistance(plane, eye)): the plane as a function of points relative to
+ * `eye`, out·(rel, 1) = sign·signedDistance(plane, eye + rel), kept where ≥ 0 by a clip.
+ */
+export function eyeRelativePlane<T extends Out4>(out: T, plane: Plane, eye: ReadonlyVec3, sign: number): T {
+  out[0] = sign * plane[0];
+  out[1] = sign * plane[1];
+  out[2] = sign * plane[2];
+  out[3] = sign * signedDistance(plane, eye);
+  return out;
 }
 
 /** out = p mirrored across the plane. `out` may alias `p`. */

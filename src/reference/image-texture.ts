@@ -1,12 +1,6 @@
 // A material's texture as the reference samples it: the procedural grey, or an image's R, G and B.
 import { TextureSampler } from './texture-sampler';
-
-/** Decoded pixels as a canvas or an image decoder gives them: RGBA8, top row first. */
-export interface DecodedImage {
-  width: number;
-  height: number;
-  data: Uint8Array | Uint8ClampedArray;
-}
+import type { DecodedImage } from '../scene/decoded-image';
 
 /** One sampler (grey: R = G = B) or three (R, G, B), all of one size. */
 export interface ChannelTexture {

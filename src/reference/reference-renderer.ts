@@ -1,7 +1,7 @@
 // The float64 CPU reference image of a frame: stratified samples per pixel, box-filtered, plus regions.
 import { defaultScene } from '../scene/default-scene';
 import type { Scene } from '../scene/scene';
-import type { DecodedImage } from './image-texture';
+import type { DecodedImage } from '../scene/decoded-image';
 import { regionMap, regionOfCodes } from './regions';
 import type { ReferenceState, ViewState } from './reference-state';
 import { SampleTracer, type TextureFilter } from './sample-tracer';

@@ -1,5 +1,5 @@
 // What the reference renderer reads from a frame: the image-defining part of the GPU's FrameState.
-import type { FrameState } from '../render/types';
+import type { FrameState } from '../frame/types';
 
 /**
  * The view of a scene: canvas size, clock, glass optics, camera and which view to draw. Quality

@@ -5,7 +5,7 @@ import type { Scene } from '../scene/scene';
 import { setClipRange, visible } from './clip';
 import { courseSceneRange } from '../scene/course-depth';
 import { CAMERA } from '../scene/default-scene';
-import type { DecodedImage } from './image-texture';
+import type { DecodedImage } from '../scene/decoded-image';
 import { ViewCamera } from './view-camera';
 import { Ray } from './ray';
 import { RayScene } from './ray-scene';

@@ -1,10 +1,8 @@
 // Per-sample shading in float64: Blinn-Phong for the objects (SPEC §3, §9) and the glass equation (SPEC §4).
 import { fresnel, type FresnelModel } from '../math/fresnel';
-import { GLASS } from '../scene/default-scene';
+import { GLASS_BODY as BODY } from '../scene/default-scene';
 import type { Light, Material } from '../scene/scene';
 import type { SurfaceHit } from './surface-hit';
-
-const BODY = GLASS.tint.map((c) => c * GLASS.darkness);
 
 export const clamp01 = (x: number): number => (x < 0 ? 0 : x > 1 ? 1 : x);
 

@@ -1,7 +1,8 @@
 // The texture value at a hit: which texture, which mapping, and a point sample or its footprint's mean.
-import { cylindricalUV, sphericalUV, triplanarUV, boundsScale } from '../scene/mapping';
+import { cylindricalUV, sphericalUV, triplanarUV, boundsScale, triplanarScale, TRIPLANAR_U, TRIPLANAR_V } from '../scene/mapping';
 import type { Bounds, Material } from '../scene/scene';
-import { imageTexture, type ChannelTexture, type DecodedImage } from './image-texture';
+import { imageTexture, type ChannelTexture } from './image-texture';
+import type { DecodedImage } from '../scene/decoded-image';
 import type { Ray } from './ray';
 import type { SurfaceHit } from './surface-hit';
 import { TextureSampler } from './texture-sampler';
@@ -92,13 +93,13 @@ export class SurfaceTexture {
       case 'triplanar': {
         const { uvs, weights: w, part } = this;
         triplanarUV(w, uvs, hit.q, hit.nq, bounds);
-        const s = 1 / (2 * boundsScale(bounds));
+        const s = triplanarScale(bounds);
         out[0] = out[1] = out[2] = 0;
         // Projection i reads (q[A[i]], q[B[i]]): its gradients are the constant axes e_A/2r, e_B/2r.
         for (let i = 0; i < 3; i++) {
           if (!(w[i] > 0)) continue;
           g1.fill(0); g2.fill(0);
-          g1[TRI_U[i]] = s; g2[TRI_V[i]] = s;
+          g1[TRIPLANAR_U[i]] = s; g2[TRIPLANAR_V[i]] = s;
           frame.gradientToWorld(gu, g1);
           frame.gradientToWorld(gv, g2);
           this.sample(tex, uvs[2 * i], uvs[2 * i + 1], gu, gv, hit, ray, part);
@@ -141,10 +142,6 @@ export class SurfaceTexture {
     return out;
   }
 }
-
-/** Triplanar projection i: the object axes its u and v run along (see triplanarUV). */
-const TRI_U = [2, 0, 0];
-const TRI_V = [1, 2, 1];
 
 function bilinearInto(channels: readonly TextureSampler[], u: number, v: number, out: Float64Array): Float64Array {
   if (channels.length === 1) {

@@ -1,5 +1,6 @@
-// The mesh each scene object draws with this frame: built-ins from their generators, spheres at
-// the tessellation their size on screen needs, loaded meshes as given, per face when flat.
+// The GL mesh each scene object draws with this frame, as frame/mesh-choice.ts chooses it:
+// built-ins from their generators, spheres at the tessellation their size on screen needs, loaded
+// meshes as given, per face when flat.
 // Objects of the same content share one mesh, across every renderer on the context
 // (SharedResources, reference-counted); nothing is built or looked up by name in a frame where
 // no object changed.
@@ -7,16 +8,14 @@ import { Mesh } from './gl/mesh';
 import type { ResourceCounter } from './gl/resource-counter';
 import type { SharedResources } from './gl/shared-resources';
 import { SphereLod } from './sphere-lod';
-import { boxMesh } from '../scene/geometry/box';
-import { gaussianMesh } from '../scene/geometry/gaussian';
 import { flatMesh } from '../scene/geometry/flat';
 import { clusterMesh, meshExtent } from '../scene/geometry/cluster';
 import { GAUSSIAN_EXTENT } from '../scene/geometry/gaussian';
-import { REFLECTION_MAX_FRACTION, reflectionGrid } from './reflection-lod';
-import type { MeshData } from '../scene/geometry/mesh-data';
+import { REFLECTION_MAX_FRACTION, reflectionGrid } from '../frame/reflection-lod';
 import type { Geometry } from '../scene/scene';
-import type { ObjectMatrices } from './frame-setup';
-import type { FrameState } from './types';
+import type { ObjectMatrices } from '../frame/frame-setup';
+import { buildMesh, meshKey } from '../frame/mesh-choice';
+import type { FrameState } from '../frame/types';
 
 interface Slot {
   geometry: Geometry | null;
@@ -48,25 +47,6 @@ function maxScale(m: Float64Array): number {
   return Math.sqrt(Math.max(
     m[0] * m[0] + m[1] * m[1] + m[2] * m[2], m[4] * m[4] + m[5] * m[5] + m[6] * m[6], m[8] * m[8] + m[9] * m[9] + m[10] * m[10],
   ));
-}
-
-function contentKey(g: Geometry, flat: boolean): string {
-  const f = flat ? ':flat' : '';
-  switch (g.kind) {
-    case 'box': return `box:${g.size}${f}`;
-    case 'gaussian': return `gaussian:${g.resolution}${f}`;
-    case 'mesh': return `mesh:${g.key}${f}`;
-    default: return `sphere:${g.radius}${f}`;
-  }
-}
-
-function build(g: Geometry): MeshData {
-  switch (g.kind) {
-    case 'box': return boxMesh(g.size);
-    case 'gaussian': return gaussianMesh(g.resolution);
-    case 'mesh': return g.data;
-    default: throw new Error(`glass-plane-scene: no static mesh for geometry "${g.kind}"`);
-  }
 }
 
 export class ObjectMeshes {
@@ -109,11 +89,11 @@ export class ObjectMeshes {
     if (slot.geometry === g && slot.flat === flat && slot.mesh) return slot.mesh;
     slot.lod?.dispose();
     slot.lod = null;
-    const key = contentKey(g, flat);
+    const key = flat ? `${meshKey(g)}:flat` : meshKey(g);
     if (key !== slot.key) {
       this.release(slot);
       slot.mesh = this.shared.mesh(key, (counter) => {
-        const data = build(g);
+        const data = buildMesh(g);
         return new Mesh(this.gl, counter, flat ? flatMesh(data) : data);
       });
       slot.key = key;
@@ -140,7 +120,7 @@ export class ObjectMeshes {
       const key = `${slot.key}:cluster${grid}`;
       const flat = slot.flat;
       const mesh = this.shared.mesh(key, (counter) => {
-        const data = clusterMesh(build(g), grid);
+        const data = clusterMesh(buildMesh(g), grid);
         return new Mesh(this.gl, counter, flat ? flatMesh(data) : data);
       });
       entry = { key, mesh };

@@ -7,7 +7,7 @@ import blitVert from '../../shaders/blit.vert?raw';
 import blitFrag from '../../shaders/blit.frag?raw';
 import lighting from '../../shaders/lighting.glsl?raw';
 import type { FresnelModel } from '../math/fresnel';
-import type { Shading } from './types';
+import type { Shading } from '../frame/types';
 import { MAPPINGS, MAX_LIGHTS, type Mapping } from '../scene/scene';
 import { Program, ShaderError } from './gl/program';
 import type { SharedResources } from './gl/shared-resources';

@@ -4,25 +4,29 @@ import { Mesh } from './gl/mesh';
 import { RenderTarget } from './gl/render-target';
 import { MultisampleTarget } from './gl/multisample-target';
 import { ObjectMeshes } from './object-meshes';
-import { glassScreenRect, type ScreenRect } from './glass-bounds';
-import { reflectionScissor, reflectionTargetSide } from './reflection-scissor';
-import { findNonFinite } from './finite-check';
+import { glassScreenRect, type ScreenRect } from '../frame/glass-bounds';
+import { reflectionScissor, reflectionTargetSide } from '../frame/reflection-scissor';
+import { findNonFinite } from '../frame/finite-check';
+import { glassSkipReason, PASSES, passesFor } from '../frame/pass-reports';
 import { maxTargetSize } from './gl/limits';
 import { ResourceCounter } from './gl/resource-counter';
 import { Texture } from './gl/texture';
 import { TextureCache } from './texture-cache';
 import { SharedResources } from './gl/shared-resources';
-import { FrameSetup } from './frame-setup';
+import { FrameSetup } from '../frame/frame-setup';
 import { ProgramCache } from './programs';
-import { beginTarget, type PassContext, type Viewport } from './passes/pass-context';
+import { beginTarget, type PassContext } from './passes/pass-context';
 import { reflectionPass } from './passes/reflection-pass';
 import { scenePass } from './passes/scene-pass';
 import { glassPass } from './passes/glass-pass';
 import { glassMesh } from '../scene/geometry/rectangle';
-import { defaultScene } from '../scene/default-scene';
+import { DefaultSceneCache } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
 import type { Scene } from '../scene/scene';
-import type { FrameReport, FrameState, PassName, PassReport, RenderStats, RenderView } from './types';
+import type { FrameReport, FrameState, RenderStats, Viewport } from '../frame/types';
+
+/** The element's software frames report their passes the same way (kept here for its import). */
+export { passesFor };
 
 export interface RendererOptions {
   /** Check gl.getError() after every frame and report through `onError` (tests and debugging). */
@@ -39,51 +43,6 @@ export interface Pixels {
 export type ReadbackSource = 'screen' | 'reflection' | 'scene' | 'final';
 
 const BLACK = [0, 0, 0] as const;
-/** Below this projected area (px²) the glass covers no pixel centre worth a pass. */
-const MIN_GLASS_AREA = 0.5;
-/** A perspective eye this close to the glass plane sees it edge-on. */
-const EDGE_ON_DISTANCE = 1e-3;
-/**
- * An orthographic camera sees the glass edge-on when its view direction lies in the plane,
- * wherever its eye is: |forward·n| below this (the angular counterpart of EDGE_ON_DISTANCE,
- * an eye 1e-3 off the plane per unit of depth).
- */
-const EDGE_ON_COS = 1e-3;
-const PASSES: readonly PassName[] = ['reflection', 'scene', 'glass'];
-
-/** Why each pass does not run in a debug view. */
-const SKIPPED_BY_VIEW: Record<RenderView, Partial<Record<PassName, string>>> = {
-  final: {},
-  passes: {},
-  reflection: { scene: 'debug-view reflection', glass: 'debug-view reflection' },
-  scene: { reflection: 'debug-view scene', glass: 'debug-view scene' },
-  fresnel: { reflection: 'debug-view fresnel (F needs no reflection)' },
-};
-
-type PassReports = Readonly<Record<PassName, Readonly<PassReport>>>;
-
-/** Frozen reports of the three passes given why each was skipped (absent: it ran). */
-function passReports(skipped: Partial<Record<PassName, string>>): PassReports {
-  const one = (p: PassName): Readonly<PassReport> =>
-    Object.freeze(skipped[p] === undefined ? { ran: true } : { ran: false, reason: skipped[p] });
-  return Object.freeze({ reflection: one('reflection'), scene: one('scene'), glass: one('glass') });
-}
-
-// Every frame's passes are one of these few shared, frozen records: a frame report kept by a
-// listener never changes, and none is built per frame.
-const PASSES_BY_VIEW = Object.fromEntries(
-  Object.entries(SKIPPED_BY_VIEW).map(([view, skipped]) => [view, passReports(skipped)]),
-) as Record<RenderView, PassReports>;
-/** The final view with the glass (and so the reflection) skipped, by reason; filled on first use. */
-const GLASS_SKIPPED = new Map<string, PassReports>();
-
-/** The shared frozen pass reports of `view`, with the glass skipped for `glassSkip` in the final view. */
-export function passesFor(view: RenderView, glassSkip?: string): PassReports {
-  if (view !== 'final' || glassSkip === undefined) return PASSES_BY_VIEW[view];
-  let passes = GLASS_SKIPPED.get(glassSkip);
-  if (!passes) GLASS_SKIPPED.set(glassSkip, (passes = passReports({ reflection: glassSkip, glass: glassSkip })));
-  return passes;
-}
 
 function setViewport(out: Viewport, x: number, y: number, width: number, height: number): Viewport {
   out.x = x;
@@ -101,7 +60,7 @@ export class Renderer {
   /** The glass frame `glassMesh` was built for. */
   private glassMeshFrame: GlassFrame | null = null;
   /** SPEC §3's scene for callers that pass none (the bench, tests), rebuilt only when it changes. */
-  private defaultScene: { cubeDistance: number; spin: number; scene: Scene } | null = null;
+  private readonly defaultScene = new DefaultSceneCache();
   /** Programs, the procedural texture and meshes, shared with every renderer on this context. */
   private readonly shared: SharedResources;
   private readonly texture: Texture;
@@ -121,7 +80,7 @@ export class Renderer {
   private readonly ctx: PassContext;
   private readonly report: FrameReport = {
     frame: 0, time: 0, width: 0, height: 0, drawCalls: 0,
-    passes: PASSES_BY_VIEW.final,
+    passes: passesFor('final'),
   };
   /** Why the final view needs neither reflection nor glass this frame, if it does not. */
   private glassSkipReason: string | undefined;
@@ -168,7 +127,7 @@ export class Renderer {
 
   /** Draws one frame of `state.view` to the canvas and returns its report (reused object; its `passes` are frozen and shared). */
   render(state: FrameState, scene?: Scene): FrameReport {
-    this.ctx.scene = scene ?? this.defaultSceneFor(state);
+    this.ctx.scene = scene ?? this.defaultScene.get(state.cubeDistance, state.spin);
     const drawCalls = this.draw(state, null);
     const r = this.report;
     this.counts.frames++;
@@ -192,7 +151,7 @@ export class Renderer {
    * buffer is not preserved between frames); the others draw one pass off screen.
    */
   read(source: ReadbackSource, state: FrameState, scene?: Scene): Pixels {
-    this.ctx.scene = scene ?? this.defaultSceneFor(state);
+    this.ctx.scene = scene ?? this.defaultScene.get(state.cubeDistance, state.spin);
     const gl = this.gl;
     if (source === 'screen') {
       this.draw(state, null);
@@ -264,17 +223,8 @@ export class Renderer {
       this.glassMeshFrame = this.setup.glass;
     }
     if (this.options.checks) this.checkFinite(state);
-    const setup = this.setup;
-    const edgeOn = setup.orthographic ? Math.abs(setup.viewDot) < EDGE_ON_COS : Math.abs(setup.eyeDistance) < EDGE_ON_DISTANCE;
     const rect = glassScreenRect(this.setup.viewProjection, this.setup.eye, state.width, state.height, this.glassRect, this.setup.glass.corners);
-    this.glassSkipReason = !this.setup.hasGlass ? 'no glass'
-      : !this.optimize ? undefined
-      // An eye in the plane (perspective), or a view direction in it (orthographic), sees the
-      // glass as a line, which can round to an empty rectangle: that is edge-on, not off screen.
-      : rect.area < MIN_GLASS_AREA && edgeOn ? 'glass edge-on'
-      : rect.x1 <= rect.x0 || rect.y1 <= rect.y0 ? 'glass off screen'
-      : rect.area < MIN_GLASS_AREA ? 'glass too small'
-      : undefined;
+    this.glassSkipReason = glassSkipReason(this.setup, rect, this.optimize);
     this.ctx.cull = this.optimize;
     // Clamped like the canvas: the glass reads it with normalised coordinates, so a smaller
     // target still lines up.
@@ -291,13 +241,6 @@ export class Renderer {
     const scale = state.reflectionScale;
     const max = this.maxTargetSize;
     this.reflection.setSize(reflectionTargetSide(state.width, scale, max), reflectionTargetSide(state.height, scale, max));
-  }
-
-  private defaultSceneFor(state: FrameState): Scene {
-    const d = this.defaultScene;
-    if (d && Object.is(d.cubeDistance, state.cubeDistance) && Object.is(d.spin, state.spin)) return d.scene;
-    this.defaultScene = { cubeDistance: state.cubeDistance, spin: state.spin, scene: defaultScene(state.cubeDistance, state.spin) };
-    return this.defaultScene.scene;
   }
 
   private samplesFor(state: FrameState): number {

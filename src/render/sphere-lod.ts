@@ -1,13 +1,12 @@
-// A sphere's mesh at the tessellation asked for, or at 'auto': enough segments that the
-// silhouette error r(1 − cos(π/N)) stays under a quarter pixel at its current size on screen.
+// A sphere's GL mesh at the segments frame/mesh-choice.ts chooses (the tessellation asked for,
+// or at 'auto' enough that the silhouette error stays under a quarter pixel), rebuilt only when
+// they change.
 import { Mesh } from './gl/mesh';
 import type { ResourceCounter } from './gl/resource-counter';
-import { segmentsForScreenRadius, sphereMesh } from '../scene/geometry/sphere';
+import { sphereMesh } from '../scene/geometry/sphere';
 import { flatMesh } from '../scene/geometry/flat';
-import type { FrameState } from './types';
-import { AUTO_SILHOUETTE_ERROR_PX, sphereScreenRadius } from './sphere-screen';
-
-export { AUTO_SILHOUETTE_ERROR_PX, sphereScreenRadius } from './sphere-screen';
+import type { FrameState } from '../frame/types';
+import { sphereSegments } from '../frame/mesh-choice';
 
 export class SphereLod {
   mesh: Mesh | null = null;
@@ -23,16 +22,7 @@ export class SphereLod {
    * `centre`, `worldRadius` (`orthoHalfHeight` as for sphereScreenRadius); rebuilt only when the segment count, radius or shading must change.
    */
   update(state: FrameState, centre: ArrayLike<number>, worldRadius: number, radius: number, orthoHalfHeight = 0): Mesh {
-    let wanted: number;
-    if (state.tessellation === 'auto') {
-      const screen = sphereScreenRadius(state, centre, worldRadius, orthoHalfHeight);
-      wanted = segmentsForScreenRadius(Math.min(screen, 1e6), AUTO_SILHOUETTE_ERROR_PX);
-      // Hysteresis: keep a finer mesh until it is twice what is needed, so a camera moving
-      // back and forth does not rebuild the mesh every frame.
-      if (this.mesh && this.segments >= wanted && this.segments <= 2 * wanted) wanted = this.segments;
-    } else {
-      wanted = state.tessellation;
-    }
+    const wanted = sphereSegments(state, centre, worldRadius, orthoHalfHeight, 1, this.mesh ? this.segments : 0);
     const flat = state.shading === 'flat';
     if (!this.mesh || wanted !== this.segments || flat !== this.flat || radius !== this.radius) {
       this.mesh?.dispose();

@@ -14,6 +14,12 @@ export const GLASS = {
   darkness: 0.35,
 } as const;
 
+/**
+ * tint ⊙ darkness: the glass body's colour before the texture (D = tex ⊙ GLASS_BODY), for all
+ * three renderers; reference-pixels.test.ts writes it out by hand.
+ */
+export const GLASS_BODY: readonly number[] = GLASS.tint.map((c) => c * GLASS.darkness);
+
 export const CUBE = {
   edge: 1,
   /** Centre x, y; z is `cube-distance`. */
@@ -40,7 +46,8 @@ export const LIGHT = {
 
 export const MATERIAL = { ks: 0.5, shininess: 32 } as const;
 
-export const CAMERA = { near: 0.1, far: 100 } as const;
+/** Near and far (SPEC §3): defined with the camera maths, which needs them (math imports no scene). */
+export { CAMERA } from '../math/camera';
 
 export const TEXTURE_SIZE = 512;
 
@@ -97,4 +104,19 @@ export function defaultScene(cubeDistance: number, spin: number): Scene {
     lights: [DEFAULT_LIGHT],
     background: BACKGROUND,
   };
+}
+
+/**
+ * SPEC §3's scene for renderers called without one (the bench, tests): the same value while the
+ * cube distance and spin stay, a new one when either changes.
+ */
+export class DefaultSceneCache {
+  private last: { cubeDistance: number; spin: number; scene: Scene } | null = null;
+
+  get(cubeDistance: number, spin: number): Scene {
+    const d = this.last;
+    if (d && Object.is(d.cubeDistance, cubeDistance) && Object.is(d.spin, spin)) return d.scene;
+    this.last = { cubeDistance, spin, scene: defaultScene(cubeDistance, spin) };
+    return this.last.scene;
+  }
 }

@@ -1,5 +1,5 @@
 // The glass rectangle's frame: its plane and the axes its width and height run along (SPEC §2).
-// Shared by the reference (reference/ray-scene.ts) and both renderers (render/frame-setup.ts):
+// Shared by the reference (reference/ray-scene.ts) and both renderers (frame/frame-setup.ts):
 // tied down by tests/unit/glass-frame.test.ts's frames worked out by hand (oblique and off the
 // origin, floor, ceiling) and geometry.test.ts's glass mesh.
 import type { Glass, Vec3 } from './scene';

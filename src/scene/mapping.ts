@@ -1,9 +1,9 @@
 // Texture-coordinate mappings of seed 001, written once: object-space position and normal in, UV out.
 // The reference renderer calls these; the GPU shader mirrors them formula for formula.
 // Shared by the reference (reference/surface-texture.ts) and the software renderer
-// (software/object-shader.ts: cylindrical, spherical, boundsScale and TRIPLANAR_SHARPNESS; its
-// triplanar blend is its own): tied down by tests/unit/mapping.test.ts's hand-computed UVs and
-// weights (k = 4 written out there, as shaders/standard.frag has it).
+// (software/object-shader.ts), the triplanar projections' axes and scale included (both take
+// their texture derivatives from them): tied down by tests/unit/mapping.test.ts's hand-computed
+// UVs and weights (k = 4 written out there, as shaders/standard.frag has it).
 import type { Bounds } from './scene';
 
 type V3 = ArrayLike<number>;
@@ -19,6 +19,16 @@ const TWO_PI = 2 * Math.PI;
 
 /** The bounds' radius, or 1 for an empty/degenerate one, so the scales below stay finite. */
 export const boundsScale = (bounds: Bounds): number => (bounds.radius > 0 ? bounds.radius : 1);
+
+/** Object units to the triplanar projections' UV units, 1/2r: also their UVs' constant derivatives. */
+export const triplanarScale = (bounds: Bounds): number => 1 / (2 * boundsScale(bounds));
+
+/**
+ * The object axes triplanar projection i reads as u and v: along X (z, y), along Y (x, z),
+ * along Z (x, y). Projection i's u is ½ + (q[TRIPLANAR_U[i]] − c)·s, its v likewise.
+ */
+export const TRIPLANAR_U: readonly number[] = [2, 0, 0];
+export const TRIPLANAR_V: readonly number[] = [1, 2, 1];
 
 /**
  * Cylindrical, about the axis through the bounds' centre c parallel to object +Y (r = the
@@ -58,14 +68,14 @@ export function sphericalUV(out: Out, q: V3, bounds: Bounds): Out {
  *   along X (uvs[0], uvs[1]) = (½ + (z − c.z)/2r, ½ + (y − c.y)/2r)
  *   along Y (uvs[2], uvs[3]) = (½ + (x − c.x)/2r, ½ + (z − c.z)/2r)
  *   along Z (uvs[4], uvs[5]) = (½ + (x − c.x)/2r, ½ + (y − c.y)/2r)
- * texture = Σ w_i · tex(uv_i). No sign flips per side: the +X and −X faces show the same,
- * mirrored-looking image, which a checker does not reveal and keeps the formula short.
+ * (the axes are TRIPLANAR_U, TRIPLANAR_V), texture = Σ w_i · tex(uv_i). No sign flips per side:
+ * the +X and −X faces show the same, mirrored-looking image, which a checker does not reveal and
+ * keeps the formula short.
  * A zero normal gives equal weights.
  */
 export function triplanarUV(weights: Out, uvs: Out, q: V3, n: V3, bounds: Bounds): void {
   const c = bounds.center;
-  const s = 1 / (2 * boundsScale(bounds));
-  const x = 0.5 + (q[0] - c[0]) * s, y = 0.5 + (q[1] - c[1]) * s, z = 0.5 + (q[2] - c[2]) * s;
+  const s = triplanarScale(bounds);
   const k = TRIPLANAR_SHARPNESS;
   const wx = Math.abs(n[0]) ** k, wy = Math.abs(n[1]) ** k, wz = Math.abs(n[2]) ** k;
   const sum = wx + wy + wz;
@@ -74,7 +84,9 @@ export function triplanarUV(weights: Out, uvs: Out, q: V3, n: V3, bounds: Bounds
   } else {
     weights[0] = weights[1] = weights[2] = 1 / 3;
   }
-  uvs[0] = z; uvs[1] = y;
-  uvs[2] = x; uvs[3] = z;
-  uvs[4] = x; uvs[5] = y;
+  for (let i = 0; i < 3; i++) {
+    const a = TRIPLANAR_U[i], b = TRIPLANAR_V[i];
+    uvs[2 * i] = 0.5 + (q[a] - c[a]) * s;
+    uvs[2 * i + 1] = 0.5 + (q[b] - c[b]) * s;
+  }
 }

@@ -1,12 +1,11 @@
 // The glass rectangle on the CPU (shaders/glass.vert + glass.frag): its footprint (which pixels
 // the reflection pass must fill), the glass equation of SPEC §4 over what is behind it, or F.
 import { fresnel, type FresnelModel } from '../math/fresnel';
-import { GLASS } from '../scene/default-scene';
+import { GLASS_BODY as BODY } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
 import type { MipTexture } from './mip-texture';
 import { CLIP_DISTANCE, VARYINGS, type FragmentShader, type Rasterizer } from './raster';
 
-const BODY = GLASS.tint.map((c) => c * GLASS.darkness);
 // Varyings: eye-relative position, UV.
 const REL = 0, UV = 3;
 const STRIDE = VARYINGS + 5;

@@ -2,7 +2,7 @@
 // (LINEAR_MIPMAP_LINEAR) with the isotropic LOD of the GL spec, from UV derivatives per pixel.
 import { TEXTURE_SIZE } from '../scene/default-scene';
 import { proceduralTexture } from '../scene/procedural-texture';
-import type { DecodedImage } from '../reference/image-texture';
+import type { DecodedImage } from '../scene/decoded-image';
 
 interface Level {
   width: number;

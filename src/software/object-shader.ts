@@ -2,10 +2,10 @@
 // vertex stage into a clip-space buffer, and per fragment the texture through its mapping,
 // Blinn-Phong per pixel (phong) or interpolated from the vertices (gouraud, flat), the 8-bit
 // clamp, and straight alpha blending for opacity < 1.
-import { cylindricalUV, sphericalUV, boundsScale, TRIPLANAR_SHARPNESS } from '../scene/mapping';
+import { cylindricalUV, sphericalUV, triplanarScale, triplanarUV, TRIPLANAR_U, TRIPLANAR_V } from '../scene/mapping';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import type { Bounds, Material } from '../scene/scene';
-import type { Shading } from '../render/types';
+import type { Shading } from '../frame/types';
 import { blinnPhong, type Lights } from './lighting';
 import type { MipTexture } from './mip-texture';
 import { CLIP_DISTANCE, VARYINGS, type FragmentShader, type Rasterizer } from './raster';
@@ -77,6 +77,12 @@ export class ObjectShader implements FragmentShader {
   private readonly uv0 = new Float64Array(2);
   private readonly uv1 = new Float64Array(2);
   private readonly q = new Float64Array(3);
+  /** ∂q/∂x and ∂q/∂y per pixel; the triplanar normal, weights and three UVs. */
+  private readonly dqx = new Float64Array(3);
+  private readonly dqy = new Float64Array(3);
+  private readonly n = new Float64Array(3);
+  private readonly weights = new Float64Array(3);
+  private readonly uvs = new Float64Array(6);
 
   /** Runs the vertex stage of `d` and rasterizes its triangles with `r`. */
   render(d: ObjectDraw, r: Rasterizer): void {
@@ -210,28 +216,27 @@ export class ObjectShader implements FragmentShader {
     q[1] = b0 * p[a + 1] + b1 * p[b + 1] + b2 * p[c + 1];
     q[2] = b0 * p[a + 2] + b1 * p[b + 2] + b2 * p[c + 2];
     // ∂q/∂x, ∂q/∂y per pixel.
-    const qx0 = x0 * p[a] + x1 * p[b] + x2 * p[c], qx1 = x0 * p[a + 1] + x1 * p[b + 1] + x2 * p[c + 1], qx2 = x0 * p[a + 2] + x1 * p[b + 2] + x2 * p[c + 2];
-    const qy0 = y0 * p[a] + y1 * p[b] + y2 * p[c], qy1 = y0 * p[a + 1] + y1 * p[b + 1] + y2 * p[c + 1], qy2 = y0 * p[a + 2] + y1 * p[b + 2] + y2 * p[c + 2];
+    const dqx = this.dqx, dqy = this.dqy;
+    for (let k = 0; k < 3; k++) {
+      dqx[k] = x0 * p[a + k] + x1 * p[b + k] + x2 * p[c + k];
+      dqy[k] = y0 * p[a + k] + y1 * p[b + k] + y2 * p[c + k];
+    }
     const bounds = d.bounds;
     if (mapping === 'triplanar') {
-      const na = i0 + OBJ_N, nb = i1 + OBJ_N, nc = i2 + OBJ_N;
-      let nx = b0 * p[na] + b1 * p[nb] + b2 * p[nc];
-      let ny = b0 * p[na + 1] + b1 * p[nb + 1] + b2 * p[nc + 1];
-      let nz = b0 * p[na + 2] + b1 * p[nb + 2] + b2 * p[nc + 2];
-      const len = Math.sqrt(nx * nx + ny * ny + nz * nz);
-      if (len > 0) { nx = Math.abs(nx / len); ny = Math.abs(ny / len); nz = Math.abs(nz / len); } else { nx = ny = nz = 1; }
-      const k = TRIPLANAR_SHARPNESS;
-      let wx = nx ** k, wy = ny ** k, wz = nz ** k;
-      const sum = wx + wy + wz;
-      wx /= sum; wy /= sum; wz /= sum;
-      const cen = bounds.center, s = 1 / (2 * boundsScale(bounds));
-      const sx = 0.5 + (q[0] - cen[0]) * s, sy = 0.5 + (q[1] - cen[1]) * s, sz = 0.5 + (q[2] - cen[2]) * s;
-      const part = this.part;
+      // mapping.ts's projections and weights; each projection's UV moves by s per unit of its axes.
+      const na = i0 + OBJ_N, nb = i1 + OBJ_N, nc = i2 + OBJ_N, n = this.n;
+      for (let k = 0; k < 3; k++) n[k] = b0 * p[na + k] + b1 * p[nb + k] + b2 * p[nc + k];
+      const w = this.weights, uvs = this.uvs, part = this.part, l = this.lookup;
+      triplanarUV(w, uvs, q, n, bounds);
+      const s = triplanarScale(bounds);
       tex[0] = tex[1] = tex[2] = 0;
-      const l = this.lookup;
-      if (wx > 0) { setLookup(l, sz, sy, qx2 * s, qx1 * s, qy2 * s, qy1 * s); t.sample(l, part); addScaled(tex, part, wx); }
-      if (wy > 0) { setLookup(l, sx, sz, qx0 * s, qx2 * s, qy0 * s, qy2 * s); t.sample(l, part); addScaled(tex, part, wy); }
-      if (wz > 0) { setLookup(l, sx, sy, qx0 * s, qx1 * s, qy0 * s, qy1 * s); t.sample(l, part); addScaled(tex, part, wz); }
+      for (let i = 0; i < 3; i++) {
+        if (!(w[i] > 0)) continue;
+        const u = TRIPLANAR_U[i], v = TRIPLANAR_V[i];
+        setLookup(l, uvs[2 * i], uvs[2 * i + 1], dqx[u] * s, dqx[v] * s, dqy[u] * s, dqy[v] * s);
+        t.sample(l, part);
+        addScaled(tex, part, w[i]);
+      }
       return tex;
     }
     // Cylindrical and spherical: derivatives by one-pixel differences (as dFdx does), with the
@@ -239,10 +244,10 @@ export class ObjectShader implements FragmentShader {
     const map = mapping === 'cylindrical' ? cylindricalUV : sphericalUV;
     const uv = this.uv0, uv1 = this.uv1;
     map(uv, q, bounds);
-    q[0] += qx0; q[1] += qx1; q[2] += qx2;
+    q[0] += dqx[0]; q[1] += dqx[1]; q[2] += dqx[2];
     map(uv1, q, bounds);
     const dudx = wrap(uv1[0] - uv[0]), dvdx = uv1[1] - uv[1];
-    q[0] += qy0 - qx0; q[1] += qy1 - qx1; q[2] += qy2 - qx2;
+    q[0] += dqy[0] - dqx[0]; q[1] += dqy[1] - dqx[1]; q[2] += dqy[2] - dqx[2];
     map(uv1, q, bounds);
     const dudy = wrap(uv1[0] - uv[0]), dvdy = uv1[1] - uv[1];
     setLookup(this.lookup, uv[0], uv[1], dudx, dvdx, dudy, dvdy);

@@ -1,10 +1,10 @@
 // What the element sends the software renderer's worker each frame: the frame state and the scene,
 // with each mesh's arrays and each image's pixels sent once (the worker keeps them by key), not
 // once per frame. Pure data, no DOM.
-import type { FrameState } from '../render/types';
+import type { FrameState } from '../frame/types';
 import type { Scene } from '../scene/scene';
 import type { MeshData } from '../scene/geometry/mesh-data';
-import type { DecodedImage } from '../reference/image-texture';
+import type { DecodedImage } from '../scene/decoded-image';
 
 export interface SoftwareRequest {
   id: number;

@@ -173,7 +173,7 @@ export class Rasterizer {
     for (let i = 1; i + 1 < n; i++) this.triangle(0, i, i + 1, shader);
   }
 
-  /** Edge-function scan of one triangle of the polygon (vertex numbers i, j, k). */
+  /** One triangle of the polygon (vertex numbers i, j, k): culled, ordered to a positive area, boxed, scanned. */
   private triangle(i: number, j: number, k: number, shader: FragmentShader): void {
     const { fx, fy } = this;
     let area = (fx[j] - fx[i]) * (fy[k] - fy[i]) - (fy[j] - fy[i]) * (fx[k] - fx[i]);
@@ -191,7 +191,17 @@ export class Rasterizer {
     const py0 = Math.max(0, Math.ceil((Math.min(y0, y1, y2) - HALF) / SUB));
     const py1 = Math.min(this.height - 1, Math.floor((Math.max(y0, y1, y2) - HALF) / SUB));
     if (px0 > px1 || py0 > py1) return;
+    this.scan(i, j, k, area, px0, px1, py0, py1, shader);
+  }
 
+  /**
+   * The pixels of triangle (i, j, k), ordered so that its edge functions' `area` is positive,
+   * whose centres lie in it (top-left rule) within the box px0..px1 × py0..py1: depth-tested,
+   * their barycentrics (and derivatives) set, and shaded.
+   */
+  private scan(i: number, j: number, k: number, area: number, px0: number, px1: number, py0: number, py1: number, shader: FragmentShader): void {
+    const { fx, fy } = this;
+    const x0 = fx[i], y0 = fy[i], x1 = fx[j], y1 = fy[j], x2 = fx[k], y2 = fy[k];
     // Edge e_v is opposite vertex v: e0 = E(1→2), e1 = E(2→0), e2 = E(0→1); E(a→b)(p) =
     // (bx − ax)(py − ay) − (by − ay)(px − ax), positive inside (area > 0).
     const ax0 = x2 - x1, ay0 = y2 - y1; // edge 1→2

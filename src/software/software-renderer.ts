@@ -1,16 +1,16 @@
 // SPEC §11's CPU renderer: the scene value drawn by the same passes and equations as the GL
 // path (reflection into a second frame buffer, scene, glass), without DOM or GL, so it can run
 // in a worker. Pixels come back as RGBA8, top row first, like `capture()` and the reference.
-import { mat3, mat4 } from 'gl-matrix';
-import { reflectionMatrix, signedDistance } from '../math/mirror';
-import { FrameSetup } from '../render/frame-setup';
-import type { FrameState } from '../render/types';
-import type { DecodedImage } from '../reference/image-texture';
-import { defaultScene } from '../scene/default-scene';
+import { eyeRelativePlane, signedDistance } from '../math/mirror';
+import { FrameSetup } from '../frame/frame-setup';
+import type { FrameState } from '../frame/types';
+import type { DecodedImage } from '../scene/decoded-image';
+import { DefaultSceneCache } from '../scene/default-scene';
 import type { Scene, SceneObject } from '../scene/scene';
 import { GlassShader, GLASS_INDICES } from './glass-shader';
 import { Lights } from './lighting';
-import { isTwoSided, SoftwareMeshes } from './meshes';
+import { isTwoSided } from '../frame/mesh-choice';
+import { SoftwareMeshes } from './meshes';
 import { imageMipTexture, proceduralMipTexture, type MipTexture } from './mip-texture';
 import { ObjectShader, type ObjectDraw, type SoftwareTiming } from './object-shader';
 import { Rasterizer } from './raster';
@@ -48,17 +48,13 @@ export class SoftwareRenderer {
   private mask = new Uint8Array(0);
   private output = new Uint8ClampedArray(0);
   private readonly images = new WeakMap<DecodedImage, MipTexture | null>();
-  private readonly mirroredViewProjection = new Float64Array(16);
-  private readonly reflectionLinear = new Float64Array(16);
-  private readonly normals: Float64Array[] = [];
-  private readonly mirroredClip = new Float64Array(4);
   private readonly sideClip = new Float64Array(4);
   private readonly transparent: number[] = [];
   /** The `passes` view's frame, and the state each of its tiles is drawn with (reused). */
   private tiled = new Uint8ClampedArray(0);
   private readonly tileState = {} as FrameState;
   private readonly draw: ObjectDraw;
-  private defaultScene: { cubeDistance: number; spin: number; scene: Scene } | null = null;
+  private readonly defaultScene = new DefaultSceneCache();
 
   constructor(options: SoftwareRendererOptions = {}) {
     this.samplesPerAxis = options.samplesPerAxis ?? 1;
@@ -118,7 +114,7 @@ export class SoftwareRenderer {
   }
 
   private frame(state: FrameState, scene?: Scene, images?: ReadonlyMap<string, DecodedImage>): Uint8ClampedArray {
-    scene ??= this.defaultSceneFor(state);
+    scene ??= this.defaultScene.get(state.cubeDistance, state.spin);
     const n = Math.max(1, Math.min(8, Math.floor(this.samplesPerAxis)));
     const width = Math.max(0, Math.floor(state.width)), height = Math.max(0, Math.floor(state.height));
     const W = width * n, H = height * n;
@@ -183,18 +179,8 @@ export class SoftwareRenderer {
 
   private prepare(state: FrameState, scene: Scene): void {
     const s = this.setup;
+    // The frame's matrices, both eyes' and the reflection's clip plane, as the GL path has them.
     s.update(state, scene);
-    const plane = s.glass.plane;
-    // Mirrored eye-relative points → clip: projection · view · L (L the plane's linear reflection).
-    reflectionMatrix(this.reflectionLinear, plane);
-    this.reflectionLinear[12] = this.reflectionLinear[13] = this.reflectionLinear[14] = 0;
-    mat4.multiply(this.mirroredViewProjection as unknown as mat4, s.viewProjection as unknown as mat4, this.reflectionLinear as unknown as mat4);
-    // The reflection keeps the eye's side: side·(n·(rel + e′) + d) ≥ 0, rel relative to e′.
-    setPlane(this.mirroredClip, plane, s.mirroredEye, s.side);
-    while (this.normals.length < scene.objects.length) this.normals.push(new Float64Array(9));
-    for (let i = 0; i < scene.objects.length; i++) {
-      mat3.normalFromMat4(this.normals[i] as unknown as mat3, s.objects[i].model as unknown as mat4);
-    }
     this.lightsMain.set(scene, s.eye);
     this.lightsMirrored.set(scene, s.mirroredEye);
     this.glassShader.model = state.fresnel;
@@ -262,8 +248,8 @@ export class SoftwareRenderer {
     const eye = mirrored ? s.mirroredEye : s.eye;
     const plane = s.glass.plane;
     let clip: Float64Array | null = null;
-    if (mirrored) clip = this.mirroredClip;
-    else if (side !== 'all' && s.hasGlass) clip = setPlane(this.sideClip, plane, eye, side === 'eye' ? s.side : -s.side);
+    if (mirrored) clip = s.mirroredClip;
+    else if (side !== 'all' && s.hasGlass) clip = eyeRelativePlane(this.sideClip, plane, eye, side === 'eye' ? s.side : -s.side);
     const order = selection === 'transparent' ? this.transparent : null;
     const count = order ? order.length : objects.length;
     r.depthTest = true;
@@ -276,11 +262,11 @@ export class SoftwareRenderer {
       const m = s.objects[i];
       // Culling, not selection (SPEC §4): bounds wholly beyond the glass cannot be reflected.
       if (mirrored && s.side * signedDistance(plane, m.center) <= -m.radius) continue;
-      d.mesh = this.meshes.get(o.geometry, state, m.center, m.radius, r.width / Math.max(1, state.width));
+      d.mesh = this.meshes.get(o.geometry, state, m.center, m.radius, s.halfHeight, r.width / Math.max(1, state.width));
       d.model = m.model;
-      d.normal = this.normals[i];
+      d.normal = m.normal;
       d.eye = eye;
-      d.viewProjection = mirrored ? this.mirroredViewProjection : s.viewProjection;
+      d.viewProjection = mirrored ? s.mirroredViewProjection : s.viewProjection;
       d.clipPlane = clip;
       d.material = o.material;
       d.bounds = o.bounds;
@@ -334,22 +320,6 @@ export class SoftwareRenderer {
       }
     }
   }
-
-  private defaultSceneFor(state: FrameState): Scene {
-    const d = this.defaultScene;
-    if (d && Object.is(d.cubeDistance, state.cubeDistance) && Object.is(d.spin, state.spin)) return d.scene;
-    this.defaultScene = { cubeDistance: state.cubeDistance, spin: state.spin, scene: defaultScene(state.cubeDistance, state.spin) };
-    return this.defaultScene.scene;
-  }
-}
-
-/** out = sign·(n, n·eye + d): the plane as a function of eye-relative points, kept where ≥ 0. */
-function setPlane(out: Float64Array, plane: ArrayLike<number>, eye: ArrayLike<number>, sign: number): Float64Array {
-  out[0] = sign * plane[0];
-  out[1] = sign * plane[1];
-  out[2] = sign * plane[2];
-  out[3] = sign * (plane[0] * eye[0] + plane[1] * eye[1] + plane[2] * eye[2] + plane[3]);
-  return out;
 }
 
 function fill(buffer: Float32Array, pixels: number, rgb: readonly number[]): void {

@@ -4,7 +4,7 @@
 import { SoftwareRenderer } from './software-renderer';
 import { unpackScene, type SoftwareRequest, type SoftwareResponse } from './protocol';
 import type { MeshData } from '../scene/geometry/mesh-data';
-import type { DecodedImage } from '../reference/image-texture';
+import type { DecodedImage } from '../scene/decoded-image';
 
 const renderer = new SoftwareRenderer();
 const meshes = new Map<string, MeshData>();

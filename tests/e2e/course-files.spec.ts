@@ -11,7 +11,7 @@ import { parseCameraCfg } from '../../src/loaders/course/camera-cfg';
 import { courseProject, type CourseCamera } from '../../src/math/course-camera';
 import { renderScene, compareImages } from '../../src/reference';
 import type { Scene, SceneObject } from '../../src/scene/scene';
-import type { FrameState } from '../../src/render/types';
+import type { FrameState } from '../../src/frame/types';
 
 const DATA = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../data/course');
 const URL_BASE = '/tests/data/course/';

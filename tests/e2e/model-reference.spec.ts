@@ -8,7 +8,7 @@ import { mountHtml } from './helpers/scene-children';
 import { readPng } from './helpers/golden';
 import { renderScene, compareImages, type DecodedImage } from '../../src/reference';
 import type { Scene, SceneObject } from '../../src/scene/scene';
-import type { FrameState } from '../../src/render/types';
+import type { FrameState } from '../../src/frame/types';
 import { expectPsnr, note } from './helpers/bounds';
 
 const BOUND_DB = 35;

@@ -4,7 +4,7 @@
 import type { Page } from '@playwright/test';
 import { test, expect, mount, openPage, capture, setAttributes, nextFrame, type RgbaImage, type SceneElement } from './fixtures';
 import { renderReference, compareImages, glassReflectsCube, type ReferenceImage } from '../../src/reference';
-import type { Projection } from '../../src/render/types';
+import type { Projection } from '../../src/frame/types';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import { formatError, maskedError, reflectsCubeMask } from './helpers/reference-match';
 import { expectPsnr, MARGIN_DB } from './helpers/bounds';

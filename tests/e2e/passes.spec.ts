@@ -9,7 +9,7 @@
 import type { Page } from '@playwright/test';
 import { test, expect, mount, openPage, capture, type Attrs, type RgbaImage } from './fixtures';
 import { renderReference, regionOfKey, REGION_CUBE, REGION_EDGE, type ReferenceImage } from '../../src/reference';
-import type { FrameState } from '../../src/render/types';
+import type { FrameState } from '../../src/frame/types';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import { cameraAttrs, diffImages, formatDiff, lookAt } from './helpers/stability';
 import { dominantPixels } from './helpers/pixels';

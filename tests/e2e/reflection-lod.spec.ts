@@ -6,7 +6,7 @@
 import { test, expect, openPage, setAttributes, type SceneElement } from './fixtures';
 import { gaussianMesh, GAUSSIAN_EXTENT } from '../../src/scene/geometry/gaussian';
 import { clusterMesh } from '../../src/scene/geometry/cluster';
-import { REFLECTION_CELL_PX, REFLECTION_GRIDS, REFLECTION_MAX_FRACTION } from '../../src/render/reflection-lod';
+import { REFLECTION_CELL_PX, REFLECTION_GRIDS, REFLECTION_MAX_FRACTION } from '../../src/frame/reflection-lod';
 
 const SIZE = { width: 160, height: 90 };
 const FOV = 60;

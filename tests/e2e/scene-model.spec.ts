@@ -11,7 +11,7 @@ import { note } from './helpers/bounds';
 import { defaultScene, DEFAULT_LIGHT } from '../../src/scene/default-scene';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import type { Light, Material, Scene, SceneObject } from '../../src/scene/scene';
-import type { FrameState } from '../../src/render/types';
+import type { FrameState } from '../../src/frame/types';
 import type { RgbaImage } from './helpers/golden';
 import { clusterMesh } from '../../src/scene/geometry/cluster';
 import { gaussianMesh } from '../../src/scene/geometry/gaussian';

@@ -11,7 +11,7 @@ import { expectPsnr, note } from './helpers/bounds';
 import { renderScene, compareImages } from '../../src/reference';
 import { DEFAULT_LIGHT } from '../../src/scene/default-scene';
 import type { Light, Material, Scene, SceneObject, Vec3 } from '../../src/scene/scene';
-import type { FrameState, Shading } from '../../src/render/types';
+import type { FrameState, Shading } from '../../src/frame/types';
 import { bezierPatchMesh } from '../../src/scene/geometry/bezier';
 
 const W = 320, H = 180;

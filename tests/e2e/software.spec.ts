@@ -9,7 +9,7 @@ import { withoutWebGL2 } from './helpers/no-webgl2';
 import { compareImages as comparePixels } from './helpers/golden';
 import { renderReference, compareImages } from '../../src/reference';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION } from '../../src/element/attributes';
-import type { FrameState } from '../../src/render/types';
+import type { FrameState } from '../../src/frame/types';
 import { expectPsnr } from './helpers/bounds';
 
 const SIZE = { width: 320, height: 180 };

@@ -10,7 +10,7 @@
 // The GL-free half (matrices, projection, Fresnel, tessellation) is tests/unit/stability.test.ts.
 import { test, expect, mount, openPage, capture, canvasSize, nextFrame, setAttributes, type Attrs, type SceneElement, type RgbaImage, type FrameReport } from './fixtures';
 import { renderReference, compareImages as compareWithReference } from '../../src/reference';
-import type { FrameState } from '../../src/render/types';
+import type { FrameState } from '../../src/frame/types';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import { cameraAttrs, debugLog, diffImages, dumpImage, formatDiff, garbagePixels, glLimits, histogram, lookAt, type FrameDiff } from './helpers/stability';
 import type { Vec3 } from './helpers/projection';

@@ -1,7 +1,7 @@
 // Camera pose → forward, view and projection (SPEC §3).
 import { describe, expect, it } from 'vitest';
 import { apply, expectClose } from './helpers';
-import { clampPitch, forwardFromYawPitch, PITCH_LIMIT, projectionMatrix, rotationOnlyView } from '../../src/math/camera';
+import { clampPitch, forwardFromYawPitch, PITCH_LIMIT, projectionMatrix, rotationOnlyView, tanHalfFov, wrapYaw } from '../../src/math/camera';
 
 describe('forwardFromYawPitch', () => {
   it('yaw −90, pitch 0 looks down −Z', () => {
@@ -24,6 +24,27 @@ describe('forwardFromYawPitch', () => {
     const f = forwardFromYawPitch(new Float64Array(3), -90, 120);
     expect(f[1]).toBeCloseTo(Math.sin((PITCH_LIMIT * Math.PI) / 180), 14);
     expect(f[2]).toBeLessThan(0);
+  });
+});
+
+describe('tanHalfFov', () => {
+  it('is half the view height at unit depth: 90° → 1, 60° → 1/√3, 120° → √3', () => {
+    expect(tanHalfFov(90)).toBeCloseTo(1, 15);
+    expect(tanHalfFov(60)).toBeCloseTo(1 / Math.sqrt(3), 15);
+    expect(tanHalfFov(120)).toBeCloseTo(Math.sqrt(3), 14);
+  });
+});
+
+describe('wrapYaw', () => {
+  it('wraps into [−180, 180): 180 and −180 both become −180, 179.5 stays', () => {
+    expect(wrapYaw(180)).toBe(-180);
+    expect(wrapYaw(-180)).toBe(-180);
+    expect(wrapYaw(540)).toBe(-180);
+    expect(wrapYaw(179.5)).toBe(179.5);
+    expect(wrapYaw(-179.5)).toBe(-179.5);
+    expect(wrapYaw(370)).toBe(10);
+    expect(wrapYaw(-190)).toBe(170);
+    expect(wrapYaw(-90)).toBe(-90);
   });
 });
 

@@ -2,7 +2,7 @@
 import { describe, expect, it } from 'vitest';
 import { apply, expectClose } from './helpers';
 import { mat4, vec4 } from 'gl-matrix';
-import { reflectDirection, reflectionMatrix, reflectPoint, signedDistance, type Plane } from '../../src/math/mirror';
+import { eyeRelativePlane, reflectDirection, reflectionMatrix, reflectPoint, signedDistance, type Plane } from '../../src/math/mirror';
 
 const Z0: Plane = [0, 0, 1, 0];
 // Unit normal (0.6, 0, 0.8), points with 0.6x + 0.8z = 2.
@@ -62,6 +62,17 @@ describe('reflectDirection', () => {
     expect(Math.abs(d[0] - 0.2)).toBeGreaterThan(1e-3); // it did change
     reflectDirection(d, d, OBLIQUE2);
     expectClose(d, [0.2, -0.4, 0.9]);
+  });
+});
+
+describe('eyeRelativePlane', () => {
+  it('is sign·(n, n·eye + d): the oblique plane seen from eye (5, 1, 0), points relative to it', () => {
+    // n·eye + d = 0.6·5 − 2 = 1: the eye stands 1 in front of the plane.
+    const p = eyeRelativePlane(new Float64Array(4), OBLIQUE, [5, 1, 0], 1);
+    expectClose(p, [0.6, 0, 0.8, 1]);
+    expectClose(eyeRelativePlane(new Float64Array(4), OBLIQUE, [5, 1, 0], -1), [-0.6, 0, -0.8, -1]);
+    // rel = (−5, 0, 2.5) is the point (0, 1, 2.5) on the plane: the value there is 0.
+    expect(p[0] * -5 + p[2] * 2.5 + p[3]).toBeCloseTo(0, 14);
   });
 });
 

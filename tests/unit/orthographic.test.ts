@@ -10,11 +10,11 @@ import {
   forwardFromYawPitch, MIN_ORTHO_DEPTH, orthoHalfHeight, orthographicMatrix, viewerSide, type OrthoView,
 } from '../../src/math/camera';
 import { reflectDirection, reflectPoint, type Plane } from '../../src/math/mirror';
-import { FrameSetup } from '../../src/render/frame-setup';
-import { sphereScreenRadius } from '../../src/render/sphere-lod';
-import { orthoPixelsPerUnit } from '../../src/render/reflection-lod';
+import { FrameSetup } from '../../src/frame/frame-setup';
+import { sphereScreenRadius } from '../../src/frame/sphere-screen';
+import { orthoPixelsPerUnit } from '../../src/frame/reflection-lod';
 import { defaultScene } from '../../src/scene/default-scene';
-import type { FrameState } from '../../src/render/types';
+import type { FrameState } from '../../src/frame/types';
 import type { Scene } from '../../src/scene/scene';
 
 const TAN30 = Math.tan(Math.PI / 6);

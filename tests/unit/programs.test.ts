@@ -5,7 +5,7 @@ import { ProgramCache, type ClipMode, type ObjectVariant } from '../../src/rende
 import { SharedResources } from '../../src/render/gl/shared-resources';
 import { ShaderError } from '../../src/render/gl/program';
 import { FRESNEL_MODELS } from '../../src/math/fresnel';
-import type { Shading } from '../../src/render/types';
+import type { Shading } from '../../src/frame/types';
 import { fakeGl } from './fake-gl';
 
 const CLIPS: ClipMode[] = ['none', 'clip-distance', 'discard'];

@@ -2,9 +2,9 @@
 import { describe, expect, it } from 'vitest';
 import { ATTRIBUTE_BY_NAME } from '../../src/element/attributes';
 import { segmentsForScreenRadius, MAX_SEGMENTS, MIN_SEGMENTS } from '../../src/scene/geometry/sphere';
-import { sphereScreenRadius } from '../../src/render/sphere-lod';
+import { sphereScreenRadius } from '../../src/frame/sphere-screen';
 import { SPHERE } from '../../src/scene/default-scene';
-import type { FrameState } from '../../src/render/types';
+import type { FrameState } from '../../src/frame/types';
 
 const parse = (attr: string, raw: string | null) => ATTRIBUTE_BY_NAME.get(attr)!.parse(raw);
 

@@ -60,9 +60,9 @@ describe('portability', () => {
       const text = readFileSync(join(dir, f), 'utf8');
       expect(text, f).not.toMatch(/from '(node:|fs|path|os|url|worker_threads|perf_hooks)/);
       expect(text, f).not.toMatch(/\b(Buffer|process|require|__dirname|__filename|setImmediate)\b/);
-      // Only pure modules at run time: math, scene data, gl-matrix; the renderer only for types.
+      // Only pure modules at run time: math, scene data, gl-matrix; the frame's state only for types.
       for (const [, typeOnly, spec] of text.matchAll(/^(?:import|export) (type )?[^;]*? from '([^']+)'/gms)) {
-        const allowed = typeOnly ? /^(\.\/|\.\.\/math\/|\.\.\/scene\/|\.\.\/render\/types$|gl-matrix$)/ : /^(\.\/|\.\.\/math\/|\.\.\/scene\/|gl-matrix$)/;
+        const allowed = typeOnly ? /^(\.\/|\.\.\/math\/|\.\.\/scene\/|\.\.\/frame\/types$|gl-matrix$)/ : /^(\.\/|\.\.\/math\/|\.\.\/scene\/|gl-matrix$)/;
         expect(spec, `${f} imports ${spec}`).toMatch(allowed);
         imports++;
       }

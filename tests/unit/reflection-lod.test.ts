@@ -5,7 +5,7 @@ import { clusterMesh, meshExtent } from '../../src/scene/geometry/cluster';
 import { gaussianMesh } from '../../src/scene/geometry/gaussian';
 import { boxMesh } from '../../src/scene/geometry/box';
 import { flatMesh } from '../../src/scene/geometry/flat';
-import { pixelsPerUnit, reflectionGrid, REFLECTION_CELL_PX, REFLECTION_GRIDS } from '../../src/render/reflection-lod';
+import { pixelsPerUnit, reflectionGrid, REFLECTION_CELL_PX, REFLECTION_GRIDS } from '../../src/frame/reflection-lod';
 import type { MeshData } from '../../src/scene/geometry/mesh-data';
 
 const v3 = (a: Float32Array, i: number) => [a[3 * i], a[3 * i + 1], a[3 * i + 2]];

@@ -1,7 +1,7 @@
 // The reflection pass's scissor in the texels of its target, also when the target is clamped.
 import { describe, expect, it } from 'vitest';
-import { reflectionScissor, reflectionTargetSide } from '../../src/render/reflection-scissor';
-import type { ScreenRect } from '../../src/render/glass-bounds';
+import { reflectionScissor, reflectionTargetSide } from '../../src/frame/reflection-scissor';
+import type { ScreenRect } from '../../src/frame/glass-bounds';
 
 const rect = (x0: number, y0: number, x1: number, y1: number): ScreenRect => ({ x0, y0, x1, y1, area: (x1 - x0) * (y1 - y0) });
 const scissor = () => ({ x: -1, y: -1, width: -1, height: -1 });

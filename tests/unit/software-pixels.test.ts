@@ -4,7 +4,7 @@
 // where kt and 1 − kt differ.
 import { describe, expect, it } from 'vitest';
 import { SoftwareRenderer } from '../../src/software';
-import type { FrameState } from '../../src/render/types';
+import type { FrameState } from '../../src/frame/types';
 import type { Light, Material, Scene } from '../../src/scene/scene';
 
 // 17×17 pixels (odd: the centre pixel's centre is on the axis), vertical fov 90°, the eye at

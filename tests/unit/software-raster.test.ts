@@ -4,7 +4,7 @@ import { describe, expect, it } from 'vitest';
 import { projectionMatrix } from '../../src/math/camera';
 import { CLIP_DISTANCE, Rasterizer, VARYINGS, type FragmentShader } from '../../src/software/raster';
 import { SoftwareRenderer } from '../../src/software';
-import type { FrameState } from '../../src/render/types';
+import type { FrameState } from '../../src/frame/types';
 import type { Scene } from '../../src/scene/scene';
 
 const STRIDE = VARYINGS + 3;

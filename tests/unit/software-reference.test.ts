@@ -9,7 +9,7 @@ import { compareImages, renderScene, type DecodedImage, type ImageComparison } f
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION } from '../../src/element/attributes';
 import { BACKGROUND, DEFAULT_GLASS, DEFAULT_LIGHT, defaultScene } from '../../src/scene/default-scene';
 import type { Geometry, Material, Scene, SceneObject } from '../../src/scene/scene';
-import type { FrameState } from '../../src/render/types';
+import type { FrameState } from '../../src/frame/types';
 import { SoftwareRenderer } from '../../src/software';
 import { bezierPatchMesh } from '../../src/scene/geometry/bezier';
 

@@ -10,6 +10,7 @@ import { courseLight, courseMaterialValues } from './course-lighting';
 import type { LoadedLighting } from './course-files';
 import { acquireCourseFile, loadErrorDetail, type Handle } from './model-cache';
 import { defaultLightAttributes, LIGHT_ATTRIBUTES, type LightAttributes } from './light-attributes';
+import { absoluteUrl } from '../absolute-url';
 import type { MtlValues } from './object-material';
 
 export const LIGHT_TAG = 'glass-light';
@@ -97,7 +98,7 @@ export class GlassLight extends ChildElement<LightAttributes> {
   }
 
   private updateLoad(): void {
-    const url = this.isConnected ? absolute(this.values.src) : null;
+    const url = this.isConnected ? absoluteUrl(this.values.src) : null;
     if (url === this.loadingUrl && (url !== null || this.values.src === null)) return;
     this.stopLoad();
     if (this.values.src === null || !this.isConnected) return;
@@ -142,16 +143,6 @@ export class GlassLight extends ChildElement<LightAttributes> {
 function unit(v: Vec3): Vec3 {
   const l = Math.hypot(v[0], v[1], v[2]);
   return [v[0] / l, v[1] / l, v[2] / l];
-}
-
-/** Resolves against the document; null for a URL that cannot be one. */
-function absolute(url: string | null): string | null {
-  if (url === null) return null;
-  try {
-    return new URL(url, document.baseURI).href;
-  } catch {
-    return null;
-  }
 }
 
 defineChildProperties(GlassLight.prototype, LIGHT_ATTRIBUTES);

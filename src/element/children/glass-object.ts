@@ -10,6 +10,7 @@ import { acquireModel, loadErrorDetail, type ModelHandle } from './model-cache';
 import type { LoadedModel } from './model-loader';
 import { meshParts, type MeshPart } from './mesh-parts';
 import { defaultObjectAttributes, OBJECT_ATTRIBUTES, type ObjectAttributes } from './object-attributes';
+import { absoluteUrl } from '../absolute-url';
 import { resolveMaterial, type MtlValues } from './object-material';
 import { decodeImage } from '../texture-images';
 
@@ -34,16 +35,6 @@ function partsOf(model: LoadedModel, normalize: boolean, resolution: number | nu
     entry.set(key, (parts = meshParts(obj, `${model.url}${key}`)));
   }
   return parts;
-}
-
-/** Resolves against the document; null for a URL that cannot be one. */
-function absolute(url: string | null): string | null {
-  if (url === null) return null;
-  try {
-    return new URL(url, document.baseURI).href;
-  } catch {
-    return null;
-  }
 }
 
 export interface GlassObject extends ObjectAttributes {}
@@ -117,7 +108,7 @@ export class GlassObject extends ChildElement<ObjectAttributes> {
   toSceneObjects(fileMaterial: MtlValues | null = null): SceneObject[] {
     const v = this.values;
     const transform: Transform = { position: v.position, rotation: v.rotation, scale: v.scale, spin: 0 };
-    const texture = absolute(v.texture);
+    const texture = absoluteUrl(v.texture);
     if (v.src !== null) {
       if (!this.model) return [];
       const model = this.model;
@@ -141,7 +132,7 @@ export class GlassObject extends ChildElement<ObjectAttributes> {
   }
 
   private updateLoad(): void {
-    const url = this.isConnected ? absolute(this.values.src) : null;
+    const url = this.isConnected ? absoluteUrl(this.values.src) : null;
     if (url === this.loadingUrl && (url !== null || this.values.src === null)) return;
     this.stopLoad();
     if (this.values.src === null || !this.isConnected) return;

@@ -8,6 +8,7 @@ import { fetchBytes, type Progress } from './model-fetch';
 import { parseModelBytes } from './model-parse';
 import type { MtlValues } from './object-material';
 import { bezierObj, type ByuBezierInfo } from '../../loaders/course/byu-model';
+import { absoluteUrl } from '../absolute-url';
 
 export interface LoadedModel {
   url: string;
@@ -31,10 +32,8 @@ export async function loadModel(url: string, signal: AbortSignal, onProgress: (p
   const warnings = obj.warnings.map((w) => warningText(url, w));
   const materials = new Map<string, MtlValues>();
   for (const name of obj.mtllibs) {
-    let mtlUrl: string;
-    try {
-      mtlUrl = new URL(name.replace(/\\/g, '/'), url).href;
-    } catch {
+    const mtlUrl = absoluteUrl(name.replace(/\\/g, '/'), url);
+    if (mtlUrl === null) {
       warnings.push(`glass-plane-scene: ${url}: mtllib ${JSON.stringify(name)} is not a usable URL; ignored`);
       continue;
     }

@@ -1,4 +1,4 @@
-// Bytes → ObjResult: sniff the content (an HTML page or binary bytes are load errors), then
+// Bytes → ObjResult: sniff the content once (an HTML page or binary bytes are load errors), then
 // parse the OBJ or the course's `.byu` (SPEC §11) on the main thread, or in a worker above
 // WORKER_THRESHOLD so a big file does not block the page. Where a worker cannot start, the
 // main thread parses it.
@@ -37,10 +37,12 @@ export async function parseModelBytes(bytes: Uint8Array, url: string): Promise<P
   const byu = sniffed === 'byu-mesh' || sniffed === 'byu-bezier' || (sniffed === 'unknown' && isByuUrl(url));
   const format = byu ? 'byu' : 'obj';
   if (bytes.length >= WORKER_THRESHOLD) {
-    const result = await parseInWorker(bytes, url, format);
+    const result = await parseInWorker(bytes, url, format, sniffed);
     if (result) return result;
   }
-  return format === 'byu' ? { ...parseByuModel(bytes, url), byu: true } : { obj: parseObjBytes(bytes, { url }), bezier: null, byu: false };
+  return format === 'byu'
+    ? { ...parseByuModel(bytes, url, sniffed), byu: true }
+    : { obj: parseObjBytes(bytes, { url, sniffed }), bezier: null, byu: false };
 }
 
 function isByuUrl(url: string): boolean {
@@ -50,7 +52,7 @@ function isByuUrl(url: string): boolean {
 let nextId = 1;
 
 /** Resolves null when no worker could run the job (the caller parses on the main thread). */
-function parseInWorker(bytes: Uint8Array, url: string, format: 'obj' | 'byu'): Promise<ParsedModel | null> {
+function parseInWorker(bytes: Uint8Array, url: string, format: 'obj' | 'byu', sniffed: ModelFormat): Promise<ParsedModel | null> {
   return new Promise((resolve, reject) => {
     let worker: Worker;
     try {
@@ -74,7 +76,7 @@ function parseInWorker(bytes: Uint8Array, url: string, format: 'obj' | 'byu'): P
     };
     // Copied, not transferred: the bytes stay usable for the main-thread fallback.
     const buffer = bytes.slice().buffer as ArrayBuffer;
-    const request: ObjJobRequest = { id, url, bytes: buffer, format };
+    const request: ObjJobRequest = { id, url, bytes: buffer, format, sniffed };
     worker.postMessage(request, [buffer]);
   });
 }

@@ -1,6 +1,6 @@
 // The orbit camera (SPEC §10): turns about a target at a fixed distance, dollies along its view
 // and pans with the target. Reads and writes the element's camera pose; no DOM.
-import { clampPitch, forwardFromYawPitch, type CameraPose } from '../../math/camera';
+import { clampPitch, forwardFromYawPitch, tanHalfFov, wrapYaw, type CameraPose } from '../../math/camera';
 
 /** Degrees the camera turns per CSS pixel of drag. */
 export const ORBIT_DEG_PER_PX = 0.4;
@@ -30,7 +30,7 @@ export class OrbitCamera {
 
   /** Turns by degrees (yaw right, pitch up of the view) about the target. */
   rotate(pose: CameraPose, dYaw: number, dPitch: number): void {
-    pose.yaw = ((((pose.yaw + dYaw + 180) % 360) + 360) % 360) - 180;
+    pose.yaw = wrapYaw(pose.yaw + dYaw);
     pose.pitch = Math.max(-ORBIT_PITCH_LIMIT, Math.min(ORBIT_PITCH_LIMIT, clampPitch(pose.pitch + dPitch)));
     this.place(pose);
   }
@@ -49,7 +49,7 @@ export class OrbitCamera {
    */
   pan(pose: CameraPose, dx: number, dy: number, height: number, fov: number): void {
     const f = forwardFromYawPitch(this.f, pose.yaw, pose.pitch);
-    const unitsPerPx = (2 * this.distance * Math.tan((fov * Math.PI) / 360)) / Math.max(1, height);
+    const unitsPerPx = (2 * this.distance * tanHalfFov(fov)) / Math.max(1, height);
     // right = normalize(f × +Y) = (−fz, 0, fx)/|…|, up = right × f.
     const h = Math.hypot(f[0], f[2]) || 1;
     const rx = -f[2] / h, rz = f[0] / h;

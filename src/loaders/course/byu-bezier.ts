@@ -7,6 +7,7 @@ import {
   bezierPatchMesh, MAX_BEZIER_RESOLUTION, MIN_BEZIER_RESOLUTION, type BezierPatch,
 } from '../../scene/geometry/bezier';
 import { CourseLines, rejectNonText } from './course-text';
+import type { ModelFormat } from '../sniff';
 
 /**
  * `'first-fastest'`: the file lists P(0,0), P(1,0), … P(m,0), P(0,1), … (the index running
@@ -42,9 +43,9 @@ export const MAX_BEZIER_DEGREE = 32;
  * are the same net transposed, the same surface with u and v swapped — the order is
  * `'second-fastest'`, the row-by-row reading of `for i: for j: read P(i, j)`.
  */
-export function parseByuBezier(text: string, options: { url?: string; resolution?: number } = {}): ByuBezierResult {
+export function parseByuBezier(text: string, options: { url?: string; resolution?: number; sniffed?: ModelFormat } = {}): ByuBezierResult {
   const url = options.url ?? '';
-  rejectNonText(text, url, 'a .byu file');
+  rejectNonText(text, url, 'a .byu file', options.sniffed);
   const lines = new CourseLines(text, url);
   const warnings = new Warnings();
 

@@ -4,6 +4,7 @@ import { LoadError, type LoadWarning } from '../load-error';
 import { Warnings } from '../warnings';
 import { indexArray, type MeshData } from '../../scene/geometry/mesh-data';
 import { CourseLines, rejectNonText, type ContentLine } from './course-text';
+import type { ModelFormat } from '../sniff';
 
 export interface ByuMeshResult {
   /**
@@ -30,9 +31,9 @@ const MIN_LINE = 6;
  * LoadError with the line; a face with an index outside 1..NV (or not a whole number) is
  * dropped with a warning naming its line. No face left is a LoadError.
  */
-export function parseByuMesh(text: string, options: { url?: string } = {}): ByuMeshResult {
+export function parseByuMesh(text: string, options: { url?: string; sniffed?: ModelFormat } = {}): ByuMeshResult {
   const url = options.url ?? '';
-  rejectNonText(text, url, 'a .byu file');
+  rejectNonText(text, url, 'a .byu file', options.sniffed);
   const lines = new CourseLines(text, url);
   const warnings = new Warnings();
 

@@ -7,6 +7,7 @@ import type { MeshData } from '../../scene/geometry/mesh-data';
 import { bezierPatchMesh, type BezierPatch } from '../../scene/geometry/bezier';
 import type { LoadWarning } from '../load-error';
 import { parseByu } from './byu';
+import type { ModelFormat } from '../sniff';
 import type { BezierOrder } from './byu-bezier';
 
 /** What a Bézier `.byu` keeps besides its mesh at the file's E. */
@@ -22,8 +23,9 @@ export interface ByuModel {
   bezier: ByuBezierInfo | null;
 }
 
-export function parseByuModel(bytes: Bytes, url: string): ByuModel {
-  const result = parseByu(decodeText(bytes), { url });
+/** `sniffed`: the bytes' sniffModel, if the caller has it. */
+export function parseByuModel(bytes: Bytes, url: string, sniffed?: ModelFormat): ByuModel {
+  const result = parseByu(decodeText(bytes), { url, sniffed });
   if (result.kind === 'mesh') return { obj: meshToObj(result.mesh, result.warnings, result.bounds), bezier: null };
   return {
     obj: meshToObj(result.mesh, result.warnings),

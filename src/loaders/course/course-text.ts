@@ -2,7 +2,7 @@
 // numbers, a few whitespace-separated numbers each, every fault a LoadError naming the line.
 // Lazy and linear: a 10 MB line is scanned once, never split into millions of tokens.
 import { LoadError } from '../load-error';
-import { sniffModel } from '../sniff';
+import { sniffModel, type ModelFormat } from '../sniff';
 import { shown } from '../warnings';
 
 /** A decimal number as the course's files write it: `-1`, `+3.`, `.5`, `9.5e-005`, `-1.0E-14`. */
@@ -22,9 +22,8 @@ export interface ContentLine {
   tokens: string[];
 }
 
-/** Throws for an HTML page or binary bytes, naming the line where they show. */
-export function rejectNonText(text: string, url: string, what: string): void {
-  const format = sniffModel(text);
+/** Throws for an HTML page or binary bytes, naming the line where they show. `format`: the text's, if already sniffed. */
+export function rejectNonText(text: string, url: string, what: string, format: ModelFormat = sniffModel(text)): void {
   if (format === 'html') {
     throw new LoadError(url, `an HTML page (or other markup), not ${what}`, lineAt(text, Math.max(0, text.search(/\S/))));
   }

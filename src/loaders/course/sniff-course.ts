@@ -1,6 +1,6 @@
 // Tells the course's files apart (SPEC §11), in the manner of ../sniff.ts: by content first,
 // the URL's name only when the content is too broken to say.
-import { sniffModel } from '../sniff';
+import { sniffModel, type ModelFormat } from '../sniff';
 import { CourseLines, isNumber } from './course-text';
 
 export type CourseFormat = 'byu-mesh' | 'byu-bezier' | 'camera' | 'lighting' | 'html' | 'binary' | 'unknown';
@@ -17,10 +17,9 @@ const COUNT = /^\d+$/;
  * lines after them are for the parsers to warn about). Content that fits none of these is
  * named by the URL (`*.cfg` a camera, `iluminacao*.txt` lighting, `*.byu` a mesh) so that
  * its parser reports the faulty line; otherwise 'unknown'. Reads only the first nine
- * non-blank lines, and a few tokens of each.
+ * non-blank lines, and a few tokens of each. `model`: the text's sniffModel, if already known.
  */
-export function sniffCourse(url: string, text: string): CourseFormat {
-  const model = sniffModel(text);
+export function sniffCourse(url: string, text: string, model: ModelFormat = sniffModel(text)): CourseFormat {
   if (model === 'html' || model === 'binary') return model;
   const lines = new CourseLines(text, url);
   const shape: number[] = []; // numbers per line, −1 for a line with anything else

@@ -10,31 +10,51 @@ const SMOOTH = -1;
 const FLAT_FACE = -2;
 
 export function buildMesh(raw: ObjRaw): Omit<ObjResult, 'warnings'> {
+  const welded = weldCorners(raw);
+  const { positions, normals, uvs, colors, bounds } = vertexArrays(raw, welded);
+  const { indices, groups } = indexByMaterial(raw, welded.cornerOut, welded.count);
+  return {
+    positions, normals, uvs, colors, indices, groups, bounds,
+    mtllibs: raw.mtllibs, objects: raw.objects, groupNames: raw.groupNames,
+  };
+}
+
+/** The output vertices: one per distinct corner, with where each comes from. */
+interface Welded {
+  count: number;
+  /** Per corner of the file: its output vertex. */
+  cornerOut: Int32Array;
+  /** Per output vertex: position, uv and normal index (a negative normal: generated, SMOOTH or FLAT_FACE). */
+  v: I32List;
+  t: I32List;
+  n: I32List;
+  /** Per output vertex: the vertex whose entry of `acc` holds its generated normal. */
+  rep: I32List;
+  /** Generated normals, summed area-weighted over the faces that share them (xyz per vertex). */
+  acc: F64List;
+}
+
+/**
+ * One output vertex per distinct (position, uv, normal source) corner; a generated normal is
+ * shared by the corners of one position in one smoothing group (whatever their uv) and sums the
+ * Newell normals of their faces.
+ */
+function weldCorners(raw: ObjRaw): Welded {
   const corners = raw.corners.data;
   const faces = raw.faces.data;
-  const pos = raw.positions.data;
   const faceCount = raw.faces.length / FACE_INTS;
   const cornerOut = new Int32Array(raw.corners.length / 3);
-
   // Vertices sharing a position are chained from head[position]; chains are a few long.
   const head = new Int32Array(raw.positions.length / 3).fill(-1);
   const outV = new I32List(), outT = new I32List(), outN = new I32List(), outK = new I32List();
   const chain = new I32List(), rep = new I32List();
   const acc = new F64List();
+  const normal = new Float64Array(3);
   let outCount = 0;
 
   for (let f = 0; f < faceCount; f++) {
     const first = faces[f * FACE_INTS], count = faces[f * FACE_INTS + 1], smooth = faces[f * FACE_INTS + 4];
-    let nx = 0, ny = 0, nz = 0;
-    let j = 3 * corners[3 * (first + count - 1)];
-    for (let k = 0; k < count; k++) {
-      const i = 3 * corners[3 * (first + k)];
-      // Newell normal, length = twice the face's area: summing it weights faces by area.
-      nx += (pos[j + 1] - pos[i + 1]) * (pos[j + 2] + pos[i + 2]);
-      ny += (pos[j + 2] - pos[i + 2]) * (pos[j] + pos[i]);
-      nz += (pos[j] - pos[i]) * (pos[j + 1] + pos[i + 1]);
-      j = i;
-    }
+    newellNormal(raw.positions.data, corners, first, count, normal);
     for (let k = 0; k < count; k++) {
       const c = first + k;
       const v = corners[3 * c], t = corners[3 * c + 1];
@@ -67,33 +87,53 @@ export function buildMesh(raw: ObjRaw): Omit<ObjResult, 'warnings'> {
       cornerOut[c] = o;
       if (n < 0) {
         const r = 3 * rep.data[o];
-        acc.data[r] += nx;
-        acc.data[r + 1] += ny;
-        acc.data[r + 2] += nz;
+        acc.data[r] += normal[0];
+        acc.data[r + 1] += normal[1];
+        acc.data[r + 2] += normal[2];
       }
     }
   }
+  return { count: outCount, cornerOut, v: outV, t: outT, n: outN, rep, acc };
+}
 
+/** Newell normal of the face of `count` corners from `first`, length twice its area: summing it weights faces by area. */
+function newellNormal(pos: Float64Array, corners: Int32Array, first: number, count: number, out: Float64Array): void {
+  let nx = 0, ny = 0, nz = 0;
+  let j = 3 * corners[3 * (first + count - 1)];
+  for (let k = 0; k < count; k++) {
+    const i = 3 * corners[3 * (first + k)];
+    nx += (pos[j + 1] - pos[i + 1]) * (pos[j + 2] + pos[i + 2]);
+    ny += (pos[j + 2] - pos[i + 2]) * (pos[j] + pos[i]);
+    nz += (pos[j] - pos[i]) * (pos[j + 1] + pos[i + 1]);
+    j = i;
+  }
+  out[0] = nx; out[1] = ny; out[2] = nz;
+}
+
+/** The output vertices' arrays (uvs only if some corner has one, colours if the file gave any) and their bounds. */
+function vertexArrays(raw: ObjRaw, w: Welded): Pick<ObjResult, 'positions' | 'normals' | 'uvs' | 'colors' | 'bounds'> {
+  const pos = raw.positions.data;
+  const outCount = w.count;
   const positions = new Float32Array(outCount * 3);
   const normals = new Float32Array(outCount * 3);
-  const hasUv = outT.data.subarray(0, outCount).some((t) => t >= 0);
+  const hasUv = w.t.data.subarray(0, outCount).some((t) => t >= 0);
   const uvs = hasUv ? new Float32Array(outCount * 2) : null;
   const colors = raw.colors ? new Float32Array(outCount * 3) : null;
   const min: [number, number, number] = [Infinity, Infinity, Infinity];
   const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
   for (let o = 0; o < outCount; o++) {
-    const p = 3 * outV.data[o];
+    const p = 3 * w.v.data[o];
     for (let a = 0; a < 3; a++) {
       const x = pos[p + a];
       positions[3 * o + a] = x;
       if (x < min[a]) min[a] = x;
       if (x > max[a]) max[a] = x;
     }
-    const n = outN.data[o];
+    const n = w.n.data[o];
     if (n >= 0) writeUnit(normals, o, raw.normals.data, 3 * n);
-    else writeUnit(normals, o, acc.data, 3 * rep.data[o]);
+    else writeUnit(normals, o, w.acc.data, 3 * w.rep.data[o]);
     if (uvs) {
-      const t = outT.data[o];
+      const t = w.t.data[o];
       if (t >= 0) {
         uvs[2 * o] = raw.uvs.data[2 * t];
         uvs[2 * o + 1] = raw.uvs.data[2 * t + 1];
@@ -102,11 +142,7 @@ export function buildMesh(raw: ObjRaw): Omit<ObjResult, 'warnings'> {
     if (colors && raw.colors) colors.set(raw.colors.data.subarray(p, p + 3), 3 * o);
   }
   const bounds: Bounds = { min, max };
-  const { indices, groups } = indexByMaterial(raw, cornerOut, outCount);
-  return {
-    positions, normals, uvs, colors, indices, groups, bounds,
-    mtllibs: raw.mtllibs, objects: raw.objects, groupNames: raw.groupNames,
-  };
+  return { positions, normals, uvs, colors, bounds };
 }
 
 /** Unit vector of src[s..s+2] into normals[o]; +z for a zero vector (a degenerate face). */

@@ -39,31 +39,76 @@ export interface ObjRaw {
 }
 
 export function readObj(text: string): ObjRaw {
-  const sc = new Scanner(text);
-  const positions = new F64List();
-  let colors: F64List | null = null;
-  const uvs = new F64List();
-  const normals = new F64List();
-  const corners = new I32List();
-  const triangles = new I32List();
-  const faces = new I32List();
-  const face = new I32List(64);
-  const warnings = new Warnings();
+  return new ObjReader(text).read();
+}
+
+/** The reader's state across statements: the lists being filled and the current material and smoothing. */
+class ObjReader {
+  private readonly sc: Scanner;
+  private readonly positions = new F64List();
+  private colors: F64List | null = null;
+  private readonly uvs = new F64List();
+  private readonly normals = new F64List();
+  private readonly corners = new I32List();
+  private readonly triangles = new I32List();
+  private readonly faces = new I32List();
+  /** The face being read: position, uv, normal index per corner. */
+  private readonly face = new I32List(64);
+  private readonly warnings = new Warnings();
   // A bad v/vt/vn keeps its slot (so later indices still mean the same element), flagged here.
-  const badLine = [new Map<number, number>(), new Map<number, number>(), new Map<number, number>()];
-  const materials: (string | null)[] = [null];
-  const materialSlot = new Map<string, number>();
-  const smoothSlot = new Map<string, number>();
-  const objects: string[] = [], groupNames: string[] = [], mtllibs: string[] = [];
-  const seenObjects = new Set<string>(), seenGroups = new Set<string>(), seenLibs = new Set<string>();
-  let material = 0;
-  let smooth = DEFAULT_SMOOTH;
-  let droppedFaces = 0;
-  let firstDroppedLine = 0;
-  const values = new Float64Array(8);
+  private readonly badLine = [new Map<number, number>(), new Map<number, number>(), new Map<number, number>()];
+  private readonly materials: (string | null)[] = [null];
+  private readonly materialSlot = new Map<string, number>();
+  private readonly smoothSlot = new Map<string, number>();
+  private readonly objects: string[] = [];
+  private readonly groupNames: string[] = [];
+  private readonly mtllibs: string[] = [];
+  private readonly seenObjects = new Set<string>();
+  private readonly seenGroups = new Set<string>();
+  private readonly seenLibs = new Set<string>();
+  private material = 0;
+  private smooth = DEFAULT_SMOOTH;
+  private droppedFaces = 0;
+  private firstDroppedLine = 0;
+  /** The numbers of the statement being read (readValues). */
+  private readonly values = new Float64Array(8);
+  /** What readCorners found: the first fault ('' for none) and how many corners the face has. */
+  private fault = '';
+  private cornerCount = 0;
+
+  constructor(private readonly text: string) {
+    this.sc = new Scanner(text);
+  }
+
+  read(): ObjRaw {
+    const { sc, text } = this;
+    while (!sc.atEnd()) {
+      sc.skipBlank();
+      const line = sc.line;
+      if (sc.atStatementEnd()) {
+        sc.nextLine();
+        continue;
+      }
+      const c0 = text.charCodeAt(sc.pos);
+      const c1 = text.charCodeAt(sc.pos + 1);
+      const c2End = endsKeyword(text.charCodeAt(sc.pos + 2));
+      if (c0 === 118 /* v */ && endsKeyword(c1)) this.vertex(line);
+      else if (c0 === 118 && c1 === 116 /* vt */ && c2End) this.textureCoordinate(line);
+      else if (c0 === 118 && c1 === 110 /* vn */ && c2End) this.normal(line);
+      else if (c0 === 102 /* f */ && endsKeyword(c1)) this.faceStatement(line);
+      else this.otherStatement(line);
+      sc.nextLine();
+    }
+    const { positions, colors, uvs, normals, corners, triangles, faces, materials, objects, groupNames, mtllibs } = this;
+    return {
+      positions, colors, uvs, normals, corners, triangles, faces, materials, objects, groupNames, mtllibs,
+      warnings: this.warnings, droppedFaces: this.droppedFaces, firstDroppedLine: this.firstDroppedLine,
+    };
+  }
 
   /** Reads up to 8 numbers to the end of the statement; returns how many, or −1 if one is bad. */
-  const readValues = (): number => {
+  private readValues(): number {
+    const { sc, values } = this;
     let n = 0;
     let bad = false;
     for (;;) {
@@ -76,165 +121,178 @@ export function readObj(text: string): ObjRaw {
       if (n < 8) values[n] = x;
       n++;
     }
-  };
-
-  const dropFace = (line: number, message: string): void => {
-    warnings.add(line, message);
-    if (droppedFaces++ === 0) firstDroppedLine = line;
-  };
-
-  while (!sc.atEnd()) {
-    sc.skipBlank();
-    const line = sc.line;
-    if (sc.atStatementEnd()) {
-      sc.nextLine();
-      continue;
-    }
-    const c0 = text.charCodeAt(sc.pos);
-    const c1 = text.charCodeAt(sc.pos + 1);
-    const c1End = endsKeyword(c1);
-    const c2 = text.charCodeAt(sc.pos + 2);
-    const c2End = endsKeyword(c2);
-
-    if (c0 === 118 /* v */ && c1End) {
-      sc.pos += 1;
-      const n = readValues();
-      const index = positions.length / 3;
-      if (n < 3) {
-        badLine[0].set(index, line);
-        warnings.add(line, n < 0 ? `vertex with a coordinate that is not a number (${shownLine(text, sc)}); faces using it are dropped`
-          : `vertex with ${n} of its 3 coordinates; faces using it are dropped`);
-        positions.push3(NaN, NaN, NaN);
-      } else {
-        positions.push3(values[0], values[1], values[2]);
-        if (n > 7) warnings.add(line, `vertex with ${n} values; those after x y z r g b ignored`);
-      }
-      if (n >= 6 && colors === null) {
-        colors = new F64List(positions.data.length);
-        for (let k = 0; k < index; k++) colors.push3(1, 1, 1);
-      }
-      if (colors !== null) {
-        if (n >= 6) colors.push3(values[3], values[4], values[5]);
-        else colors.push3(1, 1, 1);
-      }
-    } else if (c0 === 118 && c1 === 116 /* vt */ && c2End) {
-      sc.pos += 2;
-      const n = readValues();
-      if (n < 1) {
-        badLine[1].set(uvs.length / 2, line);
-        warnings.add(line, `texture coordinate that is not a number (${shownLine(text, sc)}); faces using it are dropped`);
-        uvs.push(NaN);
-        uvs.push(NaN);
-      } else {
-        uvs.push(values[0]);
-        uvs.push(n > 1 ? values[1] : 0);
-      }
-    } else if (c0 === 118 && c1 === 110 /* vn */ && c2End) {
-      sc.pos += 2;
-      const n = readValues();
-      if (n < 3) {
-        badLine[2].set(normals.length / 3, line);
-        warnings.add(line, `normal with ${n < 0 ? 'a value that is not a number' : `${n} of its 3 values`}; faces using it are dropped`);
-        normals.push3(NaN, NaN, NaN);
-      } else {
-        normals.push3(values[0], values[1], values[2]);
-      }
-    } else if (c0 === 102 /* f */ && c1End) {
-      sc.pos += 1;
-      face.clear();
-      let fault = '';
-      let cornerCount = 0;
-      const vCount = positions.length / 3, tCount = uvs.length / 2, nCount = normals.length / 3;
-      for (;;) {
-        sc.skipBlank();
-        if (sc.atStatementEnd()) break;
-        const tokenStart = sc.pos;
-        const v = sc.readIndexField();
-        let t = 0, nn = 0;
-        if (sc.skipSlash()) {
-          t = sc.readIndexField();
-          if (sc.skipSlash()) nn = sc.readIndexField();
-        }
-        if (sc.pos === tokenStart) {
-          sc.pos++; // never stall on a character no reader consumes
-          if (fault === '') fault = `${shown(text.charAt(tokenStart))} is not a face corner`;
-        }
-        // Past the cap the line is still read to its end (to count it), but nothing is kept.
-        if (++cornerCount > MAX_FACE_CORNERS && fault === '') fault = 'too many';
-        if (fault !== '') continue;
-        const vi = resolve(v, vCount), ti = t === 0 ? -1 : resolve(t, tCount), ni = nn === 0 ? -1 : resolve(nn, nCount);
-        if (v !== v || t !== t || nn !== nn) fault = `${shown(text.slice(tokenStart, sc.tokenEnd()))} is not a face corner`;
-        else if (vi < 0) fault = `vertex index ${v} is outside the ${vCount} vertices read so far`;
-        else if (t !== 0 && ti < 0) fault = `texture coordinate index ${t} is outside the ${tCount} read so far`;
-        else if (nn !== 0 && ni < 0) fault = `normal index ${nn} is outside the ${nCount} read so far`;
-        else if (badLine[0].size > 0 && badLine[0].has(vi)) fault = `vertex ${vi + 1} (line ${badLine[0].get(vi)}) is not usable`;
-        else if (ti >= 0 && badLine[1].size > 0 && badLine[1].has(ti)) fault = `texture coordinate ${ti + 1} (line ${badLine[1].get(ti)}) is not usable`;
-        else if (ni >= 0 && badLine[2].size > 0 && badLine[2].has(ni)) fault = `normal ${ni + 1} (line ${badLine[2].get(ni)}) is not usable`;
-        else face.push3(vi, ti, ni);
-      }
-      const count = face.length / 3;
-      if (cornerCount > MAX_FACE_CORNERS) dropFace(line, `face of ${cornerCount} vertices, more than the ${MAX_FACE_CORNERS} a face may have; face dropped`);
-      else if (fault !== '') dropFace(line, `${fault}; face dropped`);
-      else if (count < 3) dropFace(line, `face with ${count} ${count === 1 ? 'vertex' : 'vertices'} (a face needs 3); face dropped`);
-      else {
-        const start = corners.length / 3;
-        for (let k = 0; k < face.length; k++) corners.push(face.data[k]);
-        const firstTriangle = triangles.length / 3;
-        const clipped = triangulate(positions.data, corners.data, start, count, triangles);
-        // A triangle as written is kept as written; what triangulating a polygon makes of zero area is not.
-        const kept = count === 3 ? 1 : dropZeroArea(positions.data, corners.data, triangles, firstTriangle);
-        if (kept === 0) {
-          corners.length = 3 * start;
-          dropFace(line, `face of ${count} vertices with no area (its corners are repeated or on one line); face dropped`);
-        } else {
-          if (!clipped) warnings.add(line, `face of ${count} vertices too large to ear-clip in time; part of it drawn as a fan`);
-          faces.push3(start, count, firstTriangle);
-          faces.push3(kept, smooth, material);
-        }
-      }
-    } else {
-      const keyword = sc.readToken();
-      sc.skipBlank();
-      switch (keyword) {
-        case 'o':
-          addUnique(objects, seenObjects, [sc.restOfLine()]);
-          break;
-        case 'g':
-          addUnique(groupNames, seenGroups, splitGroups(sc.restOfLine()));
-          break;
-        case 's': {
-          const arg = sc.restOfLine().toLowerCase();
-          if (arg === 'off' || arg === '0' || arg === '') smooth = FLAT;
-          else {
-            if (!smoothSlot.has(arg)) smoothSlot.set(arg, smoothSlot.size + 1);
-            smooth = smoothSlot.get(arg)!;
-          }
-          break;
-        }
-        case 'usemtl': {
-          const name = sc.restOfLine();
-          if (!materialSlot.has(name)) {
-            materialSlot.set(name, materials.length);
-            materials.push(name);
-          }
-          material = materialSlot.get(name)!;
-          break;
-        }
-        case 'mtllib':
-          addUnique(mtllibs, seenLibs, splitMtllib(sc.restOfLine()));
-          break;
-        default:
-          if (UNSUPPORTED.has(keyword)) warnings.addOncePerKeyword(keyword, line, `${shown(keyword)} statements are not supported; ignored`);
-          else warnings.addOncePerKeyword(keyword.slice(0, 64), line, `unknown statement ${shown(keyword)}; ignored`);
-      }
-    }
-    sc.nextLine();
   }
 
-  return {
-    positions, colors, uvs, normals, corners, triangles, faces, materials, objects, groupNames, mtllibs,
-    warnings, droppedFaces, firstDroppedLine,
-  };
+  private dropFace(line: number, message: string): void {
+    this.warnings.add(line, message);
+    if (this.droppedFaces++ === 0) this.firstDroppedLine = line;
+  }
+
+  /** `v x y z [r g b]`: a position, and a colour once any vertex has one. */
+  private vertex(line: number): void {
+    const { sc, positions, values, warnings } = this;
+    sc.pos += 1;
+    const n = this.readValues();
+    const index = positions.length / 3;
+    if (n < 3) {
+      this.badLine[0].set(index, line);
+      warnings.add(line, n < 0 ? `vertex with a coordinate that is not a number (${shownLine(this.text, sc)}); faces using it are dropped`
+        : `vertex with ${n} of its 3 coordinates; faces using it are dropped`);
+      positions.push3(NaN, NaN, NaN);
+    } else {
+      positions.push3(values[0], values[1], values[2]);
+      if (n > 7) warnings.add(line, `vertex with ${n} values; those after x y z r g b ignored`);
+    }
+    if (n >= 6 && this.colors === null) {
+      this.colors = new F64List(positions.data.length);
+      for (let k = 0; k < index; k++) this.colors.push3(1, 1, 1);
+    }
+    if (this.colors !== null) {
+      if (n >= 6) this.colors.push3(values[3], values[4], values[5]);
+      else this.colors.push3(1, 1, 1);
+    }
+  }
+
+  /** `vt u [v [w]]`. */
+  private textureCoordinate(line: number): void {
+    const { sc, uvs, values } = this;
+    sc.pos += 2;
+    const n = this.readValues();
+    if (n < 1) {
+      this.badLine[1].set(uvs.length / 2, line);
+      this.warnings.add(line, `texture coordinate that is not a number (${shownLine(this.text, sc)}); faces using it are dropped`);
+      uvs.push(NaN);
+      uvs.push(NaN);
+    } else {
+      uvs.push(values[0]);
+      uvs.push(n > 1 ? values[1] : 0);
+    }
+  }
+
+  /** `vn x y z`. */
+  private normal(line: number): void {
+    const { normals, values } = this;
+    this.sc.pos += 2;
+    const n = this.readValues();
+    if (n < 3) {
+      this.badLine[2].set(normals.length / 3, line);
+      this.warnings.add(line, `normal with ${n < 0 ? 'a value that is not a number' : `${n} of its 3 values`}; faces using it are dropped`);
+      normals.push3(NaN, NaN, NaN);
+    } else {
+      normals.push3(values[0], values[1], values[2]);
+    }
+  }
+
+  /** `f v/t/n …`: its corners read, then the face kept (triangulated) or dropped with the reason. */
+  private faceStatement(line: number): void {
+    this.sc.pos += 1;
+    this.readCorners();
+    const { fault, cornerCount } = this;
+    const count = this.face.length / 3;
+    if (cornerCount > MAX_FACE_CORNERS) this.dropFace(line, `face of ${cornerCount} vertices, more than the ${MAX_FACE_CORNERS} a face may have; face dropped`);
+    else if (fault !== '') this.dropFace(line, `${fault}; face dropped`);
+    else if (count < 3) this.dropFace(line, `face with ${count} ${count === 1 ? 'vertex' : 'vertices'} (a face needs 3); face dropped`);
+    else this.keepFace(line, count);
+  }
+
+  /**
+   * The face's corners into `face` (0-based indices, −1 for none), up to the first fault; the
+   * rest of the statement is still read, to count its corners. Sets `fault` and `cornerCount`.
+   */
+  private readCorners(): void {
+    const { sc, text, face, badLine } = this;
+    face.clear();
+    let fault = '';
+    let cornerCount = 0;
+    const vCount = this.positions.length / 3, tCount = this.uvs.length / 2, nCount = this.normals.length / 3;
+    for (;;) {
+      sc.skipBlank();
+      if (sc.atStatementEnd()) break;
+      const tokenStart = sc.pos;
+      const v = sc.readIndexField();
+      let t = 0, nn = 0;
+      if (sc.skipSlash()) {
+        t = sc.readIndexField();
+        if (sc.skipSlash()) nn = sc.readIndexField();
+      }
+      if (sc.pos === tokenStart) {
+        sc.pos++; // never stall on a character no reader consumes
+        if (fault === '') fault = `${shown(text.charAt(tokenStart))} is not a face corner`;
+      }
+      // Past the cap the line is still read to its end (to count it), but nothing is kept.
+      if (++cornerCount > MAX_FACE_CORNERS && fault === '') fault = 'too many';
+      if (fault !== '') continue;
+      const vi = resolve(v, vCount), ti = t === 0 ? -1 : resolve(t, tCount), ni = nn === 0 ? -1 : resolve(nn, nCount);
+      if (v !== v || t !== t || nn !== nn) fault = `${shown(text.slice(tokenStart, sc.tokenEnd()))} is not a face corner`;
+      else if (vi < 0) fault = `vertex index ${v} is outside the ${vCount} vertices read so far`;
+      else if (t !== 0 && ti < 0) fault = `texture coordinate index ${t} is outside the ${tCount} read so far`;
+      else if (nn !== 0 && ni < 0) fault = `normal index ${nn} is outside the ${nCount} read so far`;
+      else if (badLine[0].size > 0 && badLine[0].has(vi)) fault = `vertex ${vi + 1} (line ${badLine[0].get(vi)}) is not usable`;
+      else if (ti >= 0 && badLine[1].size > 0 && badLine[1].has(ti)) fault = `texture coordinate ${ti + 1} (line ${badLine[1].get(ti)}) is not usable`;
+      else if (ni >= 0 && badLine[2].size > 0 && badLine[2].has(ni)) fault = `normal ${ni + 1} (line ${badLine[2].get(ni)}) is not usable`;
+      else face.push3(vi, ti, ni);
+    }
+    this.fault = fault;
+    this.cornerCount = cornerCount;
+  }
+
+  /** The face's `count` corners and triangles kept, unless triangulating leaves no area. */
+  private keepFace(line: number, count: number): void {
+    const { corners, triangles, positions, face } = this;
+    const start = corners.length / 3;
+    for (let k = 0; k < face.length; k++) corners.push(face.data[k]);
+    const firstTriangle = triangles.length / 3;
+    const clipped = triangulate(positions.data, corners.data, start, count, triangles);
+    // A triangle as written is kept as written; what triangulating a polygon makes of zero area is not.
+    const kept = count === 3 ? 1 : dropZeroArea(positions.data, corners.data, triangles, firstTriangle);
+    if (kept === 0) {
+      corners.length = 3 * start;
+      this.dropFace(line, `face of ${count} vertices with no area (its corners are repeated or on one line); face dropped`);
+      return;
+    }
+    if (!clipped) this.warnings.add(line, `face of ${count} vertices too large to ear-clip in time; part of it drawn as a fan`);
+    this.faces.push3(start, count, firstTriangle);
+    this.faces.push3(kept, this.smooth, this.material);
+  }
+
+  /** o, g, s, usemtl, mtllib; anything else is a warning, once per keyword. */
+  private otherStatement(line: number): void {
+    const sc = this.sc;
+    const keyword = sc.readToken();
+    sc.skipBlank();
+    switch (keyword) {
+      case 'o':
+        addUnique(this.objects, this.seenObjects, [sc.restOfLine()]);
+        break;
+      case 'g':
+        addUnique(this.groupNames, this.seenGroups, splitGroups(sc.restOfLine()));
+        break;
+      case 's': {
+        const arg = sc.restOfLine().toLowerCase();
+        if (arg === 'off' || arg === '0' || arg === '') this.smooth = FLAT;
+        else {
+          if (!this.smoothSlot.has(arg)) this.smoothSlot.set(arg, this.smoothSlot.size + 1);
+          this.smooth = this.smoothSlot.get(arg)!;
+        }
+        break;
+      }
+      case 'usemtl': {
+        const name = sc.restOfLine();
+        if (!this.materialSlot.has(name)) {
+          this.materialSlot.set(name, this.materials.length);
+          this.materials.push(name);
+        }
+        this.material = this.materialSlot.get(name)!;
+        break;
+      }
+      case 'mtllib':
+        addUnique(this.mtllibs, this.seenLibs, splitMtllib(sc.restOfLine()));
+        break;
+      default:
+        if (UNSUPPORTED.has(keyword)) this.warnings.addOncePerKeyword(keyword, line, `${shown(keyword)} statements are not supported; ignored`);
+        else this.warnings.addOncePerKeyword(keyword.slice(0, 64), line, `unknown statement ${shown(keyword)}; ignored`);
+    }
+  }
 }
 
 /** Whitespace, a line end or the end of the text: what may follow a one- or two-letter keyword. */

@@ -1,5 +1,5 @@
 // Counts live GL objects per owner, so tests can see them return to zero after dispose().
-import type { ResourceCounts } from '../types';
+import type { ResourceCounts } from '../../frame/types';
 
 export type ResourceKind = keyof ResourceCounts;
 

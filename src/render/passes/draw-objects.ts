@@ -2,12 +2,13 @@
 // mirrored one (pass 1): opaque ones first, then those with opacity < 1 blended over them
 // (depth-tested, no depth write), as SPEC §9 and seed 002 ask.
 import { signedDistance } from '../../math/mirror';
-import { orthoPixelsPerUnit } from '../reflection-lod';
+import { focalPixels, orthoPixelsPerUnit } from '../../frame/reflection-lod';
 import type { Program } from '../gl/program';
 import type { Texture } from '../gl/texture';
 import type { ClipMode, ObjectVariant } from '../programs';
 import type { SceneObject } from '../../scene/scene';
-import { isTwoSided, setLights, setMaterial, setMatrices, type PassContext } from './pass-context';
+import { setLights, setMaterial, setMatrices, type PassContext } from './pass-context';
+import { isTwoSided } from '../../frame/mesh-choice';
 
 /**
  * Compiles (or finds) every variant the objects need before the caller touches GL state:
@@ -20,7 +21,7 @@ export function prepareObjectPrograms(ctx: PassContext, clip: ClipMode): void {
 /** The object's variant, filled in place (no allocation per draw). */
 const variant: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv' };
 function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
-  variant.twoSided = isTwoSided(o.geometry.kind);
+  variant.twoSided = isTwoSided(o.geometry);
   variant.lights = ctx.setup.lightCount;
   variant.pointMask = ctx.setup.pointMask;
   variant.mapping = o.material.mapping;
@@ -36,7 +37,7 @@ function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
 export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean, targetHeight: number): number {
   const { gl, setup, scene } = ctx;
   const eye = setup.mirroredEye;
-  const focal = targetHeight / (2 * Math.tan((ctx.state.fov * Math.PI) / 360));
+  const focal = focalPixels(targetHeight, ctx.state.fov);
   // The mirrored camera is orthographic too: the same pixels per unit at every depth.
   const orthoPpu = setup.orthographic ? orthoPixelsPerUnit(targetHeight, setup.halfHeight) : 0;
   const objects = scene.objects;
@@ -51,7 +52,7 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean,
       const m = setup.objects[i];
       // Culling, not selection (SPEC §4): bounds wholly beyond the glass cannot be reflected.
       if (mirrored && ctx.cull && setup.side * signedDistance(setup.glass.plane, m.center) <= -m.radius) continue;
-      const twoSided = isTwoSided(o.geometry.kind);
+      const twoSided = isTwoSided(o.geometry);
       const program = ctx.programs.standard(clip, ctx.state.shading, variantOf(ctx, o));
       const switched = program !== current;
       if (switched) {

@@ -1,9 +1,9 @@
 // Pass 3: the two-sided glass, depth-tested without depth writes, blended over pass 2 with
 // premultiplied alpha (ONE, ONE_MINUS_SRC_ALPHA). `outputFresnel` writes F as grey instead.
-import { GLASS } from '../../scene/default-scene';
+import { GLASS_BODY } from '../../scene/default-scene';
 import { setMatrices, type PassContext } from './pass-context';
 
-const BODY_TINT = GLASS.tint.map((c) => c * GLASS.darkness);
+const BODY_TINT = new Float32Array(GLASS_BODY);
 
 /** Draws into the bound framebuffer and viewport; returns the number of draw calls. */
 export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFresnel = false): number {

@@ -4,19 +4,13 @@ import type { Mesh } from '../gl/mesh';
 import type { Program } from '../gl/program';
 import type { Texture } from '../gl/texture';
 import type { TextureCache } from '../texture-cache';
-import type { DrawMatrices, FrameSetup, LightVectors } from '../frame-setup';
+import type { DrawMatrices, FrameSetup, LightVectors } from '../../frame/frame-setup';
 import type { ObjectMeshes } from '../object-meshes';
 import type { ProgramCache } from '../programs';
-import type { FrameState } from '../types';
+import type { FrameState, Viewport } from '../../frame/types';
 import type { Material, Scene, SceneObject } from '../../scene/scene';
 
-/** A rectangle of the bound framebuffer, in pixels, origin bottom-left. */
-export interface Viewport {
-  x: number;
-  y: number;
-  width: number;
-  height: number;
-}
+export type { Viewport };
 
 export interface PassContext {
   gl: WebGL2RenderingContext;
@@ -84,6 +78,3 @@ export function setMatrices(gl: WebGL2RenderingContext, p: Program, m: DrawMatri
   gl.uniformMatrix4fv(p.location('uModelRelative'), false, m.modelRelative);
   gl.uniformMatrix3fv(p.location('uNormalMatrix'), false, m.normal);
 }
-
-/** Built-ins are closed and wound outwards (back faces culled); meshes from files are neither. */
-export const isTwoSided = (kind: string): boolean => kind === 'mesh' || kind === 'gaussian';

@@ -2,7 +2,7 @@
 // and the page's pixels back as an RgbaImage.
 import type { Page } from '@playwright/test';
 import type { Scene } from '../../../src/scene/scene';
-import type { FrameState } from '../../../src/render/types';
+import type { FrameState } from '../../../src/frame/types';
 import type { RgbaImage } from './golden';
 
 export function sceneToJson(scene: Scene): Scene {

@@ -2,7 +2,7 @@
 // use it to test what the renderer does with scenes the element cannot describe yet. Scenes
 // arrive as JSON; a mesh's typed arrays as plain arrays (see tests/e2e/helpers/scene-json.ts).
 import { Renderer } from '../../../src/render/renderer';
-import type { FrameState } from '../../../src/render/types';
+import type { FrameState } from '../../../src/frame/types';
 import type { Scene } from '../../../src/scene/scene';
 import type { MeshData } from '../../../src/scene/geometry/mesh-data';
 

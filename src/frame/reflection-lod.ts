@@ -4,6 +4,7 @@
 // (on SwiftShader the frame is bound by triangles, not by the reflection's resolution). The
 // reflection draws a vertex-clustered copy (scene/geometry/cluster.ts) whose cells span at most
 // REFLECTION_CELL_PX pixels of the reflection target at the object's centre.
+import { tanHalfFov } from '../math/camera';
 
 /** Cell size of the reflection's mesh, in pixels of the reflection target. */
 export const REFLECTION_CELL_PX = 4;
@@ -26,11 +27,19 @@ export function reflectionGrid(worldExtent: number, pixelsPerUnit: number): numb
 }
 
 /**
+ * Focal length in pixels of a perspective eye of vertical field of view `fovDeg` over a target
+ * `height` pixels tall: pixels per world unit at unit distance.
+ */
+export function focalPixels(height: number, fovDeg: number): number {
+  return height / (2 * tanHalfFov(fovDeg));
+}
+
+/**
  * Pixels per world unit at distance `distance` from a perspective eye of vertical field of
  * view `fovDeg` over a target `height` pixels tall; Infinity when the eye is at the point.
  */
 export function pixelsPerUnit(height: number, fovDeg: number, distance: number): number {
-  return height / (2 * Math.tan((fovDeg * Math.PI) / 360) * distance);
+  return focalPixels(height, fovDeg) / distance;
 }
 
 /** Pixels per world unit anywhere in an orthographic view of half-height `halfHeight` over `height` pixels. */

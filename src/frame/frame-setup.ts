@@ -3,7 +3,7 @@
 // Reads the scene value (SPEC §9): any number of objects, any glass placement, up to 4 lights.
 import { mat3, mat4 } from 'gl-matrix';
 import { forwardFromYawPitch, orthoHalfHeight, orthographicMatrix, projectionMatrix, rotationOnlyView, viewerSide } from '../math/camera';
-import { reflectDirection, reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
+import { eyeRelativePlane, reflectDirection, reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
 import { courseViewProjection, type CourseCamera } from '../math/course-camera';
 import { courseSceneRange, type CourseDepthRange } from '../scene/course-depth';
 import { CAMERA, DEFAULT_GLASS } from '../scene/default-scene';
@@ -21,6 +21,8 @@ export class DrawMatrices {
 /** One object's matrices for both eyes, and its bounding sphere in world space. */
 export class ObjectMatrices {
   readonly model = new Float64Array(16);
+  /** The model's normal matrix (inverse transpose, 3×3), float64: the same for both eyes. */
+  readonly normal = new Float64Array(9);
   readonly main = new DrawMatrices();
   readonly mirrored = new DrawMatrices();
   readonly center = new Float64Array(3);
@@ -92,17 +94,21 @@ export class FrameSetup {
   pointMask = 0;
   /** The glass projected by the mirrored camera (for the reflection lookup). */
   readonly reflectionViewProjection = new Float32Array(16);
-  /** Clip plane in mirrored-eye-relative coordinates; keeps the eye's side. */
+  /** Clip plane in mirrored-eye-relative coordinates (float64); keeps the eye's side. */
+  readonly mirroredClip = f64(4);
+  /** mirroredClip in float32, for upload. */
   readonly clipPlane = new Float32Array(4);
 
   /** Projection × rotation-only view: maps eye-relative points to clip space. */
   readonly viewProjection = f64(16);
+  /** The same for mirrored-eye-relative points: viewProjection · L, L the plane's linear reflection. */
+  readonly mirroredViewProjection = f64(16);
   private readonly viewRotation = f64(16);
-  private readonly mirroredViewProjection = f64(16);
   private readonly reflectionLinear = f64(16);
   private readonly relative = f64(16);
   private readonly temp = f64(16);
-  private readonly normal3 = f64(9);
+  /** The glass's normal matrix: its mesh is in world coordinates. */
+  private readonly identityNormal = mat3.identity(f64(9) as unknown as mat3) as unknown as Float64Array;
   private readonly scratch3 = f64(3);
   private readonly identity = mat4.identity(f64(16) as unknown as mat4) as unknown as Float64Array;
   private lastGlass: Glass | null | undefined = undefined;
@@ -129,6 +135,24 @@ export class FrameSetup {
     this.side = viewerSide(plane, eye, forward, projection);
     this.viewDot = plane[0] * forward[0] + plane[1] * forward[1] + plane[2] * forward[2];
 
+    this.viewAndProjection(s, scene, forward);
+    // Mirrored eye-relative: V·R·x = Vrot·L·(x − mirroredEye), L the plane's linear reflection.
+    reflectionMatrix(this.reflectionLinear, plane);
+    this.reflectionLinear[12] = this.reflectionLinear[13] = this.reflectionLinear[14] = 0;
+    mat4.multiply(this.mirroredViewProjection as unknown as mat4, this.viewProjection as unknown as mat4, this.reflectionLinear as unknown as mat4);
+    this.drawMatrices(scene, s.time);
+    this.lightValues(scene);
+
+    // Keep what lies on the viewer's side: side·(n·(rel + e′) + d) ≥ 0 (exact in either projection).
+    this.clipPlane.set(eyeRelativePlane(this.mirroredClip, plane, mirroredEye, this.side));
+  }
+
+  /**
+   * projection and viewProjection of this frame's camera (the course's, an orthographic or a
+   * perspective one), the orthographic half-height and each eye's view vector.
+   */
+  private viewAndProjection(s: FrameState, scene: Scene, forward: Float64Array): void {
+    const course = s.courseCamera ?? null;
     // Same near and far for both projections (SPEC §2): the orthographic eye is a point on the
     // view plane's centre like the perspective one, and draws depths near..far ahead of it.
     const aspect = s.width / Math.max(1, s.height);
@@ -139,13 +163,15 @@ export class FrameSetup {
       this.viewVectorMain.set(PERSPECTIVE_VIEW);
       this.viewVectorMirrored.set(PERSPECTIVE_VIEW);
       this.courseViewProjection(course, scene, s.time);
-    } else if (this.orthographic) {
+      return;
+    }
+    if (this.orthographic) {
       this.halfHeight = orthoHalfHeight(s, scene.glass?.center ?? null);
       orthographicMatrix(this.projection, this.halfHeight, aspect, CAMERA.near, CAMERA.far);
       const vm = this.viewVectorMain, vr = this.viewVectorMirrored, t = this.scratch3;
       vm[0] = -forward[0]; vm[1] = -forward[1]; vm[2] = -forward[2]; vm[3] = 0;
       t[0] = -forward[0]; t[1] = -forward[1]; t[2] = -forward[2];
-      reflectDirection(t, t, plane);
+      reflectDirection(t, t, this.glass.plane);
       vr[0] = t[0]; vr[1] = t[1]; vr[2] = t[2]; vr[3] = 0;
     } else {
       this.halfHeight = 0;
@@ -153,28 +179,31 @@ export class FrameSetup {
       this.viewVectorMain.set(PERSPECTIVE_VIEW);
       this.viewVectorMirrored.set(PERSPECTIVE_VIEW);
     }
-    if (!course) {
-      rotationOnlyView(this.viewRotation, s.yaw, s.pitch, this.scratch3);
-      mat4.multiply(this.viewProjection as unknown as mat4, this.projection as unknown as mat4, this.viewRotation as unknown as mat4);
-    }
-    // Mirrored eye-relative: V·R·x = Vrot·L·(x − mirroredEye), L the plane's linear reflection.
-    reflectionMatrix(this.reflectionLinear, plane);
-    this.reflectionLinear[12] = this.reflectionLinear[13] = this.reflectionLinear[14] = 0;
-    mat4.multiply(this.mirroredViewProjection as unknown as mat4, this.viewProjection as unknown as mat4, this.reflectionLinear as unknown as mat4);
+    rotationOnlyView(this.viewRotation, s.yaw, s.pitch, this.scratch3);
+    mat4.multiply(this.viewProjection as unknown as mat4, this.projection as unknown as mat4, this.viewRotation as unknown as mat4);
+  }
 
+  /** Every object's matrices and the glass's, for both eyes. */
+  private drawMatrices(scene: Scene, time: number): void {
+    const { eye, mirroredEye } = this;
     const objects = scene.objects;
     while (this.objects.length < objects.length) this.objects.push(new ObjectMatrices());
     for (let i = 0; i < objects.length; i++) {
       const o = this.objects[i];
-      this.modelMatrix(o, objects[i], s.time);
-      this.compose(o.main, o.model, eye, this.viewProjection);
-      this.compose(o.mirrored, o.model, mirroredEye, this.mirroredViewProjection);
+      this.modelMatrix(o, objects[i], time);
+      mat3.normalFromMat4(o.normal as unknown as mat3, o.model as unknown as mat4);
+      this.compose(o.main, o.model, o.normal, eye, this.viewProjection);
+      this.compose(o.mirrored, o.model, o.normal, mirroredEye, this.mirroredViewProjection);
     }
-    this.compose(this.glassMain, this.identity, eye, this.viewProjection);
-    this.compose(this.glassMirrored, this.identity, mirroredEye, this.mirroredViewProjection);
+    this.compose(this.glassMain, this.identity, this.identityNormal, eye, this.viewProjection);
+    this.compose(this.glassMirrored, this.identity, this.identityNormal, mirroredEye, this.mirroredViewProjection);
     this.reflectionViewProjection.set(this.glassMirrored.modelViewProjection);
-    lightVectors(this.lightsMain, scene, eye);
-    lightVectors(this.lightsMirrored, scene, mirroredEye);
+  }
+
+  /** The lights' vectors from each eye, their colours, how many and which are points. */
+  private lightValues(scene: Scene): void {
+    lightVectors(this.lightsMain, scene, this.eye);
+    lightVectors(this.lightsMirrored, scene, this.mirroredEye);
     this.lightCount = Math.min(scene.lights.length, MAX_LIGHTS);
     this.pointMask = 0;
     for (let i = 0; i < this.lightCount; i++) {
@@ -186,13 +215,6 @@ export class FrameSetup {
         this.lightSpecular[3 * i + c] = l.specular[c];
       }
     }
-
-    // Keep what lies on the viewer's side: side·(n·(rel + e′) + d) ≥ 0 (exact in either projection).
-    const p = plane;
-    this.clipPlane[0] = this.side * p[0];
-    this.clipPlane[1] = this.side * p[1];
-    this.clipPlane[2] = this.side * p[2];
-    this.clipPlane[3] = this.side * signedDistance(p, mirroredEye);
   }
 
   private copyForward(n: ArrayLike<number>): Float64Array {
@@ -249,15 +271,14 @@ export class FrameSetup {
     out.radius = object.bounds.radius * Math.max(Math.abs(scale[0]), Math.abs(scale[1]), Math.abs(scale[2]));
   }
 
-  private compose(out: DrawMatrices, model: Float64Array, eye: Float64Array, viewProjection: Float64Array): void {
+  private compose(out: DrawMatrices, model: Float64Array, normal: Float64Array, eye: Float64Array, viewProjection: Float64Array): void {
     const rel = this.relative;
     rel.set(model);
     rel[12] -= eye[0]; rel[13] -= eye[1]; rel[14] -= eye[2];
     out.modelRelative.set(rel);
     mat4.multiply(this.temp as unknown as mat4, viewProjection as unknown as mat4, rel as unknown as mat4);
     out.modelViewProjection.set(this.temp);
-    mat3.normalFromMat4(this.normal3 as unknown as mat3, model as unknown as mat4);
-    out.normal.set(this.normal3);
+    out.normal.set(normal);
   }
 }
 

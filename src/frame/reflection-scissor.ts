@@ -3,7 +3,7 @@
 // with normalised coordinates, so screen pixel x maps to texel x × (target width ÷ screen width),
 // whatever the nominal scale was.
 import type { ScreenRect } from './glass-bounds';
-import type { Viewport } from './passes/pass-context';
+import type { Viewport } from './types';
 
 /** One side of the reflection target: `side` × `scale`, rounded, within 1..`max`. */
 export function reflectionTargetSide(side: number, scale: number, max: number): number {

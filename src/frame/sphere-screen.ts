@@ -1,9 +1,7 @@
 // How big a sphere looks on screen, and the silhouette error 'auto' tessellation aims for:
 // pure math, shared by the GL sphere LOD and the software renderer (no GL here).
 import type { FrameState } from './types';
-import { orthoPixelsPerUnit } from './reflection-lod';
-
-const DEG = Math.PI / 180;
+import { focalPixels, orthoPixelsPerUnit } from './reflection-lod';
 
 /**
  * Silhouette error 'auto' aims for, in pixels. Half a pixel (SPEC §5's bound) left the
@@ -23,7 +21,7 @@ export function sphereScreenRadius(
   if (orthoHalfHeight > 0) return radius * orthoPixelsPerUnit(state.height, orthoHalfHeight);
   const [x, y, z] = state.cameraPosition;
   const d = Math.hypot(centre[0] - x, centre[1] - y, centre[2] - z);
-  const focal = state.height / 2 / Math.tan((state.fov * DEG) / 2);
+  const focal = focalPixels(state.height, state.fov);
   if (d <= radius * 1.0001) return Number.POSITIVE_INFINITY; // inside it
   // Silhouette of a sphere: angular radius asin(r/d).
   return focal * Math.tan(Math.asin(radius / d));

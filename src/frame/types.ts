@@ -1,0 +1,109 @@
+// Plain data both renderers take and give back (the frame's state, its reports): no DOM, no GL handles.
+import type { FresnelModel } from '../math/fresnel';
+import type { Projection } from '../math/camera';
+import type { CourseCamera } from '../math/course-camera';
+
+export type { Projection };
+
+export type PassName = 'reflection' | 'scene' | 'glass';
+
+export type RenderView = 'final' | 'reflection' | 'scene' | 'fresnel' | 'passes';
+
+/** Everything a frame depends on. Same state in, same pixels out. */
+export interface FrameState {
+  width: number;
+  height: number;
+  time: number;
+  spin: number;
+  cubeDistance: number;
+  transparency: number;
+  ior: number;
+  fresnel: FresnelModel;
+  fov: number;
+  cameraPosition: readonly [number, number, number];
+  yaw: number;
+  pitch: number;
+  view: RenderView;
+  /** Reflection framebuffer size ÷ drawing-buffer size (0.125..2). */
+  reflectionScale: number;
+  /** MSAA samples (0 = none); clamped to the context's MAX_SAMPLES. */
+  samples: number;
+  shading: Shading;
+  /** Sphere segments, or 'auto' from its size on screen. */
+  tessellation: number | 'auto';
+  /** Storage of the reflection: 8-bit, or half float (where the context can render to it). */
+  reflectionFormat: ReflectionFormat;
+  /** Absent: perspective. Orthographic keeps the reflection (SPEC §10). */
+  projection?: Projection;
+  /** The camera target, if any: only the orthographic size reads it (depth of this point). */
+  target?: readonly [number, number, number] | null;
+  /**
+   * A course camera (SPEC §11, `camera-src`): when set it is the view, in place of
+   * cameraPosition/yaw/pitch/fov/projection; near and far come from the scene's geometry.
+   * The element then sets cameraPosition to C and fov to 2·atan(|hy/d|), which only the
+   * level-of-detail choices (sphere segments, reflection meshes) read.
+   */
+  courseCamera?: CourseCamera | null;
+}
+
+export type ReflectionFormat = 'rgba8' | 'rgba16f';
+
+export type Shading = 'phong' | 'gouraud' | 'flat';
+
+export interface PassReport {
+  readonly ran: boolean;
+  /** Why a pass did not run. */
+  readonly reason?: string;
+}
+
+export interface FrameReport {
+  /** Frames rendered so far by this element, this one included. */
+  frame: number;
+  /** Scene clock of the frame, seconds. */
+  time: number;
+  width: number;
+  height: number;
+  passes: Readonly<Record<PassName, PassReport>>;
+  drawCalls: number;
+}
+
+export interface ResourceCounts {
+  buffers: number;
+  textures: number;
+  framebuffers: number;
+  renderbuffers: number;
+  vertexArrays: number;
+  programs: number;
+  shaders: number;
+}
+
+export interface RenderStats {
+  frames: number;
+  /** Shader programs compiled (only the variants in use). */
+  programs: number;
+  /** Segments of the sphere mesh in use. */
+  sphereSegments: number;
+  passesRun: Record<PassName, number>;
+  passesSkipped: Record<PassName, number>;
+  /** Draw calls of the last frame. */
+  drawCalls: number;
+  /**
+   * Triangles the last frame submitted from each eye. With tessellation 'auto' the reflection
+   * of a dense mesh draws a coarser copy (cells of a few reflection pixels), so `reflection`
+   * can be well below `scene`.
+   */
+  triangles: { scene: number; reflection: number };
+  /** Which renderer draws (set by the element): WebGL2, or the CPU in a worker or on the main thread. */
+  renderer?: 'webgl' | 'software' | null;
+  thread?: 'worker' | 'main';
+  /** Live GL objects owned by this element; all zero after it is removed. */
+  resources: ResourceCounts & { total: number };
+}
+
+/** A rectangle of a framebuffer, in pixels, origin bottom-left. */
+export interface Viewport {
+  x: number;
+  y: number;
+  width: number;
+  height: number;
+}

@@ -1,0 +1,8 @@
+// An image's pixels as plain data, as every renderer takes them (no DOM, no GL).
+
+/** Decoded pixels as a canvas or an image decoder gives them: RGBA8, top row first. */
+export interface DecodedImage {
+  width: number;
+  height: number;
+  data: Uint8Array | Uint8ClampedArray;
+}
