@@ -62,7 +62,7 @@ export default [
   },
   {
     name: 'C9 camera-change fired at pointer up, before the inertia ends',
-    edits: [{ file: POINTER, find: "    if (this.spin.active) this.hooks.changed(this.spinKind === 'orbit');\n    else if (this.moved) this.end();", replace: "    if (this.spin.active) this.hooks.changed(this.spinKind === 'orbit');\n    if (this.moved) this.end();" }],
+    edits: [{ file: POINTER, find: "    if (this.spin.active) this.host.changed(this.spinKind === 'orbit');\n    else if (this.moved) this.end();", replace: "    if (this.spin.active) this.host.changed(this.spinKind === 'orbit');\n    if (this.moved) this.end();" }],
     tests: [INERTIA],
   },
   {
@@ -79,7 +79,7 @@ export default [
     name: 'C12 orbit inertia in degrees per second again (capped at 6.3°/s, stops at 0.00087°/s)',
     edits: [
       { file: POINTER, find: 'this.delta[0] = yaw * DEG; this.delta[1] = pitch * DEG;', replace: 'this.delta[0] = yaw; this.delta[1] = pitch;' },
-      { file: POINTER, find: 'this.orbit.rotate(this.hooks.pose(), d[0] / DEG, d[1] / DEG);', replace: 'this.orbit.rotate(this.hooks.pose(), d[0], d[1]);' },
+      { file: POINTER, find: 'this.orbit.rotate(this.host.pose(), d[0] / DEG, d[1] / DEG);', replace: 'this.orbit.rotate(this.host.pose(), d[0], d[1]);' },
     ],
     tests: [INERTIA],
   },

@@ -13,12 +13,12 @@ export default [
   },
   {
     name: '14 the software renderer never given the decoded images',
-    edits: [{ file: ELEMENT, find: '      this.images.attach(host);\n', replace: '' }],
+    edits: [{ file: ELEMENT, find: '      this.images.feed(host);\n', replace: '' }],
     tests: ['tests/e2e/model-reference.spec.ts'],
   },
   {
     name: 'E1 image textures lost after a context restore (a new renderer is not handed the images decoded so far)',
-    edits: [{ file: 'src/element/texture-images.ts', find: '    if (sink) for (const [url, image] of this.ready) sink.setImage(url, image);\n', replace: '' }],
+    edits: [{ file: 'src/element/texture-images.ts', find: '    for (const [url, image] of this.ready) sink.setImage(url, image);\n', replace: '' }],
     tests: [LIFECYCLE],
   },
   {

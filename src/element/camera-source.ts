@@ -8,10 +8,21 @@ import type { Scene } from '../scene/scene';
 import { acquireCourseFile, loadErrorDetail, type Handle } from './children/model-cache';
 import type { LoadedCamera } from './children/course-files';
 import { warn } from './warnings';
+import type { Controller } from './controller';
 
 const DEG = 180 / Math.PI;
 
-export class CameraSource {
+/** What CameraSource needs of the scene element. */
+export interface CameraSourceHost {
+  /** The scene element: `error` is fired on it, and nothing loads while it is disconnected. */
+  readonly element: HTMLElement;
+  /** `camera-src` as written; null when absent. */
+  src(): string | null;
+  /** The camera in force changed, or a load failed: draw again. */
+  changed(): void;
+}
+
+export class CameraSource implements Controller {
   /** The course camera in force, or null (the flyby camera). */
   camera: CourseCamera | null = null;
   private url: string | null = null;
@@ -21,15 +32,29 @@ export class CameraSource {
   private readonly warned = new WeakSet<CourseCamera>();
   private checked: { camera: CourseCamera; scene: Scene } | null = null;
 
-  constructor(private readonly host: HTMLElement, private readonly changed: () => void) {}
+  constructor(private readonly host: CameraSourceHost) {}
 
   get loading(): boolean {
     return this.pending;
   }
 
-  /** The attribute's value (as written), on change and on connection; null: no course camera. */
-  set(src: string | null): void {
-    const url = src === null || !this.host.isConnected ? null : absolute(src);
+  hostConnected(): void {
+    this.srcChanged();
+  }
+
+  /** Disconnected: the load stops (the camera stays, for a move). */
+  hostDisconnected(): void {
+    this.handle?.release();
+    this.handle = null;
+    this.pending = false;
+    this.url = null;
+  }
+
+  /** `camera-src` changed: load the file it names, or go back to the flyby camera. */
+  srcChanged(): void {
+    const src = this.host.src();
+    const connected = this.host.element.isConnected;
+    const url = src === null || !connected ? null : absolute(src);
     if (url === this.url && src !== null && url !== null) return;
     this.handle?.release();
     this.handle = null;
@@ -38,11 +63,11 @@ export class CameraSource {
     if (src === null) {
       if (this.camera) {
         this.camera = null;
-        this.changed();
+        this.host.changed();
       }
       return;
     }
-    if (!this.host.isConnected) return;
+    if (!connected) return;
     if (url === null) {
       this.fail(src, { type: 'load', url: src, message: 'not a usable URL' });
       return;
@@ -55,7 +80,7 @@ export class CameraSource {
         if (this.handle !== handle) return;
         this.pending = false;
         this.camera = file.camera;
-        this.changed();
+        this.host.changed();
       },
       (e) => {
         if (this.handle !== handle) return;
@@ -63,14 +88,6 @@ export class CameraSource {
         this.fail(url, loadErrorDetail(url, e));
       },
     );
-  }
-
-  /** Disconnected: the load stops (the camera stays, for a move). */
-  stop(): void {
-    this.handle?.release();
-    this.handle = null;
-    this.pending = false;
-    this.url = null;
   }
 
   /**
@@ -92,8 +109,8 @@ export class CameraSource {
   }
 
   private fail(url: string, detail: ReturnType<typeof loadErrorDetail>): void {
-    this.changed();
-    queueMicrotask(() => this.host.dispatchEvent(new CustomEvent('error', { detail: { ...detail, url } })));
+    this.host.changed();
+    queueMicrotask(() => this.host.element.dispatchEvent(new CustomEvent('error', { detail: { ...detail, url } })));
   }
 }
 

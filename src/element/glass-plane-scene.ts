@@ -109,11 +109,11 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private cameraChangeQueued = false;
   private readonly warnings = new AttributeWarnings();
   /** The light-DOM children (<glass-object>, <glass-light>) as parts of the scene. */
-  private readonly source = new SceneSource(this, () => this.sceneChanged());
+  private readonly source = new SceneSource({ element: this, partsChanged: () => this.sceneChanged() });
   /** Image textures the scene names, decoded once per URL per page, given to the renderer. */
-  private readonly images = new TextureImages(() => this.requestRender());
+  private readonly images = new TextureImages({ sink: () => this.glRenderer ?? this.software, loaded: () => this.requestRender() });
   /** `camera-src`: the course camera, when one is in force (SPEC §11). */
-  private readonly cameraSource = new CameraSource(this, () => this.requestRender());
+  private readonly cameraSource = new CameraSource({ element: this, src: () => this.values.cameraSrc, changed: () => this.requestRender() });
   /** The scene value, built on demand and kept until an attribute or a child changes. */
   private sceneValue: Scene | null = null;
   private shared: SharedContext | null = null;
@@ -169,7 +169,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.message.hidden = true;
     root.append(this.canvas, this.message);
     this.flyby.setPose(this.values.cameraPosition, this.values.cameraRotation[0], this.values.cameraRotation[1]);
-    this.input = new FlybyInput(this, this.canvas, this.flyby, {
+    this.input = new FlybyInput({
+      element: this, canvas: this.canvas, flyby: this.flyby,
       enabled: () => this.values.controls === 'flyby',
       moved: (byMouse) => {
         if (byMouse) {
@@ -190,7 +191,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
         this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length];
       },
     });
-    this.pointerControls = new PointerControls(this, this.canvas, {
+    this.pointerControls = new PointerControls({
+      element: this, canvas: this.canvas,
       mode: () => (this.values.controls === 'orbit' || this.values.controls === 'trackball' ? this.values.controls as PointerMode : null),
       pose: () => this.flyby.pose,
       target: () => this.values.cameraTarget ?? boundsCenter(this.scene.objects),
@@ -212,8 +214,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
     if (!this.hasAttribute('role')) this.setAttribute('role', 'img');
     if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', this.alt);
-    this.input.attach();
-    this.pointerControls.attach();
+    this.input.hostConnected();
+    this.pointerControls.hostConnected();
     this.resizeObserver = new ResizeObserver(this.onResize);
     this.resizeObserver.observe(this);
     this.intersectionObserver = new IntersectionObserver(this.onIntersection, { rootMargin: VIEW_MARGIN });
@@ -221,8 +223,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     document.addEventListener('visibilitychange', this.onVisibility);
     this.reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
     this.reducedMotion?.addEventListener('change', this.onMotionPreference);
-    this.source.connect();
-    this.cameraSource.set(this.values.cameraSrc);
+    this.source.hostConnected();
+    this.cameraSource.hostConnected();
     this.start();
   }
 
@@ -234,10 +236,10 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     document.removeEventListener('visibilitychange', this.onVisibility);
     this.reducedMotion?.removeEventListener('change', this.onMotionPreference);
     this.reducedMotion = null;
-    this.source.disconnect();
-    this.cameraSource.stop();
-    this.input.detach();
-    this.pointerControls.detach();
+    this.source.hostDisconnected();
+    this.cameraSource.hostDisconnected();
+    this.input.hostDisconnected();
+    this.pointerControls.hostDisconnected();
     clearTimeout(this.lookTimer);
     this.disposeRenderer();
     this.disposeSoftware();
@@ -267,7 +269,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     }
     if (spec.property === 'controls') this.pointerControls.cancel();
     if (spec.property === 'renderer' && this.isConnected) this.switchRenderer();
-    if (spec.property === 'cameraSrc') this.cameraSource.set(this.values.cameraSrc);
+    if (spec.property === 'cameraSrc') this.cameraSource.srcChanged();
     // Resize only: drawing here, mid-way through a script's batch of attribute changes, would
     // show a frame with half of them applied (the next animation frame comes before paint).
     if (spec.property === 'pixelRatio') this.resizeCanvas();
@@ -420,7 +422,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.output ??= this.shared.presenterFor(this.canvas);
     try {
       this.glRenderer = new Renderer(this.shared.gl, { checks: checksEnabled() });
-      this.images.attach(this.glRenderer);
+      this.images.feed(this.glRenderer);
     } catch (e) {
       this.handleRenderError(e);
       return;
@@ -437,7 +439,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       this.softwareStarting = false;
       if (generation !== this.softwareGeneration || !this.isConnected) return host.dispose();
       this.software = host;
-      this.images.attach(host);
+      this.images.feed(host);
       this.softwareOut = this.canvas.getContext('2d', { alpha: false }) ?? this.canvas.getContext('bitmaprenderer');
       this.resizeCanvas();
       this.requestRender();
@@ -453,7 +455,6 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.softwareGeneration++;
     this.softwareStarting = false;
     this.softwareBusy = false;
-    if (this.software) this.images.attach(null);
     this.software?.dispose();
     this.software = null;
   }
@@ -479,7 +480,6 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.glRenderer.dispose();
     this.totals.resources = emptyStats().resources;
     this.glRenderer = null;
-    this.images.attach(null);
   }
 
   // ---- frames ------------------------------------------------------------------------------
