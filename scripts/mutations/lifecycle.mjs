@@ -4,6 +4,7 @@ const LEAKS = 'tests/e2e/gl-leaks.spec.ts';
 const LIFECYCLE = 'tests/e2e/lifecycle.spec.ts';
 const ON_DEMAND = 'tests/e2e/on-demand.spec.ts';
 const ELEMENT = 'src/element/glass-plane-scene.ts';
+const LOOP = 'src/element/frame-loop.ts';
 
 export default [
   {
@@ -42,7 +43,7 @@ export default [
   },
   {
     name: 'E5 off-screen elements keep drawing (frames scheduled whatever the IntersectionObserver said)',
-    edits: [{ file: ELEMENT, find: '|| this.failed || !this.inView || document.hidden) return;', replace: '|| this.failed || document.hidden) return;' }],
+    edits: [{ file: LOOP, find: '|| !this.host.canDraw() || !this.inView || document.hidden) return;', replace: '|| !this.host.canDraw() || document.hidden) return;' }],
     tests: [ON_DEMAND],
   },
   {
@@ -62,7 +63,7 @@ export default [
   },
   {
     name: 'E9 removal leaves the reduced-motion listener',
-    edits: [{ file: ELEMENT, find: "    this.reducedMotion?.removeEventListener('change', this.onMotionPreference);\n", replace: '' }],
+    edits: [{ file: LOOP, find: "    this.motionQuery?.removeEventListener('change', this.onMotionPreference);\n", replace: '' }],
     tests: [LIFECYCLE],
   },
 ];

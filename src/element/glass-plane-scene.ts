@@ -20,6 +20,7 @@ import { SceneSource } from './scene-source';
 import { TextureImages } from './texture-images';
 import { composeScene, sceneSpins } from './compose-scene';
 import { CameraSource } from './camera-source';
+import { FrameLoop } from './frame-loop';
 import type { Scene } from '../scene/scene';
 
 const CAPTURE_SOURCES: Record<CapturePass, ReadbackSource> = { reflection: 'reflection', scene: 'scene', final: 'final' };
@@ -32,8 +33,6 @@ const MESSAGES: Record<ErrorType, string> = {
 };
 /** Largest side of a software frame (the CPU's cost grows with the pixels; 4096 is a 4K canvas's side). */
 const SOFTWARE_MAX_SIZE = 4096;
-/** Start drawing a little before the element scrolls into view. */
-const VIEW_MARGIN = '64px';
 
 // Lets the module load where HTMLElement does not exist (server-side rendering, Node tests).
 const Base = (typeof HTMLElement === 'undefined' ? class {} : HTMLElement) as typeof HTMLElement;
@@ -128,17 +127,13 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private softwareBusy = false;
   /** How software frames reach the canvas: a 2D context, or (after WebGL used it) a bitmap renderer. */
   private softwareOut: CanvasRenderingContext2D | ImageBitmapRenderingContext | null = null;
-  private resizeObserver: ResizeObserver | null = null;
-  private intersectionObserver: IntersectionObserver | null = null;
-  private reducedMotion: MediaQueryList | null = null;
-  private rafId = 0;
+  /** When frames are drawn: on demand, in view, with the page shown. */
+  private readonly loop: FrameLoop;
   private lastNow = 0;
   private clockStart = -1;
   private failed: ErrorType | null = null;
   /** The shader error last reported: the same one again (the same broken variant) is not news. */
   private reportedShaderError: unknown = null;
-  private inView = false;
-  private dirty = true;
   private readyFired = false;
   /** The state of the last frame drawn (what capture(pass) draws a pass of); filled in place. */
   private lastState: FrameState | null = null;
@@ -205,6 +200,22 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       },
       gestureEnd: () => this.gestureEnd(),
     });
+    this.loop = new FrameLoop({
+      element: this,
+      canDraw: () => (this.glRenderer !== null || this.software !== null) && !this.failed,
+      animating: () => this.animating(),
+      frame: (now) => this.onFrame(now),
+      paused: () => { this.lastNow = 0; },
+      idle: () => {
+        this.lastNow = 0;
+        if (this.cameraDirty && this.flybyMoved) this.gestureEnd();
+      },
+      resize: () => this.resizeCanvas(),
+      motionPreferenceChanged: () => {
+        this.sceneValue = null;
+        this.requestRender();
+      },
+    });
   }
 
   // ---- lifecycle -------------------------------------------------------------------------
@@ -216,26 +227,14 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', this.alt);
     this.input.hostConnected();
     this.pointerControls.hostConnected();
-    this.resizeObserver = new ResizeObserver(this.onResize);
-    this.resizeObserver.observe(this);
-    this.intersectionObserver = new IntersectionObserver(this.onIntersection, { rootMargin: VIEW_MARGIN });
-    this.intersectionObserver.observe(this);
-    document.addEventListener('visibilitychange', this.onVisibility);
-    this.reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
-    this.reducedMotion?.addEventListener('change', this.onMotionPreference);
+    this.loop.hostConnected();
     this.source.hostConnected();
     this.cameraSource.hostConnected();
     this.start();
   }
 
   disconnectedCallback(): void {
-    this.cancelFrame();
-    this.resizeObserver?.disconnect();
-    this.intersectionObserver?.disconnect();
-    this.resizeObserver = this.intersectionObserver = null;
-    document.removeEventListener('visibilitychange', this.onVisibility);
-    this.reducedMotion?.removeEventListener('change', this.onMotionPreference);
-    this.reducedMotion = null;
+    this.loop.hostDisconnected();
     this.source.hostDisconnected();
     this.cameraSource.hostDisconnected();
     this.input.hostDisconnected();
@@ -245,7 +244,6 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.disposeSoftware();
     this.shared?.release(this);
     this.shared = null;
-    this.inView = false;
   }
 
   attributeChangedCallback(name: string, _old: string | null, raw: string | null): void {
@@ -327,8 +325,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   /** Draws a frame on the next animation frame, even when nothing changed. */
   requestRender(): void {
-    this.dirty = true;
-    this.scheduleFrame();
+    this.loop.request();
   }
 
   /**
@@ -393,7 +390,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   /** @internal ContextClient: every GL object died with the context. */
   contextLost(): void {
-    this.cancelFrame();
+    this.loop.cancel();
     this.disposeRenderer();
     this.fail('context-lost', new Error('WebGL context lost'));
   }
@@ -463,7 +460,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private switchRenderer(): void {
     const wantSoftware = this.values.renderer === 'software' || (this.values.renderer === 'auto' && !this.glRenderer && !this.shared);
     if ((wantSoftware && (this.software || this.softwareStarting)) || (!wantSoftware && this.glRenderer)) return;
-    this.cancelFrame();
+    this.loop.cancel();
     this.disposeRenderer();
     this.disposeSoftware();
     if (this.failed !== 'context-lost') {
@@ -484,19 +481,6 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   // ---- frames ------------------------------------------------------------------------------
 
-  /** Draws only when something changed or moves, the element is in view and the page shown. */
-  private scheduleFrame(): void {
-    if (this.rafId !== 0 || (!this.glRenderer && !this.software) || this.failed || !this.inView || document.hidden) return;
-    if (!this.dirty && !this.animating()) return;
-    this.rafId = requestAnimationFrame(this.onFrame);
-  }
-
-  private cancelFrame(): void {
-    cancelAnimationFrame(this.rafId);
-    this.rafId = 0;
-    this.lastNow = 0;
-  }
-
   /**
    * Moves the flyby camera by the time since the last step. Motion is timed with
    * performance.now() (the key events' clock), not the frame's timestamp, which can be
@@ -509,13 +493,11 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     if (this.flyby.update(dt)) {
       this.cameraDirty = true;
       this.flybyMoved = true;
-      this.dirty = true;
+      this.loop.dirty = true;
     }
   }
 
-  private readonly onFrame = (now: number): void => {
-    this.rafId = 0;
-    if ((!this.glRenderer && !this.software) || this.failed) return;
+  private onFrame(now: number): void {
     this.advanceFlyby();
     // The motion after release, by the wall clock (SPEC §10), not the frame's timestamp.
     if (this.pointerControls.update(performance.now())) {
@@ -523,17 +505,12 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       if (this.values.controls === 'orbit') this.cameraDirty = true; // a trackball's spin turns objects, not the camera
     }
     this.draw(now);
-    if (this.animating()) this.scheduleFrame();
-    else {
-      this.lastNow = 0;
-      if (this.cameraDirty && this.flybyMoved) this.gestureEnd();
-    }
-  };
+  }
 
   private draw(now: number): void {
     if (this.software) return this.drawSoftware(now);
     const renderer = this.glRenderer!;
-    this.dirty = false;
+    this.loop.dirty = false;
     const { width, height } = this.canvas;
     if (this.clientWidth === 0 || this.clientHeight === 0) return; // nothing to show
     const state = this.frameState(now);
@@ -558,7 +535,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private drawSoftware(now: number): void {
     const host = this.software!;
     if (this.softwareBusy) return; // dirty stays set: drawn when this one is back
-    this.dirty = false;
+    this.loop.dirty = false;
     const { width, height } = this.canvas;
     if (this.clientWidth === 0 || this.clientHeight === 0) return;
     const state = this.frameState(now);
@@ -580,7 +557,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       const done = () => {
         if (generation !== this.softwareGeneration) return;
         this.frameDrawn(frozen, frozen.time, width, height, 0, passesFor(frozen.view, glassSkip));
-        if (this.dirty) this.scheduleFrame();
+        this.loop.resume();
       };
       if (out && 'putImageData' in out) {
         out.putImageData(image, 0, 0);
@@ -620,7 +597,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   /** Spin counts unless reduced motion is asked for and the page did not set `spin` itself. */
   private effectiveSpin(): number {
-    return this.reducedMotion?.matches && !this.hasAttribute('spin') ? 0 : this.values.spin;
+    return this.loop.reducedMotion && !this.hasAttribute('spin') ? 0 : this.values.spin;
   }
 
   /** Frames keep coming while the clock turns something in the scene, or the camera moves. */
@@ -670,15 +647,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.cameraSource.checkLooksAway(this.scene, s.time);
   }
 
-  // ---- observers ---------------------------------------------------------------------------
-
-  private readonly onResize = (): void => {
-    if (!this.resizeCanvas()) return;
-    // Resizing clears the canvas: draw now rather than show an empty frame.
-    this.cancelFrame();
-    this.dirty = true;
-    if ((this.glRenderer || this.software) && !this.failed && this.inView && !document.hidden) this.onFrame(performance.now());
-  };
+  // ---- canvas and scene ----------------------------------------------------------------------
 
   /** Drawing buffer = CSS box × pixel ratio, within the GL limits. Returns true if it changed. */
   private resizeCanvas(): boolean {
@@ -692,23 +661,6 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.canvas.height = h;
     return true;
   }
-
-  private readonly onIntersection = (entries: IntersectionObserverEntry[]): void => {
-    const entry = entries[entries.length - 1];
-    this.inView = entry.isIntersecting;
-    if (this.inView) this.scheduleFrame();
-    else this.cancelFrame();
-  };
-
-  private readonly onVisibility = (): void => {
-    if (document.hidden) this.cancelFrame();
-    else this.scheduleFrame();
-  };
-
-  private readonly onMotionPreference = (): void => {
-    this.sceneValue = null;
-    this.requestRender();
-  };
 
   /** A child was added, removed, reordered, changed, upgraded, or its model arrived. */
   private sceneChanged(): void {
