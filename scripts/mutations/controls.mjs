@@ -3,6 +3,7 @@
 const CONTROLS = 'tests/e2e/controls.spec.ts';
 const INERTIA = 'tests/e2e/inertia.spec.ts';
 const POINTER = 'src/element/controls/pointer-controls.ts';
+const RIG = 'src/element/camera-rig.ts';
 
 export default [
   {
@@ -67,12 +68,12 @@ export default [
   },
   {
     name: 'C10 camera-target left out of the write-back after a pan',
-    edits: [{ file: 'src/element/glass-plane-scene.ts', find: "        this.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);\n", replace: '' }],
+    edits: [{ file: RIG, find: "        element.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);\n", replace: '' }],
     tests: [CONTROLS],
   },
   {
     name: 'C11 a trackball turn fires camera-change (the camera did not move)',
-    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '        if (camera) this.cameraDirty = true;', replace: '        this.cameraDirty = true;' }],
+    edits: [{ file: RIG, find: '        if (camera) this.cameraDirty = true;', replace: '        this.cameraDirty = true;' }],
     tests: [CONTROLS],
   },
   {

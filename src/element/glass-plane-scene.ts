@@ -4,9 +4,6 @@
 import { ATTRIBUTES, ATTRIBUTE_BY_NAME, DEBUG_VIEWS, defaultAttributes, type SceneAttributes } from './attributes';
 import { defineAttributeProperties, upgradeProperties, type AttributeHost } from './attribute-properties';
 import { AttributeWarnings, PREFIX, warn } from './warnings';
-import { FlybyController } from './flyby-controller';
-import { FlybyInput } from './flyby-input';
-import { PointerControls, type PointerMode } from './controls/pointer-controls';
 import { boundsCenter, rotateScene } from '../scene/group-rotation';
 import { applyStyle } from './element-style';
 import { readCanvas } from './canvas-readback';
@@ -15,11 +12,11 @@ import { Renderer, passesFor, type ReadbackSource } from '../render/renderer';
 import { SoftwareHost } from './software-host';
 import { ShaderError } from '../render/gl/program';
 import type { FrameReport, FrameState, RenderStats } from '../render/types';
-import type { CameraChangeDetail, CapturePass, ErrorType, GlassPlaneSceneEventMap } from './types';
+import type { CapturePass, ErrorType, GlassPlaneSceneEventMap } from './types';
 import { SceneSource } from './scene-source';
 import { TextureImages } from './texture-images';
 import { composeScene, sceneSpins } from './compose-scene';
-import { CameraSource } from './camera-source';
+import { CameraRig } from './camera-rig';
 import { FrameLoop } from './frame-loop';
 import type { Scene } from '../scene/scene';
 
@@ -98,21 +95,13 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private readonly values: SceneAttributes = defaultAttributes();
   private readonly canvas: HTMLCanvasElement;
   private readonly message: HTMLElement;
-  private readonly flyby = new FlybyController();
-  private readonly input: FlybyInput;
-  /** orbit and trackball input, and the trackball's rotations. */
-  private readonly pointerControls: PointerControls;
-  /** The flyby's mouse look ends 150 ms after its last movement. */
-  private lookTimer: ReturnType<typeof setTimeout> | undefined;
-  /** A camera attribute set by the page: one camera-change after the current task. */
-  private cameraChangeQueued = false;
+  /** The camera, its controls, the trackball and the course camera. */
+  private readonly rig: CameraRig;
   private readonly warnings = new AttributeWarnings();
   /** The light-DOM children (<glass-object>, <glass-light>) as parts of the scene. */
   private readonly source = new SceneSource({ element: this, partsChanged: () => this.sceneChanged() });
   /** Image textures the scene names, decoded once per URL per page, given to the renderer. */
   private readonly images = new TextureImages({ sink: () => this.glRenderer ?? this.software, loaded: () => this.requestRender() });
-  /** `camera-src`: the course camera, when one is in force (SPEC §11). */
-  private readonly cameraSource = new CameraSource({ element: this, src: () => this.values.cameraSrc, changed: () => this.requestRender() });
   /** The scene value, built on demand and kept until an attribute or a child changes. */
   private sceneValue: Scene | null = null;
   private shared: SharedContext | null = null;
@@ -129,7 +118,6 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private softwareOut: CanvasRenderingContext2D | ImageBitmapRenderingContext | null = null;
   /** When frames are drawn: on demand, in view, with the page shown. */
   private readonly loop: FrameLoop;
-  private lastNow = 0;
   private clockStart = -1;
   private failed: ErrorType | null = null;
   /** The shader error last reported: the same one again (the same broken variant) is not news. */
@@ -140,11 +128,6 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   private readonly lastPosition: [number, number, number] = [0, 0, 0];
   private totals = emptyStats();
   private frames = 0;
-  private cameraDirty = false;
-  /** The flyby's keys moved the camera since the last write-back (their gesture ends when it stops). */
-  private flybyMoved = false;
-  /** True while reflectCamera() sets the camera attributes. */
-  private writingBack = false;
   private readonly state: FrameState = {
     width: 1, height: 1, time: 0, spin: 0, cubeDistance: 0, transparency: 0, ior: 1, fresnel: 'exact',
     fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final',
@@ -163,53 +146,23 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     this.message.setAttribute('role', 'alert');
     this.message.hidden = true;
     root.append(this.canvas, this.message);
-    this.flyby.setPose(this.values.cameraPosition, this.values.cameraRotation[0], this.values.cameraRotation[1]);
-    this.input = new FlybyInput({
-      element: this, canvas: this.canvas, flyby: this.flyby,
-      enabled: () => this.values.controls === 'flyby',
-      moved: (byMouse) => {
-        if (byMouse) {
-          this.cameraDirty = true;
-          clearTimeout(this.lookTimer);
-          this.lookTimer = setTimeout(() => this.gestureEnd(), 150);
-        }
-        // Motion starts now, not at the next frame: on a busy page that frame may come after
-        // the key is released already, and a first step of dt = 0 would lose the press.
-        else if (this.lastNow === 0) this.lastNow = performance.now();
-        this.requestRender();
-      },
-      settle: () => {
-        this.advanceFlyby();
-        this.requestRender();
-      },
+    this.rig = new CameraRig({
+      element: this, canvas: this.canvas, values: this.values,
+      requestRender: () => this.requestRender(),
+      poseChanged: () => { this.sceneValue = null; },
+      flybyMoved: () => { this.loop.dirty = true; },
+      objectsCenter: () => boundsCenter(this.scene.objects),
       cycleDebugView: () => {
         this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length];
       },
-    });
-    this.pointerControls = new PointerControls({
-      element: this, canvas: this.canvas,
-      mode: () => (this.values.controls === 'orbit' || this.values.controls === 'trackball' ? this.values.controls as PointerMode : null),
-      pose: () => this.flyby.pose,
-      target: () => this.values.cameraTarget ?? boundsCenter(this.scene.objects),
-      fov: () => this.values.fov,
-      changed: (camera) => {
-        // A trackball turn moves objects, not the camera: no write-back, no camera-change for it.
-        if (camera) this.cameraDirty = true;
-        this.sceneValue = null;
-        this.requestRender();
-      },
-      gestureEnd: () => this.gestureEnd(),
     });
     this.loop = new FrameLoop({
       element: this,
       canDraw: () => (this.glRenderer !== null || this.software !== null) && !this.failed,
       animating: () => this.animating(),
       frame: (now) => this.onFrame(now),
-      paused: () => { this.lastNow = 0; },
-      idle: () => {
-        this.lastNow = 0;
-        if (this.cameraDirty && this.flybyMoved) this.gestureEnd();
-      },
+      paused: () => this.rig.paused(),
+      idle: () => this.rig.idle(),
       resize: () => this.resizeCanvas(),
       motionPreferenceChanged: () => {
         this.sceneValue = null;
@@ -225,21 +178,16 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
     if (!this.hasAttribute('role')) this.setAttribute('role', 'img');
     if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', this.alt);
-    this.input.hostConnected();
-    this.pointerControls.hostConnected();
+    this.rig.hostConnected();
     this.loop.hostConnected();
     this.source.hostConnected();
-    this.cameraSource.hostConnected();
     this.start();
   }
 
   disconnectedCallback(): void {
     this.loop.hostDisconnected();
     this.source.hostDisconnected();
-    this.cameraSource.hostDisconnected();
-    this.input.hostDisconnected();
-    this.pointerControls.hostDisconnected();
-    clearTimeout(this.lookTimer);
+    this.rig.hostDisconnected();
     this.disposeRenderer();
     this.disposeSoftware();
     this.shared?.release(this);
@@ -258,19 +206,15 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     (this.values as unknown as Record<string, unknown>)[spec.property] = parsed.value;
     this.sceneValue = null;
     // The pose written back at rest is the one just drawn: nothing to move, nothing to draw.
-    if (this.writingBack) return;
-    if (spec.property === 'cameraPosition' || spec.property === 'cameraRotation' || spec.property === 'cameraTarget') {
-      const [yaw, pitch] = this.values.cameraRotation;
-      this.flyby.setPose(this.values.cameraPosition, yaw, pitch);
-      this.aimAtTarget();
-      this.queueCameraChange();
-    }
-    if (spec.property === 'controls') this.pointerControls.cancel();
-    if (spec.property === 'renderer' && this.isConnected) this.switchRenderer();
-    if (spec.property === 'cameraSrc') this.cameraSource.srcChanged();
+    if (this.rig.writingBack) return;
+    const p = spec.property;
+    if (p === 'cameraPosition' || p === 'cameraRotation' || p === 'cameraTarget') this.rig.cameraAttributeChanged();
+    if (p === 'controls') this.rig.controlsChanged();
+    if (p === 'renderer' && this.isConnected) this.switchRenderer();
+    if (p === 'cameraSrc') this.rig.cameraSource.srcChanged();
     // Resize only: drawing here, mid-way through a script's batch of attribute changes, would
     // show a frame with half of them applied (the next animation frame comes before paint).
-    if (spec.property === 'pixelRatio') this.resizeCanvas();
+    if (p === 'pixelRatio') this.resizeCanvas();
     // A shader failure is not final: the change may select a variant that compiles. The message
     // stays up until a frame is drawn.
     if (this.failed === 'shader') this.failed = null;
@@ -296,7 +240,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
   get scene(): Scene {
     return (this.sceneValue ??= rotateScene(
       composeScene({ ...this.values, spin: this.effectiveSpin() }, this.source.current()),
-      this.pointerControls.objectRotation, this.pointerControls.lightRotation,
+      this.rig.pointer.objectRotation, this.rig.pointer.lightRotation,
     ));
   }
 
@@ -306,7 +250,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
    * a value that is not four finite numbers, or zero, is ignored with a warning).
    */
   get objectRotation(): [number, number, number, number] {
-    const q = this.pointerControls.objectRotation;
+    const q = this.rig.pointer.objectRotation;
     return [q[0], q[1], q[2], q[3]];
   }
 
@@ -317,7 +261,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
       warn(`objectRotation: expected a quaternion [x, y, z, w], ignoring ${JSON.stringify(value)?.slice(0, 60)}`);
       return;
     }
-    const r = this.pointerControls.objectRotation;
+    const r = this.rig.pointer.objectRotation;
     for (let i = 0; i < 4; i++) r[i] = q[i] / len;
     this.sceneValue = null;
     this.requestRender();
@@ -381,8 +325,9 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   /** @internal AttributeHost: the parsed value, or the live pose for the flown camera. */
   readAttributeValue(property: keyof SceneAttributes): unknown {
-    if (property === 'cameraPosition') return this.flyby.pose.position;
-    if (property === 'cameraRotation') return [this.flyby.pose.yaw, this.flyby.pose.pitch];
+    const pose = this.rig.flyby.pose;
+    if (property === 'cameraPosition') return pose.position;
+    if (property === 'cameraRotation') return [pose.yaw, pose.pitch];
     return this.values[property];
   }
 
@@ -481,29 +426,8 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   // ---- frames ------------------------------------------------------------------------------
 
-  /**
-   * Moves the flyby camera by the time since the last step. Motion is timed with
-   * performance.now() (the key events' clock), not the frame's timestamp, which can be
-   * earlier than a key press handled in the same frame.
-   */
-  private advanceFlyby(): void {
-    const t = performance.now();
-    const dt = this.lastNow ? (t - this.lastNow) / 1000 : 0;
-    this.lastNow = t;
-    if (this.flyby.update(dt)) {
-      this.cameraDirty = true;
-      this.flybyMoved = true;
-      this.loop.dirty = true;
-    }
-  }
-
   private onFrame(now: number): void {
-    this.advanceFlyby();
-    // The motion after release, by the wall clock (SPEC §10), not the frame's timestamp.
-    if (this.pointerControls.update(performance.now())) {
-      this.sceneValue = null;
-      if (this.values.controls === 'orbit') this.cameraDirty = true; // a trackball's spin turns objects, not the camera
-    }
+    this.rig.step();
     this.draw(now);
   }
 
@@ -588,7 +512,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     // (structuredClone) is what it replaces.
     const detail: FrameReport = Object.freeze({ frame: this.frames, time, width, height, drawCalls, passes });
     // `ready` waits for the models of the children: loaded or failed (SPEC §2).
-    if (!this.readyFired && !this.source.loading && !this.cameraSource.loading) {
+    if (!this.readyFired && !this.source.loading && !this.rig.loading) {
       this.readyFired = true;
       this.dispatchEvent(new CustomEvent('ready', { detail }));
     }
@@ -602,7 +526,7 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   /** Frames keep coming while the clock turns something in the scene, or the camera moves. */
   private animating(): boolean {
-    return (this.values.time === null && sceneSpins(this.scene)) || this.flyby.active || this.pointerControls.active;
+    return (this.values.time === null && sceneSpins(this.scene)) || this.rig.moving;
   }
 
   private frameState(now: number): FrameState {
@@ -617,34 +541,14 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     s.transparency = v.transparency;
     s.ior = v.ior;
     s.fresnel = v.fresnel;
-    s.fov = v.fov;
-    s.cameraPosition = this.flyby.pose.position;
-    s.yaw = this.flyby.pose.yaw;
-    s.pitch = this.flyby.pose.pitch;
     s.view = v.debugView === 'none' ? 'final' : v.debugView;
     s.reflectionScale = v.reflectionScale;
     s.samples = v.samples;
     s.shading = v.shading;
     s.tessellation = v.tessellation;
     s.reflectionFormat = v.reflectionFormat;
-    s.projection = v.projection;
-    s.target = v.cameraTarget; // the orthographic size is taken there (else at the glass centre)
-    this.applyCourseCamera(s);
+    this.rig.aim(s, this.scene);
     return s;
-  }
-
-  /**
-   * `camera-src` (SPEC §11): while a course camera is in force it is the view. cameraPosition
-   * and fov follow it, for the level-of-detail choices that read them.
-   */
-  private applyCourseCamera(s: FrameState): void {
-    const cam = this.cameraSource.camera;
-    s.courseCamera = cam;
-    if (!cam) return;
-    s.cameraPosition = cam.c;
-    s.fov = CameraSource.fov(cam);
-    s.projection = 'perspective';
-    this.cameraSource.checkLooksAway(this.scene, s.time);
   }
 
   // ---- canvas and scene ----------------------------------------------------------------------
@@ -693,61 +597,6 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     // WebGL2 or a lost context is a state of the machine, reported through the event only.
     if (type === 'shader') console.error(message.startsWith(PREFIX) ? message : `${PREFIX} ${message}`);
     queueMicrotask(() => this.dispatchEvent(new CustomEvent('error', { detail: { type, message } })));
-  }
-
-  // ---- camera ------------------------------------------------------------------------------
-
-  /** With `camera-target`, the camera looks at it (SPEC §2): yaw and pitch from position → target. */
-  private aimAtTarget(): void {
-    const t = this.values.cameraTarget;
-    if (!t) return;
-    const p = this.flyby.pose.position;
-    const dx = t[0] - p[0], dy = t[1] - p[1], dz = t[2] - p[2];
-    const d = Math.hypot(dx, dy, dz);
-    if (!(d > 0)) return; // at the target: keep camera-rotation
-    this.flyby.setPose(p, Math.atan2(dz, dx) * (180 / Math.PI), Math.asin(dy / d) * (180 / Math.PI));
-  }
-
-  private cameraDetail(): CameraChangeDetail {
-    const { position, yaw, pitch } = this.flyby.pose;
-    const t = this.values.cameraTarget;
-    return t ? { position: [...position], rotation: [yaw, pitch], target: [...t] } : { position: [...position], rotation: [yaw, pitch] };
-  }
-
-  /** The page changed a camera attribute: one camera-change after its batch of changes. */
-  private queueCameraChange(): void {
-    if (this.cameraChangeQueued || !this.isConnected) return;
-    this.cameraChangeQueued = true;
-    queueMicrotask(() => {
-      this.cameraChangeQueued = false;
-      if (this.isConnected) this.dispatchEvent(new CustomEvent('camera-change', { detail: this.cameraDetail() }));
-    });
-  }
-
-  /**
-   * A gesture ended (SPEC §10): the camera attributes are written once (camera-target too when
-   * a pan moved it) and one camera-change is fired; the write-back itself fires none.
-   */
-  private gestureEnd(): void {
-    clearTimeout(this.lookTimer);
-    this.lookTimer = undefined;
-    this.flybyMoved = false;
-    if (!this.cameraDirty) return;
-    this.cameraDirty = false;
-    const { position, yaw, pitch } = this.flyby.pose;
-    this.writingBack = true;
-    try {
-      this.setAttribute('camera-position', `${position[0]} ${position[1]} ${position[2]}`);
-      this.setAttribute('camera-rotation', `${yaw} ${pitch}`);
-      // A pan moves what the camera looks at: with camera-target set, the target moves with it.
-      if (this.pointerControls.takePanned() && this.values.cameraTarget) {
-        const t = this.pointerControls.orbitTarget;
-        this.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);
-      }
-    } finally {
-      this.writingBack = false;
-    }
-    this.dispatchEvent(new CustomEvent('camera-change', { detail: this.cameraDetail() }));
   }
 }
 
