@@ -5,6 +5,8 @@ const LIFECYCLE = 'tests/e2e/lifecycle.spec.ts';
 const ON_DEMAND = 'tests/e2e/on-demand.spec.ts';
 const ELEMENT = 'src/element/glass-plane-scene.ts';
 const LOOP = 'src/element/frame-loop.ts';
+const BACKENDS = 'src/element/backend-controller.ts';
+const SOFTWARE = 'src/element/software-backend.ts';
 
 export default [
   {
@@ -14,7 +16,7 @@ export default [
   },
   {
     name: '14 the software renderer never given the decoded images',
-    edits: [{ file: ELEMENT, find: '      this.images.feed(host);\n', replace: '' }],
+    edits: [{ file: SOFTWARE, find: '    this.software.setImage(url, image);\n', replace: '' }],
     tests: ['tests/e2e/model-reference.spec.ts'],
   },
   {
@@ -30,15 +32,15 @@ export default [
   {
     name: 'E3 after webgl → software the canvas keeps the stale WebGL frame (generation test inverted)',
     edits: [{
-      file: ELEMENT,
-      find: 'if (generation === this.softwareGeneration) (out as ImageBitmapRenderingContext).transferFromImageBitmap(b);',
-      replace: 'if (generation !== this.softwareGeneration) (out as ImageBitmapRenderingContext).transferFromImageBitmap(b);',
+      file: SOFTWARE,
+      find: 'if (!this.disposed) (out as ImageBitmapRenderingContext).transferFromImageBitmap(b);',
+      replace: 'if (this.disposed) (out as ImageBitmapRenderingContext).transferFromImageBitmap(b);',
     }],
     tests: [LEAKS],
   },
   {
     name: 'E4 switching back to webgl asks for the context, not the renderer: it stays software',
-    edits: [{ file: ELEMENT, find: '(!wantSoftware && this.glRenderer)) return;', replace: '(!wantSoftware && this.shared)) return;' }],
+    edits: [{ file: BACKENDS, find: "(!wantSoftware && kind === 'webgl')) return;", replace: '(!wantSoftware && this.shared)) return;' }],
     tests: [LEAKS],
   },
   {
@@ -58,7 +60,7 @@ export default [
   },
   {
     name: 'E8 removal leaves the element a client of the shared context (rebuilt on a restore)',
-    edits: [{ file: ELEMENT, find: '    this.shared?.release(this);\n', replace: '' }],
+    edits: [{ file: BACKENDS, find: '    this.shared?.release(this);\n', replace: '' }],
     tests: [LEAKS],
   },
   {
