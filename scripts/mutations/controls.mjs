@@ -99,4 +99,14 @@ export default [
     edits: [{ file: POINTER, find: '      this.spinTime = performance.now(); // the motion runs from the release, on the wall clock\n', replace: '' }],
     tests: [INERTIA],
   },
+  {
+    name: 'C16 the frame setup leaves out the trackball turn of the objects (a drag turns nothing on screen)',
+    edits: [{ file: 'src/render/frame-setup.ts', find: '      this.modelMatrix(o, objects[i], s.time, objectsTurn);', replace: '      this.modelMatrix(o, objects[i], s.time, null);' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C17 the frame setup leaves out the turn of the first light (a right-drag relights nothing)',
+    edits: [{ file: 'src/render/frame-setup.ts', find: '      const g = i === 0 ? lightTurn : null, t', replace: '      const g = null, t' }],
+    tests: [CONTROLS],
+  },
 ];

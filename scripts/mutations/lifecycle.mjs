@@ -7,6 +7,8 @@ const ELEMENT = 'src/element/glass-plane-scene.ts';
 const LOOP = 'src/element/frame-loop.ts';
 const BACKENDS = 'src/element/backend-controller.ts';
 const SOFTWARE = 'src/element/software-backend.ts';
+const SCENES = 'src/element/scene-value.ts';
+const REBUILDS = 'tests/e2e/scene-rebuilds.spec.ts';
 
 export default [
   {
@@ -50,12 +52,12 @@ export default [
   },
   {
     name: 'E6 idle broken: the live clock alone keeps frames coming (&& for ||)',
-    edits: [{ file: ELEMENT, find: 'return (this.values.time === null && sceneSpins(this.scene))', replace: 'return (this.values.time === null || sceneSpins(this.scene))' }],
+    edits: [{ file: ELEMENT, find: 'return (this.values.time === null && sceneSpins(this.scenes.current))', replace: 'return (this.values.time === null || sceneSpins(this.scene))' }],
     tests: [ON_DEMAND],
   },
   {
     name: 'E7 idle broken: spin counted for a scene of children, which has no cube to turn',
-    edits: [{ file: ELEMENT, find: 'return (this.values.time === null && sceneSpins(this.scene))', replace: 'return (this.values.time === null && this.effectiveSpin() !== 0)' }],
+    edits: [{ file: ELEMENT, find: 'return (this.values.time === null && sceneSpins(this.scenes.current))', replace: 'return (this.values.time === null && this.effectiveSpin() !== 0)' }],
     tests: [ON_DEMAND],
   },
   {
@@ -67,5 +69,20 @@ export default [
     name: 'E9 removal leaves the reduced-motion listener',
     edits: [{ file: LOOP, find: "    this.motionQuery?.removeEventListener('change', this.onMotionPreference);\n", replace: '' }],
     tests: [LIFECYCLE],
+  },
+  {
+    name: 'E10 every attribute change rebuilds the scene value again, not only those that shape it',
+    edits: [{ file: SCENES, find: '    if (SHAPING.has(property)) this.contentChanged();', replace: '    this.contentChanged();' }],
+    tests: [REBUILDS],
+  },
+  {
+    name: 'E11 a trackball turn rebuilds the scene value (every frame of its inertia)',
+    edits: [{ file: SCENES, find: '  turnChanged(): void {\n    this.turnedValue = null;', replace: '  turnChanged(): void {\n    this.value = this.turnedValue = null;' }],
+    tests: [REBUILDS],
+  },
+  {
+    name: 'E12 the software worker keeps drawing the first scene it was sent',
+    edits: [{ file: 'src/software/protocol.ts', find: '    if (scene === this.lastScene) return { scene: null', replace: '    if (this.lastScene) return { scene: null' }],
+    tests: [REBUILDS],
   },
 ];

@@ -173,7 +173,7 @@ export class CameraRig implements Controller {
     s.cameraPosition = cam.c;
     s.fov = CameraSource.fov(cam);
     s.projection = 'perspective';
-    this.cameraSource.checkLooksAway(scene, s.time);
+    this.cameraSource.checkLooksAway(scene, s.time, s.turn ?? null);
   }
 
   /**

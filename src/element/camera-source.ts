@@ -5,6 +5,7 @@
 import type { CourseCamera } from '../math/course-camera';
 import { courseSceneRange } from '../scene/course-depth';
 import type { Scene } from '../scene/scene';
+import type { SceneTurn } from '../scene/group-rotation';
 import { acquireCourseFile, loadErrorDetail, type Handle } from './children/model-cache';
 import type { LoadedCamera } from './children/course-files';
 import { warn } from './warnings';
@@ -92,13 +93,14 @@ export class CameraSource implements Controller {
 
   /**
    * A camera that looks away from everything (SPEC §11: vader.cfg, maca.cfg) is drawn as the
-   * course's programs drew it, with one warning per camera. Checked when camera or scene change.
+   * course's programs drew it, with one warning per camera. Checked when camera or scene change
+   * (with the trackball's turn of that moment).
    */
-  checkLooksAway(scene: Scene, time: number): void {
+  checkLooksAway(scene: Scene, time: number, turn: SceneTurn | null): void {
     const camera = this.camera;
     if (!camera || this.warned.has(camera) || (this.checked?.camera === camera && this.checked.scene === scene)) return;
     this.checked = { camera, scene };
-    if (scene.objects.length === 0 || !courseSceneRange(camera, scene, time).behind) return;
+    if (scene.objects.length === 0 || !courseSceneRange(camera, scene, time, turn).behind) return;
     this.warned.add(camera);
     warn(`camera-src: every vertex is behind the camera (z ≤ 0 along N); drawn as the course's programs drew it, the formula applied to negative z (the view along −N, mirrored top to bottom)`);
   }

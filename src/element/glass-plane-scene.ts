@@ -5,7 +5,7 @@
 import { ATTRIBUTES, ATTRIBUTE_BY_NAME, DEBUG_VIEWS, defaultAttributes, type SceneAttributes } from './attributes';
 import { defineAttributeProperties, upgradeProperties, type AttributeHost } from './attribute-properties';
 import { AttributeWarnings, warn } from './warnings';
-import { boundsCenter, rotateScene } from '../scene/group-rotation';
+import { boundsCenter } from '../scene/group-rotation';
 import { applyStyle } from './element-style';
 import { readCanvas } from './canvas-readback';
 import type { ReadbackSource } from '../render/renderer';
@@ -14,7 +14,8 @@ import type { CapturePass, GlassPlaneSceneEventMap } from './types';
 import type { Controller } from './controller';
 import { SceneSource } from './scene-source';
 import { TextureImages } from './texture-images';
-import { composeScene, sceneSpins } from './compose-scene';
+import { sceneSpins } from './compose-scene';
+import { SceneValue } from './scene-value';
 import { CameraRig } from './camera-rig';
 import { FrameLoop } from './frame-loop';
 import { BackendController } from './backend-controller';
@@ -89,8 +90,8 @@ export class GlassPlaneScene extends Base implements AttributeHost {
   private readonly backend: BackendController;
   /** Connected and disconnected in this order. */
   private readonly controllers: Controller[];
-  /** The scene value, built on demand and kept until an attribute or a child changes. */
-  private sceneValue: Scene | null = null;
+  /** The scene value, built when its content changes; the trackball's turn travels apart. */
+  private readonly scenes: SceneValue;
   private clockStart = -1;
   private readyFired = false;
   /** The state of the last frame drawn (what capture(pass) draws a pass of); filled in place. */
@@ -115,13 +116,20 @@ export class GlassPlaneScene extends Base implements AttributeHost {
     this.rig = new CameraRig({
       element: this, canvas, values: this.values,
       requestRender: () => this.requestRender(),
-      poseChanged: () => { this.sceneValue = null; },
+      poseChanged: () => this.scenes.turnChanged(),
       flybyMoved: () => { this.loop.dirty = true; },
       objectsCenter: () => boundsCenter(this.scene.objects),
       cycleDebugView: () => {
         this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length];
       },
     });
+    const { objectRotation, lightRotation } = this.rig.pointer;
+    this.scenes = new SceneValue({
+      inputs: () => ({ ...this.values, spin: this.effectiveSpin() }),
+      parts: () => this.source.current(),
+      objectRotation, lightRotation,
+    });
+    this.state.turn = this.scenes.turn;
     this.loop = new FrameLoop({
       element: this,
       canDraw: () => this.backend.current !== null && !this.failure.type,
@@ -172,7 +180,7 @@ export class GlassPlaneScene extends Base implements AttributeHost {
     const parsed = spec.parse(raw);
     if (parsed.problem) this.warnings.report(spec, raw ?? '', parsed.problem);
     (this.values as unknown as Record<string, unknown>)[spec.property] = parsed.value;
-    this.sceneValue = null;
+    this.scenes.attributeChanged(spec.property);
     // The pose written back at rest is the one just drawn: nothing to move, nothing to draw.
     if (this.rig.writingBack) return;
     const p = spec.property;
@@ -202,14 +210,11 @@ export class GlassPlaneScene extends Base implements AttributeHost {
 
   /**
    * The scene as one value (SPEC §9): the glass and background from the attributes, the
-   * children's objects and lights, or SPEC §3's defaults where there are none. Read-only; a
-   * new value after every change (the same object until then).
+   * children's objects and lights, or SPEC §3's defaults where there are none, turned by the
+   * trackball. Read-only; a new value after every change (the same object until then).
    */
   get scene(): Scene {
-    return (this.sceneValue ??= rotateScene(
-      composeScene({ ...this.values, spin: this.effectiveSpin() }, this.source.current()),
-      this.rig.pointer.objectRotation, this.rig.pointer.lightRotation,
-    ));
+    return this.scenes.turned;
   }
 
   /**
@@ -231,7 +236,7 @@ export class GlassPlaneScene extends Base implements AttributeHost {
     }
     const r = this.rig.pointer.objectRotation;
     for (let i = 0; i < 4; i++) r[i] = q[i] / len;
-    this.sceneValue = null;
+    this.scenes.turnChanged();
     this.requestRender();
   }
 
@@ -251,13 +256,14 @@ export class GlassPlaneScene extends Base implements AttributeHost {
     if (pass === undefined) return this.frames > 0 ? readCanvas(this.canvas) : null;
     const source: ReadbackSource = CAPTURE_SOURCES[pass as CapturePass] ?? 'final';
     if (!(pass in CAPTURE_SOURCES)) warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
-    return backend.capture(source, this.lastState ?? this.frameState(performance.now()), this.scene);
+    return backend.capture(source, this.lastState ?? this.frameState(performance.now()), this.scenes.current);
   }
 
   /** Frames, passes run and skipped, draw calls, compiled programs and live GL resources. */
   get stats(): RenderStats {
     const s = this.backend.stats();
     s.frames = this.frames;
+    s.sceneBuilds = this.scenes.builds;
     return s;
   }
 
@@ -295,7 +301,7 @@ export class GlassPlaneScene extends Base implements AttributeHost {
     this.loop.dirty = false;
     if (this.clientWidth === 0 || this.clientHeight === 0) return; // nothing to show
     const state = this.frameState(now);
-    const scene = this.scene;
+    const scene = this.scenes.current;
     this.images.sync(scene);
     backend.draw(state, scene);
   }
@@ -330,7 +336,7 @@ export class GlassPlaneScene extends Base implements AttributeHost {
 
   /** Frames keep coming while the clock turns something in the scene, or the camera moves. */
   private animating(): boolean {
-    return (this.values.time === null && sceneSpins(this.scene)) || this.rig.moving;
+    return (this.values.time === null && sceneSpins(this.scenes.current)) || this.rig.moving;
   }
 
   private frameState(now: number): FrameState {
@@ -351,7 +357,7 @@ export class GlassPlaneScene extends Base implements AttributeHost {
     s.shading = v.shading;
     s.tessellation = v.tessellation;
     s.reflectionFormat = v.reflectionFormat;
-    this.rig.aim(s, this.scene);
+    this.rig.aim(s, this.scenes.current);
     return s;
   }
 
@@ -370,7 +376,7 @@ export class GlassPlaneScene extends Base implements AttributeHost {
 
   /** A child was added, removed, reordered, changed, upgraded, or its model arrived; or reduced motion changed. */
   private sceneChanged(): void {
-    this.sceneValue = null;
+    this.scenes.contentChanged();
     this.requestRender();
   }
 }

@@ -195,8 +195,8 @@ export class SoftwareRenderer {
     for (let i = 0; i < scene.objects.length; i++) {
       mat3.normalFromMat4(this.normals[i] as unknown as mat3, s.objects[i].model as unknown as mat4);
     }
-    this.lightsMain.set(scene, s.eye);
-    this.lightsMirrored.set(scene, s.mirroredEye);
+    this.lightsMain.set(scene, s.lightWorld, s.eye);
+    this.lightsMirrored.set(scene, s.lightWorld, s.mirroredEye);
     this.glassShader.model = state.fresnel;
     this.glassShader.ior = state.ior;
     this.glassShader.transparency = state.transparency;
