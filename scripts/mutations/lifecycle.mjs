@@ -52,12 +52,12 @@ export default [
   },
   {
     name: 'E6 idle broken: the live clock alone keeps frames coming (&& for ||)',
-    edits: [{ file: ELEMENT, find: 'return (this.values.time === null && sceneSpins(this.scenes.current))', replace: 'return (this.values.time === null || sceneSpins(this.scene))' }],
+    edits: [{ file: ELEMENT, find: '(this.values.time === null && sceneSpins(this.scenes.current))', replace: '(this.values.time === null || sceneSpins(this.scenes.current))' }],
     tests: [ON_DEMAND],
   },
   {
     name: 'E7 idle broken: spin counted for a scene of children, which has no cube to turn',
-    edits: [{ file: ELEMENT, find: 'return (this.values.time === null && sceneSpins(this.scenes.current))', replace: 'return (this.values.time === null && this.effectiveSpin() !== 0)' }],
+    edits: [{ file: ELEMENT, find: '(this.values.time === null && sceneSpins(this.scenes.current))', replace: '(this.values.time === null && this.effectiveSpin() !== 0)' }],
     tests: [ON_DEMAND],
   },
   {

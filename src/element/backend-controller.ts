@@ -3,7 +3,11 @@
 // attribute changes, follows the shared context's loss and restoration, keeps the counters of a
 // renderer that is gone, and frees everything on removal.
 import { ShaderError } from '../render/gl/program';
-import type { RenderStats } from '../render/types';
+import type { ReadbackSource } from '../render/renderer';
+import type { FrameState, RenderStats } from '../render/types';
+import type { Scene } from '../scene/scene';
+import type { CapturePass } from './types';
+import { warn } from './warnings';
 import type { Backend, BackendHost } from './backend';
 import type { Controller } from './controller';
 import type { Failure } from './failure';
@@ -25,6 +29,8 @@ export interface BackendControllerHost extends Omit<BackendHost, 'renderError'> 
   /** No frame may be drawn now (the context is lost, the renderer changes). */
   stopFrames(): void;
 }
+
+const CAPTURE_SOURCES: Record<CapturePass, ReadbackSource> = { reflection: 'reflection', scene: 'scene', final: 'final' };
 
 function emptyStats(): RenderStats {
   const zero = { reflection: 0, scene: 0, glass: 0 };
@@ -83,6 +89,13 @@ export class BackendController implements Controller, ContextClient {
     this.stop();
     if (this.host.failure.type !== 'context-lost') this.host.failure.clear();
     this.start();
+  }
+
+  /** `pass` of `state` drawn now, off screen (anything but a pass name: the final image, with a warning). */
+  capture(pass: CapturePass, state: FrameState, scene: Scene): ImageData | null {
+    const source: ReadbackSource = CAPTURE_SOURCES[pass] ?? 'final';
+    if (!(pass in CAPTURE_SOURCES)) warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
+    return this.current?.capture(source, state, scene) ?? null;
   }
 
   /** Frames, passes, draw calls, programs and live GL resources; which renderer and thread. */

@@ -116,6 +116,14 @@ export class CameraRig implements Controller {
     return this.flyby.active || this.pointer.active;
   }
 
+  /** The flown camera's attributes read live (the pose moves before it is written back); else undefined. */
+  liveValue(property: keyof SceneAttributes): unknown {
+    const pose = this.flyby.pose;
+    if (property === 'cameraPosition') return pose.position;
+    if (property === 'cameraRotation') return [pose.yaw, pose.pitch];
+    return undefined;
+  }
+
   /** A course camera file is loading (`ready` waits for it). */
   get loading(): boolean {
     return this.cameraSource.loading;
@@ -127,6 +135,21 @@ export class CameraRig implements Controller {
     this.flyby.setPose(v.cameraPosition, v.cameraRotation[0], v.cameraRotation[1]);
     this.aimAtTarget();
     this.queueCameraChange();
+  }
+
+  /**
+   * Sets the trackball's rotation of the objects, normalised; false (nothing changed) unless
+   * `value` is four finite numbers, not all zero.
+   */
+  setObjectRotation(value: ArrayLike<number>): boolean {
+    const q = Array.from(value ?? [], Number);
+    const len = Math.hypot(...q);
+    if (q.length !== 4 || !Number.isFinite(len) || len === 0) return false;
+    const r = this.pointer.objectRotation;
+    for (let i = 0; i < 4; i++) r[i] = q[i] / len;
+    this.host.poseChanged();
+    this.host.requestRender();
+    return true;
   }
 
   /** `controls` changed: a gesture and a motion under way stop. */

@@ -1,7 +1,8 @@
 // When the element draws: on demand, only when something changed or moves, while the element is
-// in view (IntersectionObserver) and the page is shown (visibilitychange); the canvas follows the
-// element's box (ResizeObserver); prefers-reduced-motion is watched for the spin. Frames stop
-// when nothing moves (idle). What a frame draws is the host's business: no GL, no scene here.
+// in view (IntersectionObserver) and the page is shown (visibilitychange); the canvas's drawing
+// buffer follows the element's box (ResizeObserver) and the pixel ratio; prefers-reduced-motion is
+// watched for the spin. Frames stop when nothing moves (idle). What a frame draws is the host's
+// business: no GL, no scene here.
 import type { Controller } from './controller';
 
 /** Start drawing a little before the element scrolls into view. */
@@ -11,6 +12,12 @@ const VIEW_MARGIN = '64px';
 export interface FrameLoopHost {
   /** The element whose box and visibility are watched. */
   readonly element: HTMLElement;
+  /** Its canvas, whose drawing buffer follows the box. */
+  readonly canvas: HTMLCanvasElement;
+  /** Drawing-buffer pixels per CSS pixel (the `pixel-ratio` attribute). */
+  pixelRatio(): number | 'auto';
+  /** Largest side of the drawing buffer; null while nothing can draw (the canvas keeps its size). */
+  maxSize(): number | null;
   /** A renderer is ready and nothing failed: frames can be drawn. */
   canDraw(): boolean;
   /** Something moves without a change (the clock turns an object, a control's motion): frames keep coming. */
@@ -21,8 +28,6 @@ export interface FrameLoopHost {
   paused(): void;
   /** The last frame of a motion was drawn: nothing moves any more. */
   idle(): void;
-  /** Fits the canvas to the element's box; true if its size changed. */
-  resize(): boolean;
   /** prefers-reduced-motion changed. */
   motionPreferenceChanged(): void;
 }
@@ -83,6 +88,21 @@ export class FrameLoop implements Controller {
     if (this.dirty) this.schedule();
   }
 
+  /** Drawing buffer = CSS box × pixel ratio, within the renderer's limits. Returns true if it changed. */
+  resize(): boolean {
+    const { element, canvas } = this.host;
+    const limit = this.host.maxSize();
+    if (limit === null) return false;
+    const r = this.host.pixelRatio();
+    const ratio = r === 'auto' ? window.devicePixelRatio || 1 : r;
+    const w = Math.max(1, Math.min(limit, Math.round(element.clientWidth * ratio)));
+    const h = Math.max(1, Math.min(limit, Math.round(element.clientHeight * ratio)));
+    if (w === canvas.width && h === canvas.height) return false;
+    canvas.width = w;
+    canvas.height = h;
+    return true;
+  }
+
   cancel(): void {
     cancelAnimationFrame(this.rafId);
     this.rafId = 0;
@@ -98,7 +118,7 @@ export class FrameLoop implements Controller {
   };
 
   private readonly onResize = (): void => {
-    if (!this.host.resize()) return;
+    if (!this.resize()) return;
     // Resizing clears the canvas: draw now rather than show an empty frame.
     this.cancel();
     this.dirty = true;

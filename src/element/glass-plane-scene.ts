@@ -1,32 +1,29 @@
 // <glass-plane-scene>: a thin host over its controllers. It owns the shadow DOM, parses the
-// attributes and fans their changes out, builds each frame's state, and keeps the public API and
-// its events. When frames are drawn is the FrameLoop's business, the camera the CameraRig's, who
-// draws the BackendController's (WebGL2 or the CPU), and all GL work the renderer's.
+// attributes and fans their changes out, and keeps the public API and its events. When frames are
+// drawn is the FrameLoop's business, the camera the CameraRig's, the scene value SceneValue's,
+// who draws the BackendController's (WebGL2 or the CPU), and all GL work the renderer's.
 import { ATTRIBUTES, ATTRIBUTE_BY_NAME, DEBUG_VIEWS, defaultAttributes, type SceneAttributes } from './attributes';
 import { defineAttributeProperties, upgradeProperties, type AttributeHost } from './attribute-properties';
 import { AttributeWarnings, warn } from './warnings';
 import { boundsCenter } from '../scene/group-rotation';
 import { applyStyle } from './element-style';
 import { readCanvas } from './canvas-readback';
-import type { ReadbackSource } from '../render/renderer';
 import type { FrameReport, FrameState, RenderStats } from '../render/types';
+import type { Scene } from '../scene/scene';
 import type { CapturePass, GlassPlaneSceneEventMap } from './types';
 import type { Controller } from './controller';
+import { ElementBase } from './element-base';
 import { SceneSource } from './scene-source';
 import { TextureImages } from './texture-images';
 import { sceneSpins } from './compose-scene';
 import { SceneValue } from './scene-value';
+import { FrameStates } from './frame-state';
 import { CameraRig } from './camera-rig';
 import { FrameLoop } from './frame-loop';
 import { BackendController } from './backend-controller';
 import { Failure } from './failure';
-import type { Scene } from '../scene/scene';
 
-const CAPTURE_SOURCES: Record<CapturePass, ReadbackSource> = { reflection: 'reflection', scene: 'scene', final: 'final' };
 const DEFAULT_LABEL = 'A dark glass plane reflecting a cube, with a sphere behind it';
-
-// Lets the module load where HTMLElement does not exist (server-side rendering, Node tests).
-const Base = (typeof HTMLElement === 'undefined' ? class {} : HTMLElement) as typeof HTMLElement;
 
 export interface GlassPlaneScene extends SceneAttributes {}
 
@@ -69,7 +66,7 @@ export interface GlassPlaneScene extends SceneAttributes {}
  * @csspart canvas - the canvas the scene is drawn on
  * @csspart message - the message shown when the scene cannot be drawn
  */
-export class GlassPlaneScene extends Base implements AttributeHost {
+export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implements AttributeHost {
   static get observedAttributes(): string[] {
     return [...ATTRIBUTES.map((a) => a.attribute), 'alt'];
   }
@@ -84,26 +81,17 @@ export class GlassPlaneScene extends Base implements AttributeHost {
   private readonly images = new TextureImages({ sink: () => this.backend.current, loaded: () => this.requestRender() });
   /** The camera, its controls, the trackball and the course camera. */
   private readonly rig: CameraRig;
+  /** The scene value, built when its content changes; the trackball's turn travels apart. */
+  private readonly scenes: SceneValue;
+  private readonly states = new FrameStates();
   /** When frames are drawn: on demand, in view, with the page shown. */
   private readonly loop: FrameLoop;
   /** Who draws them: WebGL2 or the CPU renderer. */
   private readonly backend: BackendController;
   /** Connected and disconnected in this order. */
   private readonly controllers: Controller[];
-  /** The scene value, built when its content changes; the trackball's turn travels apart. */
-  private readonly scenes: SceneValue;
-  private clockStart = -1;
-  private readyFired = false;
-  /** The state of the last frame drawn (what capture(pass) draws a pass of); filled in place. */
-  private lastState: FrameState | null = null;
-  private readonly lastPosition: [number, number, number] = [0, 0, 0];
   private frames = 0;
-  private readonly state: FrameState = {
-    width: 1, height: 1, time: 0, spin: 0, cubeDistance: 0, transparency: 0, ior: 1, fresnel: 'exact',
-    fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final',
-    reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-    projection: 'perspective', target: null,
-  };
+  private readyFired = false;
 
   constructor() {
     super();
@@ -113,15 +101,13 @@ export class GlassPlaneScene extends Base implements AttributeHost {
     canvas.setAttribute('part', 'canvas');
     this.failure = new Failure(this, canvas);
     root.append(canvas, this.failure.message);
+    const requestRender = () => this.requestRender();
     this.rig = new CameraRig({
-      element: this, canvas, values: this.values,
-      requestRender: () => this.requestRender(),
+      element: this, canvas, values: this.values, requestRender,
       poseChanged: () => this.scenes.turnChanged(),
       flybyMoved: () => { this.loop.dirty = true; },
       objectsCenter: () => boundsCenter(this.scene.objects),
-      cycleDebugView: () => {
-        this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length];
-      },
+      cycleDebugView: () => { this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length]; },
     });
     const { objectRotation, lightRotation } = this.rig.pointer;
     this.scenes = new SceneValue({
@@ -129,28 +115,28 @@ export class GlassPlaneScene extends Base implements AttributeHost {
       parts: () => this.source.current(),
       objectRotation, lightRotation,
     });
-    this.state.turn = this.scenes.turn;
+    this.states.current.turn = this.scenes.turn;
     this.loop = new FrameLoop({
-      element: this,
+      element: this, canvas,
+      pixelRatio: () => this.values.pixelRatio,
+      maxSize: () => this.backend.maxSize,
       canDraw: () => this.backend.current !== null && !this.failure.type,
-      animating: () => this.animating(),
+      animating: () => (this.values.time === null && sceneSpins(this.scenes.current)) || this.rig.moving,
       frame: (now) => this.drawFrame(now),
       paused: () => this.rig.paused(),
       idle: () => this.rig.idle(),
-      resize: () => this.resizeCanvas(),
       motionPreferenceChanged: () => this.sceneChanged(),
     });
     this.backend = new BackendController({
-      element: this, canvas, failure: this.failure,
+      element: this, canvas, failure: this.failure, requestRender,
       renderer: () => this.values.renderer,
       started: (backend) => {
         this.images.feed(backend);
-        this.resizeCanvas();
+        this.loop.resize();
         this.requestRender();
       },
       stopFrames: () => this.loop.cancel(),
       drawn: (state, report) => this.frameDrawn(state, report),
-      requestRender: () => this.requestRender(),
       resume: () => this.loop.resume(),
     });
     this.controllers = [this.rig, this.loop, this.source, this.backend];
@@ -179,18 +165,18 @@ export class GlassPlaneScene extends Base implements AttributeHost {
     if (!spec) return;
     const parsed = spec.parse(raw);
     if (parsed.problem) this.warnings.report(spec, raw ?? '', parsed.problem);
-    (this.values as unknown as Record<string, unknown>)[spec.property] = parsed.value;
-    this.scenes.attributeChanged(spec.property);
+    const p = spec.property;
+    (this.values as unknown as Record<string, unknown>)[p] = parsed.value;
+    this.scenes.attributeChanged(p);
     // The pose written back at rest is the one just drawn: nothing to move, nothing to draw.
     if (this.rig.writingBack) return;
-    const p = spec.property;
     if (p === 'cameraPosition' || p === 'cameraRotation' || p === 'cameraTarget') this.rig.cameraAttributeChanged();
     if (p === 'controls') this.rig.controlsChanged();
     if (p === 'renderer' && this.isConnected) this.backend.rendererChanged();
     if (p === 'cameraSrc') this.rig.cameraSource.srcChanged();
     // Resize only: drawing here, mid-way through a script's batch of attribute changes, would
     // show a frame with half of them applied (the next animation frame comes before paint).
-    if (p === 'pixelRatio') this.resizeCanvas();
+    if (p === 'pixelRatio') this.loop.resize();
     // A shader failure is not final: the change may select a variant that compiles. The message
     // stays up until a frame is drawn.
     this.failure.retry();
@@ -223,21 +209,12 @@ export class GlassPlaneScene extends Base implements AttributeHost {
    * a value that is not four finite numbers, or zero, is ignored with a warning).
    */
   get objectRotation(): [number, number, number, number] {
-    const q = this.rig.pointer.objectRotation;
-    return [q[0], q[1], q[2], q[3]];
+    return [...this.rig.pointer.objectRotation] as [number, number, number, number];
   }
 
   set objectRotation(value: ArrayLike<number>) {
-    const q = Array.from(value ?? [], Number);
-    const len = Math.hypot(...q);
-    if (q.length !== 4 || !Number.isFinite(len) || len === 0) {
-      warn(`objectRotation: expected a quaternion [x, y, z, w], ignoring ${JSON.stringify(value)?.slice(0, 60)}`);
-      return;
-    }
-    const r = this.rig.pointer.objectRotation;
-    for (let i = 0; i < 4; i++) r[i] = q[i] / len;
-    this.scenes.turnChanged();
-    this.requestRender();
+    if (this.rig.setObjectRotation(value)) return;
+    warn(`objectRotation: expected a quaternion [x, y, z, w], ignoring ${JSON.stringify(value)?.slice(0, 60)}`);
   }
 
   /** Draws a frame on the next animation frame, even when nothing changed. */
@@ -251,15 +228,12 @@ export class GlassPlaneScene extends Base implements AttributeHost {
    * state), at the drawing-buffer size, top row first. Null while nothing can be drawn.
    */
   capture(pass?: CapturePass): ImageData | null {
-    const backend = this.backend.current;
-    if (!backend || this.failure.type) return null;
+    if (!this.backend.current || this.failure.type) return null;
     if (pass === undefined) return this.frames > 0 ? readCanvas(this.canvas) : null;
-    const source: ReadbackSource = CAPTURE_SOURCES[pass as CapturePass] ?? 'final';
-    if (!(pass in CAPTURE_SOURCES)) warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
-    return backend.capture(source, this.lastState ?? this.frameState(performance.now()), this.scenes.current);
+    return this.backend.capture(pass, this.states.last ?? this.frameState(performance.now()), this.scenes.current);
   }
 
-  /** Frames, passes run and skipped, draw calls, compiled programs and live GL resources. */
+  /** Frames, passes run and skipped, draw calls, compiled programs, live GL resources and scene builds. */
   get stats(): RenderStats {
     const s = this.backend.stats();
     s.frames = this.frames;
@@ -267,28 +241,9 @@ export class GlassPlaneScene extends Base implements AttributeHost {
     return s;
   }
 
-  // ---- typed events ------------------------------------------------------------------------
-
-  override addEventListener<K extends keyof GlassPlaneSceneEventMap>(
-    type: K, listener: (this: GlassPlaneScene, ev: GlassPlaneSceneEventMap[K]) => unknown, options?: boolean | AddEventListenerOptions): void;
-  override addEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | AddEventListenerOptions): void;
-  override addEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | AddEventListenerOptions): void {
-    super.addEventListener(type, listener, options);
-  }
-
-  override removeEventListener<K extends keyof GlassPlaneSceneEventMap>(
-    type: K, listener: (this: GlassPlaneScene, ev: GlassPlaneSceneEventMap[K]) => unknown, options?: boolean | EventListenerOptions): void;
-  override removeEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | EventListenerOptions): void;
-  override removeEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | EventListenerOptions): void {
-    super.removeEventListener(type, listener, options);
-  }
-
   /** @internal AttributeHost: the parsed value, or the live pose for the flown camera. */
   readAttributeValue(property: keyof SceneAttributes): unknown {
-    const pose = this.rig.flyby.pose;
-    if (property === 'cameraPosition') return pose.position;
-    if (property === 'cameraRotation') return [pose.yaw, pose.pitch];
-    return this.values[property];
+    return this.rig.liveValue(property) ?? this.values[property];
   }
 
   // ---- frames ------------------------------------------------------------------------------
@@ -300,22 +255,23 @@ export class GlassPlaneScene extends Base implements AttributeHost {
     if (backend.busy) return; // dirty stays set: drawn when this one is back
     this.loop.dirty = false;
     if (this.clientWidth === 0 || this.clientHeight === 0) return; // nothing to show
-    const state = this.frameState(now);
-    const scene = this.scenes.current;
+    const state = this.frameState(now), scene = this.scenes.current;
     this.images.sync(scene);
     backend.draw(state, scene);
+  }
+
+  /** The attributes' part of the frame, then the camera's (which reads the scene for a course camera). */
+  private frameState(now: number): FrameState {
+    const s = this.states.fill(this.values, now, this.canvas.width, this.canvas.height, this.effectiveSpin());
+    this.rig.aim(s, this.scenes.current);
+    return s;
   }
 
   /** After a frame is on the canvas: counts, the last state (for capture), `ready` and `frame`. */
   private frameDrawn(state: FrameState, report: Omit<FrameReport, 'frame'>): void {
     this.frames++;
     this.failure.drawn(); // drawn again after a shader failure
-    const last = (this.lastState ??= { ...state });
-    Object.assign(last, state);
-    this.lastPosition[0] = state.cameraPosition[0];
-    this.lastPosition[1] = state.cameraPosition[1];
-    this.lastPosition[2] = state.cameraPosition[2];
-    last.cameraPosition = this.lastPosition;
+    this.states.drawn(state);
     // One small frozen object per frame (the event is one anyway), its passes shared frozen
     // records: listeners may keep it, and nothing later changes it. A deep copy per frame
     // (structuredClone) is what it replaces.
@@ -332,46 +288,6 @@ export class GlassPlaneScene extends Base implements AttributeHost {
   /** Spin counts unless reduced motion is asked for and the page did not set `spin` itself. */
   private effectiveSpin(): number {
     return this.loop.reducedMotion && !this.hasAttribute('spin') ? 0 : this.values.spin;
-  }
-
-  /** Frames keep coming while the clock turns something in the scene, or the camera moves. */
-  private animating(): boolean {
-    return (this.values.time === null && sceneSpins(this.scenes.current)) || this.rig.moving;
-  }
-
-  private frameState(now: number): FrameState {
-    const s = this.state;
-    const v = this.values;
-    if (this.clockStart < 0) this.clockStart = now;
-    s.width = this.canvas.width;
-    s.height = this.canvas.height;
-    s.time = v.time ?? (now - this.clockStart) / 1000;
-    s.spin = this.effectiveSpin();
-    s.cubeDistance = v.cubeDistance;
-    s.transparency = v.transparency;
-    s.ior = v.ior;
-    s.fresnel = v.fresnel;
-    s.view = v.debugView === 'none' ? 'final' : v.debugView;
-    s.reflectionScale = v.reflectionScale;
-    s.samples = v.samples;
-    s.shading = v.shading;
-    s.tessellation = v.tessellation;
-    s.reflectionFormat = v.reflectionFormat;
-    this.rig.aim(s, this.scenes.current);
-    return s;
-  }
-
-  /** Drawing buffer = CSS box × pixel ratio, within the renderer's limits. Returns true if it changed. */
-  private resizeCanvas(): boolean {
-    const limit = this.backend.maxSize;
-    if (limit === null) return false;
-    const ratio = this.values.pixelRatio === 'auto' ? window.devicePixelRatio || 1 : this.values.pixelRatio;
-    const w = Math.max(1, Math.min(limit, Math.round(this.clientWidth * ratio)));
-    const h = Math.max(1, Math.min(limit, Math.round(this.clientHeight * ratio)));
-    if (w === this.canvas.width && h === this.canvas.height) return false;
-    this.canvas.width = w;
-    this.canvas.height = h;
-    return true;
   }
 
   /** A child was added, removed, reordered, changed, upgraded, or its model arrived; or reduced motion changed. */
