@@ -26,8 +26,8 @@ export interface CameraRigHost {
   readonly values: Readonly<SceneAttributes>;
   /** Draw again. */
   requestRender(): void;
-  /** A control moved the camera or turned the objects (the caller draws). */
-  poseChanged(): void;
+  /** The trackball turned the objects or the first light (the camera did not move). */
+  turned(): void;
   /** The flyby moved during a frame: that frame must be drawn even if another is on its way. */
   flybyMoved(): void;
   /** What orbit turns about without `camera-target`: the centre of the objects as drawn. */
@@ -89,7 +89,7 @@ export class CameraRig implements Controller {
       changed: (camera) => {
         // A trackball turn moves objects, not the camera: no write-back, no camera-change for it.
         if (camera) this.cameraDirty = true;
-        host.poseChanged();
+        if (!camera) host.turned();
         host.requestRender();
       },
       gestureEnd: () => this.gestureEnd(),
@@ -147,7 +147,7 @@ export class CameraRig implements Controller {
     if (q.length !== 4 || !Number.isFinite(len) || len === 0) return false;
     const r = this.pointer.objectRotation;
     for (let i = 0; i < 4; i++) r[i] = q[i] / len;
-    this.host.poseChanged();
+    this.host.turned();
     this.host.requestRender();
     return true;
   }
@@ -157,14 +157,13 @@ export class CameraRig implements Controller {
     this.pointer.cancel();
   }
 
-  /** A frame begins: the flyby and the motion after release advance. True if anything moved. */
-  step(): boolean {
-    const moved = this.advanceFlyby();
+  /** A frame begins: the flyby and the motion after release advance. */
+  step(): void {
+    this.advanceFlyby();
     // The motion after release, by the wall clock (SPEC §10), not the frame's timestamp.
-    if (!this.pointer.update(performance.now())) return moved;
-    this.host.poseChanged();
+    if (!this.pointer.update(performance.now())) return;
     if (this.host.values.controls === 'orbit') this.cameraDirty = true; // a trackball's spin turns objects, not the camera
-    return true;
+    else this.host.turned();
   }
 
   /** Frames stopped: the next flyby step starts from rest. */
@@ -204,15 +203,14 @@ export class CameraRig implements Controller {
    * performance.now() (the key events' clock), not the frame's timestamp, which can be
    * earlier than a key press handled in the same frame.
    */
-  private advanceFlyby(): boolean {
+  private advanceFlyby(): void {
     const t = performance.now();
     const dt = this.lastNow ? (t - this.lastNow) / 1000 : 0;
     this.lastNow = t;
-    if (!this.flyby.update(dt)) return false;
+    if (!this.flyby.update(dt)) return;
     this.cameraDirty = true;
     this.keysMoved = true;
     this.host.flybyMoved();
-    return true;
   }
 
   /** With `camera-target`, the camera looks at it (SPEC §2): yaw and pitch from position → target. */

@@ -104,7 +104,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     const requestRender = () => this.requestRender();
     this.rig = new CameraRig({
       element: this, canvas, values: this.values, requestRender,
-      poseChanged: () => this.scenes.turnChanged(),
+      turned: () => this.scenes.turnChanged(),
       flybyMoved: () => { this.loop.dirty = true; },
       objectsCenter: () => boundsCenter(this.scene.objects),
       cycleDebugView: () => { this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length]; },
