@@ -3,6 +3,7 @@
 const CONTROLS = 'tests/e2e/controls.spec.ts';
 const INERTIA = 'tests/e2e/inertia.spec.ts';
 const POINTER = 'src/element/controls/pointer-controls.ts';
+const RIG = 'src/element/camera-rig.ts';
 
 export default [
   {
@@ -62,24 +63,24 @@ export default [
   },
   {
     name: 'C9 camera-change fired at pointer up, before the inertia ends',
-    edits: [{ file: POINTER, find: "    if (this.spin.active) this.hooks.changed(this.spinKind === 'orbit');\n    else if (this.moved) this.end();", replace: "    if (this.spin.active) this.hooks.changed(this.spinKind === 'orbit');\n    if (this.moved) this.end();" }],
+    edits: [{ file: POINTER, find: "    if (this.spin.active) this.host.changed(this.spinKind === 'orbit');\n    else if (this.moved) this.end();", replace: "    if (this.spin.active) this.host.changed(this.spinKind === 'orbit');\n    if (this.moved) this.end();" }],
     tests: [INERTIA],
   },
   {
     name: 'C10 camera-target left out of the write-back after a pan',
-    edits: [{ file: 'src/element/glass-plane-scene.ts', find: "        this.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);\n", replace: '' }],
+    edits: [{ file: RIG, find: "        element.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);\n", replace: '' }],
     tests: [CONTROLS],
   },
   {
     name: 'C11 a trackball turn fires camera-change (the camera did not move)',
-    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '        if (camera) this.cameraDirty = true;', replace: '        this.cameraDirty = true;' }],
+    edits: [{ file: RIG, find: '        if (camera) this.cameraDirty = true;', replace: '        this.cameraDirty = true;' }],
     tests: [CONTROLS],
   },
   {
     name: 'C12 orbit inertia in degrees per second again (capped at 6.3°/s, stops at 0.00087°/s)',
     edits: [
       { file: POINTER, find: 'this.delta[0] = yaw * DEG; this.delta[1] = pitch * DEG;', replace: 'this.delta[0] = yaw; this.delta[1] = pitch;' },
-      { file: POINTER, find: 'this.orbit.rotate(this.hooks.pose(), d[0] / DEG, d[1] / DEG);', replace: 'this.orbit.rotate(this.hooks.pose(), d[0], d[1]);' },
+      { file: POINTER, find: 'this.orbit.rotate(this.host.pose(), d[0] / DEG, d[1] / DEG);', replace: 'this.orbit.rotate(this.host.pose(), d[0], d[1]);' },
     ],
     tests: [INERTIA],
   },
@@ -97,5 +98,15 @@ export default [
     name: 'C15 inertia clock not restarted at release',
     edits: [{ file: POINTER, find: '      this.spinTime = performance.now(); // the motion runs from the release, on the wall clock\n', replace: '' }],
     tests: [INERTIA],
+  },
+  {
+    name: 'C16 the frame setup leaves out the trackball turn of the objects (a drag turns nothing on screen)',
+    edits: [{ file: 'src/render/frame-setup.ts', find: '      this.modelMatrix(o, objects[i], s.time, objectsTurn);', replace: '      this.modelMatrix(o, objects[i], s.time, null);' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C17 the frame setup leaves out the turn of the first light (a right-drag relights nothing)',
+    edits: [{ file: 'src/render/frame-setup.ts', find: '      const g = i === 0 ? lightTurn : null, t', replace: '      const g = null, t' }],
+    tests: [CONTROLS],
   },
 ];

@@ -4,6 +4,11 @@ const LEAKS = 'tests/e2e/gl-leaks.spec.ts';
 const LIFECYCLE = 'tests/e2e/lifecycle.spec.ts';
 const ON_DEMAND = 'tests/e2e/on-demand.spec.ts';
 const ELEMENT = 'src/element/glass-plane-scene.ts';
+const LOOP = 'src/element/frame-loop.ts';
+const BACKENDS = 'src/element/backend-controller.ts';
+const SOFTWARE = 'src/element/software-backend.ts';
+const SCENES = 'src/element/scene-value.ts';
+const REBUILDS = 'tests/e2e/scene-rebuilds.spec.ts';
 
 export default [
   {
@@ -13,12 +18,12 @@ export default [
   },
   {
     name: '14 the software renderer never given the decoded images',
-    edits: [{ file: ELEMENT, find: '      this.images.attach(host);\n', replace: '' }],
+    edits: [{ file: SOFTWARE, find: '    this.software.setImage(url, image);\n', replace: '' }],
     tests: ['tests/e2e/model-reference.spec.ts'],
   },
   {
     name: 'E1 image textures lost after a context restore (a new renderer is not handed the images decoded so far)',
-    edits: [{ file: 'src/element/texture-images.ts', find: '    if (sink) for (const [url, image] of this.ready) sink.setImage(url, image);\n', replace: '' }],
+    edits: [{ file: 'src/element/texture-images.ts', find: '    for (const [url, image] of this.ready) sink.setImage(url, image);\n', replace: '' }],
     tests: [LIFECYCLE],
   },
   {
@@ -29,40 +34,55 @@ export default [
   {
     name: 'E3 after webgl → software the canvas keeps the stale WebGL frame (generation test inverted)',
     edits: [{
-      file: ELEMENT,
-      find: 'if (generation === this.softwareGeneration) (out as ImageBitmapRenderingContext).transferFromImageBitmap(b);',
-      replace: 'if (generation !== this.softwareGeneration) (out as ImageBitmapRenderingContext).transferFromImageBitmap(b);',
+      file: SOFTWARE,
+      find: 'if (!this.disposed) (out as ImageBitmapRenderingContext).transferFromImageBitmap(b);',
+      replace: 'if (this.disposed) (out as ImageBitmapRenderingContext).transferFromImageBitmap(b);',
     }],
     tests: [LEAKS],
   },
   {
     name: 'E4 switching back to webgl asks for the context, not the renderer: it stays software',
-    edits: [{ file: ELEMENT, find: '(!wantSoftware && this.glRenderer)) return;', replace: '(!wantSoftware && this.shared)) return;' }],
+    edits: [{ file: BACKENDS, find: "(!wantSoftware && kind === 'webgl')) return;", replace: '(!wantSoftware && this.shared)) return;' }],
     tests: [LEAKS],
   },
   {
     name: 'E5 off-screen elements keep drawing (frames scheduled whatever the IntersectionObserver said)',
-    edits: [{ file: ELEMENT, find: '|| this.failed || !this.inView || document.hidden) return;', replace: '|| this.failed || document.hidden) return;' }],
+    edits: [{ file: LOOP, find: '|| !this.host.canDraw() || !this.inView || document.hidden) return;', replace: '|| !this.host.canDraw() || document.hidden) return;' }],
     tests: [ON_DEMAND],
   },
   {
     name: 'E6 idle broken: the live clock alone keeps frames coming (&& for ||)',
-    edits: [{ file: ELEMENT, find: 'return (this.values.time === null && sceneSpins(this.scene))', replace: 'return (this.values.time === null || sceneSpins(this.scene))' }],
+    edits: [{ file: ELEMENT, find: '(this.values.time === null && sceneSpins(this.scenes.current))', replace: '(this.values.time === null || sceneSpins(this.scenes.current))' }],
     tests: [ON_DEMAND],
   },
   {
     name: 'E7 idle broken: spin counted for a scene of children, which has no cube to turn',
-    edits: [{ file: ELEMENT, find: 'return (this.values.time === null && sceneSpins(this.scene))', replace: 'return (this.values.time === null && this.effectiveSpin() !== 0)' }],
+    edits: [{ file: ELEMENT, find: '(this.values.time === null && sceneSpins(this.scenes.current))', replace: '(this.values.time === null && this.effectiveSpin() !== 0)' }],
     tests: [ON_DEMAND],
   },
   {
     name: 'E8 removal leaves the element a client of the shared context (rebuilt on a restore)',
-    edits: [{ file: ELEMENT, find: '    this.shared?.release(this);\n', replace: '' }],
+    edits: [{ file: BACKENDS, find: '    this.shared?.release(this);\n', replace: '' }],
     tests: [LEAKS],
   },
   {
     name: 'E9 removal leaves the reduced-motion listener',
-    edits: [{ file: ELEMENT, find: "    this.reducedMotion?.removeEventListener('change', this.onMotionPreference);\n", replace: '' }],
+    edits: [{ file: LOOP, find: "    this.motionQuery?.removeEventListener('change', this.onMotionPreference);\n", replace: '' }],
     tests: [LIFECYCLE],
+  },
+  {
+    name: 'E10 every attribute change rebuilds the scene value again, not only those that shape it',
+    edits: [{ file: SCENES, find: '    if (SHAPING.has(property)) this.contentChanged();', replace: '    this.contentChanged();' }],
+    tests: [REBUILDS],
+  },
+  {
+    name: 'E11 a trackball turn rebuilds the scene value (every frame of its inertia)',
+    edits: [{ file: SCENES, find: '  turnChanged(): void {\n    this.turnedValue = null;', replace: '  turnChanged(): void {\n    this.value = this.turnedValue = null;' }],
+    tests: [REBUILDS],
+  },
+  {
+    name: 'E12 the software worker keeps drawing the first scene it was sent',
+    edits: [{ file: 'src/software/protocol.ts', find: '    if (scene === this.lastScene) return { scene: null', replace: '    if (this.lastScene) return { scene: null' }],
+    tests: [REBUILDS],
   },
 ];

@@ -5,14 +5,26 @@
 import type { CourseCamera } from '../math/course-camera';
 import { courseSceneRange } from '../scene/course-depth';
 import type { Scene } from '../scene/scene';
+import type { SceneTurn } from '../scene/group-rotation';
 import { acquireCourseFile, loadErrorDetail, type Handle } from './children/model-cache';
 import type { LoadedCamera } from './children/course-files';
 import { warn } from './warnings';
 import { absoluteUrl } from './absolute-url';
+import type { Controller } from './controller';
 
 const DEG = 180 / Math.PI;
 
-export class CameraSource {
+/** What CameraSource needs of the scene element. */
+export interface CameraSourceHost {
+  /** The scene element: `error` is fired on it, and nothing loads while it is disconnected. */
+  readonly element: HTMLElement;
+  /** `camera-src` as written; null when absent. */
+  src(): string | null;
+  /** The camera in force changed, or a load failed: draw again. */
+  changed(): void;
+}
+
+export class CameraSource implements Controller {
   /** The course camera in force, or null (the flyby camera). */
   camera: CourseCamera | null = null;
   private url: string | null = null;
@@ -22,15 +34,29 @@ export class CameraSource {
   private readonly warned = new WeakSet<CourseCamera>();
   private checked: { camera: CourseCamera; scene: Scene } | null = null;
 
-  constructor(private readonly host: HTMLElement, private readonly changed: () => void) {}
+  constructor(private readonly host: CameraSourceHost) {}
 
   get loading(): boolean {
     return this.pending;
   }
 
-  /** The attribute's value (as written), on change and on connection; null: no course camera. */
-  set(src: string | null): void {
-    const url = src === null || !this.host.isConnected ? null : absoluteUrl(src);
+  hostConnected(): void {
+    this.srcChanged();
+  }
+
+  /** Disconnected: the load stops (the camera stays, for a move). */
+  hostDisconnected(): void {
+    this.handle?.release();
+    this.handle = null;
+    this.pending = false;
+    this.url = null;
+  }
+
+  /** `camera-src` changed: load the file it names, or go back to the flyby camera. */
+  srcChanged(): void {
+    const src = this.host.src();
+    const connected = this.host.element.isConnected;
+    const url = src === null || !connected ? null : absoluteUrl(src);
     if (url === this.url && src !== null && url !== null) return;
     this.handle?.release();
     this.handle = null;
@@ -39,11 +65,11 @@ export class CameraSource {
     if (src === null) {
       if (this.camera) {
         this.camera = null;
-        this.changed();
+        this.host.changed();
       }
       return;
     }
-    if (!this.host.isConnected) return;
+    if (!connected) return;
     if (url === null) {
       this.fail(src, { type: 'load', url: src, message: 'not a usable URL' });
       return;
@@ -56,7 +82,7 @@ export class CameraSource {
         if (this.handle !== handle) return;
         this.pending = false;
         this.camera = file.camera;
-        this.changed();
+        this.host.changed();
       },
       (e) => {
         if (this.handle !== handle) return;
@@ -66,23 +92,16 @@ export class CameraSource {
     );
   }
 
-  /** Disconnected: the load stops (the camera stays, for a move). */
-  stop(): void {
-    this.handle?.release();
-    this.handle = null;
-    this.pending = false;
-    this.url = null;
-  }
-
   /**
    * A camera that looks away from everything (SPEC §11: vader.cfg, maca.cfg) is drawn as the
-   * course's programs drew it, with one warning per camera. Checked when camera or scene change.
+   * course's programs drew it, with one warning per camera. Checked when camera or scene change
+   * (with the trackball's turn of that moment).
    */
-  checkLooksAway(scene: Scene, time: number): void {
+  checkLooksAway(scene: Scene, time: number, turn: SceneTurn | null): void {
     const camera = this.camera;
     if (!camera || this.warned.has(camera) || (this.checked?.camera === camera && this.checked.scene === scene)) return;
     this.checked = { camera, scene };
-    if (scene.objects.length === 0 || !courseSceneRange(camera, scene, time).behind) return;
+    if (scene.objects.length === 0 || !courseSceneRange(camera, scene, time, turn).behind) return;
     this.warned.add(camera);
     warn(`camera-src: every vertex is behind the camera (z ≤ 0 along N); drawn as the course's programs drew it, the formula applied to negative z (the view along −N, mirrored top to bottom)`);
   }
@@ -93,7 +112,7 @@ export class CameraSource {
   }
 
   private fail(url: string, detail: ReturnType<typeof loadErrorDetail>): void {
-    this.changed();
-    queueMicrotask(() => this.host.dispatchEvent(new CustomEvent('error', { detail: { ...detail, url } })));
+    this.host.changed();
+    queueMicrotask(() => this.host.element.dispatchEvent(new CustomEvent('error', { detail: { ...detail, url } })));
   }
 }

@@ -5,10 +5,11 @@ import { defaultScene } from '../scene/default-scene';
 import type { Glass, Light, Scene, SceneObject } from '../scene/scene';
 import type { SceneAttributes } from './attributes';
 
-export type SceneInputs = Pick<SceneAttributes, 'cubeDistance' | 'glassCenter' | 'glassNormal' | 'glassSize' | 'background'> & {
-  /** The cube's spin as drawn (0 under reduced motion unless `spin` is set). */
-  spin: number;
-};
+/** The attributes the scene value is built from: a change of any other builds nothing. */
+export const SCENE_ATTRIBUTES = ['cubeDistance', 'glassCenter', 'glassNormal', 'glassSize', 'background', 'spin'] as const;
+
+/** `spin` is the cube's spin as drawn (0 under reduced motion unless `spin` is set). */
+export type SceneInputs = Pick<SceneAttributes, (typeof SCENE_ATTRIBUTES)[number]>;
 
 /** Children's contributions; null where the element has no such child (the default is used). */
 export interface ChildParts {

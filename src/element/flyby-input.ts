@@ -1,9 +1,17 @@
 // DOM input → FlybyController: keys on the focused host, pointer-lock mouse look on the canvas.
-// Listeners live only between attach() and detach(), so two elements never share input.
+// Listeners live only while the host is connected, so two elements never share input.
 import type { FlybyController } from './flyby-controller';
+import type { Controller } from './controller';
 
-export interface FlybyInputHooks {
-  /** Are controls enabled (the `controls` attribute)? */
+/** What FlybyInput needs of the scene element. */
+export interface FlybyInputHost {
+  /** Takes the keys (focused) and blur. */
+  readonly element: HTMLElement;
+  /** Takes the clicks and the pointer-lock mouse. */
+  readonly canvas: HTMLCanvasElement;
+  /** The pose the input moves. */
+  readonly flyby: FlybyController;
+  /** Are flyby controls enabled (the `controls` attribute)? */
   enabled(): boolean;
   /** A key started motion or the mouse turned the camera: draw. */
   moved(byMouse: boolean): void;
@@ -15,27 +23,30 @@ export interface FlybyInputHooks {
 
 const DEBUG_KEY = 'KeyF';
 
-export class FlybyInput {
-  constructor(
-    private readonly host: HTMLElement,
-    private readonly canvas: HTMLCanvasElement,
-    private readonly flyby: FlybyController,
-    private readonly hooks: FlybyInputHooks,
-  ) {}
+export class FlybyInput implements Controller {
+  private readonly element: HTMLElement;
+  private readonly canvas: HTMLCanvasElement;
+  private readonly flyby: FlybyController;
 
-  attach(): void {
-    this.host.addEventListener('keydown', this.onKeyDown);
-    this.host.addEventListener('keyup', this.onKeyUp);
-    this.host.addEventListener('blur', this.onBlur);
+  constructor(private readonly host: FlybyInputHost) {
+    this.element = host.element;
+    this.canvas = host.canvas;
+    this.flyby = host.flyby;
+  }
+
+  hostConnected(): void {
+    this.element.addEventListener('keydown', this.onKeyDown);
+    this.element.addEventListener('keyup', this.onKeyUp);
+    this.element.addEventListener('blur', this.onBlur);
     this.canvas.addEventListener('click', this.onClick);
     this.canvas.addEventListener('mousemove', this.onMouseMove);
     document.addEventListener('pointerlockchange', this.onLockChange);
   }
 
-  detach(): void {
-    this.host.removeEventListener('keydown', this.onKeyDown);
-    this.host.removeEventListener('keyup', this.onKeyUp);
-    this.host.removeEventListener('blur', this.onBlur);
+  hostDisconnected(): void {
+    this.element.removeEventListener('keydown', this.onKeyDown);
+    this.element.removeEventListener('keyup', this.onKeyUp);
+    this.element.removeEventListener('blur', this.onBlur);
     this.canvas.removeEventListener('click', this.onClick);
     this.canvas.removeEventListener('mousemove', this.onMouseMove);
     document.removeEventListener('pointerlockchange', this.onLockChange);
@@ -43,19 +54,19 @@ export class FlybyInput {
   }
 
   private readonly onKeyDown = (e: KeyboardEvent): void => {
-    if (!this.hooks.enabled() || e.altKey || e.ctrlKey || e.metaKey) return;
+    if (!this.host.enabled() || e.altKey || e.ctrlKey || e.metaKey) return;
     if (e.code === DEBUG_KEY) {
-      if (!e.repeat) this.hooks.cycleDebugView();
+      if (!e.repeat) this.host.cycleDebugView();
       return;
     }
     if (this.flyby.keyDown(e.code)) {
       e.preventDefault(); // Space and the arrows would scroll the page
-      this.hooks.moved(false);
+      this.host.moved(false);
     }
   };
 
   private readonly onKeyUp = (e: KeyboardEvent): void => {
-    if (this.flyby.active) this.hooks.settle();
+    if (this.flyby.active) this.host.settle();
     if (this.flyby.keyUp(e.code)) e.preventDefault();
   };
 
@@ -64,12 +75,12 @@ export class FlybyInput {
   };
 
   private locked(): boolean {
-    return (this.host.shadowRoot?.pointerLockElement ?? null) === this.canvas;
+    return (this.element.shadowRoot?.pointerLockElement ?? null) === this.canvas;
   }
 
   private readonly onClick = (): void => {
-    if (!this.hooks.enabled() || this.locked()) return;
-    this.host.focus();
+    if (!this.host.enabled() || this.locked()) return;
+    this.element.focus();
     try {
       // Refusal (headless, iframes without allow-pointer-lock) leaves keyboard look working.
       const p = this.canvas.requestPointerLock() as unknown as Promise<void> | undefined;
@@ -87,11 +98,11 @@ export class FlybyInput {
   };
 
   private readonly onMouseMove = (e: MouseEvent): void => {
-    if (!this.hooks.enabled() || !this.locked()) return;
+    if (!this.host.enabled() || !this.locked()) return;
     if (this.skipNext) {
       this.skipNext = false;
       return;
     }
-    if (this.flyby.look(e.movementX, e.movementY)) this.hooks.moved(true);
+    if (this.flyby.look(e.movementX, e.movementY)) this.host.moved(true);
   };
 }

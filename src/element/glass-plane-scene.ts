@@ -1,54 +1,29 @@
-// <glass-plane-scene>: attributes → typed properties, shadow DOM, observers, input, events.
-// All GL work is the renderer's; this file turns the page's state into FrameState, decides
-// when a frame is needed, and copies frames from the page's shared context to its canvas.
+// <glass-plane-scene>: a thin host over its controllers. It owns the shadow DOM, parses the
+// attributes and fans their changes out, and keeps the public API and its events. When frames are
+// drawn is the FrameLoop's business, the camera the CameraRig's, the scene value SceneValue's,
+// who draws the BackendController's (WebGL2 or the CPU), and all GL work the renderer's.
 import { ATTRIBUTES, ATTRIBUTE_BY_NAME, DEBUG_VIEWS, defaultAttributes, type SceneAttributes } from './attributes';
 import { defineAttributeProperties, upgradeProperties, type AttributeHost } from './attribute-properties';
-import { AttributeWarnings, PREFIX, warn } from './warnings';
-import { FlybyController } from './flyby-controller';
-import { FlybyInput } from './flyby-input';
-import { PointerControls, type PointerMode } from './controls/pointer-controls';
-import { boundsCenter, rotateScene } from '../scene/group-rotation';
+import { AttributeWarnings, warn } from './warnings';
+import { boundsCenter } from '../scene/group-rotation';
 import { applyStyle } from './element-style';
 import { readCanvas } from './canvas-readback';
-import { SharedContext, type ContextClient, type Presenter } from './shared-context';
-import { Renderer, passesFor, type ReadbackSource } from '../render/renderer';
-import { SoftwareHost } from './software-host';
-import { ShaderError } from '../render/gl/program';
 import type { FrameReport, FrameState, RenderStats } from '../render/types';
-import type { CameraChangeDetail, CapturePass, ErrorType, GlassPlaneSceneEventMap } from './types';
+import type { Scene } from '../scene/scene';
+import type { CapturePass, GlassPlaneSceneEventMap } from './types';
+import type { Controller } from './controller';
+import { ElementBase } from './element-base';
 import { SceneSource } from './scene-source';
 import { TextureImages } from './texture-images';
-import { composeScene, sceneSpins } from './compose-scene';
-import { CameraSource } from './camera-source';
-import type { Scene } from '../scene/scene';
+import { sceneSpins } from './compose-scene';
+import { SceneValue } from './scene-value';
+import { FrameStates } from './frame-state';
+import { CameraRig } from './camera-rig';
+import { FrameLoop } from './frame-loop';
+import { BackendController } from './backend-controller';
+import { Failure } from './failure';
 
-const CAPTURE_SOURCES: Record<CapturePass, ReadbackSource> = { reflection: 'reflection', scene: 'scene', final: 'final' };
 const DEFAULT_LABEL = 'A dark glass plane reflecting a cube, with a sphere behind it';
-const MESSAGES: Record<ErrorType, string> = {
-  'webgl2-unavailable': 'WebGL2 is not available here, so the glass scene cannot be shown.',
-  shader: 'The glass scene could not be drawn: a shader failed to compile.',
-  'context-lost': 'The graphics context was lost; waiting for it to come back.',
-  load: 'The glass scene could not be loaded.',
-};
-/** Largest side of a software frame (the CPU's cost grows with the pixels; 4096 is a 4K canvas's side). */
-const SOFTWARE_MAX_SIZE = 4096;
-/** Start drawing a little before the element scrolls into view. */
-const VIEW_MARGIN = '64px';
-
-// Lets the module load where HTMLElement does not exist (server-side rendering, Node tests).
-const Base = (typeof HTMLElement === 'undefined' ? class {} : HTMLElement) as typeof HTMLElement;
-
-function emptyStats(): RenderStats {
-  const zero = { reflection: 0, scene: 0, glass: 0 };
-  return {
-    frames: 0, programs: 0, sphereSegments: 0, passesRun: { ...zero }, passesSkipped: { ...zero }, drawCalls: 0, triangles: { scene: 0, reflection: 0 },
-    resources: { buffers: 0, textures: 0, framebuffers: 0, renderbuffers: 0, vertexArrays: 0, programs: 0, shaders: 0, total: 0 },
-  };
-}
-
-function checksEnabled(): boolean {
-  return (globalThis as { __GLASS_PLANE_SCENE_CHECKS__?: unknown }).__GLASS_PLANE_SCENE_CHECKS__ === true;
-}
 
 export interface GlassPlaneScene extends SceneAttributes {}
 
@@ -91,118 +66,80 @@ export interface GlassPlaneScene extends SceneAttributes {}
  * @csspart canvas - the canvas the scene is drawn on
  * @csspart message - the message shown when the scene cannot be drawn
  */
-export class GlassPlaneScene extends Base implements ContextClient, AttributeHost {
+export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implements AttributeHost {
   static get observedAttributes(): string[] {
     return [...ATTRIBUTES.map((a) => a.attribute), 'alt'];
   }
 
   private readonly values: SceneAttributes = defaultAttributes();
   private readonly canvas: HTMLCanvasElement;
-  private readonly message: HTMLElement;
-  private readonly flyby = new FlybyController();
-  private readonly input: FlybyInput;
-  /** orbit and trackball input, and the trackball's rotations. */
-  private readonly pointerControls: PointerControls;
-  /** The flyby's mouse look ends 150 ms after its last movement. */
-  private lookTimer: ReturnType<typeof setTimeout> | undefined;
-  /** A camera attribute set by the page: one camera-change after the current task. */
-  private cameraChangeQueued = false;
+  private readonly failure: Failure;
   private readonly warnings = new AttributeWarnings();
   /** The light-DOM children (<glass-object>, <glass-light>) as parts of the scene. */
-  private readonly source = new SceneSource(this, () => this.sceneChanged());
+  private readonly source = new SceneSource({ element: this, partsChanged: () => this.sceneChanged() });
   /** Image textures the scene names, decoded once per URL per page, given to the renderer. */
-  private readonly images = new TextureImages(() => this.requestRender());
-  /** `camera-src`: the course camera, when one is in force (SPEC §11). */
-  private readonly cameraSource = new CameraSource(this, () => this.requestRender());
-  /** The scene value, built on demand and kept until an attribute or a child changes. */
-  private sceneValue: Scene | null = null;
-  private shared: SharedContext | null = null;
-  private output: Presenter | null = null;
-  private glRenderer: Renderer | null = null;
-  /** The software renderer (renderer="software", or "auto" without WebGL2), once loaded. */
-  private software: SoftwareHost | null = null;
-  /** Counts software starts, so a start overtaken by a change or a disconnection is dropped. */
-  private softwareGeneration = 0;
-  private softwareStarting = false;
-  /** A software frame is drawing; another is wanted when it is back. */
-  private softwareBusy = false;
-  /** How software frames reach the canvas: a 2D context, or (after WebGL used it) a bitmap renderer. */
-  private softwareOut: CanvasRenderingContext2D | ImageBitmapRenderingContext | null = null;
-  private resizeObserver: ResizeObserver | null = null;
-  private intersectionObserver: IntersectionObserver | null = null;
-  private reducedMotion: MediaQueryList | null = null;
-  private rafId = 0;
-  private lastNow = 0;
-  private clockStart = -1;
-  private failed: ErrorType | null = null;
-  /** The shader error last reported: the same one again (the same broken variant) is not news. */
-  private reportedShaderError: unknown = null;
-  private inView = false;
-  private dirty = true;
-  private readyFired = false;
-  /** The state of the last frame drawn (what capture(pass) draws a pass of); filled in place. */
-  private lastState: FrameState | null = null;
-  private readonly lastPosition: [number, number, number] = [0, 0, 0];
-  private totals = emptyStats();
+  private readonly images = new TextureImages({ sink: () => this.backend.current, loaded: () => this.requestRender() });
+  /** The camera, its controls, the trackball and the course camera. */
+  private readonly rig: CameraRig;
+  /** The scene value, built when its content changes; the trackball's turn travels apart. */
+  private readonly scenes: SceneValue;
+  private readonly states = new FrameStates();
+  /** When frames are drawn: on demand, in view, with the page shown. */
+  private readonly loop: FrameLoop;
+  /** Who draws them: WebGL2 or the CPU renderer. */
+  private readonly backend: BackendController;
+  /** Connected and disconnected in this order. */
+  private readonly controllers: Controller[];
   private frames = 0;
-  private cameraDirty = false;
-  /** The flyby's keys moved the camera since the last write-back (their gesture ends when it stops). */
-  private flybyMoved = false;
-  /** True while reflectCamera() sets the camera attributes. */
-  private writingBack = false;
-  private readonly state: FrameState = {
-    width: 1, height: 1, time: 0, spin: 0, cubeDistance: 0, transparency: 0, ior: 1, fresnel: 'exact',
-    fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final',
-    reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-    projection: 'perspective', target: null,
-  };
+  private readyFired = false;
 
   constructor() {
     super();
     const root = this.attachShadow({ mode: 'open' });
     applyStyle(root);
-    this.canvas = document.createElement('canvas');
-    this.canvas.setAttribute('part', 'canvas');
-    this.message = document.createElement('div');
-    this.message.setAttribute('part', 'message');
-    this.message.setAttribute('role', 'alert');
-    this.message.hidden = true;
-    root.append(this.canvas, this.message);
-    this.flyby.setPose(this.values.cameraPosition, this.values.cameraRotation[0], this.values.cameraRotation[1]);
-    this.input = new FlybyInput(this, this.canvas, this.flyby, {
-      enabled: () => this.values.controls === 'flyby',
-      moved: (byMouse) => {
-        if (byMouse) {
-          this.cameraDirty = true;
-          clearTimeout(this.lookTimer);
-          this.lookTimer = setTimeout(() => this.gestureEnd(), 150);
-        }
-        // Motion starts now, not at the next frame: on a busy page that frame may come after
-        // the key is released already, and a first step of dt = 0 would lose the press.
-        else if (this.lastNow === 0) this.lastNow = performance.now();
-        this.requestRender();
-      },
-      settle: () => {
-        this.advanceFlyby();
-        this.requestRender();
-      },
-      cycleDebugView: () => {
-        this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length];
-      },
+    const canvas = (this.canvas = document.createElement('canvas'));
+    canvas.setAttribute('part', 'canvas');
+    this.failure = new Failure(this, canvas);
+    root.append(canvas, this.failure.message);
+    const requestRender = () => this.requestRender();
+    this.rig = new CameraRig({
+      element: this, canvas, values: this.values, requestRender,
+      turned: () => this.scenes.turnChanged(),
+      flybyMoved: () => { this.loop.dirty = true; },
+      objectsCenter: () => boundsCenter(this.scene.objects),
+      cycleDebugView: () => { this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length]; },
     });
-    this.pointerControls = new PointerControls(this, this.canvas, {
-      mode: () => (this.values.controls === 'orbit' || this.values.controls === 'trackball' ? this.values.controls as PointerMode : null),
-      pose: () => this.flyby.pose,
-      target: () => this.values.cameraTarget ?? boundsCenter(this.scene.objects),
-      fov: () => this.values.fov,
-      changed: (camera) => {
-        // A trackball turn moves objects, not the camera: no write-back, no camera-change for it.
-        if (camera) this.cameraDirty = true;
-        this.sceneValue = null;
+    const { objectRotation, lightRotation } = this.rig.pointer;
+    this.scenes = new SceneValue({
+      inputs: () => ({ ...this.values, spin: this.effectiveSpin() }),
+      parts: () => this.source.current(),
+      objectRotation, lightRotation,
+    });
+    this.states.current.turn = this.scenes.turn;
+    this.loop = new FrameLoop({
+      element: this, canvas,
+      pixelRatio: () => this.values.pixelRatio,
+      maxSize: () => this.backend.maxSize,
+      canDraw: () => this.backend.current !== null && !this.failure.type,
+      animating: () => (this.values.time === null && sceneSpins(this.scenes.current)) || this.rig.moving,
+      frame: (now) => this.drawFrame(now),
+      paused: () => this.rig.paused(),
+      idle: () => this.rig.idle(),
+      motionPreferenceChanged: () => this.sceneChanged(),
+    });
+    this.backend = new BackendController({
+      element: this, canvas, failure: this.failure, requestRender,
+      renderer: () => this.values.renderer,
+      started: (backend) => {
+        this.images.feed(backend);
+        this.loop.resize();
         this.requestRender();
       },
-      gestureEnd: () => this.gestureEnd(),
+      stopFrames: () => this.loop.cancel(),
+      drawn: (state, report) => this.frameDrawn(state, report),
+      resume: () => this.loop.resume(),
     });
+    this.controllers = [this.rig, this.loop, this.source, this.backend];
   }
 
   // ---- lifecycle -------------------------------------------------------------------------
@@ -212,38 +149,11 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
     if (!this.hasAttribute('role')) this.setAttribute('role', 'img');
     if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', this.alt);
-    this.input.attach();
-    this.pointerControls.attach();
-    this.resizeObserver = new ResizeObserver(this.onResize);
-    this.resizeObserver.observe(this);
-    this.intersectionObserver = new IntersectionObserver(this.onIntersection, { rootMargin: VIEW_MARGIN });
-    this.intersectionObserver.observe(this);
-    document.addEventListener('visibilitychange', this.onVisibility);
-    this.reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
-    this.reducedMotion?.addEventListener('change', this.onMotionPreference);
-    this.source.connect();
-    this.cameraSource.set(this.values.cameraSrc);
-    this.start();
+    for (const c of this.controllers) c.hostConnected?.();
   }
 
   disconnectedCallback(): void {
-    this.cancelFrame();
-    this.resizeObserver?.disconnect();
-    this.intersectionObserver?.disconnect();
-    this.resizeObserver = this.intersectionObserver = null;
-    document.removeEventListener('visibilitychange', this.onVisibility);
-    this.reducedMotion?.removeEventListener('change', this.onMotionPreference);
-    this.reducedMotion = null;
-    this.source.disconnect();
-    this.cameraSource.stop();
-    this.input.detach();
-    this.pointerControls.detach();
-    clearTimeout(this.lookTimer);
-    this.disposeRenderer();
-    this.disposeSoftware();
-    this.shared?.release(this);
-    this.shared = null;
-    this.inView = false;
+    for (const c of this.controllers) c.hostDisconnected?.();
   }
 
   attributeChangedCallback(name: string, _old: string | null, raw: string | null): void {
@@ -255,25 +165,21 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
     if (!spec) return;
     const parsed = spec.parse(raw);
     if (parsed.problem) this.warnings.report(spec, raw ?? '', parsed.problem);
-    (this.values as unknown as Record<string, unknown>)[spec.property] = parsed.value;
-    this.sceneValue = null;
+    const p = spec.property;
+    (this.values as unknown as Record<string, unknown>)[p] = parsed.value;
+    this.scenes.attributeChanged(p);
     // The pose written back at rest is the one just drawn: nothing to move, nothing to draw.
-    if (this.writingBack) return;
-    if (spec.property === 'cameraPosition' || spec.property === 'cameraRotation' || spec.property === 'cameraTarget') {
-      const [yaw, pitch] = this.values.cameraRotation;
-      this.flyby.setPose(this.values.cameraPosition, yaw, pitch);
-      this.aimAtTarget();
-      this.queueCameraChange();
-    }
-    if (spec.property === 'controls') this.pointerControls.cancel();
-    if (spec.property === 'renderer' && this.isConnected) this.switchRenderer();
-    if (spec.property === 'cameraSrc') this.cameraSource.set(this.values.cameraSrc);
+    if (this.rig.writingBack) return;
+    if (p === 'cameraPosition' || p === 'cameraRotation' || p === 'cameraTarget') this.rig.cameraAttributeChanged();
+    if (p === 'controls') this.rig.controlsChanged();
+    if (p === 'renderer' && this.isConnected) this.backend.rendererChanged();
+    if (p === 'cameraSrc') this.rig.cameraSource.srcChanged();
     // Resize only: drawing here, mid-way through a script's batch of attribute changes, would
     // show a frame with half of them applied (the next animation frame comes before paint).
-    if (spec.property === 'pixelRatio') this.resizeCanvas();
+    if (p === 'pixelRatio') this.loop.resize();
     // A shader failure is not final: the change may select a variant that compiles. The message
     // stays up until a frame is drawn.
-    if (this.failed === 'shader') this.failed = null;
+    this.failure.retry();
     this.requestRender();
   }
 
@@ -290,14 +196,11 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   /**
    * The scene as one value (SPEC §9): the glass and background from the attributes, the
-   * children's objects and lights, or SPEC §3's defaults where there are none. Read-only; a
-   * new value after every change (the same object until then).
+   * children's objects and lights, or SPEC §3's defaults where there are none, turned by the
+   * trackball. Read-only; a new value after every change (the same object until then).
    */
   get scene(): Scene {
-    return (this.sceneValue ??= rotateScene(
-      composeScene({ ...this.values, spin: this.effectiveSpin() }, this.source.current()),
-      this.pointerControls.objectRotation, this.pointerControls.lightRotation,
-    ));
+    return this.scenes.turned;
   }
 
   /**
@@ -306,27 +209,17 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
    * a value that is not four finite numbers, or zero, is ignored with a warning).
    */
   get objectRotation(): [number, number, number, number] {
-    const q = this.pointerControls.objectRotation;
-    return [q[0], q[1], q[2], q[3]];
+    return [...this.rig.pointer.objectRotation] as [number, number, number, number];
   }
 
   set objectRotation(value: ArrayLike<number>) {
-    const q = Array.from(value ?? [], Number);
-    const len = Math.hypot(...q);
-    if (q.length !== 4 || !Number.isFinite(len) || len === 0) {
-      warn(`objectRotation: expected a quaternion [x, y, z, w], ignoring ${JSON.stringify(value)?.slice(0, 60)}`);
-      return;
-    }
-    const r = this.pointerControls.objectRotation;
-    for (let i = 0; i < 4; i++) r[i] = q[i] / len;
-    this.sceneValue = null;
-    this.requestRender();
+    if (this.rig.setObjectRotation(value)) return;
+    warn(`objectRotation: expected a quaternion [x, y, z, w], ignoring ${JSON.stringify(value)?.slice(0, 60)}`);
   }
 
   /** Draws a frame on the next animation frame, even when nothing changed. */
   requestRender(): void {
-    this.dirty = true;
-    this.scheduleFrame();
+    this.loop.request();
   }
 
   /**
@@ -335,283 +228,57 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
    * state), at the drawing-buffer size, top row first. Null while nothing can be drawn.
    */
   capture(pass?: CapturePass): ImageData | null {
-    if ((!this.glRenderer && !this.software) || this.failed) return null;
+    if (!this.backend.current || this.failure.type) return null;
     if (pass === undefined) return this.frames > 0 ? readCanvas(this.canvas) : null;
-    const source: ReadbackSource = CAPTURE_SOURCES[pass as CapturePass] ?? 'final';
-    if (!(pass in CAPTURE_SOURCES)) warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
-    if (this.software) {
-      // Drawn now, on this thread, from the last frame's state (capture is synchronous).
-      const state: FrameState = { ...(this.lastState ?? this.frameState(performance.now())), view: source as FrameState['view'] };
-      const pixels = this.software.renderNow(state, this.scene) as Uint8ClampedArray<ArrayBuffer>;
-      return new ImageData(pixels, state.width, state.height);
-    }
-    try {
-      this.shared!.reserve(this.canvas.width, this.canvas.height);
-      const px = this.glRenderer!.read(source, this.lastState ?? this.frameState(performance.now()), this.scene);
-      return new ImageData(px.data, px.width, px.height);
-    } catch (e) {
-      this.handleRenderError(e);
-      return null;
-    }
+    return this.backend.capture(pass, this.states.last ?? this.frameState(performance.now()), this.scenes.current);
   }
 
-  /** Frames, passes run and skipped, draw calls, compiled programs and live GL resources. */
+  /** Frames, passes run and skipped, draw calls, compiled programs, live GL resources and scene builds. */
   get stats(): RenderStats {
-    const s = this.glRenderer ? this.glRenderer.stats : structuredClone(this.totals);
+    const s = this.backend.stats();
     s.frames = this.frames;
-    s.renderer = this.glRenderer ? 'webgl' : this.software ? 'software' : null;
-    if (this.software) s.thread = this.software.thread;
+    s.sceneBuilds = this.scenes.builds;
     return s;
-  }
-
-  // ---- typed events ------------------------------------------------------------------------
-
-  override addEventListener<K extends keyof GlassPlaneSceneEventMap>(
-    type: K, listener: (this: GlassPlaneScene, ev: GlassPlaneSceneEventMap[K]) => unknown, options?: boolean | AddEventListenerOptions): void;
-  override addEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | AddEventListenerOptions): void;
-  override addEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | AddEventListenerOptions): void {
-    super.addEventListener(type, listener, options);
-  }
-
-  override removeEventListener<K extends keyof GlassPlaneSceneEventMap>(
-    type: K, listener: (this: GlassPlaneScene, ev: GlassPlaneSceneEventMap[K]) => unknown, options?: boolean | EventListenerOptions): void;
-  override removeEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | EventListenerOptions): void;
-  override removeEventListener(type: string, listener: EventListenerOrEventListenerObject, options?: boolean | EventListenerOptions): void {
-    super.removeEventListener(type, listener, options);
   }
 
   /** @internal AttributeHost: the parsed value, or the live pose for the flown camera. */
   readAttributeValue(property: keyof SceneAttributes): unknown {
-    if (property === 'cameraPosition') return this.flyby.pose.position;
-    if (property === 'cameraRotation') return [this.flyby.pose.yaw, this.flyby.pose.pitch];
-    return this.values[property];
-  }
-
-  // ---- the shared context ------------------------------------------------------------------
-
-  /** @internal ContextClient: every GL object died with the context. */
-  contextLost(): void {
-    this.cancelFrame();
-    this.disposeRenderer();
-    this.fail('context-lost', new Error('WebGL context lost'));
-  }
-
-  /** @internal ContextClient: rebuild on the restored context and draw. */
-  contextRestored(): void {
-    if (this.failed !== 'context-lost') return;
-    this.failed = null;
-    this.message.hidden = true;
-    this.canvas.hidden = false;
-    this.start();
-  }
-
-  private start(): void {
-    if (this.glRenderer || this.software || this.softwareStarting || (this.failed && this.failed !== 'context-lost')) return;
-    const choice = this.values.renderer;
-    if (choice === 'software') return this.startSoftware();
-    this.shared ??= SharedContext.acquire(this);
-    if (!this.shared) {
-      // auto: no WebGL2 here, so the CPU draws the scene; nothing to report.
-      if (choice === 'auto') return this.startSoftware();
-      this.fail('webgl2-unavailable', new Error('WebGL2 is not available in this browser, so this scene cannot be shown.'));
-      return;
-    }
-    if (this.shared.lost || this.shared.gl.isContextLost()) return;
-    this.output ??= this.shared.presenterFor(this.canvas);
-    try {
-      this.glRenderer = new Renderer(this.shared.gl, { checks: checksEnabled() });
-      this.images.attach(this.glRenderer);
-    } catch (e) {
-      this.handleRenderError(e);
-      return;
-    }
-    this.resizeCanvas();
-    this.requestRender();
-  }
-
-  /** The software renderer, loaded as a chunk of its own; `error` only if it cannot start either. */
-  private startSoftware(): void {
-    const generation = ++this.softwareGeneration;
-    this.softwareStarting = true;
-    SoftwareHost.create().then((host) => {
-      this.softwareStarting = false;
-      if (generation !== this.softwareGeneration || !this.isConnected) return host.dispose();
-      this.software = host;
-      this.images.attach(host);
-      this.softwareOut = this.canvas.getContext('2d', { alpha: false }) ?? this.canvas.getContext('bitmaprenderer');
-      this.resizeCanvas();
-      this.requestRender();
-    }, (e: unknown) => {
-      this.softwareStarting = false;
-      if (generation !== this.softwareGeneration) return;
-      const why = e instanceof Error ? e.message : String(e);
-      this.fail('webgl2-unavailable', new Error(`Neither WebGL2 nor the software renderer is available here (${why}), so this scene cannot be shown.`));
-    });
-  }
-
-  private disposeSoftware(): void {
-    this.softwareGeneration++;
-    this.softwareStarting = false;
-    this.softwareBusy = false;
-    if (this.software) this.images.attach(null);
-    this.software?.dispose();
-    this.software = null;
-  }
-
-  /** `renderer` changed: let go of the renderer in use and start the one now asked for. */
-  private switchRenderer(): void {
-    const wantSoftware = this.values.renderer === 'software' || (this.values.renderer === 'auto' && !this.glRenderer && !this.shared);
-    if ((wantSoftware && (this.software || this.softwareStarting)) || (!wantSoftware && this.glRenderer)) return;
-    this.cancelFrame();
-    this.disposeRenderer();
-    this.disposeSoftware();
-    if (this.failed !== 'context-lost') {
-      this.failed = null;
-      this.message.hidden = true;
-      this.canvas.hidden = false;
-    }
-    this.start();
-  }
-
-  private disposeRenderer(): void {
-    if (!this.glRenderer) return;
-    this.totals = this.glRenderer.stats;
-    this.glRenderer.dispose();
-    this.totals.resources = emptyStats().resources;
-    this.glRenderer = null;
-    this.images.attach(null);
+    return this.rig.liveValue(property) ?? this.values[property];
   }
 
   // ---- frames ------------------------------------------------------------------------------
 
-  /** Draws only when something changed or moves, the element is in view and the page shown. */
-  private scheduleFrame(): void {
-    if (this.rafId !== 0 || (!this.glRenderer && !this.software) || this.failed || !this.inView || document.hidden) return;
-    if (!this.dirty && !this.animating()) return;
-    this.rafId = requestAnimationFrame(this.onFrame);
-  }
-
-  private cancelFrame(): void {
-    cancelAnimationFrame(this.rafId);
-    this.rafId = 0;
-    this.lastNow = 0;
-  }
-
-  /**
-   * Moves the flyby camera by the time since the last step. Motion is timed with
-   * performance.now() (the key events' clock), not the frame's timestamp, which can be
-   * earlier than a key press handled in the same frame.
-   */
-  private advanceFlyby(): void {
-    const t = performance.now();
-    const dt = this.lastNow ? (t - this.lastNow) / 1000 : 0;
-    this.lastNow = t;
-    if (this.flyby.update(dt)) {
-      this.cameraDirty = true;
-      this.flybyMoved = true;
-      this.dirty = true;
-    }
-  }
-
-  private readonly onFrame = (now: number): void => {
-    this.rafId = 0;
-    if ((!this.glRenderer && !this.software) || this.failed) return;
-    this.advanceFlyby();
-    // The motion after release, by the wall clock (SPEC §10), not the frame's timestamp.
-    if (this.pointerControls.update(performance.now())) {
-      this.sceneValue = null;
-      if (this.values.controls === 'orbit') this.cameraDirty = true; // a trackball's spin turns objects, not the camera
-    }
-    this.draw(now);
-    if (this.animating()) this.scheduleFrame();
-    else {
-      this.lastNow = 0;
-      if (this.cameraDirty && this.flybyMoved) this.gestureEnd();
-    }
-  };
-
-  private draw(now: number): void {
-    if (this.software) return this.drawSoftware(now);
-    const renderer = this.glRenderer!;
-    this.dirty = false;
-    const { width, height } = this.canvas;
+  /** One frame: the controls advance, then the backend draws (unless its last frame is still on its way). */
+  private drawFrame(now: number): void {
+    this.rig.step();
+    const backend = this.backend.current!;
+    if (backend.busy) return; // dirty stays set: drawn when this one is back
+    this.loop.dirty = false;
     if (this.clientWidth === 0 || this.clientHeight === 0) return; // nothing to show
-    const state = this.frameState(now);
-    let report: FrameReport;
-    try {
-      this.shared!.reserve(width, height);
-      const scene = this.scene;
-      this.images.sync(scene);
-      report = renderer.render(state, scene);
-      this.output!.present(width, height);
-    } catch (e) {
-      this.handleRenderError(e);
-      return;
-    }
-    this.frameDrawn(state, report.time, report.width, report.height, report.drawCalls, report.passes);
+    const state = this.frameState(now), scene = this.scenes.current;
+    this.images.sync(scene);
+    backend.draw(state, scene);
   }
 
-  /**
-   * A software frame: drawn in the worker while the page goes on; one at a time (a change while
-   * it draws is drawn next). The pixels reach the canvas in one piece when the frame is complete.
-   */
-  private drawSoftware(now: number): void {
-    const host = this.software!;
-    if (this.softwareBusy) return; // dirty stays set: drawn when this one is back
-    this.dirty = false;
-    const { width, height } = this.canvas;
-    if (this.clientWidth === 0 || this.clientHeight === 0) return;
-    const state = this.frameState(now);
-    const scene = this.scene;
-    this.images.sync(scene);
-    const generation = this.softwareGeneration;
-    this.softwareBusy = true;
-    const frozen: FrameState = { ...state };
-    void host.render(frozen, scene).then((pixels) => {
-      if (generation !== this.softwareGeneration) return;
-      this.softwareBusy = false;
-      if (this.canvas.width !== width || this.canvas.height !== height) {
-        this.requestRender(); // resized while it drew: draw again at the new size
-        return;
-      }
-      const image = new ImageData(pixels as Uint8ClampedArray<ArrayBuffer>, width, height);
-      const out = this.softwareOut;
-      const glassSkip = state.view === 'final' && !scene.glass ? 'no glass' : undefined;
-      const done = () => {
-        if (generation !== this.softwareGeneration) return;
-        this.frameDrawn(frozen, frozen.time, width, height, 0, passesFor(frozen.view, glassSkip));
-        if (this.dirty) this.scheduleFrame();
-      };
-      if (out && 'putImageData' in out) {
-        out.putImageData(image, 0, 0);
-        done();
-      } else if (out) {
-        // The canvas held WebGL's frames (a bitmap renderer): the frame counts once it is shown.
-        void createImageBitmap(image).then((b) => {
-          if (generation === this.softwareGeneration) (out as ImageBitmapRenderingContext).transferFromImageBitmap(b);
-          done();
-        });
-      } else done();
-    });
+  /** The attributes' part of the frame, then the camera's (which reads the scene for a course camera). */
+  private frameState(now: number): FrameState {
+    const s = this.states.fill(this.values, now, this.canvas.width, this.canvas.height, this.effectiveSpin());
+    this.rig.aim(s, this.scenes.current);
+    return s;
   }
 
   /** After a frame is on the canvas: counts, the last state (for capture), `ready` and `frame`. */
-  private frameDrawn(state: FrameState, time: number, width: number, height: number, drawCalls: number, passes: FrameReport['passes']): void {
+  private frameDrawn(state: FrameState, report: Omit<FrameReport, 'frame'>): void {
     this.frames++;
-    if (!this.message.hidden) this.message.hidden = true; // drawn again after a shader failure
-    this.reportedShaderError = null;
-    const last = (this.lastState ??= { ...state });
-    Object.assign(last, state);
-    this.lastPosition[0] = state.cameraPosition[0];
-    this.lastPosition[1] = state.cameraPosition[1];
-    this.lastPosition[2] = state.cameraPosition[2];
-    last.cameraPosition = this.lastPosition;
+    this.failure.drawn(); // drawn again after a shader failure
+    this.states.drawn(state);
     // One small frozen object per frame (the event is one anyway), its passes shared frozen
     // records: listeners may keep it, and nothing later changes it. A deep copy per frame
     // (structuredClone) is what it replaces.
+    const { time, width, height, drawCalls, passes } = report;
     const detail: FrameReport = Object.freeze({ frame: this.frames, time, width, height, drawCalls, passes });
     // `ready` waits for the models of the children: loaded or failed (SPEC §2).
-    if (!this.readyFired && !this.source.loading && !this.cameraSource.loading) {
+    if (!this.readyFired && !this.source.loading && !this.rig.loading) {
       this.readyFired = true;
       this.dispatchEvent(new CustomEvent('ready', { detail }));
     }
@@ -620,182 +287,13 @@ export class GlassPlaneScene extends Base implements ContextClient, AttributeHos
 
   /** Spin counts unless reduced motion is asked for and the page did not set `spin` itself. */
   private effectiveSpin(): number {
-    return this.reducedMotion?.matches && !this.hasAttribute('spin') ? 0 : this.values.spin;
+    return this.loop.reducedMotion && !this.hasAttribute('spin') ? 0 : this.values.spin;
   }
 
-  /** Frames keep coming while the clock turns something in the scene, or the camera moves. */
-  private animating(): boolean {
-    return (this.values.time === null && sceneSpins(this.scene)) || this.flyby.active || this.pointerControls.active;
-  }
-
-  private frameState(now: number): FrameState {
-    const s = this.state;
-    const v = this.values;
-    if (this.clockStart < 0) this.clockStart = now;
-    s.width = this.canvas.width;
-    s.height = this.canvas.height;
-    s.time = v.time ?? (now - this.clockStart) / 1000;
-    s.spin = this.effectiveSpin();
-    s.cubeDistance = v.cubeDistance;
-    s.transparency = v.transparency;
-    s.ior = v.ior;
-    s.fresnel = v.fresnel;
-    s.fov = v.fov;
-    s.cameraPosition = this.flyby.pose.position;
-    s.yaw = this.flyby.pose.yaw;
-    s.pitch = this.flyby.pose.pitch;
-    s.view = v.debugView === 'none' ? 'final' : v.debugView;
-    s.reflectionScale = v.reflectionScale;
-    s.samples = v.samples;
-    s.shading = v.shading;
-    s.tessellation = v.tessellation;
-    s.reflectionFormat = v.reflectionFormat;
-    s.projection = v.projection;
-    s.target = v.cameraTarget; // the orthographic size is taken there (else at the glass centre)
-    this.applyCourseCamera(s);
-    return s;
-  }
-
-  /**
-   * `camera-src` (SPEC §11): while a course camera is in force it is the view. cameraPosition
-   * and fov follow it, for the level-of-detail choices that read them.
-   */
-  private applyCourseCamera(s: FrameState): void {
-    const cam = this.cameraSource.camera;
-    s.courseCamera = cam;
-    if (!cam) return;
-    s.cameraPosition = cam.c;
-    s.fov = CameraSource.fov(cam);
-    s.projection = 'perspective';
-    this.cameraSource.checkLooksAway(this.scene, s.time);
-  }
-
-  // ---- observers ---------------------------------------------------------------------------
-
-  private readonly onResize = (): void => {
-    if (!this.resizeCanvas()) return;
-    // Resizing clears the canvas: draw now rather than show an empty frame.
-    this.cancelFrame();
-    this.dirty = true;
-    if ((this.glRenderer || this.software) && !this.failed && this.inView && !document.hidden) this.onFrame(performance.now());
-  };
-
-  /** Drawing buffer = CSS box × pixel ratio, within the GL limits. Returns true if it changed. */
-  private resizeCanvas(): boolean {
-    if (!this.shared && !this.software) return false;
-    const ratio = this.values.pixelRatio === 'auto' ? window.devicePixelRatio || 1 : this.values.pixelRatio;
-    const limit = this.shared ? this.shared.maxSize : SOFTWARE_MAX_SIZE;
-    const w = Math.max(1, Math.min(limit, Math.round(this.clientWidth * ratio)));
-    const h = Math.max(1, Math.min(limit, Math.round(this.clientHeight * ratio)));
-    if (w === this.canvas.width && h === this.canvas.height) return false;
-    this.canvas.width = w;
-    this.canvas.height = h;
-    return true;
-  }
-
-  private readonly onIntersection = (entries: IntersectionObserverEntry[]): void => {
-    const entry = entries[entries.length - 1];
-    this.inView = entry.isIntersecting;
-    if (this.inView) this.scheduleFrame();
-    else this.cancelFrame();
-  };
-
-  private readonly onVisibility = (): void => {
-    if (document.hidden) this.cancelFrame();
-    else this.scheduleFrame();
-  };
-
-  private readonly onMotionPreference = (): void => {
-    this.sceneValue = null;
-    this.requestRender();
-  };
-
-  /** A child was added, removed, reordered, changed, upgraded, or its model arrived. */
+  /** A child was added, removed, reordered, changed, upgraded, or its model arrived; or reduced motion changed. */
   private sceneChanged(): void {
-    this.sceneValue = null;
+    this.scenes.contentChanged();
     this.requestRender();
-  }
-
-  // ---- failures ----------------------------------------------------------------------------
-
-  private handleRenderError(e: unknown): void {
-    if (e instanceof ShaderError) this.fail('shader', e);
-    else if (this.shared?.gl.isContextLost()) this.contextLost();
-    else throw e;
-  }
-
-  private fail(type: ErrorType, error: unknown): void {
-    const message = error instanceof Error ? error.message : String(error);
-    this.failed = type;
-    // The renderer stays after a shader failure: everything else in it works, and its program
-    // cache remembers the broken variant, so drawing the same state again fails without compiling.
-    if (type !== 'context-lost' && type !== 'shader') this.disposeRenderer();
-    this.message.textContent = MESSAGES[type];
-    this.message.hidden = false;
-    this.canvas.hidden = type === 'webgl2-unavailable';
-    if (type === 'shader') {
-      if (error === this.reportedShaderError) return;
-      this.reportedShaderError = error;
-    }
-    // A broken shader is a bug worth a console line (with the annotated source); a missing
-    // WebGL2 or a lost context is a state of the machine, reported through the event only.
-    if (type === 'shader') console.error(message.startsWith(PREFIX) ? message : `${PREFIX} ${message}`);
-    queueMicrotask(() => this.dispatchEvent(new CustomEvent('error', { detail: { type, message } })));
-  }
-
-  // ---- camera ------------------------------------------------------------------------------
-
-  /** With `camera-target`, the camera looks at it (SPEC §2): yaw and pitch from position → target. */
-  private aimAtTarget(): void {
-    const t = this.values.cameraTarget;
-    if (!t) return;
-    const p = this.flyby.pose.position;
-    const dx = t[0] - p[0], dy = t[1] - p[1], dz = t[2] - p[2];
-    const d = Math.hypot(dx, dy, dz);
-    if (!(d > 0)) return; // at the target: keep camera-rotation
-    this.flyby.setPose(p, Math.atan2(dz, dx) * (180 / Math.PI), Math.asin(dy / d) * (180 / Math.PI));
-  }
-
-  private cameraDetail(): CameraChangeDetail {
-    const { position, yaw, pitch } = this.flyby.pose;
-    const t = this.values.cameraTarget;
-    return t ? { position: [...position], rotation: [yaw, pitch], target: [...t] } : { position: [...position], rotation: [yaw, pitch] };
-  }
-
-  /** The page changed a camera attribute: one camera-change after its batch of changes. */
-  private queueCameraChange(): void {
-    if (this.cameraChangeQueued || !this.isConnected) return;
-    this.cameraChangeQueued = true;
-    queueMicrotask(() => {
-      this.cameraChangeQueued = false;
-      if (this.isConnected) this.dispatchEvent(new CustomEvent('camera-change', { detail: this.cameraDetail() }));
-    });
-  }
-
-  /**
-   * A gesture ended (SPEC §10): the camera attributes are written once (camera-target too when
-   * a pan moved it) and one camera-change is fired; the write-back itself fires none.
-   */
-  private gestureEnd(): void {
-    clearTimeout(this.lookTimer);
-    this.lookTimer = undefined;
-    this.flybyMoved = false;
-    if (!this.cameraDirty) return;
-    this.cameraDirty = false;
-    const { position, yaw, pitch } = this.flyby.pose;
-    this.writingBack = true;
-    try {
-      this.setAttribute('camera-position', `${position[0]} ${position[1]} ${position[2]}`);
-      this.setAttribute('camera-rotation', `${yaw} ${pitch}`);
-      // A pan moves what the camera looks at: with camera-target set, the target moves with it.
-      if (this.pointerControls.takePanned() && this.values.cameraTarget) {
-        const t = this.pointerControls.orbitTarget;
-        this.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);
-      }
-    } finally {
-      this.writingBack = false;
-    }
-    this.dispatchEvent(new CustomEvent('camera-change', { detail: this.cameraDetail() }));
   }
 }
 

@@ -8,32 +8,44 @@ import { LIGHT_TAG, type GlassLight } from './children/glass-light';
 import { OBJECT_TAG, type GlassObject } from './children/glass-object';
 import { warn } from './warnings';
 import type { MtlValues } from './children/object-material';
+import type { Controller } from './controller';
 
-export class SceneSource {
+/** What SceneSource needs of the scene element. */
+export interface SceneSourceHost {
+  /** The scene element: its direct children are the parts. */
+  readonly element: HTMLElement;
+  /** A child was added, removed, reordered, changed, upgraded, or its model arrived. */
+  partsChanged(): void;
+}
+
+export class SceneSource implements Controller {
   private observer: MutationObserver | null = null;
   private parts: ChildParts | null = null;
   private warnedLights = false;
   private readonly awaiting = new Set<string>();
+  private readonly element: HTMLElement;
 
-  constructor(private readonly host: HTMLElement, private readonly onChange: () => void) {}
+  constructor(private readonly host: SceneSourceHost) {
+    this.element = host.element;
+  }
 
-  connect(): void {
+  hostConnected(): void {
     if (this.observer) return;
     this.observer = new MutationObserver(this.invalidate);
-    this.observer.observe(this.host, { childList: true });
-    this.host.addEventListener(CHILD_CHANGE, this.onChildChange);
+    this.observer.observe(this.element, { childList: true });
+    this.element.addEventListener(CHILD_CHANGE, this.onChildChange);
     this.invalidate();
   }
 
-  disconnect(): void {
+  hostDisconnected(): void {
     this.observer?.disconnect();
     this.observer = null;
-    this.host.removeEventListener(CHILD_CHANGE, this.onChildChange);
+    this.element.removeEventListener(CHILD_CHANGE, this.onChildChange);
   }
 
   /** True while a direct <glass-object> or <glass-light> child is fetching or parsing its file. */
   get loading(): boolean {
-    for (const child of this.host.children) {
+    for (const child of this.element.children) {
       const name = child.localName;
       if ((name === OBJECT_TAG || name === LIGHT_TAG) && (child as GlassObject | GlassLight).loading === true) return true;
     }
@@ -51,12 +63,12 @@ export class SceneSource {
     let extra = 0;
     // The material of the first lighting file in document order that has loaded (SPEC §11).
     let fileMaterial: MtlValues | null = null;
-    for (const child of this.host.children) {
+    for (const child of this.element.children) {
       if (child.localName !== LIGHT_TAG || typeof (child as Partial<GlassLight>).toMaterial !== 'function') continue;
       fileMaterial = safely(() => (child as GlassLight).toMaterial(), null);
       if (fileMaterial) break;
     }
-    for (const child of this.host.children) {
+    for (const child of this.element.children) {
       const name = child.localName;
       if (name !== OBJECT_TAG && name !== LIGHT_TAG) continue;
       // Duck-typed, not instanceof: another copy of this package may have defined the tags.
@@ -92,11 +104,11 @@ export class SceneSource {
 
   private readonly invalidate = (): void => {
     this.parts = null;
-    this.onChange();
+    this.host.partsChanged();
   };
 
   private readonly onChildChange = (e: Event): void => {
-    if ((e.target as Element).parentElement !== this.host) return;
+    if ((e.target as Element).parentElement !== this.element) return;
     this.invalidate();
   };
 }

@@ -96,6 +96,7 @@ export class SoftwareHost {
         this.worker!.postMessage(request);
       } catch (e) {
         this.pending = null;
+        this.sent = new SentResources(); // it did not arrive: send it all with the next frame
         reject(e instanceof Error ? e : new Error(String(e)));
       }
     }).catch(() => this.renderNow(state, scene, samplesPerAxis));

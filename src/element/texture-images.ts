@@ -29,19 +29,28 @@ export interface ImageSink {
   setImage(url: string, image: TexImageSource | null): void;
 }
 
+/** What TextureImages needs of the scene element. */
+export interface TextureImagesHost {
+  /** The renderer drawing now, which takes the images (null while there is none). */
+  sink(): ImageSink | null;
+  /** An image arrived: draw again. */
+  loaded(): void;
+}
+
+/**
+ * Not a Controller: it listens to nothing and holds nothing open while connected, so it has no
+ * hooks. An image on its way lands in whichever renderer draws when it arrives, or in none.
+ */
 export class TextureImages {
   private readonly ready = new Map<string, ImageBitmap>();
   private readonly asked = new Set<string>();
   private lastScene: Scene | null = null;
-  private sink: ImageSink | null = null;
 
-  /** `loaded` is called when an image arrives (to draw again). */
-  constructor(private readonly loaded: () => void) {}
+  constructor(private readonly host: TextureImagesHost) {}
 
-  /** A renderer to feed (null while there is none): it gets every image decoded so far. */
-  attach(sink: ImageSink | null): void {
-    this.sink = sink;
-    if (sink) for (const [url, image] of this.ready) sink.setImage(url, image);
+  /** A renderer that starts drawing: it gets every image decoded so far. */
+  feed(sink: ImageSink): void {
+    for (const [url, image] of this.ready) sink.setImage(url, image);
   }
 
   /** Asks for the images `scene` names; a new scene value only (nothing to do per frame). */
@@ -56,8 +65,8 @@ export class TextureImages {
       void decodeImage(url).then((image) => {
         if (!image) return;
         this.ready.set(url, image);
-        this.sink?.setImage(url, image);
-        this.loaded();
+        this.host.sink()?.setImage(url, image);
+        this.host.loaded();
       });
     }
   }

@@ -8,8 +8,11 @@ import { courseViewProjection, type CourseCamera } from '../math/course-camera';
 import { courseSceneRange, type CourseDepthRange } from '../scene/course-depth';
 import { CAMERA, DEFAULT_GLASS } from '../scene/default-scene';
 import { glassFrame, type GlassFrame } from '../scene/glass-frame';
+import { isIdentity, turnMatrix, type SceneTurn } from '../scene/group-rotation';
 import { MAX_LIGHTS, type Glass, type Scene, type SceneObject } from '../scene/scene';
 import type { FrameState } from './types';
+
+const IDENTITY = [0, 0, 0, 1] as const;
 
 /** What one draw of one object needs, for one eye (real or mirrored). */
 export class DrawMatrices {
@@ -85,6 +88,8 @@ export class FrameSetup {
   readonly glassMirrored = new DrawMatrices();
   readonly lightsMain = new LightVectors();
   readonly lightsMirrored = new LightVectors();
+  /** Each light's position (point) or direction (directional) in the world, after the trackball's turn. */
+  readonly lightWorld = f64(3 * MAX_LIGHTS);
   /** Ia, Id, Is of each light (rgb), and how many lights there are. */
   readonly lightAmbient = new Float32Array(3 * MAX_LIGHTS);
   readonly lightDiffuse = new Float32Array(3 * MAX_LIGHTS);
@@ -114,6 +119,12 @@ export class FrameSetup {
   private lastGlass: Glass | null | undefined = undefined;
   /** courseSceneRange is a walk over every vertex: kept while camera, scene and clock are. */
   private rangeKey: { cam: CourseCamera; scene: Scene; time: number } | null = null;
+  private readonly rangeTurn = f64(4);
+  /** The trackball's turn of the objects and of the first light this frame (FrameState.turn); null: none. */
+  private readonly objectsTurnMatrix = f64(16);
+  private readonly lightTurnMatrix = f64(16);
+  private objectsTurn: Float64Array | null = null;
+  private lightTurn: Float64Array | null = null;
   private readonly eyeRelativeCamera: CourseCamera = { c: [0, 0, 0], n: [0, 0, 1], v: [0, 1, 0], u: [1, 0, 0], d: 1, hx: 1, hy: 1 };
 
   update(s: FrameState, scene: Scene): void {
@@ -135,6 +146,9 @@ export class FrameSetup {
     this.side = viewerSide(plane, eye, forward, projection);
     this.viewDot = plane[0] * forward[0] + plane[1] * forward[1] + plane[2] * forward[2];
 
+    const turn = s.turn ?? null;
+    this.objectsTurn = turn && !isIdentity(turn.objects) ? (turnMatrix(this.objectsTurnMatrix as unknown as mat4, turn.objects, turn.center) as unknown as Float64Array) : null;
+    this.lightTurn = turn && !isIdentity(turn.light) ? (turnMatrix(this.lightTurnMatrix as unknown as mat4, turn.light, turn.center) as unknown as Float64Array) : null;
     this.viewAndProjection(s, scene, forward);
     // Mirrored eye-relative: V·R·x = Vrot·L·(x − mirroredEye), L the plane's linear reflection.
     reflectionMatrix(this.reflectionLinear, plane);
@@ -162,7 +176,7 @@ export class FrameSetup {
       this.halfHeight = 0;
       this.viewVectorMain.set(PERSPECTIVE_VIEW);
       this.viewVectorMirrored.set(PERSPECTIVE_VIEW);
-      this.courseViewProjection(course, scene, s.time);
+      this.courseViewProjection(course, scene, s.time, this.objectsTurn ? s.turn! : null);
       return;
     }
     if (this.orthographic) {
@@ -190,7 +204,7 @@ export class FrameSetup {
     while (this.objects.length < objects.length) this.objects.push(new ObjectMatrices());
     for (let i = 0; i < objects.length; i++) {
       const o = this.objects[i];
-      this.modelMatrix(o, objects[i], time);
+      this.modelMatrix(o, objects[i], time, this.objectsTurn);
       mat3.normalFromMat4(o.normal as unknown as mat3, o.model as unknown as mat4);
       this.compose(o.main, o.model, o.normal, eye, this.viewProjection);
       this.compose(o.mirrored, o.model, o.normal, mirroredEye, this.mirroredViewProjection);
@@ -202,9 +216,18 @@ export class FrameSetup {
 
   /** The lights' vectors from each eye, their colours, how many and which are points. */
   private lightValues(scene: Scene): void {
-    lightVectors(this.lightsMain, scene, this.eye);
-    lightVectors(this.lightsMirrored, scene, this.mirroredEye);
     this.lightCount = Math.min(scene.lights.length, MAX_LIGHTS);
+    const w = this.lightWorld, g0 = this.lightTurn;
+    for (let i = 0; i < this.lightCount; i++) {
+      const l = scene.lights[i], x = l.vector[0], y = l.vector[1], z = l.vector[2];
+      // The first light turns with the trackball's right-drag: a point light about the centre, a direction by the rotation.
+      const g = i === 0 ? g0 : null, t = l.kind === 'point' ? 1 : 0;
+      w[3 * i] = g ? g[0] * x + g[4] * y + g[8] * z + t * g[12] : x;
+      w[3 * i + 1] = g ? g[1] * x + g[5] * y + g[9] * z + t * g[13] : y;
+      w[3 * i + 2] = g ? g[2] * x + g[6] * y + g[10] * z + t * g[14] : z;
+    }
+    lightVectors(this.lightsMain, scene, w, this.eye);
+    lightVectors(this.lightsMirrored, scene, w, this.mirroredEye);
     this.pointMask = 0;
     for (let i = 0; i < this.lightCount; i++) {
       const l = scene.lights[i];
@@ -228,12 +251,14 @@ export class FrameSetup {
    * Near and far from the scene's geometry (courseSceneRange), recomputed only when the
    * camera, the scene or (with something spinning) the clock changed.
    */
-  private courseViewProjection(cam: CourseCamera, scene: Scene, time: number): void {
+  private courseViewProjection(cam: CourseCamera, scene: Scene, time: number, turn: SceneTurn | null): void {
     const spins = scene.objects.some((o) => o.transform.spin !== 0);
-    const key = this.rangeKey;
-    if (!key || key.cam !== cam || key.scene !== scene || (spins && key.time !== time) || !this.cachedRange) {
+    const key = this.rangeKey, last = this.rangeTurn, q = turn?.objects ?? IDENTITY;
+    const turned = q[0] !== last[0] || q[1] !== last[1] || q[2] !== last[2] || q[3] !== last[3];
+    if (!key || key.cam !== cam || key.scene !== scene || (spins && key.time !== time) || turned || !this.cachedRange) {
       this.rangeKey = { cam, scene, time };
-      this.cachedRange = courseSceneRange(cam, scene, time);
+      for (let i = 0; i < 4; i++) last[i] = q[i];
+      this.cachedRange = courseSceneRange(cam, scene, time, turn);
     }
     const range = this.cachedRange!;
     this.courseRange = range;
@@ -247,8 +272,8 @@ export class FrameSetup {
 
   private cachedRange: CourseDepthRange | null = null;
 
-  /** T · Rz·Ry·Rx · Ry(spin·t) · S, and the world bounding sphere. */
-  private modelMatrix(out: ObjectMatrices, object: SceneObject, time: number): void {
+  /** turn · T · Rz·Ry·Rx · Ry(spin·t) · S, and the world bounding sphere. */
+  private modelMatrix(out: ObjectMatrices, object: SceneObject, time: number, turn: Float64Array | null): void {
     const m = out.model as unknown as mat4;
     const { position, rotation, scale, spin } = object.transform;
     mat4.fromTranslation(m, position);
@@ -261,6 +286,7 @@ export class FrameSetup {
       mat4.rotateY(m, m, Number.isFinite(angle) ? angle % TWO_PI : 0);
     }
     if (scale[0] !== 1 || scale[1] !== 1 || scale[2] !== 1) mat4.scale(m, m, scale);
+    if (turn) mat4.multiply(m, turn as unknown as mat4, m);
     const c = object.bounds.center;
     const t = this.scratch3;
     t[0] = c[0]; t[1] = c[1]; t[2] = c[2];
@@ -282,14 +308,17 @@ export class FrameSetup {
   }
 }
 
-/** Directional: the unit vector towards the light (w 0). Point: its position relative to `eye` (w 1). */
-function lightVectors(out: LightVectors, scene: Scene, eye: Float64Array): void {
+/**
+ * Directional: the unit vector towards the light (w 0). Point: its position relative to `eye`
+ * (w 1). `world` holds each light's vector in the world (FrameSetup.lightWorld).
+ */
+function lightVectors(out: LightVectors, scene: Scene, world: Float64Array, eye: Float64Array): void {
   const v = out.vectors;
   v.fill(0);
   const n = Math.min(scene.lights.length, MAX_LIGHTS);
   for (let i = 0; i < n; i++) {
     const l = scene.lights[i];
-    const [x, y, z] = l.vector;
+    const x = world[3 * i], y = world[3 * i + 1], z = world[3 * i + 2];
     if (l.kind === 'point') {
       v[4 * i] = x - eye[0]; v[4 * i + 1] = y - eye[1]; v[4 * i + 2] = z - eye[2]; v[4 * i + 3] = 1;
     } else {

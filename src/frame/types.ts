@@ -2,6 +2,7 @@
 import type { FresnelModel } from '../math/fresnel';
 import type { Projection } from '../math/camera';
 import type { CourseCamera } from '../math/course-camera';
+import type { SceneTurn } from '../scene/group-rotation';
 
 export type { Projection };
 
@@ -44,6 +45,12 @@ export interface FrameState {
    * level-of-detail choices (sphere segments, reflection meshes) read.
    */
   courseCamera?: CourseCamera | null;
+  /**
+   * The trackball's turn of the objects and the first light (SPEC §10), applied as the frame is
+   * set up. It travels here, not in the scene value, so a turn rebuilds nothing. Absent or
+   * identity: the scene as it is.
+   */
+  turn?: SceneTurn | null;
 }
 
 export type ReflectionFormat = 'rgba8' | 'rgba16f';
@@ -96,6 +103,11 @@ export interface RenderStats {
   /** Which renderer draws (set by the element): WebGL2, or the CPU in a worker or on the main thread. */
   renderer?: 'webgl' | 'software' | null;
   thread?: 'worker' | 'main';
+  /**
+   * Times the element built its scene value (set by the element): once per change of content
+   * (an attribute that shapes the scene, a child, a model), never for a camera or trackball move.
+   */
+  sceneBuilds?: number;
   /** Live GL objects owned by this element; all zero after it is removed. */
   resources: ResourceCounts & { total: number };
 }

@@ -8,6 +8,7 @@ import { courseDepthRange, type CourseCamera } from '../math/course-camera';
 import { reflectPoint } from '../math/mirror';
 import { GAUSSIAN_EXTENT, gaussianHeight } from './geometry/gaussian';
 import { glassFrame } from './glass-frame';
+import { isIdentity, turnMatrix, type SceneTurn } from './group-rotation';
 import type { Scene, SceneObject } from './scene';
 
 export interface CourseDepthRange {
@@ -23,12 +24,14 @@ const DEG = Math.PI / 180;
  * courseDepthRange over the points that bound what is drawn at `time`: a mesh's vertices its
  * faces use, a box's corners, a sphere's nearest and farthest points along N, a Gaussian's
  * bounding box, the glass's corners. With a glass, `far` also covers those points mirrored
- * across it (the reflection pass draws them at their mirror images' depth).
+ * across it (the reflection pass draws them at their mirror images' depth). `turn`: the
+ * trackball's turn of the objects (SPEC §10), when the scene value does not hold it already.
  */
-export function courseSceneRange(cam: CourseCamera, scene: Scene, time: number): CourseDepthRange {
+export function courseSceneRange(cam: CourseCamera, scene: Scene, time: number, turn: SceneTurn | null = null): CourseDepthRange {
   const points: number[] = [];
   const m = mat4.create();
-  for (const o of scene.objects) objectPoints(points, o, cam, time, m);
+  const g = turn && !isIdentity(turn.objects) ? turnMatrix(new Float64Array(16) as unknown as mat4, turn.objects, turn.center) : null;
+  for (const o of scene.objects) objectPoints(points, o, cam, time, m, g);
   let glassPlane: [number, number, number, number] | null = null;
   if (scene.glass) {
     const frame = glassFrame(scene.glass);
@@ -70,8 +73,9 @@ function push(points: number[], m: mat4, x: number, y: number, z: number): void 
   );
 }
 
-function objectPoints(points: number[], o: SceneObject, cam: CourseCamera, time: number, m: mat4): void {
+function objectPoints(points: number[], o: SceneObject, cam: CourseCamera, time: number, m: mat4, turn: mat4 | null): void {
   modelMatrix(m, o, time);
+  if (turn) mat4.multiply(m, turn, m);
   const g = o.geometry;
   switch (g.kind) {
     case 'mesh': {

@@ -12,13 +12,16 @@ export class Lights {
   readonly diffuse = new Float64Array(3 * MAX_LIGHTS);
   readonly specular = new Float64Array(3 * MAX_LIGHTS);
 
-  /** The scene's lights (up to MAX_LIGHTS) as seen from `eye`. */
-  set(scene: Scene, eye: ArrayLike<number>): void {
+  /**
+   * The scene's lights (up to MAX_LIGHTS) as seen from `eye`; `world` holds each light's vector
+   * in the world, after the trackball's turn (FrameSetup.lightWorld).
+   */
+  set(scene: Scene, world: ArrayLike<number>, eye: ArrayLike<number>): void {
     const n = Math.min(scene.lights.length, MAX_LIGHTS);
     this.count = n;
     for (let i = 0; i < n; i++) {
       const l = scene.lights[i];
-      let [x, y, z] = l.vector;
+      let x = world[3 * i], y = world[3 * i + 1], z = world[3 * i + 2];
       if (l.kind === 'point') {
         x -= eye[0]; y -= eye[1]; z -= eye[2];
       } else {

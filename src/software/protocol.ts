@@ -1,6 +1,6 @@
-// What the element sends the software renderer's worker each frame: the frame state and the scene,
-// with each mesh's arrays and each image's pixels sent once (the worker keeps them by key), not
-// once per frame. Pure data, no DOM.
+// What the element sends the software renderer's worker each frame: the frame state, and the scene
+// when it is a new value (the worker keeps the last one), with each mesh's arrays and each image's
+// pixels sent once (the worker keeps them by key), not once per frame. Pure data, no DOM.
 import type { FrameState } from '../frame/types';
 import type { Scene } from '../scene/scene';
 import type { MeshData } from '../scene/geometry/mesh-data';
@@ -9,8 +9,11 @@ import type { DecodedImage } from '../scene/decoded-image';
 export interface SoftwareRequest {
   id: number;
   state: FrameState;
-  /** The scene, with `data` of meshes the worker already holds replaced by null. */
-  scene: Scene;
+  /**
+   * The scene, with `data` of meshes the worker already holds replaced by null; null when it is
+   * the value sent before (a frame that only moved the camera or the trackball's turn).
+   */
+  scene: Scene | null;
   /** Meshes new to the worker, by geometry key. */
   meshes: [string, MeshData][];
   /** Images new to the worker, by URL. */
@@ -27,9 +30,18 @@ export type SoftwareResponse =
 export class SentResources {
   private readonly meshes = new Map<string, MeshData>();
   private readonly images = new Set<string>();
+  private lastScene: Scene | null = null;
 
-  /** The request's scene and its new meshes and images. */
+  /** The request's scene (null: the one sent before) and its new meshes and images. */
   pack(scene: Scene, images: ReadonlyMap<string, DecodedImage>): Pick<SoftwareRequest, 'scene' | 'meshes' | 'images'> {
+    const newImages: [string, DecodedImage][] = [];
+    for (const [url, image] of images) {
+      if (this.images.has(url)) continue;
+      this.images.add(url);
+      newImages.push([url, image]);
+    }
+    if (scene === this.lastScene) return { scene: null, meshes: [], images: newImages };
+    this.lastScene = scene;
     const meshes: [string, MeshData][] = [];
     let stripped = false;
     const objects = scene.objects.map((o) => {
@@ -42,12 +54,6 @@ export class SentResources {
       stripped = true;
       return { ...o, geometry: { kind: 'mesh' as const, key: g.key, data: null as unknown as MeshData } };
     });
-    const newImages: [string, DecodedImage][] = [];
-    for (const [url, image] of images) {
-      if (this.images.has(url)) continue;
-      this.images.add(url);
-      newImages.push([url, image]);
-    }
     return { scene: stripped ? { ...scene, objects } : scene, meshes, images: newImages };
   }
 }

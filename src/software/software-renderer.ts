@@ -181,8 +181,8 @@ export class SoftwareRenderer {
     const s = this.setup;
     // The frame's matrices, both eyes' and the reflection's clip plane, as the GL path has them.
     s.update(state, scene);
-    this.lightsMain.set(scene, s.eye);
-    this.lightsMirrored.set(scene, s.mirroredEye);
+    this.lightsMain.set(scene, s.lightWorld, s.eye);
+    this.lightsMirrored.set(scene, s.lightWorld, s.mirroredEye);
     this.glassShader.model = state.fresnel;
     this.glassShader.ior = state.ior;
     this.glassShader.transparency = state.transparency;

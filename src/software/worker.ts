@@ -5,10 +5,13 @@ import { SoftwareRenderer } from './software-renderer';
 import { unpackScene, type SoftwareRequest, type SoftwareResponse } from './protocol';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import type { DecodedImage } from '../scene/decoded-image';
+import type { Scene } from '../scene/scene';
 
 const renderer = new SoftwareRenderer();
 const meshes = new Map<string, MeshData>();
 const images = new Map<string, DecodedImage>();
+/** The scene of the last request that carried one (a request without one draws it again). */
+let scene: Scene | null = null;
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 
 scope.onmessage = (e: MessageEvent<SoftwareRequest>) => {
@@ -17,8 +20,10 @@ scope.onmessage = (e: MessageEvent<SoftwareRequest>) => {
   for (const [url, image] of r.images) images.set(url, image);
   let response: SoftwareResponse;
   try {
+    if (r.scene) scene = unpackScene(r.scene, meshes);
+    if (!scene) throw new Error('no scene sent yet');
     renderer.samplesPerAxis = r.samplesPerAxis;
-    const pixels = renderer.render(r.state, unpackScene(r.scene, meshes), images).slice();
+    const pixels = renderer.render(r.state, scene, images).slice();
     response = { id: r.id, pixels, width: r.state.width, height: r.state.height };
     scope.postMessage(response, [pixels.buffer]);
   } catch (err) {

@@ -3,17 +3,23 @@
 // orbit: drag turns the camera about its target, right-drag (or Shift-drag, or two fingers)
 // pans, wheel and pinch dolly. trackball: drag turns the objects with the arcball, right-drag
 // or Shift-drag turns the first light the same way, wheel and pinch dolly, two fingers pan.
-// Rotations keep spinning after release (inertia.ts). Listeners live between attach() and
-// detach(); nothing is allocated per event.
+// Rotations keep spinning after release (inertia.ts). Listeners live while the host is
+// connected; nothing is allocated per event.
 import { quat, vec3 } from 'gl-matrix';
 import { forwardFromYawPitch, type CameraPose } from '../../math/camera';
 import { arcballPoint } from './arcball';
 import { Inertia, VelocityTracker } from './inertia';
 import { OrbitCamera, ORBIT_DEG_PER_PX } from './orbit';
+import type { Controller } from '../controller';
 
 export type PointerMode = 'orbit' | 'trackball';
 
-export interface PointerControlsHooks {
+/** What PointerControls needs of the scene element. */
+export interface PointerControlsHost {
+  /** Takes the keys (focused); focused by a press. */
+  readonly element: HTMLElement;
+  /** Takes the pointers and the wheel. */
+  readonly canvas: HTMLElement;
   /** The mode in force, or null (flyby or no controls: this class ignores input). */
   mode(): PointerMode | null;
   /** The live camera pose (changed in place). */
@@ -40,7 +46,7 @@ const DEG = Math.PI / 180;
 
 type Drag = 'rotate' | 'pan' | 'light' | 'pinch' | null;
 
-export class PointerControls {
+export class PointerControls implements Controller {
   /** The trackball's rotation of the objects, a unit quaternion [x, y, z, w]. */
   readonly objectRotation = (new Float64Array([0, 0, 0, 1]) as unknown as quat);
   /** The trackball's rotation of the first light about the objects' centre. */
@@ -69,9 +75,15 @@ export class PointerControls {
   private readonly delta = new Float64Array(3);
   private readonly f = new Float64Array(3);
 
-  constructor(private readonly host: HTMLElement, private readonly canvas: HTMLElement, private readonly hooks: PointerControlsHooks) {}
+  private readonly element: HTMLElement;
+  private readonly canvas: HTMLElement;
 
-  attach(): void {
+  constructor(private readonly host: PointerControlsHost) {
+    this.element = host.element;
+    this.canvas = host.canvas;
+  }
+
+  hostConnected(): void {
     const c = this.canvas;
     c.addEventListener('pointerdown', this.onDown);
     c.addEventListener('pointermove', this.onMove);
@@ -80,10 +92,10 @@ export class PointerControls {
     c.addEventListener('lostpointercapture', this.onUp);
     c.addEventListener('wheel', this.onWheel, { passive: false });
     c.addEventListener('contextmenu', this.onContextMenu);
-    this.host.addEventListener('keydown', this.onKey);
+    this.element.addEventListener('keydown', this.onKey);
   }
 
-  detach(): void {
+  hostDisconnected(): void {
     const c = this.canvas;
     c.removeEventListener('pointerdown', this.onDown);
     c.removeEventListener('pointermove', this.onMove);
@@ -92,7 +104,7 @@ export class PointerControls {
     c.removeEventListener('lostpointercapture', this.onUp);
     c.removeEventListener('wheel', this.onWheel);
     c.removeEventListener('contextmenu', this.onContextMenu);
-    this.host.removeEventListener('keydown', this.onKey);
+    this.element.removeEventListener('keydown', this.onKey);
     this.cancel();
   }
 
@@ -128,7 +140,7 @@ export class PointerControls {
    */
   update(now: number): boolean {
     if (!this.spin.active) return false;
-    const mode = this.hooks.mode();
+    const mode = this.host.mode();
     if (mode === null) {
       this.spin.stop();
       return false;
@@ -138,7 +150,7 @@ export class PointerControls {
     this.spinTime = now;
     if (!this.spin.step(dt, d)) return false;
     if (this.spinKind === 'orbit') {
-      this.orbit.rotate(this.hooks.pose(), d[0] / DEG, d[1] / DEG);
+      this.orbit.rotate(this.host.pose(), d[0] / DEG, d[1] / DEG);
     } else {
       const angle = Math.hypot(d[0], d[1], d[2]);
       if (angle > 0) {
@@ -148,27 +160,27 @@ export class PointerControls {
         quat.normalize(this.objectRotation, this.objectRotation);
       }
     }
-    if (!this.spin.active) this.hooks.gestureEnd();
+    if (!this.spin.active) this.host.gestureEnd();
     return true;
   }
 
   // ---- pointers --------------------------------------------------------------------------
 
   private readonly onContextMenu = (e: Event): void => {
-    if (this.hooks.mode() !== null) e.preventDefault(); // right-drag is ours
+    if (this.host.mode() !== null) e.preventDefault(); // right-drag is ours
   };
 
   private readonly onDown = (e: PointerEvent): void => {
-    const mode = this.hooks.mode();
+    const mode = this.host.mode();
     if (mode === null) return;
     e.preventDefault();
-    this.host.focus({ preventScroll: true });
+    this.element.focus({ preventScroll: true });
     try { this.canvas.setPointerCapture(e.pointerId); } catch { /* synthetic pointer */ }
     const r = this.canvas.getBoundingClientRect();
     this.rect.left = r.left; this.rect.top = r.top; this.rect.width = r.width || 1; this.rect.height = r.height || 1;
     this.pointers.set(e.pointerId, { x: e.clientX - r.left, y: e.clientY - r.top });
     this.spin.stop();
-    if (this.pointers.size === 1) this.orbit.begin(this.hooks.pose(), this.hooks.target());
+    if (this.pointers.size === 1) this.orbit.begin(this.host.pose(), this.host.target());
     this.startDrag(e, mode);
   };
 
@@ -200,11 +212,11 @@ export class PointerControls {
 
   private readonly onMove = (e: PointerEvent): void => {
     const p = this.pointers.get(e.pointerId);
-    const mode = this.hooks.mode();
+    const mode = this.host.mode();
     if (!p || mode === null || this.drag === null) return;
     p.x = e.clientX - this.rect.left;
     p.y = e.clientY - this.rect.top;
-    const pose = this.hooks.pose();
+    const pose = this.host.pose();
     if (this.drag === 'pinch') {
       const lx = this.last.x, ly = this.last.y, span = this.span, d = this.orbit.distance;
       this.pinchState();
@@ -212,12 +224,12 @@ export class PointerControls {
       // About the fingers: the dolly moves a point drawn m px off the centre (at the target's
       // depth) to m/k, so the pan takes it from there to under the fingers' new midpoint.
       const k = this.orbit.distance / d, cx = this.rect.width / 2, cy = this.rect.height / 2;
-      this.orbit.pan(pose, this.last.x - cx - (lx - cx) / k, this.last.y - cy - (ly - cy) / k, this.rect.height, this.hooks.fov());
+      this.orbit.pan(pose, this.last.x - cx - (lx - cx) / k, this.last.y - cy - (ly - cy) / k, this.rect.height, this.host.fov());
       this.panned = true;
     } else {
       const dx = p.x - this.last.x, dy = p.y - this.last.y;
       if (this.drag === 'pan') {
-        this.orbit.pan(pose, dx, dy, this.rect.height, this.hooks.fov());
+        this.orbit.pan(pose, dx, dy, this.rect.height, this.host.fov());
         this.panned = true;
       } else if (this.drag === 'rotate' && mode === 'orbit') {
         let yaw = dx * ORBIT_DEG_PER_PX, pitch = -dy * ORBIT_DEG_PER_PX;
@@ -234,12 +246,12 @@ export class PointerControls {
       this.last.y = p.y;
     }
     this.moved = true;
-    this.hooks.changed(this.drag === 'pinch' || this.drag === 'pan' || mode === 'orbit');
+    this.host.changed(this.drag === 'pinch' || this.drag === 'pan' || mode === 'orbit');
   };
 
   private readonly onUp = (e: PointerEvent): void => {
     if (!this.pointers.delete(e.pointerId)) return;
-    const mode = this.hooks.mode();
+    const mode = this.host.mode();
     if (mode === null) return;
     if (this.pointers.size > 0) {
       this.startDrag(e, mode); // two fingers to one: go on from where the other finger is
@@ -251,7 +263,7 @@ export class PointerControls {
       this.spinTime = performance.now(); // the motion runs from the release, on the wall clock
     }
     this.drag = null;
-    if (this.spin.active) this.hooks.changed(this.spinKind === 'orbit');
+    if (this.spin.active) this.host.changed(this.spinKind === 'orbit');
     else if (this.moved) this.end();
   };
 
@@ -270,7 +282,7 @@ export class PointerControls {
     if (!(s > 1e-12) || !(angle > 0)) return;
     angle = Math.min(angle, MAX_EVENT_TURN * DEG);
     // View space → world: x along the camera's right, y its up, z towards the viewer.
-    const pose = this.hooks.pose();
+    const pose = this.host.pose();
     const f = forwardFromYawPitch(this.f, pose.yaw, pose.pitch);
     const h = Math.hypot(f[0], f[2]) || 1;
     const rx = -f[2] / h, rz = f[0] / h;
@@ -287,14 +299,14 @@ export class PointerControls {
   // ---- wheel and keys --------------------------------------------------------------------
 
   private readonly onWheel = (e: WheelEvent): void => {
-    if (this.hooks.mode() === null) return;
+    if (this.host.mode() === null) return;
     e.preventDefault();
     const lines = e.deltaMode === 1 ? 16 : e.deltaMode === 2 ? this.canvas.clientHeight || 400 : 1;
     const dy = Math.max(-200, Math.min(200, e.deltaY * lines)); // one event, one normal step
-    if (this.wheelTimer === undefined) this.orbit.begin(this.hooks.pose(), this.hooks.target());
-    this.orbit.dolly(this.hooks.pose(), Math.exp(dy * WHEEL_RATE));
+    if (this.wheelTimer === undefined) this.orbit.begin(this.host.pose(), this.host.target());
+    this.orbit.dolly(this.host.pose(), Math.exp(dy * WHEEL_RATE));
     this.moved = true;
-    this.hooks.changed(true);
+    this.host.changed(true);
     clearTimeout(this.wheelTimer);
     this.wheelTimer = setTimeout(() => {
       this.wheelTimer = undefined;
@@ -303,7 +315,7 @@ export class PointerControls {
   };
 
   private readonly onKey = (e: KeyboardEvent): void => {
-    const mode = this.hooks.mode();
+    const mode = this.host.mode();
     if (mode === null || e.altKey || e.ctrlKey || e.metaKey) return;
     let yaw = 0, pitch = 0, dolly = 1;
     switch (e.key) {
@@ -317,8 +329,8 @@ export class PointerControls {
     }
     e.preventDefault(); // the arrows would scroll the page
     this.spin.stop();
-    const pose = this.hooks.pose();
-    this.orbit.begin(pose, this.hooks.target());
+    const pose = this.host.pose();
+    this.orbit.begin(pose, this.host.target());
     if (dolly !== 1) this.orbit.dolly(pose, dolly);
     else if (mode === 'orbit') this.orbit.rotate(pose, yaw, pitch);
     else {
@@ -329,12 +341,12 @@ export class PointerControls {
       this.arcball(r, r, r + Math.sin(yaw * DEG) * r, r - Math.sin(pitch * DEG) * r, this.objectRotation);
     }
     this.moved = true;
-    this.hooks.changed(dolly !== 1 || mode === 'orbit');
+    this.host.changed(dolly !== 1 || mode === 'orbit');
     this.end();
   };
 
   private end(): void {
     this.moved = false;
-    this.hooks.gestureEnd();
+    this.host.gestureEnd();
   }
 }

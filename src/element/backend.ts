@@ -1,0 +1,38 @@
+// What draws the element's frames: one interface, two implementations, one at a time, chosen by
+// the `renderer` attribute (backend-controller.ts): WebGL2 in the page's shared context
+// (webgl-backend.ts) or the CPU renderer, in a worker when it can (software-backend.ts).
+import type { ReadbackSource } from '../render/renderer';
+import type { FrameReport, FrameState, RenderStats } from '../render/types';
+import type { Scene } from '../scene/scene';
+import type { ImageSink } from './texture-images';
+
+/** What a backend needs of whoever runs it. */
+export interface BackendHost {
+  /** The element's canvas: where frames are shown. */
+  readonly canvas: HTMLCanvasElement;
+  /** A frame of `state` is on the canvas. */
+  drawn(state: FrameState, report: Omit<FrameReport, 'frame'>): void;
+  /** Draw again (the canvas was resized while a frame was drawn). */
+  requestRender(): void;
+  /** A frame drawn elsewhere has landed: draw what changed meanwhile. */
+  resume(): void;
+  /** Drawing threw: a shader that failed, a lost context, or a bug (rethrown). */
+  renderError(e: unknown): void;
+}
+
+/** A renderer drawing the element's frames; it takes the scene's decoded images as they arrive. */
+export interface Backend extends ImageSink {
+  readonly kind: 'webgl' | 'software';
+  /** Where the software renderer draws (a worker, or the main thread). */
+  readonly thread?: 'worker' | 'main';
+  /** A frame is still being drawn: the next one waits for it. */
+  readonly busy: boolean;
+  /** Draws `state` of `scene` on the canvas; `drawn` tells when it is there (perhaps later). */
+  draw(state: FrameState, scene: Scene): void;
+  /** One pass, or the final image, drawn now off screen from `state`; null if that failed. */
+  capture(source: ReadbackSource, state: FrameState, scene: Scene): ImageData | null;
+  /** Its own counters (a new object), or null when it keeps none (the software renderer). */
+  stats(): RenderStats | null;
+  /** Frees what it holds; returns its last counters (or null). Nothing it started lands after this. */
+  dispose(): RenderStats | null;
+}

@@ -1,0 +1,270 @@
+// The camera and the trackball (SPEC §10, §11): the flyby keys and mouse, orbit and trackball
+// pointers, the course camera of `camera-src`, and the end of a gesture, when the pose is
+// written back to the camera attributes once and `camera-change` is fired. Fills the camera's
+// part of each frame's state; no GL.
+import type { FrameState } from '../render/types';
+import type { Scene } from '../scene/scene';
+import type { SceneAttributes } from './attributes';
+import { CameraSource } from './camera-source';
+import type { Controller } from './controller';
+import { PointerControls, type PointerMode } from './controls/pointer-controls';
+import { FlybyController } from './flyby-controller';
+import { FlybyInput } from './flyby-input';
+import type { CameraChangeDetail } from './types';
+
+/** The flyby's mouse look ends this long after its last movement, ms. */
+const LOOK_END_MS = 150;
+const DEG = 180 / Math.PI;
+
+/** What CameraRig needs of the scene element. */
+export interface CameraRigHost {
+  /** Takes the keys; the camera attributes are written back to it, and camera-change fired on it. */
+  readonly element: HTMLElement;
+  /** Takes the pointers. */
+  readonly canvas: HTMLCanvasElement;
+  /** The parsed attributes (controls, camera-*, fov, projection, camera-src). */
+  readonly values: Readonly<SceneAttributes>;
+  /** Draw again. */
+  requestRender(): void;
+  /** The trackball turned the objects or the first light (the camera did not move). */
+  turned(): void;
+  /** The flyby moved during a frame: that frame must be drawn even if another is on its way. */
+  flybyMoved(): void;
+  /** What orbit turns about without `camera-target`: the centre of the objects as drawn. */
+  objectsCenter(): ArrayLike<number>;
+  /** The debug-view key (F) was pressed. */
+  cycleDebugView(): void;
+}
+
+export class CameraRig implements Controller {
+  readonly flyby = new FlybyController();
+  /** `camera-src`: the course camera, when one is in force (SPEC §11). */
+  readonly cameraSource: CameraSource;
+  /** orbit and trackball input, and the trackball's rotations. */
+  readonly pointer: PointerControls;
+  private readonly input: FlybyInput;
+  private readonly parts: Controller[];
+  private lookTimer: ReturnType<typeof setTimeout> | undefined;
+  /** A camera attribute set by the page: one camera-change after the current task. */
+  private cameraChangeQueued = false;
+  /** The camera moved since the last write-back. */
+  private cameraDirty = false;
+  /** The flyby's keys moved the camera since the last write-back (their gesture ends when it stops). */
+  private keysMoved = false;
+  /** True while the camera attributes are written back. */
+  private writing = false;
+  /** performance.now() of the flyby's last step; 0: no motion under way. */
+  private lastNow = 0;
+
+  constructor(private readonly host: CameraRigHost) {
+    const { element, canvas, values } = host;
+    this.flyby.setPose(values.cameraPosition, values.cameraRotation[0], values.cameraRotation[1]);
+    this.cameraSource = new CameraSource({ element, src: () => host.values.cameraSrc, changed: () => host.requestRender() });
+    this.input = new FlybyInput({
+      element, canvas, flyby: this.flyby,
+      enabled: () => host.values.controls === 'flyby',
+      moved: (byMouse) => {
+        if (byMouse) {
+          this.cameraDirty = true;
+          clearTimeout(this.lookTimer);
+          this.lookTimer = setTimeout(() => this.gestureEnd(), LOOK_END_MS);
+        }
+        // Motion starts now, not at the next frame: on a busy page that frame may come after
+        // the key is released already, and a first step of dt = 0 would lose the press.
+        else if (this.lastNow === 0) this.lastNow = performance.now();
+        host.requestRender();
+      },
+      settle: () => {
+        this.advanceFlyby();
+        host.requestRender();
+      },
+      cycleDebugView: () => host.cycleDebugView(),
+    });
+    this.pointer = new PointerControls({
+      element, canvas,
+      mode: () => (host.values.controls === 'orbit' || host.values.controls === 'trackball' ? host.values.controls as PointerMode : null),
+      pose: () => this.flyby.pose,
+      target: () => host.values.cameraTarget ?? host.objectsCenter(),
+      fov: () => host.values.fov,
+      changed: (camera) => {
+        // A trackball turn moves objects, not the camera: no write-back, no camera-change for it.
+        if (camera) this.cameraDirty = true;
+        if (!camera) host.turned();
+        host.requestRender();
+      },
+      gestureEnd: () => this.gestureEnd(),
+    });
+    this.parts = [this.input, this.pointer, this.cameraSource];
+  }
+
+  hostConnected(): void {
+    for (const p of this.parts) p.hostConnected?.();
+  }
+
+  hostDisconnected(): void {
+    for (const p of this.parts) p.hostDisconnected?.();
+    clearTimeout(this.lookTimer);
+  }
+
+  /** True while the pose is written back to the attributes (their changes are not news). */
+  get writingBack(): boolean {
+    return this.writing;
+  }
+
+  /** Keys held or a motion after release going on: frames keep coming. */
+  get moving(): boolean {
+    return this.flyby.active || this.pointer.active;
+  }
+
+  /** The flown camera's attributes read live (the pose moves before it is written back); else undefined. */
+  liveValue(property: keyof SceneAttributes): unknown {
+    const pose = this.flyby.pose;
+    if (property === 'cameraPosition') return pose.position;
+    if (property === 'cameraRotation') return [pose.yaw, pose.pitch];
+    return undefined;
+  }
+
+  /** A course camera file is loading (`ready` waits for it). */
+  get loading(): boolean {
+    return this.cameraSource.loading;
+  }
+
+  /** The page set camera-position, -rotation or -target: the pose follows, one camera-change. */
+  cameraAttributeChanged(): void {
+    const v = this.host.values;
+    this.flyby.setPose(v.cameraPosition, v.cameraRotation[0], v.cameraRotation[1]);
+    this.aimAtTarget();
+    this.queueCameraChange();
+  }
+
+  /**
+   * Sets the trackball's rotation of the objects, normalised; false (nothing changed) unless
+   * `value` is four finite numbers, not all zero.
+   */
+  setObjectRotation(value: ArrayLike<number>): boolean {
+    const q = Array.from(value ?? [], Number);
+    const len = Math.hypot(...q);
+    if (q.length !== 4 || !Number.isFinite(len) || len === 0) return false;
+    const r = this.pointer.objectRotation;
+    for (let i = 0; i < 4; i++) r[i] = q[i] / len;
+    this.host.turned();
+    this.host.requestRender();
+    return true;
+  }
+
+  /** `controls` changed: a gesture and a motion under way stop. */
+  controlsChanged(): void {
+    this.pointer.cancel();
+  }
+
+  /** A frame begins: the flyby and the motion after release advance. */
+  step(): void {
+    this.advanceFlyby();
+    // The motion after release, by the wall clock (SPEC §10), not the frame's timestamp.
+    if (!this.pointer.update(performance.now())) return;
+    if (this.host.values.controls === 'orbit') this.cameraDirty = true; // a trackball's spin turns objects, not the camera
+    else this.host.turned();
+  }
+
+  /** Frames stopped: the next flyby step starts from rest. */
+  paused(): void {
+    this.lastNow = 0;
+  }
+
+  /** Nothing moves any more: the flyby keys' gesture ends. */
+  idle(): void {
+    this.lastNow = 0;
+    if (this.cameraDirty && this.keysMoved) this.gestureEnd();
+  }
+
+  /**
+   * The camera's part of a frame: the pose, or the course camera while one is in force
+   * (cameraPosition and fov then follow it, for the level-of-detail choices that read them).
+   */
+  aim(s: FrameState, scene: Scene): void {
+    const v = this.host.values, pose = this.flyby.pose;
+    s.fov = v.fov;
+    s.cameraPosition = pose.position;
+    s.yaw = pose.yaw;
+    s.pitch = pose.pitch;
+    s.projection = v.projection;
+    s.target = v.cameraTarget; // the orthographic size is taken there (else at the glass centre)
+    const cam = this.cameraSource.camera;
+    s.courseCamera = cam;
+    if (!cam) return;
+    s.cameraPosition = cam.c;
+    s.fov = CameraSource.fov(cam);
+    s.projection = 'perspective';
+    this.cameraSource.checkLooksAway(scene, s.time, s.turn ?? null);
+  }
+
+  /**
+   * Moves the flyby camera by the time since the last step. Motion is timed with
+   * performance.now() (the key events' clock), not the frame's timestamp, which can be
+   * earlier than a key press handled in the same frame.
+   */
+  private advanceFlyby(): void {
+    const t = performance.now();
+    const dt = this.lastNow ? (t - this.lastNow) / 1000 : 0;
+    this.lastNow = t;
+    if (!this.flyby.update(dt)) return;
+    this.cameraDirty = true;
+    this.keysMoved = true;
+    this.host.flybyMoved();
+  }
+
+  /** With `camera-target`, the camera looks at it (SPEC §2): yaw and pitch from position → target. */
+  private aimAtTarget(): void {
+    const t = this.host.values.cameraTarget;
+    if (!t) return;
+    const p = this.flyby.pose.position;
+    const dx = t[0] - p[0], dy = t[1] - p[1], dz = t[2] - p[2];
+    const d = Math.hypot(dx, dy, dz);
+    if (!(d > 0)) return; // at the target: keep camera-rotation
+    this.flyby.setPose(p, Math.atan2(dz, dx) * DEG, Math.asin(dy / d) * DEG);
+  }
+
+  private cameraDetail(): CameraChangeDetail {
+    const { position, yaw, pitch } = this.flyby.pose;
+    const t = this.host.values.cameraTarget;
+    return t ? { position: [...position], rotation: [yaw, pitch], target: [...t] } : { position: [...position], rotation: [yaw, pitch] };
+  }
+
+  /** The page changed a camera attribute: one camera-change after its batch of changes. */
+  private queueCameraChange(): void {
+    const element = this.host.element;
+    if (this.cameraChangeQueued || !element.isConnected) return;
+    this.cameraChangeQueued = true;
+    queueMicrotask(() => {
+      this.cameraChangeQueued = false;
+      if (element.isConnected) element.dispatchEvent(new CustomEvent('camera-change', { detail: this.cameraDetail() }));
+    });
+  }
+
+  /**
+   * A gesture ended (SPEC §10): the camera attributes are written once (camera-target too when
+   * a pan moved it) and one camera-change is fired; the write-back itself fires none.
+   */
+  private gestureEnd(): void {
+    clearTimeout(this.lookTimer);
+    this.lookTimer = undefined;
+    this.keysMoved = false;
+    if (!this.cameraDirty) return;
+    this.cameraDirty = false;
+    const { position, yaw, pitch } = this.flyby.pose;
+    const element = this.host.element;
+    this.writing = true;
+    try {
+      element.setAttribute('camera-position', `${position[0]} ${position[1]} ${position[2]}`);
+      element.setAttribute('camera-rotation', `${yaw} ${pitch}`);
+      // A pan moves what the camera looks at: with camera-target set, the target moves with it.
+      if (this.pointer.takePanned() && this.host.values.cameraTarget) {
+        const t = this.pointer.orbitTarget;
+        element.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);
+      }
+    } finally {
+      this.writing = false;
+    }
+    element.dispatchEvent(new CustomEvent('camera-change', { detail: this.cameraDetail() }));
+  }
+}

@@ -1,0 +1,62 @@
+// Why the element cannot draw (SPEC §2): shown in its `message` part, fired as `error`. A missing
+// WebGL2 hides the canvas; a lost context waits for the context to come back; a shader that
+// failed waits for a change that may select a variant that compiles.
+import type { ErrorType } from './types';
+import { PREFIX } from './warnings';
+
+const MESSAGES: Record<ErrorType, string> = {
+  'webgl2-unavailable': 'WebGL2 is not available here, so the glass scene cannot be shown.',
+  shader: 'The glass scene could not be drawn: a shader failed to compile.',
+  'context-lost': 'The graphics context was lost; waiting for it to come back.',
+  load: 'The glass scene could not be loaded.',
+};
+
+export class Failure {
+  /** What keeps the element from drawing now; null: nothing does. */
+  type: ErrorType | null = null;
+  /** The message part, shown while a failure is in force (until a frame is drawn again). */
+  readonly message: HTMLElement;
+  /** The shader error last reported: the same one again (the same broken variant) is not news. */
+  private reported: unknown = null;
+
+  constructor(private readonly element: HTMLElement, private readonly canvas: HTMLCanvasElement) {
+    this.message = document.createElement('div');
+    this.message.setAttribute('part', 'message');
+    this.message.setAttribute('role', 'alert');
+    this.message.hidden = true;
+  }
+
+  fail(type: ErrorType, error: unknown): void {
+    const message = error instanceof Error ? error.message : String(error);
+    this.type = type;
+    this.message.textContent = MESSAGES[type];
+    this.message.hidden = false;
+    this.canvas.hidden = type === 'webgl2-unavailable';
+    if (type === 'shader') {
+      if (error === this.reported) return;
+      this.reported = error;
+    }
+    // A broken shader is a bug worth a console line (with the annotated source); a missing
+    // WebGL2 or a lost context is a state of the machine, reported through the event only.
+    if (type === 'shader') console.error(message.startsWith(PREFIX) ? message : `${PREFIX} ${message}`);
+    queueMicrotask(() => this.element.dispatchEvent(new CustomEvent('error', { detail: { type, message } })));
+  }
+
+  /** Drawing starts again (a restored context, another renderer): the message goes. */
+  clear(): void {
+    this.type = null;
+    this.message.hidden = true;
+    this.canvas.hidden = false;
+  }
+
+  /** A change may select a shader variant that compiles: try again (the message stays until a frame is drawn). */
+  retry(): void {
+    if (this.type === 'shader') this.type = null;
+  }
+
+  /** A frame was drawn: the message of an earlier shader failure goes. */
+  drawn(): void {
+    if (!this.message.hidden) this.message.hidden = true;
+    this.reported = null;
+  }
+}

@@ -1,0 +1,143 @@
+// When the element draws: on demand, only when something changed or moves, while the element is
+// in view (IntersectionObserver) and the page is shown (visibilitychange); the canvas's drawing
+// buffer follows the element's box (ResizeObserver) and the pixel ratio; prefers-reduced-motion is
+// watched for the spin. Frames stop when nothing moves (idle). What a frame draws is the host's
+// business: no GL, no scene here.
+import type { Controller } from './controller';
+
+/** Start drawing a little before the element scrolls into view. */
+const VIEW_MARGIN = '64px';
+
+/** What FrameLoop needs of the scene element. */
+export interface FrameLoopHost {
+  /** The element whose box and visibility are watched. */
+  readonly element: HTMLElement;
+  /** Its canvas, whose drawing buffer follows the box. */
+  readonly canvas: HTMLCanvasElement;
+  /** Drawing-buffer pixels per CSS pixel (the `pixel-ratio` attribute). */
+  pixelRatio(): number | 'auto';
+  /** Largest side of the drawing buffer; null while nothing can draw (the canvas keeps its size). */
+  maxSize(): number | null;
+  /** A renderer is ready and nothing failed: frames can be drawn. */
+  canDraw(): boolean;
+  /** Something moves without a change (the clock turns an object, a control's motion): frames keep coming. */
+  animating(): boolean;
+  /** Draws one frame (or starts drawing it); `now` is the frame's timestamp. */
+  frame(now: number): void;
+  /** Frames were cancelled (out of sight, the page hidden, a resize drawn at once). */
+  paused(): void;
+  /** The last frame of a motion was drawn: nothing moves any more. */
+  idle(): void;
+  /** prefers-reduced-motion changed. */
+  motionPreferenceChanged(): void;
+}
+
+export class FrameLoop implements Controller {
+  /** Something changed since the last frame drawn: the next frame draws it. */
+  dirty = true;
+  private rafId = 0;
+  private inView = false;
+  private resizeObserver: ResizeObserver | null = null;
+  private intersectionObserver: IntersectionObserver | null = null;
+  private motionQuery: MediaQueryList | null = null;
+
+  constructor(private readonly host: FrameLoopHost) {}
+
+  /** The page asks for reduced motion. */
+  get reducedMotion(): boolean {
+    return this.motionQuery?.matches ?? false;
+  }
+
+  hostConnected(): void {
+    const element = this.host.element;
+    this.resizeObserver = new ResizeObserver(this.onResize);
+    this.resizeObserver.observe(element);
+    this.intersectionObserver = new IntersectionObserver(this.onIntersection, { rootMargin: VIEW_MARGIN });
+    this.intersectionObserver.observe(element);
+    document.addEventListener('visibilitychange', this.onVisibility);
+    this.motionQuery = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
+    this.motionQuery?.addEventListener('change', this.onMotionPreference);
+  }
+
+  hostDisconnected(): void {
+    this.cancel();
+    this.resizeObserver?.disconnect();
+    this.intersectionObserver?.disconnect();
+    this.resizeObserver = this.intersectionObserver = null;
+    document.removeEventListener('visibilitychange', this.onVisibility);
+    this.motionQuery?.removeEventListener('change', this.onMotionPreference);
+    this.motionQuery = null;
+    this.inView = false;
+  }
+
+  /** Draws a frame on the next animation frame, even when nothing changed. */
+  request(): void {
+    this.dirty = true;
+    this.schedule();
+  }
+
+  /** Draws only when something changed or moves, the element is in view and the page shown. */
+  schedule(): void {
+    if (this.rafId !== 0 || !this.host.canDraw() || !this.inView || document.hidden) return;
+    if (!this.dirty && !this.host.animating()) return;
+    this.rafId = requestAnimationFrame(this.onFrame);
+  }
+
+  /** A frame drawn elsewhere (a worker's) has landed: draw what changed meanwhile. */
+  resume(): void {
+    if (this.dirty) this.schedule();
+  }
+
+  /** Drawing buffer = CSS box × pixel ratio, within the renderer's limits. Returns true if it changed. */
+  resize(): boolean {
+    const { element, canvas } = this.host;
+    const limit = this.host.maxSize();
+    if (limit === null) return false;
+    const r = this.host.pixelRatio();
+    const ratio = r === 'auto' ? window.devicePixelRatio || 1 : r;
+    const w = Math.max(1, Math.min(limit, Math.round(element.clientWidth * ratio)));
+    const h = Math.max(1, Math.min(limit, Math.round(element.clientHeight * ratio)));
+    if (w === canvas.width && h === canvas.height) return false;
+    canvas.width = w;
+    canvas.height = h;
+    return true;
+  }
+
+  cancel(): void {
+    cancelAnimationFrame(this.rafId);
+    this.rafId = 0;
+    this.host.paused();
+  }
+
+  private readonly onFrame = (now: number): void => {
+    this.rafId = 0;
+    if (!this.host.canDraw()) return;
+    this.host.frame(now);
+    if (this.host.animating()) this.schedule();
+    else this.host.idle();
+  };
+
+  private readonly onResize = (): void => {
+    if (!this.resize()) return;
+    // Resizing clears the canvas: draw now rather than show an empty frame.
+    this.cancel();
+    this.dirty = true;
+    if (this.host.canDraw() && this.inView && !document.hidden) this.onFrame(performance.now());
+  };
+
+  private readonly onIntersection = (entries: IntersectionObserverEntry[]): void => {
+    const entry = entries[entries.length - 1];
+    this.inView = entry.isIntersecting;
+    if (this.inView) this.schedule();
+    else this.cancel();
+  };
+
+  private readonly onVisibility = (): void => {
+    if (document.hidden) this.cancel();
+    else this.schedule();
+  };
+
+  private readonly onMotionPreference = (): void => {
+    this.host.motionPreferenceChanged();
+  };
+}

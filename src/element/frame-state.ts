@@ -1,0 +1,51 @@
+// Each frame's state (FrameState, SPEC §2's inputs of a frame) from the parsed attributes, filled
+// in place so a frame allocates none; the camera's part is the CameraRig's. Also keeps a copy of
+// the last state drawn, which capture(pass) draws a pass of.
+import type { FrameState } from '../render/types';
+import type { SceneAttributes } from './attributes';
+
+export class FrameStates {
+  /** The state of the frame being drawn (one object, filled again every frame). */
+  readonly current: FrameState = {
+    width: 1, height: 1, time: 0, spin: 0, cubeDistance: 0, transparency: 0, ior: 1, fresnel: 'exact',
+    fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final',
+    reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
+    projection: 'perspective', target: null,
+  };
+  /** The state of the last frame drawn; null before the first. */
+  last: FrameState | null = null;
+  private readonly lastPosition: [number, number, number] = [0, 0, 0];
+  /** The frame timestamp the live clock counts from (the first frame's). */
+  private clockStart = -1;
+
+  /** The attributes' part of the frame at timestamp `now`, the drawing buffer `width` × `height`, the cube turning at `spin`. */
+  fill(v: Readonly<SceneAttributes>, now: number, width: number, height: number, spin: number): FrameState {
+    const s = this.current;
+    if (this.clockStart < 0) this.clockStart = now;
+    s.width = width;
+    s.height = height;
+    s.time = v.time ?? (now - this.clockStart) / 1000;
+    s.spin = spin;
+    s.cubeDistance = v.cubeDistance;
+    s.transparency = v.transparency;
+    s.ior = v.ior;
+    s.fresnel = v.fresnel;
+    s.view = v.debugView === 'none' ? 'final' : v.debugView;
+    s.reflectionScale = v.reflectionScale;
+    s.samples = v.samples;
+    s.shading = v.shading;
+    s.tessellation = v.tessellation;
+    s.reflectionFormat = v.reflectionFormat;
+    return s;
+  }
+
+  /** A frame of `state` is on the canvas: keep a copy (its camera position copied too: the live pose moves on). */
+  drawn(state: FrameState): void {
+    const last = (this.last ??= { ...state });
+    Object.assign(last, state);
+    this.lastPosition[0] = state.cameraPosition[0];
+    this.lastPosition[1] = state.cameraPosition[1];
+    this.lastPosition[2] = state.cameraPosition[2];
+    last.cameraPosition = this.lastPosition;
+  }
+}

@@ -1,0 +1,86 @@
+// Frames drawn by the CPU renderer (SPEC §11), in its worker while the page goes on; one at a time
+// (a change while it draws is drawn next). The pixels reach the canvas in one piece when the
+// frame is complete: by a 2D context, or by a bitmap renderer when WebGL had the canvas first.
+import { passesFor, type ReadbackSource } from '../render/renderer';
+import type { FrameState } from '../render/types';
+import type { Scene } from '../scene/scene';
+import type { Backend, BackendHost } from './backend';
+import type { SoftwareHost } from './software-host';
+
+/** Largest side of a software frame (the CPU's cost grows with the pixels; 4096 is a 4K canvas's side). */
+export const SOFTWARE_MAX_SIZE = 4096;
+
+export class SoftwareBackend implements Backend {
+  readonly kind = 'software';
+  /** A frame is drawing; another is wanted when it is back. */
+  busy = false;
+  /** Disposed: a frame still on its way is dropped. */
+  private disposed = false;
+  /** How frames reach the canvas: a 2D context, or (after WebGL used it) a bitmap renderer. */
+  private readonly out: CanvasRenderingContext2D | ImageBitmapRenderingContext | null;
+
+  constructor(private readonly host: BackendHost, private readonly software: SoftwareHost) {
+    const canvas = host.canvas;
+    this.out = canvas.getContext('2d', { alpha: false }) ?? canvas.getContext('bitmaprenderer');
+  }
+
+  get thread(): 'worker' | 'main' {
+    return this.software.thread;
+  }
+
+  /** ImageSink: the CPU reads an image's pixels; each image is decoded once per page, as for WebGL. */
+  setImage(url: string, image: TexImageSource | null): void {
+    this.software.setImage(url, image);
+  }
+
+  draw(state: FrameState, scene: Scene): void {
+    const canvas = this.host.canvas;
+    const { width, height } = canvas;
+    this.busy = true;
+    const frozen: FrameState = { ...state };
+    void this.software.render(frozen, scene).then((pixels) => {
+      if (this.disposed) return;
+      this.busy = false;
+      if (canvas.width !== width || canvas.height !== height) {
+        this.host.requestRender(); // resized while it drew: draw again at the new size
+        return;
+      }
+      const image = new ImageData(pixels as Uint8ClampedArray<ArrayBuffer>, width, height);
+      const out = this.out;
+      const glassSkip = frozen.view === 'final' && !scene.glass ? 'no glass' : undefined;
+      const done = () => {
+        if (this.disposed) return;
+        this.host.drawn(frozen, { time: frozen.time, width, height, drawCalls: 0, passes: passesFor(frozen.view, glassSkip) });
+        this.host.resume();
+      };
+      if (out && 'putImageData' in out) {
+        out.putImageData(image, 0, 0);
+        done();
+      } else if (out) {
+        // The canvas held WebGL's frames (a bitmap renderer): the frame counts once it is shown.
+        void createImageBitmap(image).then((b) => {
+          if (!this.disposed) (out as ImageBitmapRenderingContext).transferFromImageBitmap(b);
+          done();
+        });
+      } else done();
+    });
+  }
+
+  /** Drawn now, on this thread (capture is synchronous). */
+  capture(source: ReadbackSource, state: FrameState, scene: Scene): ImageData | null {
+    const s: FrameState = { ...state, view: source as FrameState['view'] };
+    const pixels = this.software.renderNow(s, scene) as Uint8ClampedArray<ArrayBuffer>;
+    return new ImageData(pixels, s.width, s.height);
+  }
+
+  stats(): null {
+    return null;
+  }
+
+  dispose(): null {
+    this.disposed = true;
+    this.busy = false;
+    this.software.dispose();
+    return null;
+  }
+}
