@@ -101,12 +101,12 @@ export default [
   },
   {
     name: 'C16 the frame setup leaves out the trackball turn of the objects (a drag turns nothing on screen)',
-    edits: [{ file: 'src/render/frame-setup.ts', find: '      this.modelMatrix(o, objects[i], s.time, objectsTurn);', replace: '      this.modelMatrix(o, objects[i], s.time, null);' }],
+    edits: [{ file: 'src/frame/frame-setup.ts', find: '      this.modelMatrix(o, objects[i], time, this.objectsTurn);', replace: '      this.modelMatrix(o, objects[i], time, null);' }],
     tests: [CONTROLS],
   },
   {
     name: 'C17 the frame setup leaves out the turn of the first light (a right-drag relights nothing)',
-    edits: [{ file: 'src/render/frame-setup.ts', find: '      const g = i === 0 ? lightTurn : null, t', replace: '      const g = null, t' }],
+    edits: [{ file: 'src/frame/frame-setup.ts', find: '      const g = i === 0 ? g0 : null, t', replace: '      const g = null, t' }],
     tests: [CONTROLS],
   },
 ];
