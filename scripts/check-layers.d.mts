@@ -2,3 +2,4 @@
 export function readLayers(markdown: string): string[][];
 export function importsOf(text: string): { spec: string; line: number }[];
 export function check(layers: string[][], src?: string): string[];
+export function sourceFiles(dir: string): string[];

@@ -23,7 +23,8 @@ export function readLayers(markdown) {
     .map((line) => line.split(/\s+/));
 }
 
-function sourceFiles(dir) {
+/** Every .ts file under `dir` (not .d.ts); check-sizes.mjs walks src/ with it too. */
+export function sourceFiles(dir) {
   const out = [];
   for (const entry of fs.readdirSync(dir, { withFileTypes: true })) {
     const p = path.join(dir, entry.name);

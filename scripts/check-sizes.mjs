@@ -8,6 +8,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseSync } from 'vite';
+import { sourceFiles } from './check-layers.mjs';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 export const MAX_FUNCTION_LINES = 80;
@@ -53,16 +54,6 @@ export function functionsOf(code, filename = 'file.ts') {
   };
   visit(program, null);
   return found;
-}
-
-function sourceFiles(dir) {
-  const out = [];
-  for (const entry of fs.readdirSync(dir, { withFileTypes: true })) {
-    const p = path.join(dir, entry.name);
-    if (entry.isDirectory()) out.push(...sourceFiles(p));
-    else if (/\.ts$/.test(entry.name) && !entry.name.endsWith('.d.ts')) out.push(p);
-  }
-  return out;
 }
 
 /** Every function and file under `root`/src over its limit, as a line each; `all` collects every function measured. */

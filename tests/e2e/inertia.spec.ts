@@ -82,13 +82,27 @@ function fitTau(times: number[], remaining: number[], atRelease: number) {
 
 const RATES = [13, 30, 144];
 
+type DecayRun = { fps: number; tau: number; turn: number; frames: number; meanMs: number; maxMs: number };
+
+/** The decay measured at each paced rate: τ ≤ 0.5 s in real time, the element's own τ, and the same turn as at 144 fps. */
+function expectWallClockDecay(what: string, runs: DecayRun[]): void {
+  console.log(`${what} inertia: ` + runs.map((r) => `${r.fps} fps (frames ${r.meanMs.toFixed(1)} ms, longest ${r.maxMs.toFixed(0)}): τ ${r.tau.toFixed(3)} s over ${r.frames} frames, turned ${r.turn.toFixed(2)}°`).join('; '));
+  for (const r of runs) {
+    expect(r.meanMs, `${r.fps} fps: the frames came at the paced rate or slower`).toBeGreaterThan(1000 / r.fps - 1);
+    expect(r.frames, `${r.fps} fps: frames in the fit`).toBeGreaterThanOrEqual(5);
+    expect(r.tau, `${r.fps} fps: τ in real time`).toBeLessThanOrEqual(0.5);
+    expect(r.tau, `${r.fps} fps: τ is the element's own`).toBeCloseTo(INERTIA_TAU, 1);
+    expect(r.turn, `${r.fps} fps: the turn after release, against 144 fps`).toBeCloseTo(runs[2].turn, 0);
+  }
+}
+
 test('trackball: after a flick the objects\' turn decays with τ ≤ 0.5 s in real time at 13, 30 and 144 frames/s, and turns as far at each', async ({ page }) => {
   await page.addInitScript(pacedFrames);
   await openPage(page);
   const { selector } = await mount(page, { time: 0, spin: 0, controls: 'trackball' }, { width: 160, height: 90 });
   const b = await box(page, selector);
   const cdp = await page.context().newCDPSession(page);
-  const runs: { fps: number; tau: number; turn: number; frames: number; meanMs: number; maxMs: number }[] = [];
+  const runs: DecayRun[] = [];
   for (const [i, fps] of RATES.entries()) {
     await page.evaluate((s) => { (document.querySelector(s) as unknown as ControlsElement).objectRotation = [0, 0, 0, 1]; }, selector);
     await startRecording(page, selector, fps);
@@ -99,14 +113,7 @@ test('trackball: after a flick the objects\' turn decays with τ ≤ 0.5 s in re
     const fit = fitTau(rec.samples.map((x) => x.t - rec.releaseAt), rec.samples.map((x) => quatAngle(x.q, final)), quatAngle(rec.releaseQ, final));
     runs.push({ fps, ...fit, turn: quatAngle(rec.releaseQ, final) });
   }
-  console.log('trackball inertia: ' + runs.map((r) => `${r.fps} fps (frames ${r.meanMs.toFixed(1)} ms, longest ${r.maxMs.toFixed(0)}): τ ${r.tau.toFixed(3)} s over ${r.frames} frames, turned ${r.turn.toFixed(2)}°`).join('; '));
-  for (const r of runs) {
-    expect(r.meanMs, `${r.fps} fps: the frames came at the paced rate or slower`).toBeGreaterThan(1000 / r.fps - 1);
-    expect(r.frames, `${r.fps} fps: frames in the fit`).toBeGreaterThanOrEqual(5);
-    expect(r.tau, `${r.fps} fps: τ in real time`).toBeLessThanOrEqual(0.5);
-    expect(r.tau, `${r.fps} fps: τ is the element's own`).toBeCloseTo(INERTIA_TAU, 1);
-    expect(r.turn, `${r.fps} fps: the turn after release, against 144 fps`).toBeCloseTo(runs[2].turn, 0);
-  }
+  expectWallClockDecay('trackball', runs);
 });
 
 test('orbit: after a flick the camera\'s turn decays with τ ≤ 0.5 s in real time at 13, 30 and 144 frames/s, and turns as far at each', async ({ page }) => {
@@ -115,7 +122,7 @@ test('orbit: after a flick the camera\'s turn decays with τ ≤ 0.5 s in real t
   const { selector } = await mount(page, { time: 0, spin: 0, controls: 'orbit', 'camera-position': '0 1 6', 'camera-target': '0 0 0' }, { width: 160, height: 90 });
   const b = await box(page, selector);
   const cdp = await page.context().newCDPSession(page);
-  const runs: { fps: number; tau: number; turn: number; frames: number; meanMs: number; maxMs: number }[] = [];
+  const runs: DecayRun[] = [];
   for (const [i, fps] of RATES.entries()) {
     await page.evaluate((s) => { const el = document.querySelector(s)!; el.setAttribute('camera-position', '0 1 6'); el.setAttribute('camera-target', '0 0 0'); }, selector);
     await startRecording(page, selector, fps);
@@ -127,14 +134,7 @@ test('orbit: after a flick the camera\'s turn decays with τ ≤ 0.5 s in real t
     const fit = fitTau(rec.samples.map((x) => x.t - rec.releaseAt), rec.samples.map((x) => left(x.yaw)), left(rec.releaseYaw));
     runs.push({ fps, ...fit, turn: left(rec.releaseYaw) });
   }
-  console.log('orbit inertia: ' + runs.map((r) => `${r.fps} fps (frames ${r.meanMs.toFixed(1)} ms, longest ${r.maxMs.toFixed(0)}): τ ${r.tau.toFixed(3)} s over ${r.frames} frames, turned ${r.turn.toFixed(2)}°`).join('; '));
-  for (const r of runs) {
-    expect(r.meanMs, `${r.fps} fps: the frames came at the paced rate or slower`).toBeGreaterThan(1000 / r.fps - 1);
-    expect(r.frames, `${r.fps} fps: frames in the fit`).toBeGreaterThanOrEqual(5);
-    expect(r.tau, `${r.fps} fps: τ in real time`).toBeLessThanOrEqual(0.5);
-    expect(r.tau, `${r.fps} fps: τ is the element's own`).toBeCloseTo(INERTIA_TAU, 1);
-    expect(r.turn, `${r.fps} fps: the turn after release, against 144 fps`).toBeCloseTo(runs[2].turn, 0);
-  }
+  expectWallClockDecay('orbit', runs);
 });
 
 test('orbit: a flick turns on at its release rate (no 6.3°/s cap), and its one camera-change comes as the rate falls below 0.05°/s, τ·ln(r₀ ÷ 0.05°/s) after release', async ({ page }) => {
