@@ -30,7 +30,7 @@ function reference(view: BenchView): ReferenceImage {
   const state = {
     width: SCENE.width, height: SCENE.height, time: SCENE.time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5,
     ior: 1.5, fresnel: 'exact' as const, fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch,
-    view: 'final' as const,
+    colorSpace: 'none' as const, view: 'final' as const,
   };
   const sources = ['../src/reference/', '../src/scene/', '../src/math/'].map((d) => new URL(d, import.meta.url));
   const key = createHash('sha256').update(JSON.stringify({ state, REFERENCE_SPP_AXIS, v: sourcesVersion(sources) })).digest('hex').slice(0, 16);

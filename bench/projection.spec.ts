@@ -25,7 +25,7 @@ type Bench = { bench: BenchApi };
 function psnrOf(view: BenchView, rgba: Uint8Array) {
   const ref = renderReference({
     width: SCENE.width, height: SCENE.height, time: SCENE.time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5,
-    ior: 1.5, fresnel: 'exact', fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, view: 'final',
+    ior: 1.5, fresnel: 'exact', fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace: 'none', view: 'final',
     projection: view.projection,
   }, { samplesPerAxis: SPP_AXIS });
   return compareImages(ref, rgba).psnr;

@@ -36,7 +36,7 @@ function reference(i: number): ReferenceImage {
   const b = BENCH_SCENES[i];
   const view: FrameState = {
     width: SIZE.width, height: SIZE.height, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: b.view.cameraPosition, yaw: b.view.yaw, pitch: b.view.pitch, view: 'final',
+    fov: 60, cameraPosition: b.view.cameraPosition, yaw: b.view.yaw, pitch: b.view.pitch, colorSpace: 'none', view: 'final',
     reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
   };
   return renderScene(b.scene, view, { samplesPerAxis: SPP_AXIS });

@@ -21,7 +21,7 @@ const DEFAULT_VIEW: BenchView = { name: 'default', cameraPosition: [...DEFAULT_C
 function frameState(size: Size, time: number, view: BenchView = DEFAULT_VIEW): FrameState {
   return {
     width: size.width, height: size.height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5,
-    fresnel: DEFAULTS.fresnel, fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, view: 'final',
+    fresnel: DEFAULTS.fresnel, fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace: 'none', view: 'final',
     reflectionScale: DEFAULTS.reflectionScale, samples: DEFAULTS.samples, shading: DEFAULTS.shading, tessellation: DEFAULTS.tessellation,
     reflectionFormat: DEFAULTS.reflectionFormat,
   };

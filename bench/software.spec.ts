@@ -47,7 +47,7 @@ const api = (page: Page) => ({
 function state(size: Size, view: BenchView, time = PIXEL_TIME): FrameState {
   return {
     width: size.width, height: size.height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, view: 'final',
+    fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace: 'none', view: 'final',
     reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
   };
 }

@@ -19,7 +19,7 @@ const state: FrameState = {
   ior: num('ior', 1.5), fresnel: (q.get('fresnel') ?? 'exact') as FrameState['fresnel'], fov: 60,
   cameraPosition: [num('x', DEFAULT_CAMERA_POSITION[0]), num('y', DEFAULT_CAMERA_POSITION[1]), num('z', DEFAULT_CAMERA_POSITION[2])],
   yaw: num('yaw', DEFAULT_CAMERA_ROTATION[0]), pitch: num('pitch', DEFAULT_CAMERA_ROTATION[1]),
-  view: 'final', reflectionScale: num('scale', 1), samples, shading: (q.get('shading') ?? 'phong') as FrameState['shading'], tessellation: num('segments', 64),
+  colorSpace: 'none', view: 'final', reflectionScale: num('scale', 1), samples, shading: (q.get('shading') ?? 'phong') as FrameState['shading'], tessellation: num('segments', 64),
   reflectionFormat: 'rgba8',
 };
 const peerOptions: PeerOptions = {

@@ -1,6 +1,7 @@
 // THE attribute table: name, type, default, range and fallback of every attribute (SPEC §2).
 // Parsing, property reflection, README and fuzz tests all read it; nothing here throws.
 import { FRESNEL_MODELS, type FresnelModel } from '../math/fresnel';
+import { COLOR_SPACES, type ColorSpace } from '../math/srgb';
 import { clampPitch, wrapYaw, type Projection } from '../math/camera';
 import { browserCssColor, parseCssColor } from './css-color';
 
@@ -57,6 +58,8 @@ export interface SceneAttributes {
   pixelRatio: number | 'auto';
   /** Storage of the reflection framebuffer. */
   reflectionFormat: 'rgba8' | 'rgba16f';
+  /** Linear light with sRGB in and out, or values used as stored (SPEC §13). */
+  colorSpace: ColorSpace;
   /** Centre of the glass rectangle. */
   glassCenter: Vec3Tuple;
   /** Unit normal of the glass. */
@@ -306,6 +309,7 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
   autoOrNumberSpec('tessellation', 'tessellation', 4, 512, true, "sphere segments 4..512, or auto (from the sphere's size on screen)"),
   autoOrNumberSpec('pixelRatio', 'pixel-ratio', 0.25, 4, false, 'drawing-buffer pixels per CSS pixel, or auto (devicePixelRatio)'),
   keywordSpec('reflectionFormat', 'reflection-format', ['rgba8', 'rgba16f'], 'reflection storage: rgba8, or rgba16f (half float, where supported)'),
+  keywordSpec('colorSpace', 'color-space', COLOR_SPACES, 'srgb: linear-light rendering with sRGB in and out; none: colours used as stored (the course programs)'),
   tupleSpec('glassCenter', 'glass-center', [0, 1, 0], '"x y z"', 'centre of the glass rectangle', clampCoords),
   tupleSpec('glassNormal', 'glass-normal', [0, 0, 1], '"x y z"', 'normal of the glass (normalised); "0 1 0" makes a glass floor', (xs) => {
     const l = Math.hypot(xs[0], xs[1], xs[2]);

@@ -9,7 +9,7 @@ export class FrameStates {
   readonly current: FrameState = {
     width: 1, height: 1, time: 0, spin: 0, cubeDistance: 0, transparency: 0, ior: 1, fresnel: 'exact',
     fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final',
-    reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
+    reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8', colorSpace: 'srgb',
     projection: 'perspective', target: null,
   };
   /** The state of the last frame drawn; null before the first. */
@@ -36,6 +36,7 @@ export class FrameStates {
     s.shading = v.shading;
     s.tessellation = v.tessellation;
     s.reflectionFormat = v.reflectionFormat;
+    s.colorSpace = v.colorSpace;
     return s;
   }
 

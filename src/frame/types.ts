@@ -1,10 +1,11 @@
 // Plain data both renderers take and give back (the frame's state, its reports): no DOM, no GL handles.
 import type { FresnelModel } from '../math/fresnel';
+import type { ColorSpace } from '../math/srgb';
 import type { Projection } from '../math/camera';
 import type { CourseCamera } from '../math/course-camera';
 import type { SceneTurn } from '../scene/group-rotation';
 
-export type { Projection };
+export type { Projection, ColorSpace };
 
 export type PassName = 'reflection' | 'scene' | 'glass';
 
@@ -34,6 +35,11 @@ export interface FrameState {
   tessellation: number | 'auto';
   /** Storage of the reflection: 8-bit, or half float (where the context can render to it). */
   reflectionFormat: ReflectionFormat;
+  /**
+   * SPEC §13: `srgb` decodes colour data (images, the procedural texture, the background), mixes
+   * light linearly and encodes the image once; `none` uses every value as stored.
+   */
+  colorSpace: ColorSpace;
   /** Absent: perspective. Orthographic keeps the reflection (SPEC §10). */
   projection?: Projection;
   /** The camera target, if any: only the orthographic size reads it (depth of this point). */

@@ -301,7 +301,7 @@ for (const glass of [false, true]) {
     const scene = await sceneOf(page);
     const state: FrameState = {
       width: image.width, height: image.height, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.4, ior: 1.5, fresnel: 'exact',
-      fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final', reflectionScale: 1, samples: 4, shading: 'phong',
+      fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 4, shading: 'phong',
       tessellation: 'auto', reflectionFormat: 'rgba8', courseCamera: camera('camera.cfg'),
     };
     const ref = renderScene(scene, state, { samplesPerAxis: 4 });

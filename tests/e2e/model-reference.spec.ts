@@ -83,7 +83,7 @@ for (const renderer of ['webgl', 'software'] as const) test(`${renderer}: a text
   const state: FrameState = {
     width: image.width, height: image.height, time: 0, spin: 0, cubeDistance: 0.75, transparency: view.transparency,
     ior: view.ior, fresnel: 'exact', fov: view.fov, cameraPosition: view.position as [number, number, number],
-    yaw: view.rotation[0], pitch: view.rotation[1], view: 'final',
+    yaw: view.rotation[0], pitch: view.rotation[1], colorSpace: 'none', view: 'final',
     reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
   };
   const ref = renderScene({ ...scene, objects }, state, { samplesPerAxis: 4, images });

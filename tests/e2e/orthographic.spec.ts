@@ -15,7 +15,7 @@ const TIME = 1.25;
 function reference(width: number, height: number, time: number, projection: Projection, samplesPerAxis = 1): ReferenceImage {
   return renderReference({
     width, height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov: 60,
-    cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], view: 'final',
+    cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace: 'none', view: 'final',
     projection,
   }, { samplesPerAxis });
 }

@@ -34,7 +34,7 @@ const sceneAttrs = (s: Scene): Attrs => ({ 'cube-distance': s.cubeDistance, tran
 
 function reference(view: 'final' | 'reflection', pose: Pose, scene: Scene): ReferenceImage {
   return renderReference({
-    ...SIZE, time: TIME, spin: 0.8, fov: 60, view, cameraPosition: pose.position, yaw: pose.yaw, pitch: pose.pitch, ...scene,
+    ...SIZE, time: TIME, spin: 0.8, fov: 60, colorSpace: 'none', view, cameraPosition: pose.position, yaw: pose.yaw, pitch: pose.pitch, ...scene,
   }, { samplesPerAxis: SPP });
 }
 

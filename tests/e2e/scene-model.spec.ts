@@ -22,7 +22,7 @@ function state(position: Vec3, target: Vec3, view: FrameState['view'] = 'final')
   const { yaw, pitch } = lookAt(position, target);
   return {
     width: W, height: H, time: 0, spin: 0, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: position, yaw, pitch, view, reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 64,
+    fov: 60, cameraPosition: position, yaw, pitch, colorSpace: 'none', view, reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 64,
     reflectionFormat: 'rgba8',
   };
 }

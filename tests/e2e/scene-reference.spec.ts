@@ -21,7 +21,7 @@ function state(position: Vec3, target: Vec3, shading: Shading = 'phong'): FrameS
   const { yaw, pitch } = lookAt(position, target);
   return {
     width: W, height: H, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov: 60,
-    cameraPosition: position, yaw, pitch, view: 'final', reflectionScale: 1, samples: 4, shading, tessellation: 'auto',
+    cameraPosition: position, yaw, pitch, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 4, shading, tessellation: 'auto',
     reflectionFormat: 'rgba8',
   };
 }

@@ -217,7 +217,7 @@ test.describe('SPEC §6 extremes', () => {
     const p = pose(1e7 - 10);
     const ref = renderReference({
       width: SIZE.width, height: SIZE.height, time: 1.25, spin: 0.8, cubeDistance: 1e7 - 10, transparency: 0.5, ior: 1.5,
-      fresnel: 'exact', fov: 60, view: 'final', cameraPosition: p.position, yaw: p.yaw, pitch: p.pitch,
+      fresnel: 'exact', fov: 60, colorSpace: 'none', view: 'final', cameraPosition: p.position, yaw: p.yaw, pitch: p.pitch,
     }, { samplesPerAxis: 4 });
     const cmp = compareWithReference(ref, (await capture(page, undefined, selector)).data);
     debugLog(`cube at 1e7 − 10 vs reference: PSNR ${cmp.psnr.all.toFixed(1)} dB, max ${cmp.maxError.toFixed(0)}`);
@@ -465,7 +465,7 @@ test.describe('SPEC §6 error against the float64 reference', () => {
         'cube-distance': s.cubeDistance, transparency: s.transparency, ior: s.ior,
       });
       const ref = renderReference({
-        width: image.width, height: image.height, time: 1.25, spin: 0.8, fresnel: 'exact', fov: 60, view: 'final',
+        width: image.width, height: image.height, time: 1.25, spin: 0.8, fresnel: 'exact', fov: 60, colorSpace: 'none', view: 'final',
         cameraPosition: pose.position, yaw: pose.yaw, pitch: pose.pitch, ...s,
       }, { samplesPerAxis: SPP });
       const cmp = compareWithReference(ref, image.data);

@@ -51,7 +51,7 @@ describe('defaults', () => {
     const names = ATTRIBUTES.map((s) => s.attribute);
     expect(new Set(names).size).toBe(names.length);
     expect([...names].sort()).toEqual([
-      'background', 'camera-position', 'camera-rotation', 'camera-src', 'camera-target', 'controls', 'cube-distance', 'debug-view', 'fov',
+      'background', 'camera-position', 'camera-rotation', 'camera-src', 'camera-target', 'color-space', 'controls', 'cube-distance', 'debug-view', 'fov',
       'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'projection', 'reflection-format',
       'reflection-scale', 'renderer', 'samples', 'shading', 'spin', 'tessellation', 'time', 'transparency',
     ]);
@@ -260,6 +260,7 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
           case 'debugView': expect(DEBUG_VIEWS).toContain(v); break;
           case 'shading': expect(['phong', 'gouraud', 'flat']).toContain(v); break;
           case 'reflectionFormat': expect(['rgba8', 'rgba16f']).toContain(v); break;
+          case 'colorSpace': expect(['srgb', 'none']).toContain(v); break;
           case 'projection': expect(['perspective', 'orthographic']).toContain(v); break;
           case 'renderer': expect(['auto', 'webgl', 'software']).toContain(v); break;
           case 'samples': expect([0, 2, 4]).toContain(v); break;

@@ -26,7 +26,7 @@ const OBLIQUE = camera([3.6, 2.4, 4], [0, 1, 0], [0, 1, 0], 1, 0.6, 0.5);
 function state(cam: CourseCamera | null, over: Partial<FrameState> = {}): FrameState {
   return {
     width: W, height: H, time: 1.25, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: [9, 9, 9], yaw: 0, pitch: 0, view: 'final', reflectionScale: 1, samples: 0,
+    fov: 60, cameraPosition: [9, 9, 9], yaw: 0, pitch: 0, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0,
     shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8', courseCamera: cam, ...over,
   };
 }

@@ -14,7 +14,7 @@ import type { FrameState } from '../../src/frame/types';
 
 const STATE: FrameState = {
   width: 320, height: 180, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-  fov: 60, cameraPosition: [0, 1, 6], yaw: -90, pitch: 0, view: 'scene', reflectionScale: 1, samples: 0,
+  fov: 60, cameraPosition: [0, 1, 6], yaw: -90, pitch: 0, colorSpace: 'none', view: 'scene', reflectionScale: 1, samples: 0,
   shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
 };
 

@@ -72,7 +72,7 @@ describe('reflection-format', () => {
 describe('auto tessellation', () => {
   const state = (z: number, height = 360): FrameState => ({
     width: 640, height, time: 0, spin: 0, cubeDistance: 2.5, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: [1, 1, z], yaw: -90, pitch: 0, view: 'final',
+    fov: 60, cameraPosition: [1, 1, z], yaw: -90, pitch: 0, colorSpace: 'none', view: 'final',
     reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
   });
 

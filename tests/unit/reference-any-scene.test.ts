@@ -11,12 +11,12 @@ import { projectToPixels } from './helpers';
 
 const DEFAULT_VIEW: ReferenceState = {
   width: 96, height: 54, time: 1.25, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-  fov: 60, cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], view: 'final',
+  fov: 60, cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace: 'none', view: 'final',
 };
 /** Looking down −Z from (0, 0, 10). */
 const FRONT: ViewState = {
   width: 160, height: 120, time: 0, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov: 40,
-  cameraPosition: [0, 0, 10], yaw: -90, pitch: 0, view: 'scene',
+  cameraPosition: [0, 0, 10], yaw: -90, pitch: 0, colorSpace: 'none', view: 'scene',
 };
 const WHITE = new Map([['white.png', { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }]]);
 const MATTE: Material = {

@@ -7,7 +7,7 @@ import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE
 const DEFAULT_VIEW: ReferenceState = {
   width: 64, height: 36, time: 1.25, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5,
   fresnel: 'exact', fov: 60, cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
-  view: 'final',
+  colorSpace: 'none', view: 'final',
 };
 const OBLIQUE_VIEW: ReferenceState = { ...DEFAULT_VIEW, cameraPosition: [2.5, 1.6, 5], yaw: -115, pitch: -8 };
 

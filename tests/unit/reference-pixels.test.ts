@@ -6,7 +6,7 @@ import { texel } from '../../src/scene/procedural-texture';
 
 const STATE: ReferenceState = {
   width: 33, height: 33, time: 0, spin: 0, cubeDistance: 2.5, transparency: 0.5, ior: 1.5,
-  fresnel: 'exact', fov: 60, cameraPosition: [0, 1, 6], yaw: -90, pitch: 0, view: 'final',
+  fresnel: 'exact', fov: 60, cameraPosition: [0, 1, 6], yaw: -90, pitch: 0, colorSpace: 'none', view: 'final',
 };
 const BG = 0.1;
 const L = [0.4, 1, 0.6].map((c) => c / Math.hypot(0.4, 1, 0.6));

@@ -9,7 +9,7 @@ import { projectToPixels } from './helpers';
 
 const STATE: ReferenceState = {
   width: 320, height: 180, time: 0, spin: 0, cubeDistance: 2.5, transparency: 0.5, ior: 1.5,
-  fresnel: 'exact', fov: 60, cameraPosition: [2, 2, 6], yaw: -109.4, pitch: -6.3, view: 'final',
+  fresnel: 'exact', fov: 60, cameraPosition: [2, 2, 6], yaw: -109.4, pitch: -6.3, colorSpace: 'none', view: 'final',
 };
 const DEFAULT_VIEW: ReferenceState = {
   ...STATE, width: 320, height: 180, time: 1.25, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE,

@@ -17,7 +17,7 @@ import { expectClose } from './helpers';
 
 const STATE: FrameState = {
   width: 48, height: 27, time: 0.7, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-  fov: 60, cameraPosition: [3.6, 2.4, 0.2], yaw: -169, pitch: -23.6, view: 'final', reflectionScale: 1, samples: 0,
+  fov: 60, cameraPosition: [3.6, 2.4, 0.2], yaw: -169, pitch: -23.6, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0,
   shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
 };
 

@@ -12,7 +12,7 @@ import type { Light, Material, Scene } from '../../src/scene/scene';
 const N = 17, EYE = [0, 0, 2];
 const STATE: FrameState = {
   width: N, height: N, time: 0, spin: 0, cubeDistance: 0, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-  fov: 90, cameraPosition: [EYE[0], EYE[1], EYE[2]], yaw: -90, pitch: 0, view: 'final', reflectionScale: 1, samples: 0,
+  fov: 90, cameraPosition: [EYE[0], EYE[1], EYE[2]], yaw: -90, pitch: 0, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0,
   shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
 };
 const WHITE = new Map([['white', { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }]]);

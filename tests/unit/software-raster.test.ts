@@ -190,7 +190,7 @@ describe('shared edges', () => {
     const white = new Map([['white', { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }]]);
     const state: FrameState = {
       width: W, height: W, time: 0, spin: 0, cubeDistance: 0, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-      fov: 90, cameraPosition: [0, 0, 2], yaw: -90, pitch: 0, view: 'final', reflectionScale: 1, samples: 0,
+      fov: 90, cameraPosition: [0, 0, 2], yaw: -90, pitch: 0, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0,
       shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
     };
     const rgba = new SoftwareRenderer().render(state, scene, white);

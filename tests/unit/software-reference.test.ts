@@ -63,7 +63,7 @@ const describe2 = (c: ImageComparison): string => {
 const STATE: FrameState = {
   width: 160, height: 90, time: 1.25, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
   fov: 60, cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
-  view: 'final', reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
+  colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
 };
 
 const MATTE: Material = {

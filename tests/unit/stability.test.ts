@@ -23,7 +23,7 @@ const CUBE_CENTRE = (d: number): Vec3 => [-1, 1, d];
 function state(overrides: Partial<FrameState> = {}): FrameState {
   return {
     width: W, height: H, time: 1.25, spin: 0.8, cubeDistance: 2.5, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: [5.25, 3, 1], yaw: -170.8, pitch: -19.6, view: 'final',
+    fov: 60, cameraPosition: [5.25, 3, 1], yaw: -170.8, pitch: -19.6, colorSpace: 'none', view: 'final',
     reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
     ...overrides,
   };
