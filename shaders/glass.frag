@@ -9,6 +9,7 @@ uniform float uTransparency;
 uniform float uIor;
 uniform vec3 uBodyTint;         // tint ⊙ darkness
 uniform vec4 uViewVector;       // V = normalize(xyz − w·relPos): perspective (0,0,0,1), orthographic (−forward, 0)
+uniform float uLinearFrame;     // 1: the frame is in linear light, encoded at the end (SPEC §13)
 
 in highp vec3 vRelPos;
 in vec3 vNormal;
@@ -39,7 +40,10 @@ void main() {
   float c = clamp(abs(dot(normalize(vNormal), v)), 0.0, 1.0);
   float f = fresnel(c);
 #ifdef OUTPUT_FRESNEL
-  outColor = vec4(f, f, f, 1.0);
+  // F is a number, shown unencoded: in a linear frame it is written decoded, so the final
+  // encode gives F back.
+  float g = uLinearFrame > 0.5 ? (f <= 0.04045 ? f / 12.92 : pow((f + 0.055) / 1.055, 2.4)) : f;
+  outColor = vec4(g, g, g, 1.0);
 #else
   vec2 uv = vReflectionClip.xy / vReflectionClip.w * 0.5 + 0.5;
   // Clamped as an 8-bit target would: the reflection is what pass 1 shows, highlights included.

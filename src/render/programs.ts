@@ -5,6 +5,7 @@ import glassVert from '../../shaders/glass.vert?raw';
 import glassFrag from '../../shaders/glass.frag?raw';
 import blitVert from '../../shaders/blit.vert?raw';
 import blitFrag from '../../shaders/blit.frag?raw';
+import encodeFrag from '../../shaders/encode.frag?raw';
 import lighting from '../../shaders/lighting.glsl?raw';
 import type { FresnelModel } from '../math/fresnel';
 import type { Shading } from '../frame/types';
@@ -57,6 +58,7 @@ export class ProgramCache {
   private standards: Partial<Record<ClipMode, Partial<Record<Shading, (Program | undefined)[]>>>> = {};
   private glasses: Partial<Record<FresnelModel, { colour?: Program; fresnel?: Program }>> = {};
   private blitProgram: Program | undefined;
+  private encodeProgram: Program | undefined;
   /**
    * Variants that failed to compile, by key: asked again (the same state drawn again), they throw
    * the same error without compiling again. A new context means a new cache, so a restore retries.
@@ -92,6 +94,11 @@ export class ProgramCache {
     return (this.blitProgram ??= this.build('blit', blitVert, blitFrag, []));
   }
 
+  /** The frame's one sRGB encode (SPEC §13), with the blit's full-screen triangle. */
+  encode(): Program {
+    return (this.encodeProgram ??= this.build('encode', blitVert, encodeFrag, []));
+  }
+
   private build(key: string, vert: string, frag: string, header: string[]): Program {
     const known = this.broken.get(key);
     if (known) throw known;
@@ -110,7 +117,7 @@ export class ProgramCache {
     this.all.length = 0;
     this.standards = {};
     this.glasses = {};
-    this.blitProgram = undefined;
+    this.blitProgram = this.encodeProgram = undefined;
     this.broken.clear();
   }
 }

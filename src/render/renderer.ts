@@ -10,8 +10,10 @@ import { findNonFinite } from '../frame/finite-check';
 import { glassSkipReason, PASSES, passesFor } from '../frame/pass-reports';
 import { maxTargetSize } from './gl/limits';
 import { ResourceCounter } from './gl/resource-counter';
-import { Texture } from './gl/texture';
 import { TextureCache } from './texture-cache';
+import { LinearFrame } from './linear-frame';
+import { srgbToLinear } from '../math/srgb';
+import { readFramebuffer, type Pixels } from './gl/read-pixels';
 import { SharedResources } from './gl/shared-resources';
 import { FrameSetup } from '../frame/frame-setup';
 import { ProgramCache } from './programs';
@@ -33,12 +35,7 @@ export interface RendererOptions {
   checks?: boolean;
 }
 
-export interface Pixels {
-  width: number;
-  height: number;
-  /** RGBA8, top row first. */
-  data: Uint8ClampedArray<ArrayBuffer>;
-}
+export type { Pixels };
 
 export type ReadbackSource = 'screen' | 'reflection' | 'scene' | 'final';
 
@@ -52,6 +49,9 @@ function setViewport(out: Viewport, x: number, y: number, width: number, height:
   return out;
 }
 
+/** Is this frame drawn in linear light and encoded at the end? */
+export const linearFrame = (state: FrameState): boolean => state.colorSpace === 'srgb' && state.view !== 'fresnel';
+
 export class Renderer {
   private readonly counter = new ResourceCounter();
   private readonly programs: ProgramCache;
@@ -63,8 +63,11 @@ export class Renderer {
   private readonly defaultScene = new DefaultSceneCache();
   /** Programs, the procedural texture and meshes, shared with every renderer on this context. */
   private readonly shared: SharedResources;
-  private readonly texture: Texture;
   private readonly textures: TextureCache;
+  /** The frame in linear light and its final encode (SPEC §13, `color-space="srgb"`). */
+  private readonly linearFrame: LinearFrame;
+  /** The clear colour in the frame's colour space. */
+  private readonly background = [0, 0, 0];
   private reflection: RenderTarget;
   private captureTarget: RenderTarget | null = null;
   /** Multisampled stand-ins, created only when `samples` > 0. */
@@ -109,14 +112,14 @@ export class Renderer {
     this.glassMeshFrame = this.setup.glass;
     this.maxSamples = gl.getParameter(gl.MAX_SAMPLES) as number;
     this.maxTargetSize = maxTargetSize(gl);
-    this.texture = this.shared.texture;
-    this.textures = new TextureCache(gl, c, this.texture);
+    this.textures = new TextureCache(gl, c, this.shared);
     this.canHalfFloat = gl.getExtension('EXT_color_buffer_float') !== null;
     this.reflection = new RenderTarget(gl, c);
     this.blitVao = gl.createVertexArray()!;
     c.add('vertexArrays');
+    this.linearFrame = new LinearFrame(gl, c, this.programs, this.blitVao);
     this.ctx = {
-      gl, programs: this.programs, objectMeshes: this.objectMeshes, glassMesh: this.glassMesh, texture: this.texture, textures: this.textures,
+      gl, programs: this.programs, objectMeshes: this.objectMeshes, glassMesh: this.glassMesh, textures: this.textures, background: this.background,
       setup: this.setup, state: undefined as unknown as FrameState, scene: undefined as unknown as Scene,
       clipExtension: gl.getExtension('WEBGL_clip_cull_distance') as { CLIP_DISTANCE0_WEBGL: number } | null,
       cull: true,
@@ -155,17 +158,17 @@ export class Renderer {
     const gl = this.gl;
     if (source === 'screen') {
       this.draw(state, null);
-      return this.readFramebuffer(null, state.width, state.height);
+      return readFramebuffer(this.gl, null, state.width, state.height);
     }
     this.prepare(state);
     if (source === 'reflection') {
       this.runReflection();
-      return this.readFramebuffer(this.reflection.framebuffer, this.reflection.width, this.reflection.height, this.reflection.halfFloat);
+      return readFramebuffer(this.gl, this.reflection.framebuffer, this.reflection.width, this.reflection.height, this.reflection.halfFloat, state.colorSpace === 'srgb');
     }
     const target = (this.captureTarget ??= new RenderTarget(gl, this.counter));
     target.setSize(state.width, state.height);
     this.draw({ ...state, view: source }, target.framebuffer);
-    return this.readFramebuffer(target.framebuffer, target.width, target.height);
+    return readFramebuffer(this.gl, target.framebuffer, target.width, target.height);
   }
 
   /**
@@ -204,6 +207,7 @@ export class Renderer {
     this.textures.dispose();
     this.shared.release();
     this.reflection.dispose();
+    this.linearFrame.dispose();
     this.captureTarget?.dispose();
     this.captureTarget = null;
     gl.deleteVertexArray(this.blitVao);
@@ -213,6 +217,10 @@ export class Renderer {
   private prepare(state: FrameState): void {
     this.ctx.state = state;
     const scene = this.ctx.scene;
+    // SPEC §13: colour data (textures, the background) decoded in srgb; light is mixed linearly.
+    const srgb = state.colorSpace === 'srgb';
+    this.textures.srgb = srgb;
+    for (let k = 0; k < 3; k++) this.background[k] = srgb ? srgbToLinear(scene.background[k]) : scene.background[k];
     this.setup.update(state, scene);
     this.objectMeshes.trim(scene.objects.length);
     this.objectMeshes.beginFrame(this.setup.halfHeight);
@@ -231,12 +239,13 @@ export class Renderer {
     // rgba16f: at grazing incidence F nears 1 and an 8-bit reflection's rounding shows through
     // undimmed (+3.6 dB on the glass at 89° in the bench); it falls back to rgba8 where the
     // context cannot render to half float.
-    const half = state.reflectionFormat === 'rgba16f' && this.canHalfFloat;
-    if (half !== this.reflection.halfFloat) {
+    // In linear light an 8-bit reflection is held encoded (SRGB8_ALPHA8): linear in 8 bits bands.
+    const format = state.reflectionFormat === 'rgba16f' && this.canHalfFloat ? 'rgba16f' : srgb ? 'srgb8' : 'rgba8';
+    if (format !== this.reflection.format) {
       this.reflection.dispose();
       this.reflectionMsaa?.dispose();
       this.reflectionMsaa = null;
-      this.reflection = new RenderTarget(this.gl, this.counter, half);
+      this.reflection = new RenderTarget(this.gl, this.counter, format);
     }
     const scale = state.reflectionScale;
     const max = this.maxTargetSize;
@@ -262,7 +271,7 @@ export class Renderer {
     this.ctx.scissor = scissored && this.optimize ? this.reflectionScissor() : null;
     const samples = this.samplesFor(this.ctx.state);
     if (samples === 0) return reflectionPass(this.ctx, this.reflection.framebuffer, width, height);
-    const msaa = (this.reflectionMsaa ??= new MultisampleTarget(this.gl, this.counter, this.reflection.halfFloat));
+    const msaa = (this.reflectionMsaa ??= new MultisampleTarget(this.gl, this.counter, this.reflection.format));
     msaa.setSize(width, height, samples);
     const n = reflectionPass(this.ctx, msaa.framebuffer, width, height);
     msaa.resolve(this.reflection.framebuffer);
@@ -273,6 +282,11 @@ export class Renderer {
   private draw(state: FrameState, destination: WebGLFramebuffer | null): number {
     this.prepare(state);
     const samples = this.samplesFor(state);
+    // The fresnel view is a number, not a picture: drawn as stored in either space (SPEC §13).
+    if (linearFrame(state)) {
+      const n = this.drawView(state, this.linearFrame.begin(state.width, state.height, samples));
+      return n + this.linearFrame.end(destination);
+    }
     if (samples === 0) return this.drawView(state, destination);
     const msaa = (this.mainMsaa ??= new MultisampleTarget(this.gl, this.counter));
     msaa.setSize(state.width, state.height, samples);
@@ -287,7 +301,7 @@ export class Renderer {
     const ctx = this.ctx;
     switch (state.view) {
       case 'scene':
-        beginTarget(this.gl, framebuffer, full, this.ctx.scene.background);
+        beginTarget(this.gl, framebuffer, full, this.background);
         return scenePass(ctx);
       case 'fresnel':
         return this.drawFresnel(framebuffer, full);
@@ -299,11 +313,11 @@ export class Renderer {
         return this.drawTiles(framebuffer, state.width, state.height);
       default: {
         if (this.glassSkipReason !== undefined) {
-          beginTarget(this.gl, framebuffer, full, this.ctx.scene.background);
+          beginTarget(this.gl, framebuffer, full, this.background);
           return scenePass(ctx);
         }
         const n = this.runReflection(true);
-        beginTarget(this.gl, framebuffer, full, this.ctx.scene.background);
+        beginTarget(this.gl, framebuffer, full, this.background);
         return n + scenePass(ctx) + glassPass(ctx, this.reflection.color);
       }
     }
@@ -327,17 +341,17 @@ export class Renderer {
     const t = this.tile;
     let n = this.runReflection();
     n += this.blit(framebuffer, setViewport(t, 0, bottom, left, top));
-    beginTarget(this.gl, framebuffer, setViewport(t, left, bottom, right, top), this.ctx.scene.background);
+    beginTarget(this.gl, framebuffer, setViewport(t, left, bottom, right, top), this.background);
     n += scenePass(ctx);
     n += this.drawFresnel(framebuffer, setViewport(t, 0, 0, left, bottom));
-    beginTarget(this.gl, framebuffer, setViewport(t, left, 0, right, bottom), this.ctx.scene.background);
+    beginTarget(this.gl, framebuffer, setViewport(t, left, 0, right, bottom), this.background);
     n += scenePass(ctx) + glassPass(ctx, this.reflection.color);
     return n;
   }
 
   private blit(framebuffer: WebGLFramebuffer | null, vp: Viewport): number {
     const gl = this.gl;
-    beginTarget(gl, framebuffer, vp, this.ctx.scene.background);
+    beginTarget(gl, framebuffer, vp, this.background);
     const p = this.programs.blit();
     p.use();
     gl.uniform1i(p.location('uSource'), 0);
@@ -348,26 +362,6 @@ export class Renderer {
     gl.bindVertexArray(null);
     gl.bindTexture(gl.TEXTURE_2D, null);
     return 1;
-  }
-
-  /** RGBA8, top row first; a half-float target is read as float and rounded as an 8-bit one would be. */
-  private readFramebuffer(framebuffer: WebGLFramebuffer | null, width: number, height: number, float = false): Pixels {
-    const gl = this.gl;
-    let raw = new Uint8Array(width * height * 4);
-    gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
-    gl.pixelStorei(gl.PACK_ALIGNMENT, 1);
-    if (float) {
-      const f = new Float32Array(width * height * 4);
-      gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, f);
-      raw = Uint8Array.from(f, (x) => Math.round(Math.min(1, Math.max(0, x)) * 255));
-    } else {
-      gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, raw);
-    }
-    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    const data = new Uint8ClampedArray(raw.length);
-    const row = width * 4;
-    for (let y = 0; y < height; y++) data.set(raw.subarray((height - 1 - y) * row, (height - y) * row), y * row);
-    return { width, height, data };
   }
 
   private checkFinite(state: FrameState): void {

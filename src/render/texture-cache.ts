@@ -1,25 +1,40 @@
 // The textures objects draw with: the procedural one of SPEC §3, and images by URL once their
 // owner (the element) has decoded them. An object whose image is not there yet, or failed,
-// draws with the procedural texture.
+// draws with the procedural texture. Each is uploaded in the frame's colour space (SPEC §13:
+// SRGB8_ALPHA8 for `srgb`, so the GPU filters linear light), again only if the space changes.
 import { Texture } from './gl/texture';
 import type { ResourceCounter } from './gl/resource-counter';
+import type { SharedResources } from './gl/shared-resources';
 import type { TextureSource } from '../scene/scene';
 
+interface ImageEntry {
+  source: TexImageSource;
+  texture: Texture;
+  srgb: boolean;
+}
+
 export class TextureCache {
-  private readonly images = new Map<string, Texture>();
-  /** 1×1 white, for `{ kind: 'none' }`: made when a scene first needs it. */
+  private readonly images = new Map<string, ImageEntry>();
+  /** 1×1 white, for `{ kind: 'none' }`: made when a scene first needs it (white decodes to white). */
   private white: Texture | null = null;
+  /** The colour space textures are read in this frame (set by the renderer). */
+  srgb = false;
 
   constructor(
-    private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, readonly procedural: Texture,
+    private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, private readonly shared: SharedResources,
   ) {}
+
+  /** The procedural texture in this frame's colour space. */
+  get procedural(): Texture {
+    return this.shared.texture(this.srgb);
+  }
 
   /** Uploads (or, with null, frees) the image for `url`. */
   setImage(url: string, image: TexImageSource | null): void {
-    this.images.get(url)?.dispose();
+    this.images.get(url)?.texture.dispose();
     this.images.delete(url);
     if (!image) return;
-    this.images.set(url, new Texture(this.gl, this.counter, { width: 0, height: 0, data: null, image, mipmap: true, repeat: true }));
+    this.images.set(url, { source: image, texture: this.upload(image, this.srgb), srgb: this.srgb });
   }
 
   /** The texture for `source`, and whether it is an image (read at (u, 1 − v)). */
@@ -27,7 +42,15 @@ export class TextureCache {
     if (source.kind === 'none') {
       return (this.white ??= new Texture(this.gl, this.counter, { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]), repeat: true }));
     }
-    return source.kind === 'image' ? (this.images.get(source.url) ?? this.procedural) : this.procedural;
+    if (source.kind !== 'image') return this.procedural;
+    const e = this.images.get(source.url);
+    if (!e) return this.procedural;
+    if (e.srgb !== this.srgb) {
+      e.texture.dispose();
+      e.texture = this.upload(e.source, this.srgb);
+      e.srgb = this.srgb;
+    }
+    return e.texture;
   }
 
   isImage(texture: Texture): boolean {
@@ -35,9 +58,13 @@ export class TextureCache {
   }
 
   dispose(): void {
-    for (const t of this.images.values()) t.dispose();
+    for (const e of this.images.values()) e.texture.dispose();
     this.images.clear();
     this.white?.dispose();
     this.white = null;
+  }
+
+  private upload(image: TexImageSource, srgb: boolean): Texture {
+    return new Texture(this.gl, this.counter, { width: 0, height: 0, data: null, image, mipmap: true, repeat: true, srgb });
   }
 }

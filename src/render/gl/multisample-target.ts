@@ -1,5 +1,6 @@
 // A multisampled colour + depth framebuffer (renderbuffers), resolved into another framebuffer.
 import type { ResourceCounter } from './resource-counter';
+import { internalFormat, type TargetFormat } from './render-target';
 
 export class MultisampleTarget {
   readonly framebuffer: WebGLFramebuffer;
@@ -10,7 +11,7 @@ export class MultisampleTarget {
   samples = 0;
 
   constructor(
-    private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, readonly halfFloat = false,
+    private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, readonly format: TargetFormat = 'rgba8',
   ) {
     this.framebuffer = gl.createFramebuffer()!;
     this.color = gl.createRenderbuffer()!;
@@ -27,7 +28,7 @@ export class MultisampleTarget {
     const gl = this.gl;
     Object.assign(this, { width, height, samples });
     gl.bindRenderbuffer(gl.RENDERBUFFER, this.color);
-    gl.renderbufferStorageMultisample(gl.RENDERBUFFER, samples, this.halfFloat ? gl.RGBA16F : gl.RGBA8, width, height);
+    gl.renderbufferStorageMultisample(gl.RENDERBUFFER, samples, internalFormat(gl, this.format), width, height);
     gl.bindRenderbuffer(gl.RENDERBUFFER, this.depth);
     gl.renderbufferStorageMultisample(gl.RENDERBUFFER, samples, gl.DEPTH_COMPONENT24, width, height);
     gl.bindRenderbuffer(gl.RENDERBUFFER, null);

@@ -1,6 +1,14 @@
 // An off-screen colour texture + depth renderbuffer; reallocated only when its size changes.
-// `halfFloat` stores colour as RGBA16F (needs EXT_color_buffer_float), else RGBA8.
+// Colour as RGBA8, SRGB8_ALPHA8 (linear light held encoded: no banding in the darks, blended
+// and sampled in linear; SPEC §13) or RGBA16F (needs EXT_color_buffer_float).
 import type { ResourceCounter } from './resource-counter';
+
+export type TargetFormat = 'rgba8' | 'srgb8' | 'rgba16f';
+
+/** Internal format of a colour attachment. */
+export function internalFormat(gl: WebGL2RenderingContext, format: TargetFormat): number {
+  return format === 'rgba16f' ? gl.RGBA16F : format === 'srgb8' ? gl.SRGB8_ALPHA8 : gl.RGBA8;
+}
 
 export class RenderTarget {
   readonly framebuffer: WebGLFramebuffer;
@@ -10,7 +18,7 @@ export class RenderTarget {
   height = 0;
 
   constructor(
-    private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, readonly halfFloat = false,
+    private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, readonly format: TargetFormat = 'rgba8',
   ) {
     this.framebuffer = gl.createFramebuffer()!;
     this.color = gl.createTexture()!;
@@ -26,6 +34,10 @@ export class RenderTarget {
     gl.bindTexture(gl.TEXTURE_2D, null);
   }
 
+  get halfFloat(): boolean {
+    return this.format === 'rgba16f';
+  }
+
   /** Returns true when storage was (re)allocated. */
   setSize(width: number, height: number): boolean {
     width = Math.max(1, Math.floor(width));
@@ -36,7 +48,7 @@ export class RenderTarget {
     this.height = height;
     gl.bindTexture(gl.TEXTURE_2D, this.color);
     if (this.halfFloat) gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA16F, width, height, 0, gl.RGBA, gl.HALF_FLOAT, null);
-    else gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, width, height, 0, gl.RGBA, gl.UNSIGNED_BYTE, null);
+    else gl.texImage2D(gl.TEXTURE_2D, 0, internalFormat(gl, this.format), width, height, 0, gl.RGBA, gl.UNSIGNED_BYTE, null);
     gl.bindTexture(gl.TEXTURE_2D, null);
     gl.bindRenderbuffer(gl.RENDERBUFFER, this.depth);
     gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, width, height);

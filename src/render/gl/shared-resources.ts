@@ -19,18 +19,28 @@ export class SharedResources {
 
   /** The GL objects held here (not by any one renderer). */
   readonly counter = new ResourceCounter();
+  /** The procedural texture as stored (RGBA8) and as sRGB colour data (SRGB8_ALPHA8). */
   private procedural: Texture | null = null;
+  private proceduralSrgb: Texture | null = null;
   private readonly programs = new Map<string, Entry<Program>>();
   private readonly meshes = new Map<string, Entry<Mesh>>();
   private users = 0;
 
   private constructor(private readonly gl: WebGL2RenderingContext) {}
 
-  /** SPEC §3's texture: ~1.4 MB with its mipmaps, uploaded once per context, not per element. */
-  get texture(): Texture {
-    return (this.procedural ??= new Texture(this.gl, this.counter, {
-      width: TEXTURE_SIZE, height: TEXTURE_SIZE, data: proceduralTexture(), mipmap: true, repeat: true,
-    }));
+  /**
+   * SPEC §3's texture: ~1.4 MB with its mipmaps, uploaded once per context and colour space
+   * (`srgb`: its levels are encoded colour, decoded by the GPU; SPEC §13), not per element.
+   */
+  texture(srgb: boolean): Texture {
+    if (srgb) return (this.proceduralSrgb ??= this.uploadProcedural(true));
+    return (this.procedural ??= this.uploadProcedural(false));
+  }
+
+  private uploadProcedural(srgb: boolean): Texture {
+    return new Texture(this.gl, this.counter, {
+      width: TEXTURE_SIZE, height: TEXTURE_SIZE, data: proceduralTexture(), mipmap: true, repeat: true, srgb,
+    });
   }
 
   /** The context's shared resources, created for its first renderer. */
@@ -52,7 +62,8 @@ export class SharedResources {
     this.programs.clear();
     this.meshes.clear();
     this.procedural?.dispose();
-    this.procedural = null;
+    this.proceduralSrgb?.dispose();
+    this.procedural = this.proceduralSrgb = null;
     SharedResources.byContext.delete(this.gl);
   }
 

@@ -1,5 +1,6 @@
 // An RGBA8 2D texture from pixels (row 0 uploaded first) or a decoded image (its top row
-// first), optionally mipmapped and repeating.
+// first), optionally mipmapped and repeating; `srgb` stores it as SRGB8_ALPHA8, which the GPU
+// decodes to linear light before filtering (SPEC §13), and whose mipmaps it averages in linear.
 import type { ResourceCounter } from './resource-counter';
 
 export interface TextureOptions {
@@ -10,6 +11,8 @@ export interface TextureOptions {
   image?: TexImageSource;
   mipmap?: boolean;
   repeat?: boolean;
+  /** Colour data in sRGB (SRGB8_ALPHA8): sampled as linear light. */
+  srgb?: boolean;
 }
 
 export class Texture {
@@ -20,13 +23,14 @@ export class Texture {
     counter.add('textures');
     gl.bindTexture(gl.TEXTURE_2D, t);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+    const format = o.srgb ? gl.SRGB8_ALPHA8 : gl.RGBA8;
     if (o.image) {
       // No flip on upload (ImageBitmaps ignore UNPACK_FLIP_Y_WEBGL): the shader reads images at
       // (u, 1 − v), which puts OBJ's v = 0 on the image's bottom row.
       gl.pixelStorei(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL, false);
-      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, o.image);
+      gl.texImage2D(gl.TEXTURE_2D, 0, format, gl.RGBA, gl.UNSIGNED_BYTE, o.image);
     } else {
-      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, o.width, o.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, o.data);
+      gl.texImage2D(gl.TEXTURE_2D, 0, format, o.width, o.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, o.data);
     }
     const wrap = o.repeat ? gl.REPEAT : gl.CLAMP_TO_EDGE;
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, wrap);

@@ -27,9 +27,10 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
     gl.uniform1f(program.location('uIor'), state.ior);
     gl.uniform4fv(program.location('uViewVector'), setup.viewVectorMain);
     gl.uniform3fv(program.location('uBodyTint'), BODY_TINT);
+    gl.uniform1f(program.location('uLinearFrame'), state.colorSpace === 'srgb' && state.view !== 'fresnel' ? 1 : 0);
     gl.uniform1i(program.location('uTexture'), 0);
     gl.uniform1i(program.location('uReflection'), 1);
-    ctx.texture.bind(0);
+    ctx.textures.procedural.bind(0);
     gl.activeTexture(gl.TEXTURE1);
     gl.bindTexture(gl.TEXTURE_2D, reflection);
     ctx.glassMesh.draw();

@@ -2,7 +2,6 @@
 // this frame's matrices.
 import type { Mesh } from '../gl/mesh';
 import type { Program } from '../gl/program';
-import type { Texture } from '../gl/texture';
 import type { TextureCache } from '../texture-cache';
 import type { DrawMatrices, FrameSetup, LightVectors } from '../../frame/frame-setup';
 import type { ObjectMeshes } from '../object-meshes';
@@ -19,9 +18,10 @@ export interface PassContext {
   objectMeshes: ObjectMeshes;
   /** The glass rectangle, in world coordinates. */
   glassMesh: Mesh;
-  /** The procedural texture (the glass's, and objects' without an image). */
-  texture: Texture;
+  /** The procedural texture (the glass's, and objects' without an image) and images, in the frame's colour space. */
   textures: TextureCache;
+  /** The clear colour in the frame's colour space (decoded for `srgb`). */
+  background: readonly number[];
   setup: FrameSetup;
   state: FrameState;
   scene: Scene;

@@ -17,7 +17,7 @@ export function reflectionPass(ctx: PassContext, framebuffer: WebGLFramebuffer, 
   full.width = width;
   full.height = height;
   // Scissored to the glass: only texels the glass pass can read are cleared and drawn.
-  beginTarget(gl, framebuffer, full, ctx.scene.background, scissor ?? full);
+  beginTarget(gl, framebuffer, full, ctx.background, scissor ?? full);
   if (scissor) {
     gl.enable(gl.SCISSOR_TEST);
     gl.scissor(scissor.x, scissor.y, scissor.width, scissor.height);

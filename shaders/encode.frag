@@ -1,0 +1,19 @@
+#version 300 es
+// The last step of a frame in linear light (SPEC §13): the frame, held in an SRGB8_ALPHA8 target
+// (read back as linear), encoded once with the IEC 61966-2-1 curve (src/math/srgb.ts) into the
+// canvas. Values above 1 clip first (no tone mapping).
+precision highp float;
+
+uniform sampler2D uSource;
+out vec4 outColor;
+
+vec3 encode(vec3 l) {
+  l = clamp(l, 0.0, 1.0);
+  vec3 curve = 1.055 * pow(l, vec3(1.0 / 2.4)) - 0.055;
+  return mix(curve, 12.92 * l, vec3(lessThanEqual(l, vec3(0.0031308))));
+}
+
+void main() {
+  // Same size as the viewport: one texel per pixel, no filtering.
+  outColor = vec4(encode(texelFetch(uSource, ivec2(gl_FragCoord.xy), 0).rgb), 1.0);
+}

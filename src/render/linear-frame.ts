@@ -1,0 +1,60 @@
+// SPEC §13 on the GPU: a frame in linear light is drawn into an SRGB8_ALPHA8 target (multisampled
+// when asked), where the GPU blends and resolves linear values and holds them encoded, so the
+// darks do not band; shaders/encode.frag then encodes it once into its destination. Used only
+// with `color-space="srgb"`; `none` draws straight into the destination as before.
+import { RenderTarget } from './gl/render-target';
+import { MultisampleTarget } from './gl/multisample-target';
+import type { ResourceCounter } from './gl/resource-counter';
+import type { ProgramCache } from './programs';
+
+export class LinearFrame {
+  private target: RenderTarget | null = null;
+  private msaa: MultisampleTarget | null = null;
+  private samples = 0;
+  private width = 0;
+  private height = 0;
+
+  constructor(
+    private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter,
+    private readonly programs: ProgramCache, private readonly vao: WebGLVertexArrayObject,
+  ) {}
+
+  /** The framebuffer a `width` × `height` frame is drawn into (linear light). */
+  begin(width: number, height: number, samples: number): WebGLFramebuffer {
+    const gl = this.gl;
+    this.width = width;
+    this.height = height;
+    this.samples = samples;
+    const target = (this.target ??= new RenderTarget(gl, this.counter, 'srgb8'));
+    target.setSize(width, height);
+    if (samples === 0) return target.framebuffer;
+    const msaa = (this.msaa ??= new MultisampleTarget(gl, this.counter, 'srgb8'));
+    msaa.setSize(width, height, samples);
+    return msaa.framebuffer;
+  }
+
+  /** Resolves the samples (in linear) and writes the frame, encoded, into `destination` (null: the canvas). Returns the draw calls. */
+  end(destination: WebGLFramebuffer | null): number {
+    const gl = this.gl, target = this.target!;
+    if (this.samples > 0) this.msaa!.resolve(target.framebuffer);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, destination);
+    gl.viewport(0, 0, this.width, this.height);
+    const p = this.programs.encode();
+    p.use();
+    gl.uniform1i(p.location('uSource'), 0);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, target.color);
+    gl.bindVertexArray(this.vao);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    gl.bindVertexArray(null);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    return 1;
+  }
+
+  dispose(): void {
+    this.target?.dispose();
+    this.msaa?.dispose();
+    this.target = this.msaa = null;
+  }
+}
