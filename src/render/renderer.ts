@@ -219,7 +219,7 @@ export class Renderer {
     const scene = this.ctx.scene;
     // SPEC §13: colour data (textures, the background) decoded in srgb; light is mixed linearly.
     const srgb = state.colorSpace === 'srgb';
-    this.textures.srgb = srgb;
+    this.textures.setColorSpace(srgb);
     for (let k = 0; k < 3; k++) this.background[k] = srgb ? srgbToLinear(scene.background[k]) : scene.background[k];
     this.setup.update(state, scene);
     this.objectMeshes.trim(scene.objects.length);

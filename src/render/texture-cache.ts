@@ -1,7 +1,9 @@
 // The textures objects draw with: the procedural one of SPEC §3, and images by URL once their
 // owner (the element) has decoded them. An object whose image is not there yet, or failed,
-// draws with the procedural texture. Each is uploaded in the frame's colour space (SPEC §13:
-// SRGB8_ALPHA8 for `srgb`, so the GPU filters linear light), again only if the space changes.
+// draws with the procedural texture. Each is held in the frame's colour space (SPEC §13:
+// SRGB8_ALPHA8 for `srgb`, so the GPU filters linear light), uploaded again only when the space
+// changes, and always before any pass: creating a texture binds it, which would unbind the one
+// a draw has just bound (a first frame in a new space drew its images black that way).
 import { Texture } from './gl/texture';
 import type { ResourceCounter } from './gl/resource-counter';
 import type { SharedResources } from './gl/shared-resources';
@@ -10,19 +12,29 @@ import type { TextureSource } from '../scene/scene';
 interface ImageEntry {
   source: TexImageSource;
   texture: Texture;
-  srgb: boolean;
 }
 
 export class TextureCache {
   private readonly images = new Map<string, ImageEntry>();
-  /** 1×1 white, for `{ kind: 'none' }`: made when a scene first needs it (white decodes to white). */
+  /** 1×1 white, for `{ kind: 'none' }` (white decodes to white), made when a scene first needs it. */
   private white: Texture | null = null;
-  /** The colour space textures are read in this frame (set by the renderer). */
-  srgb = false;
+  /** Images are held as sRGB colour data (the default `color-space`), or as stored. */
+  private srgb = true;
 
   constructor(
     private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, private readonly shared: SharedResources,
   ) {}
+
+  /** The colour space of the frame about to be drawn; called before any pass. */
+  setColorSpace(srgb: boolean): void {
+    this.shared.texture(srgb); // made now if it is the first frame in this space, not mid-pass
+    if (srgb === this.srgb) return;
+    this.srgb = srgb;
+    for (const e of this.images.values()) {
+      e.texture.dispose();
+      e.texture = this.upload(e.source, srgb);
+    }
+  }
 
   /** The procedural texture in this frame's colour space. */
   get procedural(): Texture {
@@ -34,23 +46,17 @@ export class TextureCache {
     this.images.get(url)?.texture.dispose();
     this.images.delete(url);
     if (!image) return;
-    this.images.set(url, { source: image, texture: this.upload(image, this.srgb), srgb: this.srgb });
+    this.images.set(url, { source: image, texture: this.upload(image, this.srgb) });
   }
 
   /** The texture for `source`, and whether it is an image (read at (u, 1 − v)). */
   textureFor(source: TextureSource): Texture {
     if (source.kind === 'none') {
+      // Made before the caller binds what this returns, so its creation unbinds nothing in use.
       return (this.white ??= new Texture(this.gl, this.counter, { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]), repeat: true }));
     }
     if (source.kind !== 'image') return this.procedural;
-    const e = this.images.get(source.url);
-    if (!e) return this.procedural;
-    if (e.srgb !== this.srgb) {
-      e.texture.dispose();
-      e.texture = this.upload(e.source, this.srgb);
-      e.srgb = this.srgb;
-    }
-    return e.texture;
+    return this.images.get(source.url)?.texture ?? this.procedural;
   }
 
   isImage(texture: Texture): boolean {

@@ -4,7 +4,11 @@
 // none, in both renderers.
 import { test, expect, openPage, capture } from './fixtures';
 import { mountHtml } from './helpers/scene-children';
-import type { RgbaImage } from './helpers/golden';
+import { note } from './helpers/bounds';
+import { compareImages, type RgbaImage } from './helpers/golden';
+import { drawScene, openRendererPage } from './helpers/scene-json';
+import type { FrameState } from '../../src/frame/types';
+import type { Scene } from '../../src/scene/scene';
 
 const WHITE = '/tests/e2e/pages/models/white.png';
 
@@ -39,3 +43,39 @@ for (const renderer of ['webgl']) {
     }
   });
 }
+
+test.describe('WebGL renderer', () => {
+  const W = 64, H = 48;
+  const state = (colorSpace: 'srgb' | 'none'): FrameState => ({
+    width: W, height: H, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov: 60,
+    cameraPosition: [0, 0, 2.5], yaw: -90, pitch: 0, colorSpace, view: 'final', reflectionScale: 1, samples: 4, shading: 'phong',
+    tessellation: 'auto', reflectionFormat: 'rgba8',
+  });
+  // A 2×2 checker of 0 and 200 (not 255: decoding 255 gives 255 back), the box's face filling the view.
+  const CHECKER = { checker: { width: 2, height: 2, rgba: [0, 0, 0, 255, 200, 200, 200, 255, 200, 200, 200, 255, 0, 0, 0, 255] } };
+  const scene: Scene = {
+    glass: null, background: [0.1, 0.1, 0.1], lights: [{ kind: 'directional', vector: [0, 0, 1], ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0] }],
+    objects: [{
+      geometry: { kind: 'box', size: 1 }, transform: { position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
+      material: { ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0], shininess: 32, opacity: 1, texture: { kind: 'image', url: 'checker' }, mapping: 'uv' },
+      bounds: { center: [0, 0, 0], radius: Math.sqrt(3) / 2 },
+    }],
+  };
+
+  test('switching color-space re-reads its images in the new space: each frame is the one a fresh renderer draws', async ({ page }) => {
+    await openRendererPage(page);
+    const srgb = await drawScene(page, state('srgb'), scene, CHECKER);
+    const none = await drawScene(page, state('none'), scene);
+    const srgbAgain = await drawScene(page, state('srgb'), scene);
+    await openRendererPage(page);
+    const freshNone = await drawScene(page, state('none'), scene, CHECKER);
+    expect(compareImages(srgb, srgbAgain).differing).toBe(0);
+    expect(compareImages(none, freshNone).differing).toBe(0);
+    // The image is drawn in both (not the procedural texture, not black): its texels of 200,
+    // magnified and filtered, reach 195 (srgb) and 188 (none), measured.
+    const max = (img: RgbaImage) => Math.max(...img.data.filter((_, i) => i % 4 === 0));
+    note(`brightest red: srgb ${max(srgb)}, none ${max(none)}`);
+    expect(max(none)).toBeGreaterThanOrEqual(185);
+    expect(max(srgb)).toBeGreaterThanOrEqual(185);
+  });
+});
