@@ -114,7 +114,7 @@ export class Renderer {
     this.maxTargetSize = maxTargetSize(gl);
     this.textures = new TextureCache(gl, c, this.shared);
     this.canHalfFloat = gl.getExtension('EXT_color_buffer_float') !== null;
-    this.reflection = new RenderTarget(gl, c);
+    this.reflection = new RenderTarget(gl, c, 'srgb8'); // the default color-space's; prepare() remakes it for another
     this.blitVao = gl.createVertexArray()!;
     c.add('vertexArrays');
     this.linearFrame = new LinearFrame(gl, c, this.programs, this.blitVao);

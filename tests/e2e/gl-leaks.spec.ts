@@ -74,13 +74,14 @@ test('elements on one context share programs, the procedural texture and meshes:
   const one = (await glCensus(page)).created;
   const b = (await mount(page, { time: 1.5 }, SIZE)).selector;
   const two = (await glCensus(page)).created;
-  // Per element: framebuffers, renderbuffers, its sphere LOD's buffers and VAO. Shared: the 3
-  // programs (6 shaders), the 512² texture (~1.4 MB with mipmaps), the cube's and glass's meshes.
+  // Per element: framebuffers, renderbuffers, its sphere LOD's buffers and VAO, and two textures:
+  // the reflection and the frame in linear light (SPEC §13). Shared: the 4 programs (8 shaders;
+  // the 4th encodes the frame), the 512² texture (~1.4 MB with mipmaps), the cube's and glass's meshes.
   expect(two.programs - one.programs, 'programs compiled for the second element').toBe(0);
   expect(two.shaders - one.shaders, 'shaders compiled for the second element').toBe(0);
-  expect(two.textures - one.textures, 'textures for the second element (its reflection target only)').toBe(1);
+  expect(two.textures - one.textures, 'textures for the second element (its reflection and linear frame only)').toBe(2);
   const stats = await page.evaluate((s) => (document.querySelector(s) as SceneElement).stats, b);
-  expect(stats.programs, 'the second element still reports the 3 variants it uses').toBe(3);
+  expect(stats.programs, 'the second element still reports the 4 variants it uses').toBe(4);
   // Removing one keeps what the other uses; removing both frees everything.
   await remove(page, a);
   expect(await capture(page, undefined, b)).toBeTruthy();

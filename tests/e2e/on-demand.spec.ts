@@ -300,21 +300,23 @@ test.describe('off screen and hidden', () => {
 });
 
 test.describe('shader programs', () => {
-  test('a default element compiles exactly 3 programs', async ({ page }) => {
+  test('a default element compiles exactly 4 programs; color-space none 3', async ({ page }) => {
     const { selector } = await mount(page, { time: 1.25 }, SIZE);
-    // reflection (standard + clip plane), scene (standard), glass.
-    expect((await stats(page, selector)).programs).toBe(3);
+    // reflection (standard + clip plane), scene (standard), glass, and the final sRGB encode.
+    expect((await stats(page, selector)).programs).toBe(4);
+    const none = await mount(page, { time: 1.25, 'color-space': 'none' }, SIZE);
+    expect((await stats(page, none.selector)).programs, 'no encode when values are used as stored').toBe(3);
   });
 
   test('only the variants in use are compiled, each when first used', async ({ page }) => {
     const { selector } = await mount(page, { time: 1.25, 'debug-view': 'scene' }, SIZE);
-    expect((await stats(page, selector)).programs, 'debug-view scene: the standard program only').toBe(1);
+    expect((await stats(page, selector)).programs, 'debug-view scene: the standard program and the encode only').toBe(2);
     await setAttributes(page, selector, { fresnel: 'schlick' }); // the glass is not drawn in this view
-    expect((await stats(page, selector)).programs, 'a Fresnel change with no glass on screen').toBe(1);
+    expect((await stats(page, selector)).programs, 'a Fresnel change with no glass on screen').toBe(2);
     await setAttributes(page, selector, { shading: 'flat' });
-    expect((await stats(page, selector)).programs, 'flat shading, now in use').toBe(2);
+    expect((await stats(page, selector)).programs, 'flat shading, now in use').toBe(3);
     await setAttributes(page, selector, { 'debug-view': null });
-    expect((await stats(page, selector)).programs, 'final view: + reflection (flat, clipped) + glass (schlick)').toBe(4);
+    expect((await stats(page, selector)).programs, 'final view: + reflection (flat, clipped) + glass (schlick)').toBe(5);
   });
 });
 

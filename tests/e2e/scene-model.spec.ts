@@ -53,7 +53,7 @@ test.beforeEach(async ({ page }) => {
 test('the default scene value draws what the element draws', async ({ page }) => {
   const s: FrameState = {
     ...state(DEFAULT_CAMERA_POSITION, [0, 0, 0]), yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
-    time: 1.25, spin: 0.8, samples: 4, tessellation: 'auto',
+    time: 1.25, spin: 0.8, samples: 4, tessellation: 'auto', colorSpace: 'srgb',
   };
   const fromValue = await drawScene(page, s, defaultScene(DEFAULT_CUBE_DISTANCE, 0.8));
   await openPage(page);
