@@ -12,9 +12,13 @@ import type { FrameState } from '../../src/frame/types';
 import { expectPsnr, note } from './helpers/bounds';
 
 const BOUND_DB = 35;
-/** PSNR measured here (dB) per renderer; the bounds sit 2 dB under each (helpers/bounds.ts). */
+/**
+ * PSNR measured here (dB) per renderer, in linear light (the default color-space); the bounds sit
+ * 2 dB under each (helpers/bounds.ts). As stored, WebGL measured 48.3 / 52.9 / 50.7: encoding
+ * steepens the dark glass body's filtering errors most.
+ */
 const MEASURED = {
-  webgl: { all: 48.3, objects: 52.9, glass: 50.7 },
+  webgl: { all: 40.7, objects: 49.8, glass: 42.2 },
   software: { all: 42.4, objects: 53.5, glass: 51.1 },
 } as const;
 const MODELS = path.resolve(path.dirname(fileURLToPath(import.meta.url)), 'pages/models');
@@ -83,7 +87,7 @@ for (const renderer of ['webgl', 'software'] as const) test(`${renderer}: a text
   const state: FrameState = {
     width: image.width, height: image.height, time: 0, spin: 0, cubeDistance: 0.75, transparency: view.transparency,
     ior: view.ior, fresnel: 'exact', fov: view.fov, cameraPosition: view.position as [number, number, number],
-    yaw: view.rotation[0], pitch: view.rotation[1], colorSpace: 'none', view: 'final',
+    yaw: view.rotation[0], pitch: view.rotation[1], colorSpace: 'srgb', view: 'final',
     reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
   };
   const ref = renderScene({ ...scene, objects }, state, { samplesPerAxis: 4, images });

@@ -63,7 +63,7 @@ function visibility(withReflection: RgbaImage, without: RgbaImage, mask: Uint8Ar
 function cubeReflectionMask(width: number, height: number, time: number, fov = 60): Uint8Array {
   const ref = renderReference({
     width, height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov,
-    cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace: 'none', view: 'final',
+    cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace: 'srgb', view: 'final',
   });
   return Uint8Array.from(ref.keys, (k) => (glassReflectsCube(k) ? 1 : 0));
 }
