@@ -114,11 +114,18 @@ export default [
   },
   {
     name: 'S17 srgb: each sample encoded, then the box filter (averaging encoded values)',
-    edits: [{
-      file: 'src/software/software-renderer.ts',
-      find: 'r += source[o]; g += source[o + 1]; b += source[o + 2];\n          }\n        }\n        const p = 4 * (y * width + x);\n        out[p] = linearToSrgbByte(r * k);\n        out[p + 1] = linearToSrgbByte(g * k);\n        out[p + 2] = linearToSrgbByte(b * k);',
-      replace: 'r += linearToSrgbByte(source[o]); g += linearToSrgbByte(source[o + 1]); b += linearToSrgbByte(source[o + 2]);\n          }\n        }\n        const p = 4 * (y * width + x);\n        out[p] = Math.round(r * k);\n        out[p + 1] = Math.round(g * k);\n        out[p + 2] = Math.round(b * k);',
-    }],
+    edits: [
+      {
+        file: 'src/software/software-renderer.ts',
+        find: 'r += source[o]; g += source[o + 1]; b += source[o + 2];',
+        replace: 'r += encode ? encodeByte(source[o]) / 255 : source[o]; g += encode ? encodeByte(source[o + 1]) / 255 : source[o + 1]; b += encode ? encodeByte(source[o + 2]) / 255 : source[o + 2];',
+      },
+      {
+        file: 'src/software/software-renderer.ts',
+        find: 'out[p] = encode ? encodeByte(r * mean) : Math.round(r * k);\n        out[p + 1] = encode ? encodeByte(g * mean) : Math.round(g * k);\n        out[p + 2] = encode ? encodeByte(b * mean) : Math.round(b * k);',
+        replace: 'out[p] = Math.round(r * k);\n        out[p + 1] = Math.round(g * k);\n        out[p + 2] = Math.round(b * k);',
+      },
+    ],
     tests: [SRGB],
   },
   {
@@ -138,9 +145,19 @@ export default [
   {
     name: 'S20 srgb: the background encoded instead of decoded (a doubled encode)',
     edits: [
-      { file: 'src/software/software-renderer.ts', find: "import { linearToSrgbByte, srgbToLinear, type ColorSpace } from '../math/srgb';", replace: "import { linearToSrgb, linearToSrgbByte, srgbToLinear, type ColorSpace } from '../math/srgb';" },
+      { file: 'src/software/software-renderer.ts', find: "import { srgbToLinear, type ColorSpace } from '../math/srgb';", replace: "import { linearToSrgb, srgbToLinear, type ColorSpace } from '../math/srgb';" },
       { file: 'src/software/software-renderer.ts', find: "b[k] = space === 'srgb' ? srgbToLinear(bg[k]) : bg[k];", replace: "b[k] = space === 'srgb' ? linearToSrgb(bg[k]) : bg[k];" },
     ],
+    tests: [SRGB],
+  },
+  {
+    name: 'S21 srgb: the encode table with 2048 bins (two steps share a bin in the darks)',
+    edits: [{ file: 'src/software/encode.ts', find: 'export const ENCODE_BINS = 4096;', replace: 'export const ENCODE_BINS = 2048;' }],
+    tests: [SRGB],
+  },
+  {
+    name: 'S22 srgb: the encode table compares with > (a value exactly at a step rounds down)',
+    edits: [{ file: 'src/software/encode.ts', find: 'return l >= NEXT[b] ? b + 1 : b;', replace: 'return l > NEXT[b] ? b + 1 : b;' }],
     tests: [SRGB],
   },
 ];

@@ -4,7 +4,8 @@
 // With colorSpace 'srgb' (SPEC §13) textures and the background are decoded, the Float32
 // buffers sum linear light, and the resolve encodes once; 'none' uses every value as stored.
 import { eyeRelativePlane, signedDistance } from '../math/mirror';
-import { linearToSrgbByte, srgbToLinear, type ColorSpace } from '../math/srgb';
+import { srgbToLinear, type ColorSpace } from '../math/srgb';
+import { encodeByte } from './encode';
 import { FrameSetup } from '../frame/frame-setup';
 import type { FrameState } from '../frame/types';
 import type { DecodedImage } from '../scene/decoded-image';
@@ -307,11 +308,20 @@ export class SoftwareRenderer {
   /**
    * Box filter of n×n samples per pixel, rounded to RGBA8. With `encode` the mean (linear light)
    * is encoded to sRGB after the average, as an MSAA resolve into an sRGB target does, by a
-   * search of a table of thresholds (no pow per pixel).
+   * table read (no pow per pixel).
    */
   private resolve(source: Float32Array, width: number, height: number, n: number, encode: boolean): void {
     const out = this.output, W = width * n, k = 255 / (n * n), mean = 1 / (n * n);
-    if (n === 1 && !encode) {
+    if (n === 1 && encode) {
+      for (let i = 0, o = 0, p = 0; i < width * height; i++, o += 3, p += 4) {
+        out[p] = encodeByte(source[o]);
+        out[p + 1] = encodeByte(source[o + 1]);
+        out[p + 2] = encodeByte(source[o + 2]);
+        out[p + 3] = 255;
+      }
+      return;
+    }
+    if (n === 1) {
       // Values are in [0, 1]: (x·255 + ½) | 0 is Math.round, without the call.
       for (let i = 0, o = 0, p = 0; i < width * height; i++, o += 3, p += 4) {
         out[p] = (source[o] * 255 + 0.5) | 0;
@@ -331,9 +341,9 @@ export class SoftwareRenderer {
           }
         }
         const p = 4 * (y * width + x);
-        out[p] = encode ? linearToSrgbByte(r * mean) : Math.round(r * k);
-        out[p + 1] = encode ? linearToSrgbByte(g * mean) : Math.round(g * k);
-        out[p + 2] = encode ? linearToSrgbByte(b * mean) : Math.round(b * k);
+        out[p] = encode ? encodeByte(r * mean) : Math.round(r * k);
+        out[p + 1] = encode ? encodeByte(g * mean) : Math.round(g * k);
+        out[p + 2] = encode ? encodeByte(b * mean) : Math.round(b * k);
         out[p + 3] = 255;
       }
     }

@@ -6,7 +6,8 @@
 // checker's texels from procedural-texture.ts (tied down by texture.test.ts).
 import { describe, expect, it } from 'vitest';
 import { SoftwareRenderer } from '../../src/software';
-import { linearToSrgb, srgbToLinear, type ColorSpace } from '../../src/math/srgb';
+import { encodeByte, ENCODE_BINS } from '../../src/software/encode';
+import { linearToSrgb, linearToSrgbByte, srgbToLinear, type ColorSpace } from '../../src/math/srgb';
 import { texel } from '../../src/scene/procedural-texture';
 import { TEXTURE_SIZE } from '../../src/scene/default-scene';
 import type { FrameState } from '../../src/frame/types';
@@ -239,6 +240,53 @@ describe('software renderer, the glass in linear light (SPEC §4, §13)', () => 
       const a = tile(tiled.srgb, x, y), b = tile(tiled.none, x, y);
       const same = a.every((v, k) => v === b[k]);
       expect(same, `${view}: srgb and none ${view === 'fresnel' ? 'equal' : 'differ'}`).toBe(view === 'fresnel');
+    }
+  });
+});
+
+/** The double next to x towards +∞ (up) or −∞ (down), x > 0. */
+function nextDouble(x: number, up: boolean): number {
+  const f = new Float64Array([x]), i = new BigInt64Array(f.buffer);
+  i[0] += up ? 1n : -1n;
+  return f[0];
+}
+
+describe("the resolve's encode (a table read) gives linearToSrgbByte's byte", () => {
+  /** Where the byte steps from b − 1 to b: decode((b − ½)/255), b = 1..255, written out from SPEC §13's curve. */
+  const steps: number[] = [];
+  for (let b = 1; b < 256; b++) {
+    const c = (b - 0.5) / 255;
+    steps.push(c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4);
+  }
+
+  it('no bin of the table holds two steps (the closest two are 1/(255·12.92) apart, a bin 1/4096)', () => {
+    const bins = steps.map((t) => Math.floor(t * ENCODE_BINS));
+    expect(new Set(bins).size).toBe(255);
+    expect(steps[1] - steps[0]).toBeCloseTo(1 / (255 * 12.92), 12);
+  });
+
+  it('at every step, a double either side, every bin edge, the ends and 100 000 values drawn at random', () => {
+    const values = [0, -0, -1, NaN, 1, 2, Infinity, 1e-12, nextDouble(1, false)];
+    for (const t of steps) values.push(t, nextDouble(t, true), nextDouble(t, false), Math.fround(t));
+    for (let i = 0; i <= ENCODE_BINS; i++) values.push(i / ENCODE_BINS, Math.max(0, nextDouble(i / ENCODE_BINS || 1e-300, false)));
+    // A fixed linear congruential sequence: the same values every run, squared to favour the darks.
+    let seed = 12345;
+    for (let i = 0; i < 100_000; i++) {
+      seed = (Math.imul(seed, 1103515245) + 12345) >>> 0;
+      values.push((seed / 2 ** 32) ** 2);
+    }
+    let wrong = 0, first = '';
+    for (const v of values) {
+      if (encodeByte(v) !== linearToSrgbByte(v)) {
+        if (!wrong) first = `${v}: ${encodeByte(v)} vs ${linearToSrgbByte(v)}`;
+        wrong++;
+      }
+    }
+    expect(wrong, first).toBe(0);
+    // And the bytes at the steps themselves are b (ties round up), the doubles below them b − 1.
+    for (let b = 1; b < 256; b++) {
+      expect(encodeByte(steps[b - 1]), `step ${b}`).toBe(b);
+      expect(encodeByte(nextDouble(steps[b - 1], false)), `below step ${b}`).toBe(b - 1);
     }
   });
 });
