@@ -4,6 +4,8 @@
 // Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
 const PIXELS = 'tests/unit/reference-pixels.test.ts';
 const ANY = 'tests/unit/reference-any-scene.test.ts';
+const SRGB = 'tests/unit/reference-srgb.test.ts';
+const METRICS = 'tests/unit/reference-metrics.test.ts';
 const unit = (name) => `tests/unit/${name}.test.ts`;
 
 export default [
@@ -78,5 +80,57 @@ export default [
     name: 'R12 shared course-depth.ts: the far margin (×1.001) forgotten on the mirrored points',
     edits: [{ file: 'src/scene/course-depth.ts', find: 'far = Math.max(far, z * 1.001);', replace: 'far = Math.max(far, z);' }],
     tests: [unit('course-depth')],
+  },
+  {
+    name: 'R13 image texels not decoded: srgb reads the stored level',
+    edits: [{ file: 'src/reference/image-texture.ts', find: 'grey[j * w + i] = levels[data[(row + i) * 4 + c]];', replace: 'grey[j * w + i] = data[(row + i) * 4 + c] / 255;' }],
+    tests: [SRGB],
+  },
+  {
+    name: 'R14 the final encode missing: linear light written as the displayed value',
+    edits: [{ file: 'src/reference/reference-renderer.ts', find: 'const c = encode ? linearToSrgb(mean) : mean;', replace: 'const c = mean;' }],
+    tests: [SRGB],
+  },
+  {
+    name: 'R15 the encode applied twice',
+    edits: [{ file: 'src/reference/reference-renderer.ts', find: 'const c = encode ? linearToSrgb(mean) : mean;', replace: 'const c = encode ? linearToSrgb(linearToSrgb(mean)) : mean;' }],
+    tests: [SRGB],
+  },
+  {
+    name: 'R16 samples encoded one by one, then averaged',
+    edits: [
+      { file: 'src/reference/reference-renderer.ts', find: 'for (let k = 0; k < 3; k++) sum[k] += colour[k];', replace: 'for (let k = 0; k < 3; k++) sum[k] += encode ? linearToSrgb(colour[k]) : colour[k];' },
+      { file: 'src/reference/reference-renderer.ts', find: 'const c = encode ? linearToSrgb(mean) : mean;', replace: 'const c = mean;' },
+    ],
+    tests: [SRGB],
+  },
+  {
+    name: 'R17 the background (a CSS colour) not decoded',
+    edits: [{ file: 'src/reference/sample-tracer.ts', find: "this.backgroundColour[k] = view.colorSpace === 'srgb' ? srgbToLinear(bg[k]) : bg[k];", replace: 'this.backgroundColour[k] = bg[k];' }],
+    tests: [SRGB],
+  },
+  {
+    name: 'R18 the fresnel view encoded like a picture',
+    edits: [{ file: 'src/reference/reference-renderer.ts', find: "const encode = state.colorSpace === 'srgb' && state.view !== 'fresnel';", replace: "const encode = state.colorSpace === 'srgb';" }],
+    tests: [SRGB],
+  },
+  {
+    name: 'R19 procedural texels not decoded: its 200/255 read as 0.784 of light',
+    edits: [{ file: 'src/reference/texture-sampler.ts', find: 'for (let i = 0; i < grey.length; i++) grey[i] = levels[rgba[i * 4]];', replace: 'for (let i = 0; i < grey.length; i++) grey[i] = rgba[i * 4] / 255;' }],
+    tests: [SRGB],
+  },
+  {
+    name: 'R20 image texels decoded after the box filter: the texture filtered as encoded numbers',
+    edits: [
+      { file: 'src/reference/image-texture.ts', find: 'grey[j * w + i] = levels[data[(row + i) * 4 + c]];', replace: 'grey[j * w + i] = data[(row + i) * 4 + c] / 255;' },
+      { file: 'src/reference/surface-texture.ts', find: 'for (let k = 0; k < 3; k++) out[k] = channels[k].boxFilter(u, v, a[0], a[1], b[0], b[1]);', replace: "for (let k = 0; k < 3; k++) out[k] = decodeIf(this.colorSpace, channels[k].boxFilter(u, v, a[0], a[1], b[0], b[1]));" },
+      { file: 'src/reference/surface-texture.ts', find: 'function bilinearInto(', replace: "const decodeIf = (s: string, c: number): number => (s === 'srgb' ? (c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4) : c);\nfunction bilinearInto(" },
+    ],
+    tests: [SRGB],
+  },
+  {
+    name: "R21 metrics: 'dark' read from the reference's bytes, not its values",
+    edits: [{ file: 'src/reference/metrics.ts', find: 'const dark = Math.max(ref.rgb[3 * i], ref.rgb[3 * i + 1], ref.rgb[3 * i + 2]) < DARK_LEVEL;', replace: 'const dark = Math.max(ref.rgba[4 * i], ref.rgba[4 * i + 1], ref.rgba[4 * i + 2]) < 32;' }],
+    tests: [METRICS],
   },
 ];

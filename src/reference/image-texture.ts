@@ -1,6 +1,7 @@
 // A material's texture as the reference samples it: the procedural grey, or an image's R, G and B.
-import { TextureSampler } from './texture-sampler';
+import { byteLevels, TextureSampler } from './texture-sampler';
 import type { DecodedImage } from '../scene/decoded-image';
+import type { ColorSpace } from '../math/srgb';
 
 /** One sampler (grey: R = G = B) or three (R, G, B), all of one size. */
 export interface ChannelTexture {
@@ -11,17 +12,19 @@ export interface ChannelTexture {
 
 /**
  * An image as three bilinear channels. OBJ convention (SPEC §9): v = 0 is the bottom row of
- * the image, so texture row j (v = (j + ½)/H) is image row H − 1 − j. Null when the pixels do
- * not match the size (the caller falls back to the procedural texture).
+ * the image, so texture row j (v = (j + ½)/H) is image row H − 1 − j. Texels are decoded to
+ * linear light with `srgb` (SPEC §13: an image is colour data), used as stored with `none`.
+ * Null when the pixels do not match the size (the caller falls back to the procedural texture).
  */
-export function imageTexture(image: DecodedImage): ChannelTexture | null {
+export function imageTexture(image: DecodedImage, colorSpace: ColorSpace): ChannelTexture | null {
   const { width: w, height: h, data } = image;
+  const levels = byteLevels(colorSpace);
   if (!(w >= 1 && h >= 1 && Number.isInteger(w) && Number.isInteger(h)) || data.length < w * h * 4) return null;
   const channels = [0, 1, 2].map((c) => {
     const grey = new Float64Array(w * h);
     for (let j = 0; j < h; j++) {
       const row = (h - 1 - j) * w;
-      for (let i = 0; i < w; i++) grey[j * w + i] = data[(row + i) * 4 + c] / 255;
+      for (let i = 0; i < w; i++) grey[j * w + i] = levels[data[(row + i) * 4 + c]];
     }
     return new TextureSampler(grey, w, h);
   });

@@ -2,9 +2,17 @@
 import { REGION_BACKGROUND, REGION_CUBE, REGION_EDGE, REGION_GLASS, REGION_SPHERE } from './regions';
 import type { ReferenceImage } from './reference-renderer';
 
-export type RegionName = 'all' | 'glass' | 'objects' | 'background' | 'edges';
-export const REGION_NAMES: readonly RegionName[] = ['all', 'glass', 'objects', 'background', 'edges'];
+/**
+ * 'all' and the region map's classes (glass, objects, background, edges: each pixel in one), plus
+ * 'dark' across them (a dark pixel counts in its own class too): pixels whose reference is
+ * below DARK_LEVEL in every channel, where colour held linearly in 8 bits would band (SPEC §13).
+ */
+export type RegionName = 'all' | 'glass' | 'objects' | 'background' | 'edges' | 'dark';
+export const REGION_NAMES: readonly RegionName[] = ['all', 'glass', 'objects', 'background', 'edges', 'dark'];
 export type PerRegion = Record<RegionName, number>;
+
+/** Dark: the reference as displayed (`ref.rgb`, encoded with srgb) below 32/255 in each channel. */
+export const DARK_LEVEL = 32 / 255;
 
 export interface CompareOptions {
   /**
@@ -34,7 +42,7 @@ const REGION_OF: Record<number, RegionName> = {
   [REGION_EDGE]: 'edges',
 };
 
-const perRegion = (v: number): PerRegion => ({ all: v, glass: v, objects: v, background: v, edges: v });
+const perRegion = (v: number): PerRegion => ({ all: v, glass: v, objects: v, background: v, edges: v, dark: v });
 
 /** Compares `rgba` (top row first, as `capture()` and the reference give it) with `ref`. */
 export function compareImages(
@@ -50,6 +58,7 @@ export function compareImages(
   const maxErrorByRegion = perRegion(0);
   for (let i = 0; i < count; i++) {
     const name = REGION_OF[ref.regions[i]];
+    const dark = Math.max(ref.rgb[3 * i], ref.rgb[3 * i + 1], ref.rgb[3 * i + 2]) < DARK_LEVEL;
     let sq = 0, max = 0;
     for (let c = 0; c < 3; c++) {
       const expected = quantised ? ref.rgba[4 * i + c] : ref.rgb[3 * i + c] * 255;
@@ -57,7 +66,7 @@ export function compareImages(
       sq += e * e;
       if (e > max) max = e;
     }
-    for (const r of ['all', name] as const) {
+    for (const r of dark ? (['all', name, 'dark'] as const) : (['all', name] as const)) {
       squares[r] += sq;
       pixels[r]++;
       if (max > maxErrorByRegion[r]) maxErrorByRegion[r] = max;

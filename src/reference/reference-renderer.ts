@@ -6,6 +6,7 @@ import { regionMap, regionOfCodes } from './regions';
 import type { ReferenceState, ViewState } from './reference-state';
 import { SampleTracer, type TextureFilter } from './sample-tracer';
 import type { SurfaceCodes } from './surface-codes';
+import { linearToSrgb } from '../math/srgb';
 
 export interface ReferenceOptions {
   /**
@@ -35,9 +36,13 @@ export interface ReferenceImage {
   view: ViewState['view'];
   samplesPerAxis: number;
   textureFilter: TextureFilter;
-  /** RGBA8, top row first, round(c·255), alpha 255 — comparable with `capture()`. */
+  /** RGBA8, top row first, round(c·255) of `rgb`, alpha 255 — comparable with `capture()`. */
   rgba: Uint8ClampedArray;
-  /** RGB in 0..1, float64, top row first: the reference itself, before quantisation. */
+  /**
+   * RGB in 0..1, float64, top row first: the reference itself, before quantisation. What the
+   * page shows: sRGB-encoded with colorSpace 'srgb' (SPEC §13; the fresnel view excepted), as
+   * computed with 'none'.
+   */
   rgb: Float64Array;
   /**
    * Per pixel: 0 background, 1 cube (any box), 2 sphere (any other object), 3 glass, 4 edge
@@ -61,8 +66,8 @@ export function renderReference(state: ReferenceState, options: ReferenceOptions
 
 /**
  * Renders `state.view` ('final', 'scene', 'reflection' or 'fresnel') of `scene` as the GPU
- * path would with exact geometry, shading and texture filtering. Pure: no DOM, no Node APIs;
- * runs in a browser, a worker or Node.
+ * path would with exact geometry, shading and texture filtering, in `state.colorSpace`. Pure:
+ * no DOM, no Node APIs; runs in a browser, a worker or Node.
  */
 export function renderScene(scene: Scene, state: ViewState, options: ReferenceOptions = {}): ReferenceImage {
   if (state.view === 'passes') {
@@ -79,6 +84,10 @@ export function renderScene(scene: Scene, state: ViewState, options: ReferenceOp
   const keys = new Int32Array(width * height);
   const mixed = new Uint8Array(width * height);
   const colour = new Float64Array(3);
+  const sum = new Float64Array(3);
+  // SPEC §13: samples are linear light with srgb, averaged as light, then encoded once; the
+  // fresnel view shows its number F unencoded.
+  const encode = state.colorSpace === 'srgb' && state.view !== 'fresnel';
   // NDC size of one stratum; NDC y points up while rows go down (the camera accounts for it).
   const fx = 2 / (width * n);
   const fy = 2 / (height * n);
@@ -87,7 +96,8 @@ export function renderScene(scene: Scene, state: ViewState, options: ReferenceOp
   for (let py = 0; py < height; py++) {
     for (let px = 0; px < width; px++) {
       const i = py * width + px;
-      let r = 0, g = 0, b = 0, first = 0;
+      let first = 0;
+      sum.fill(0);
       for (let sy = 0; sy < n; sy++) {
         const y = 1 - (py + (sy + 0.5) / n) * (2 / height);
         for (let sx = 0; sx < n; sx++) {
@@ -95,16 +105,16 @@ export function renderScene(scene: Scene, state: ViewState, options: ReferenceOp
           const key = tracer.sample(x, y, fx, fy, colour);
           if (sx === 0 && sy === 0) first = key;
           else if (key !== first) mixed[i] = 1;
-          r += colour[0]; g += colour[1]; b += colour[2];
+          for (let k = 0; k < 3; k++) sum[k] += colour[k];
         }
       }
       keys[i] = first;
-      rgb[3 * i] = r * weight;
-      rgb[3 * i + 1] = g * weight;
-      rgb[3 * i + 2] = b * weight;
-      rgba[4 * i] = Math.round(rgb[3 * i] * 255);
-      rgba[4 * i + 1] = Math.round(rgb[3 * i + 1] * 255);
-      rgba[4 * i + 2] = Math.round(rgb[3 * i + 2] * 255);
+      for (let k = 0; k < 3; k++) {
+        const mean = sum[k] * weight;
+        const c = encode ? linearToSrgb(mean) : mean;
+        rgb[3 * i + k] = c;
+        rgba[4 * i + k] = Math.round(c * 255);
+      }
       rgba[4 * i + 3] = 255;
     }
   }

@@ -14,6 +14,7 @@ import { clamp01, composeGlass, glassFresnel, prepareLight, shadeObject, type Pr
 import type { SurfaceCodes } from './surface-codes';
 import { SurfaceHit, SURFACE_NONE } from './surface-hit';
 import { SurfaceTexture, type TextureFilter } from './surface-texture';
+import { srgbToLinear } from '../math/srgb';
 
 export { MAX_FOOTPRINT_TEXELS, type TextureFilter } from './surface-texture';
 
@@ -69,6 +70,8 @@ export class SampleTracer {
   private readonly side: number;
   /** The first glass reflection's code in the current sample. */
   private reflected = SURFACE_NONE;
+  /** The scene's background in the frame's colour space: a CSS colour, decoded to linear light with srgb. */
+  private readonly backgroundColour = new Float64Array(3);
 
   constructor(
     scene: Scene, private readonly view: ViewState, filter: TextureFilter,
@@ -81,7 +84,9 @@ export class SampleTracer {
     this.scene = new RayScene(scene, view.time);
     this.codes = this.scene.codes;
     this.lights = scene.lights.map(prepareLight);
-    this.texture = new SurfaceTexture(filter, images);
+    this.texture = new SurfaceTexture(filter, view.colorSpace, images);
+    const bg = scene.background;
+    for (let k = 0; k < 3; k++) this.backgroundColour[k] = view.colorSpace === 'srgb' ? srgbToLinear(bg[k]) : bg[k];
     this.plane = this.scene.glass === null ? null : this.scene.glass.plane;
     this.side = this.plane === null ? 1
       : viewerSide(this.plane, this.camera.eye, this.camera.forward, view.projection ?? 'perspective');
@@ -93,7 +98,8 @@ export class SampleTracer {
   }
 
   /**
-   * Colour (0..1 per channel, clamped as the 8-bit target holds it) of the sample at NDC
+   * Colour (0..1 per channel, clamped as the 8-bit target holds it; linear light with srgb, SPEC
+   * §13, encoded once per pixel by the renderer) of the sample at NDC
    * (x, y) whose footprint is fx × fy NDC units, into `out`; returns its key.
    */
   sample(x: number, y: number, fx: number, fy: number, out: Float64Array): number {
@@ -233,7 +239,7 @@ export class SampleTracer {
   }
 
   private background(out: Float64Array): void {
-    const bg = this.scene.scene.background;
+    const bg = this.backgroundColour;
     out[0] = bg[0]; out[1] = bg[1]; out[2] = bg[2];
   }
 

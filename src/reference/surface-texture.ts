@@ -5,7 +5,8 @@ import { imageTexture, type ChannelTexture } from './image-texture';
 import type { DecodedImage } from '../scene/decoded-image';
 import type { Ray } from './ray';
 import type { SurfaceHit } from './surface-hit';
-import { TextureSampler } from './texture-sampler';
+import { proceduralGrey, TextureSampler } from './texture-sampler';
+import type { ColorSpace } from '../math/srgb';
 
 /** 'point': bilinear at the sample's UV (GL LINEAR at mip 0). 'box': exact mean over its footprint. */
 export type TextureFilter = 'point' | 'box';
@@ -36,26 +37,30 @@ export class SurfaceTexture {
   /** A plain material's texture (tex = 1). */
   private white: ChannelTexture | null = null;
 
-  constructor(private readonly filter: TextureFilter, private readonly decoded: ReadonlyMap<string, DecodedImage> = new Map()) {
-    const sampler = new TextureSampler();
+  /** Texels are decoded to linear light (srgb) or used as stored (none) when a texture is made. */
+  constructor(
+    private readonly filter: TextureFilter, private readonly colorSpace: ColorSpace,
+    private readonly decoded: ReadonlyMap<string, DecodedImage> = new Map(),
+  ) {
+    const sampler = new TextureSampler(proceduralGrey(colorSpace));
     this.procedural = { channels: [sampler], width: sampler.width, height: sampler.height };
   }
 
   /** An image texture by URL, decoded once; the procedural texture when it is missing or malformed. */
   textureOf(material: Material): ChannelTexture {
     const source = material.texture;
-    if (source.kind === 'none') return (this.white ??= imageTexture({ width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) })!);
+    if (source.kind === 'none') return (this.white ??= imageTexture({ width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }, this.colorSpace)!);
     if (source.kind !== 'image') return this.procedural;
     let tex = this.images.get(source.url);
     if (tex === undefined) {
       const image = this.decoded.get(source.url);
-      tex = image === undefined ? null : imageTexture(image);
+      tex = image === undefined ? null : imageTexture(image, this.colorSpace);
       this.images.set(source.url, tex);
     }
     return tex ?? this.procedural;
   }
 
-  /** The texture (RGB, 0..1) of `material` at an object hit, through its mapping, into `out`. */
+  /** The texture (RGB, 0..1, linear light with srgb) of `material` at an object hit, through its mapping, into `out`. */
   objectTexture(hit: SurfaceHit, ray: Ray, material: Material, bounds: Bounds, out: Float64Array): Float64Array {
     const tex = this.textureOf(material);
     const frame = hit.frame!;

@@ -1,6 +1,28 @@
 // A one-channel texture as a continuous function: bilinear point samples, or its exact box filter.
 import { proceduralTexture } from '../scene/procedural-texture';
 import { TEXTURE_SIZE } from '../scene/default-scene';
+import { SRGB_BYTE_TO_LINEAR, type ColorSpace } from '../math/srgb';
+
+/** b / 255 for every 8-bit level b: a byte used as stored. */
+const AS_STORED: Float64Array = Float64Array.from({ length: 256 }, (_, b) => b / 255);
+
+/**
+ * What a stored 8-bit level means in `colorSpace` (SPEC §13), by level: linear light decoded
+ * from sRGB, or b / 255 as stored. Texels are looked up here before any filtering, so bilinear
+ * and box filtering sum light, not encoded numbers.
+ */
+export function byteLevels(colorSpace: ColorSpace): Float64Array {
+  return colorSpace === 'srgb' ? SRGB_BYTE_TO_LINEAR : AS_STORED;
+}
+
+/** The procedural texture's grey levels (SPEC §3: 200/255, 100/255 and noise are encoded levels). */
+export function proceduralGrey(colorSpace: ColorSpace): Float64Array {
+  const rgba = proceduralTexture();
+  const levels = byteLevels(colorSpace);
+  const grey = new Float64Array(TEXTURE_SIZE * TEXTURE_SIZE);
+  for (let i = 0; i < grey.length; i++) grey[i] = levels[rgba[i * 4]];
+  return grey;
+}
 
 /**
  * The texture is the bilinear reconstruction of its W×H texels (what GL LINEAR shows when
@@ -11,7 +33,8 @@ import { TEXTURE_SIZE } from '../scene/default-scene';
  *
  * `boxFilter` integrates that function exactly over a parallelogram (the sample's footprint
  * mapped to texture space) by clipping it against every cell it covers and integrating the
- * patch over each piece with Green's theorem. Values are grey levels in 0..1 (R = G = B).
+ * patch over each piece with Green's theorem. Values are grey levels in 0..1 (R = G = B): linear
+ * light when the colour space is srgb (byteLevels), so filtering mixes light.
  */
 export class TextureSampler {
   private readonly grey: Float64Array;
@@ -26,12 +49,10 @@ export class TextureSampler {
   private readonly half = new Float64Array(24);
   private readonly piece = new Float64Array(24);
 
-  /** `grey`: W×H values in 0..1, row by row; absent, the procedural texture's grey levels. */
+  /** `grey`: W×H values in 0..1, row by row; absent, the procedural texture's grey levels as stored. */
   constructor(grey?: Float64Array, width = TEXTURE_SIZE, height = TEXTURE_SIZE) {
     if (grey === undefined) {
-      const rgba = proceduralTexture();
-      grey = new Float64Array(TEXTURE_SIZE * TEXTURE_SIZE);
-      for (let i = 0; i < grey.length; i++) grey[i] = rgba[i * 4] / 255;
+      grey = proceduralGrey('none');
       width = height = TEXTURE_SIZE;
     }
     this.grey = grey;

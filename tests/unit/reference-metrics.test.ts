@@ -33,7 +33,7 @@ describe('compareImages', () => {
     img[4 * 1] += 10; // cube pixel, red off by 10
     img[4 * 4 + 2] -= 6; // edge pixel, blue off by 6
     const c = compareImages(ref, img, { against: 'rgba8' });
-    expect(c.pixels).toEqual({ all: 5, glass: 1, objects: 2, background: 1, edges: 1 });
+    expect(c.pixels).toEqual({ all: 5, glass: 1, objects: 2, background: 1, edges: 1, dark: 0 });
     expect(c.rmse.objects).toBeCloseTo(Math.sqrt(100 / 6), 12);
     expect(c.rmse.edges).toBeCloseTo(Math.sqrt(36 / 3), 12);
     expect(c.rmse.background).toBe(0);
@@ -41,6 +41,38 @@ describe('compareImages', () => {
     expect(c.maxError).toBe(10);
     expect(c.maxErrorByRegion.edges).toBe(6);
     expect(c.psnr.glass).toBe(Infinity);
+  });
+
+  it('"dark" counts pixels whose reference is below 32/255 in every channel, on top of their own region', () => {
+    // Reference levels (of 255) per pixel, its region, and the image's error on one channel.
+    const pixels: [number[], number, number, number][] = [
+      [[20, 10, 5], REGION_BACKGROUND, 0, 3], // dark
+      [[31.6, 0, 31], REGION_GLASS, 1, 4], // dark: the reference is below 32, though its byte is 32
+      [[32, 0, 0], REGION_GLASS, 0, 10], // 32 is not
+      [[128, 128, 128], REGION_CUBE, 0, 0],
+      [[0, 0, 40], REGION_EDGE, 2, -7], // one channel above
+      [[0, 0, 0], REGION_EDGE, 2, 2], // dark
+    ];
+    const n = pixels.length;
+    const rgb = new Float64Array(3 * n), rgba = new Uint8ClampedArray(4 * n), img = new Uint8ClampedArray(4 * n);
+    pixels.forEach(([levels, , channel, error], i) => {
+      levels.forEach((l, c) => { rgb[3 * i + c] = l / 255; rgba[4 * i + c] = l; img[4 * i + c] = l + (c === channel ? error : 0); });
+    });
+    const ref: ReferenceImage = {
+      width: n, height: 1, view: 'final', samplesPerAxis: 1, textureFilter: 'point', rgb, rgba,
+      regions: new Uint8Array(pixels.map((p) => p[1])), keys: new Int32Array(n),
+    };
+    const c = compareImages(ref, img, { against: 'rgba8' });
+    expect(c.pixels).toEqual({ all: 6, glass: 2, objects: 1, background: 1, edges: 2, dark: 3 });
+    expect(c.rmse.dark).toBeCloseTo(Math.sqrt((9 + 16 + 4) / 9), 12);
+    expect(c.maxErrorByRegion.dark).toBe(4);
+    // The other regions as without it: each pixel once in its own region and in 'all'.
+    expect(c.rmse.glass).toBeCloseTo(Math.sqrt((16 + 100) / 6), 12);
+    expect(c.rmse.edges).toBeCloseTo(Math.sqrt((49 + 4) / 6), 12);
+    expect(c.rmse.all).toBeCloseTo(Math.sqrt((9 + 16 + 100 + 49 + 4) / 18), 12);
+    expect(c.maxError).toBe(10);
+    expect(rgba[4]).toBe(32);
+    expect(compareImages(ref, img).pixels.dark).toBe(3);
   });
 
   it('empty regions give NaN, a wrong-sized image throws a prefixed error', () => {
