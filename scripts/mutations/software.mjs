@@ -4,6 +4,7 @@ const RASTER = 'tests/unit/software-raster.test.ts';
 const PIXELS = 'tests/unit/software-pixels.test.ts';
 const GLASS = 'tests/unit/software-glass.test.ts';
 const VS_REFERENCE = 'tests/unit/software-reference.test.ts';
+const SRGB = 'tests/unit/software-srgb.test.ts';
 
 export default [
   {
@@ -86,5 +87,77 @@ export default [
     name: 'S12 the software renderer sizes spheres as if in perspective in an orthographic view (its half-height dropped)',
     edits: [{ file: 'src/software/software-renderer.ts', find: 'm.center, m.radius, s.halfHeight, r.width', replace: 'm.center, m.radius, 0, r.width' }],
     tests: ['tests/unit/mesh-choice.test.ts'],
+  },
+  {
+    name: 'S13 srgb: an image texture\'s texels used as stored (not decoded)',
+    edits: [{
+      file: 'src/software/mip-texture.ts',
+      find: 'const rgb = new Float32Array(w * h * 3), level = byteTable(space);',
+      replace: "const rgb = new Float32Array(w * h * 3), level = byteTable('none');",
+    }],
+    tests: [SRGB],
+  },
+  {
+    name: 'S14 srgb: the procedural texture\'s texels used as stored (not decoded)',
+    edits: [{ file: 'src/software/mip-texture.ts', find: 'const rgba = proceduralTexture(), level = byteTable(space);', replace: "const rgba = proceduralTexture(), level = byteTable('none');" }],
+    tests: [SRGB],
+  },
+  {
+    name: 'S15 srgb: the final encode missing (linear light written to the bytes)',
+    edits: [{ file: 'src/software/software-renderer.ts', find: "this.resolve(source, width, height, n, this.space === 'srgb' && view !== 'fresnel');", replace: 'this.resolve(source, width, height, n, false);' }],
+    tests: [SRGB],
+  },
+  {
+    name: 'S16 srgb: the fresnel view encoded like a picture',
+    edits: [{ file: 'src/software/software-renderer.ts', find: "this.resolve(source, width, height, n, this.space === 'srgb' && view !== 'fresnel');", replace: "this.resolve(source, width, height, n, this.space === 'srgb');" }],
+    tests: [SRGB],
+  },
+  {
+    name: 'S17 srgb: each sample encoded, then the box filter (averaging encoded values)',
+    edits: [
+      {
+        file: 'src/software/software-renderer.ts',
+        find: 'r += source[o]; g += source[o + 1]; b += source[o + 2];',
+        replace: 'r += encode ? encodeByte(source[o]) / 255 : source[o]; g += encode ? encodeByte(source[o + 1]) / 255 : source[o + 1]; b += encode ? encodeByte(source[o + 2]) / 255 : source[o + 2];',
+      },
+      {
+        file: 'src/software/software-renderer.ts',
+        find: 'out[p] = encode ? encodeByte(r * mean) : Math.round(r * k);\n        out[p + 1] = encode ? encodeByte(g * mean) : Math.round(g * k);\n        out[p + 2] = encode ? encodeByte(b * mean) : Math.round(b * k);',
+        replace: 'out[p] = Math.round(r * k);\n        out[p + 1] = Math.round(g * k);\n        out[p + 2] = Math.round(b * k);',
+      },
+    ],
+    tests: [SRGB],
+  },
+  {
+    name: 'S18 srgb: the background used as stored (not decoded)',
+    edits: [{ file: 'src/software/software-renderer.ts', find: "b[k] = space === 'srgb' ? srgbToLinear(bg[k]) : bg[k];", replace: 'b[k] = bg[k];' }],
+    tests: [SRGB],
+  },
+  {
+    name: 'S19 srgb: colour held as 8-bit linear levels (the opaque write rounded to 1/255)',
+    edits: [{
+      file: 'src/software/object-shader.ts',
+      find: 'c[o] = cr; c[o + 1] = cg; c[o + 2] = cb;',
+      replace: 'c[o] = Math.round(cr * 255) / 255; c[o + 1] = Math.round(cg * 255) / 255; c[o + 2] = Math.round(cb * 255) / 255;',
+    }],
+    tests: [SRGB],
+  },
+  {
+    name: 'S20 srgb: the background encoded instead of decoded (a doubled encode)',
+    edits: [
+      { file: 'src/software/software-renderer.ts', find: "import { srgbToLinear, type ColorSpace } from '../math/srgb';", replace: "import { linearToSrgb, srgbToLinear, type ColorSpace } from '../math/srgb';" },
+      { file: 'src/software/software-renderer.ts', find: "b[k] = space === 'srgb' ? srgbToLinear(bg[k]) : bg[k];", replace: "b[k] = space === 'srgb' ? linearToSrgb(bg[k]) : bg[k];" },
+    ],
+    tests: [SRGB],
+  },
+  {
+    name: 'S21 srgb: the encode table with 2048 bins (two steps share a bin in the darks)',
+    edits: [{ file: 'src/software/encode.ts', find: 'export const ENCODE_BINS = 4096;', replace: 'export const ENCODE_BINS = 2048;' }],
+    tests: [SRGB],
+  },
+  {
+    name: 'S22 srgb: the encode table compares with > (a value exactly at a step rounds down)',
+    edits: [{ file: 'src/software/encode.ts', find: 'return l >= NEXT[b] ? b + 1 : b;', replace: 'return l > NEXT[b] ? b + 1 : b;' }],
+    tests: [SRGB],
   },
 ];

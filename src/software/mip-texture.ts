@@ -1,5 +1,8 @@
 // A texture as the GPU samples it, in float: a 2×2-box mip chain, REPEAT, trilinear
 // (LINEAR_MIPMAP_LINEAR) with the isotropic LOD of the GL spec, from UV derivatives per pixel.
+// With `srgb` (SPEC §13) the 8-bit texels are decoded to linear light before the chain is built,
+// as an SRGB8_ALPHA8 texture is on the GPU: mips and filtering then average light.
+import { SRGB_BYTE_TO_LINEAR, type ColorSpace } from '../math/srgb';
 import { TEXTURE_SIZE } from '../scene/default-scene';
 import { proceduralTexture } from '../scene/procedural-texture';
 import type { DecodedImage } from '../scene/decoded-image';
@@ -84,31 +87,37 @@ function halve(level: Level, channels: number): Level {
   return { width: w, height: h, data };
 }
 
-let procedural: MipTexture | undefined;
+/** 8-bit level → what the texture holds: decoded to linear light (`srgb`), or b / 255 (`none`). */
+const byteTable = (space: ColorSpace): ArrayLike<number> => (space === 'srgb' ? SRGB_BYTE_TO_LINEAR : AS_STORED);
+const AS_STORED = Float64Array.from({ length: 256 }, (_, b) => b / 255);
 
-/** SPEC §3's checker-plus-noise, grey, built once and shared (read-only). */
-export function proceduralMipTexture(): MipTexture {
-  if (procedural) return procedural;
-  const rgba = proceduralTexture();
+const procedural: { srgb?: MipTexture; none?: MipTexture } = {};
+
+/** SPEC §3's checker-plus-noise, grey, built once per colour space and shared (read-only). */
+export function proceduralMipTexture(space: ColorSpace): MipTexture {
+  const built = procedural[space];
+  if (built) return built;
+  const rgba = proceduralTexture(), level = byteTable(space);
   const n = TEXTURE_SIZE;
   const grey = new Float32Array(n * n);
-  for (let i = 0; i < grey.length; i++) grey[i] = rgba[4 * i] / 255;
-  return (procedural = new MipTexture(1, n, n, grey));
+  for (let i = 0; i < grey.length; i++) grey[i] = level[rgba[4 * i]];
+  return (procedural[space] = new MipTexture(1, n, n, grey));
 }
 
 /**
  * A decoded image (RGBA8, top row first) as RGB with OBJ's convention (SPEC §9): v = 0 is the
  * image's bottom row, so texture row j is image row H − 1 − j (what the GL path gets by reading
- * at (u, 1 − v)). Null when the pixels do not match the size.
+ * at (u, 1 − v)). Its bytes are decoded to linear light with `srgb`. Null when the pixels do not
+ * match the size.
  */
-export function imageMipTexture(image: DecodedImage): MipTexture | null {
+export function imageMipTexture(image: DecodedImage, space: ColorSpace): MipTexture | null {
   const { width: w, height: h, data } = image;
   if (!(w >= 1 && h >= 1 && Number.isInteger(w) && Number.isInteger(h)) || data.length < w * h * 4) return null;
-  const rgb = new Float32Array(w * h * 3);
+  const rgb = new Float32Array(w * h * 3), level = byteTable(space);
   for (let j = 0; j < h; j++) {
     const row = (h - 1 - j) * w;
     for (let i = 0; i < w; i++) {
-      for (let k = 0; k < 3; k++) rgb[(j * w + i) * 3 + k] = data[(row + i) * 4 + k] / 255;
+      for (let k = 0; k < 3; k++) rgb[(j * w + i) * 3 + k] = level[data[(row + i) * 4 + k]];
     }
   }
   return new MipTexture(3, w, h, rgb);

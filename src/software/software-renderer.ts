@@ -1,7 +1,11 @@
 // SPEC §11's CPU renderer: the scene value drawn by the same passes and equations as the GL
 // path (reflection into a second frame buffer, scene, glass), without DOM or GL, so it can run
 // in a worker. Pixels come back as RGBA8, top row first, like `capture()` and the reference.
+// With colorSpace 'srgb' (SPEC §13) textures and the background are decoded, the Float32
+// buffers sum linear light, and the resolve encodes once; 'none' uses every value as stored.
 import { eyeRelativePlane, signedDistance } from '../math/mirror';
+import { srgbToLinear, type ColorSpace } from '../math/srgb';
+import { encodeByte } from './encode';
 import { FrameSetup } from '../frame/frame-setup';
 import type { FrameState } from '../frame/types';
 import type { DecodedImage } from '../scene/decoded-image';
@@ -28,8 +32,8 @@ type Selection = 'opaque' | 'transparent';
 type Side = 'all' | 'eye' | 'beyond';
 
 const BLACK = [0, 0, 0] as const;
-/** A plain material's texture (tex = 1). */
-const WHITE = imageMipTexture({ width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) })!;
+/** A plain material's texture (tex = 1, in either colour space). */
+const WHITE = imageMipTexture({ width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }, 'none')!;
 
 export class SoftwareRenderer {
   samplesPerAxis: number;
@@ -47,7 +51,11 @@ export class SoftwareRenderer {
   private reflection = new Float32Array(0);
   private mask = new Uint8Array(0);
   private output = new Uint8ClampedArray(0);
-  private readonly images = new WeakMap<DecodedImage, MipTexture | null>();
+  /** Each image's texture, built once per colour space it is drawn in. */
+  private readonly images: Record<ColorSpace, WeakMap<DecodedImage, MipTexture | null>> = { srgb: new WeakMap(), none: new WeakMap() };
+  /** The frame's colour space, and the background in it (decoded with 'srgb'). */
+  private space: ColorSpace = 'none';
+  private readonly background = new Float64Array(3);
   private readonly sideClip = new Float64Array(4);
   private readonly transparent: number[] = [];
   /** The `passes` view's frame, and the state each of its tiles is drawn with (reused). */
@@ -58,7 +66,7 @@ export class SoftwareRenderer {
 
   constructor(options: SoftwareRendererOptions = {}) {
     this.samplesPerAxis = options.samplesPerAxis ?? 1;
-    const procedural = proceduralMipTexture();
+    const procedural = proceduralMipTexture('none');
     this.glassShader.texture = procedural;
     this.draw = {
       mesh: { positions: new Float32Array(0), normals: new Float32Array(0), uvs: new Float32Array(0), indices: new Uint16Array(0) },
@@ -132,7 +140,7 @@ export class SoftwareRenderer {
           this.reflectionPass(state, scene, images, false);
           source = this.reflection;
         } else {
-          fill(this.colour, W * H, scene.background);
+          fill(this.colour, W * H, this.background);
         }
         break;
       case 'scene':
@@ -157,7 +165,8 @@ export class SoftwareRenderer {
         this.glass('compose');
         this.drawObjects(this.main, state, scene, images, false, 'transparent', 'eye');
     }
-    this.resolve(source, width, height, n);
+    // F is a number, shown unencoded in either space (SPEC §13); every other view is a picture.
+    this.resolve(source, width, height, n, this.space === 'srgb' && view !== 'fresnel');
     return this.output;
   }
 
@@ -179,6 +188,11 @@ export class SoftwareRenderer {
 
   private prepare(state: FrameState, scene: Scene): void {
     const s = this.setup;
+    const space: ColorSpace = state.colorSpace === 'srgb' ? 'srgb' : 'none';
+    this.space = space;
+    const bg = scene.background, b = this.background;
+    for (let k = 0; k < 3; k++) b[k] = space === 'srgb' ? srgbToLinear(bg[k]) : bg[k];
+    this.glassShader.texture = proceduralMipTexture(space);
     // The frame's matrices, both eyes' and the reflection's clip plane, as the GL path has them.
     s.update(state, scene);
     this.lightsMain.set(scene, s.lightWorld, s.eye);
@@ -207,7 +221,7 @@ export class SoftwareRenderer {
 
   private opaquePass(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined): void {
     const r = this.main;
-    fill(this.colour, r.width * r.height, scene.background);
+    fill(this.colour, r.width * r.height, this.background);
     r.clearDepth();
     r.mask = null;
     this.drawObjects(r, state, scene, images, false, 'opaque', 'all');
@@ -216,7 +230,7 @@ export class SoftwareRenderer {
   /** Pass 1 into the reflection buffer, at the masked pixels only when `masked`. */
   private reflectionPass(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined, masked: boolean): void {
     const r = this.mirror;
-    fill(this.reflection, r.width * r.height, scene.background);
+    fill(this.reflection, r.width * r.height, this.background);
     r.clearDepth();
     r.mask = masked ? this.mask : null;
     this.objectShader.colour = this.reflection;
@@ -280,19 +294,33 @@ export class SoftwareRenderer {
   }
 
   private textureOf(o: SceneObject, images: ReadonlyMap<string, DecodedImage> | undefined): MipTexture {
-    const source = o.material.texture;
+    const source = o.material.texture, space = this.space;
     if (source.kind === 'none') return WHITE;
-    if (source.kind !== 'image') return proceduralMipTexture();
+    if (source.kind !== 'image') return proceduralMipTexture(space);
     const image = images?.get(source.url);
-    if (image === undefined) return proceduralMipTexture();
-    let t = this.images.get(image);
-    if (t === undefined) this.images.set(image, (t = imageMipTexture(image)));
-    return t ?? proceduralMipTexture();
+    if (image === undefined) return proceduralMipTexture(space);
+    const built = this.images[space];
+    let t = built.get(image);
+    if (t === undefined) built.set(image, (t = imageMipTexture(image, space)));
+    return t ?? proceduralMipTexture(space);
   }
 
-  /** Box filter of n×n samples per pixel, rounded to RGBA8. */
-  private resolve(source: Float32Array, width: number, height: number, n: number): void {
-    const out = this.output, W = width * n, k = 255 / (n * n);
+  /**
+   * Box filter of n×n samples per pixel, rounded to RGBA8. With `encode` the mean (linear light)
+   * is encoded to sRGB after the average, as an MSAA resolve into an sRGB target does, by a
+   * table read (no pow per pixel).
+   */
+  private resolve(source: Float32Array, width: number, height: number, n: number, encode: boolean): void {
+    const out = this.output, W = width * n, k = 255 / (n * n), mean = 1 / (n * n);
+    if (n === 1 && encode) {
+      for (let i = 0, o = 0, p = 0; i < width * height; i++, o += 3, p += 4) {
+        out[p] = encodeByte(source[o]);
+        out[p + 1] = encodeByte(source[o + 1]);
+        out[p + 2] = encodeByte(source[o + 2]);
+        out[p + 3] = 255;
+      }
+      return;
+    }
     if (n === 1) {
       // Values are in [0, 1]: (x·255 + ½) | 0 is Math.round, without the call.
       for (let i = 0, o = 0, p = 0; i < width * height; i++, o += 3, p += 4) {
@@ -313,16 +341,16 @@ export class SoftwareRenderer {
           }
         }
         const p = 4 * (y * width + x);
-        out[p] = Math.round(r * k);
-        out[p + 1] = Math.round(g * k);
-        out[p + 2] = Math.round(b * k);
+        out[p] = encode ? encodeByte(r * mean) : Math.round(r * k);
+        out[p + 1] = encode ? encodeByte(g * mean) : Math.round(g * k);
+        out[p + 2] = encode ? encodeByte(b * mean) : Math.round(b * k);
         out[p + 3] = 255;
       }
     }
   }
 }
 
-function fill(buffer: Float32Array, pixels: number, rgb: readonly number[]): void {
+function fill(buffer: Float32Array, pixels: number, rgb: ArrayLike<number>): void {
   if (rgb[0] === rgb[1] && rgb[1] === rgb[2]) {
     buffer.fill(rgb[0], 0, 3 * pixels);
     return;
