@@ -11,11 +11,15 @@ import type { FrameState } from '../../src/frame/types';
 import type { Scene } from '../../src/scene/scene';
 
 const WHITE = '/tests/e2e/pages/models/white.png';
+const GREY_128 = '/tests/e2e/pages/models/grey128.png';
 
-/** A cube filling the middle of the frame, lit by ambient light only (`space`: the color-space attribute, or none). */
-const AMBIENT_CUBE = (renderer: string, space: string | null, texture = `texture="${WHITE}"`) => `<glass-plane-scene renderer="${renderer}"
+/**
+ * A cube filling the middle of the frame, lit by ambient light only (`space`: the color-space
+ * attribute, or none): colour = tex · Ka.
+ */
+const AMBIENT_CUBE = (renderer: string, space: string | null, texture = WHITE, ka = 0.2159) => `<glass-plane-scene renderer="${renderer}"
   ${space === null ? '' : `color-space="${space}"`} time="0" spin="0" glass-size="0 0" background="0 0 0" samples="0"
-  camera-position="0 0 2.5" camera-rotation="-90 0"><glass-object shape="cube" ${texture} ambient="0.2159 0.2159 0.2159"
+  camera-position="0 0 2.5" camera-rotation="-90 0"><glass-object shape="cube" texture="${texture}" ambient="${ka} ${ka} ${ka}"
   diffuse="0 0 0" specular="0 0 0"></glass-object><glass-light ambient="1 1 1" diffuse="0 0 0" specular="0 0 0"></glass-light></glass-plane-scene>`;
 
 /** The element's image once its texture image has been decoded and drawn. */
@@ -30,7 +34,7 @@ const centre = (img: RgbaImage) => {
   return [img.data[i], img.data[i + 1], img.data[i + 2]];
 };
 
-for (const renderer of ['webgl']) {
+for (const renderer of ['webgl', 'software']) {
   test.describe(`${renderer} renderer`, () => {
     for (const [space, expected] of [[null, 128], ['srgb', 128], ['none', 55]] as const) {
       test(`white image × Ka 0.2159 × Ia 1 is ${expected} with color-space ${space ?? '(default)'}`, async ({ page }) => {
@@ -41,6 +45,24 @@ for (const renderer of ['webgl']) {
         }
       });
     }
+
+    // An image is colour data: level 128 is 0.2158605 of light, halved by Ka 0.5 and encoded:
+    // 92. Used as stored: 64. (Not decoded, srgb would show encode(0.5·128/255) = 188.)
+    for (const [space, expected] of [['srgb', 92], ['none', 64]] as const) {
+      test(`an image's level 128 under Ka 0.5 is ${expected} with color-space ${space}`, async ({ page }) => {
+        await openPage(page);
+        await mountHtml(page, AMBIENT_CUBE(renderer, space, GREY_128, 0.5));
+        for (const c of centre(await settled(page))) expect(Math.abs(c - expected), `channel ${c}`).toBeLessThanOrEqual(1);
+      });
+    }
+
+    // No banding in the darks: light of 0.0015 encodes to 5 (0.0194); a frame held as 8-bit
+    // linear levels would round it to 0 before the encode.
+    test('a light level of 0.0015 shows as 5 in srgb (an 8-bit linear frame would hold 0)', async ({ page }) => {
+      await openPage(page);
+      await mountHtml(page, AMBIENT_CUBE(renderer, 'srgb', WHITE, 0.0015));
+      for (const c of centre(await settled(page))) expect(Math.abs(c - 5), `channel ${c}`).toBeLessThanOrEqual(1);
+    });
   });
 }
 

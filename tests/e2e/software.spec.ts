@@ -27,7 +27,7 @@ function referenceOfDefault(time: number) {
   const state: FrameState = {
     width: SIZE.width, height: SIZE.height, time, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
     fov: 60, cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
-    colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
+    colorSpace: 'srgb', view: 'final', reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
   };
   return renderReference(state, { samplesPerAxis: 4 });
 }
