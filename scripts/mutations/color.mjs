@@ -42,7 +42,7 @@ export default [
   {
     name: 'K7 the 8-bit reflection holds linear light as RGBA8',
     edits: [{ file: 'src/render/renderer.ts', find: "? 'rgba16f' : srgb ? 'srgb8' : 'rgba8';", replace: "? 'rgba16f' : 'rgba8';" }],
-    tests: [GOLDENS],
+    tests: [COLOR],
   },
   {
     name: 'K8 the fresnel view encoded like a picture',

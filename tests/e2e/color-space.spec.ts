@@ -56,6 +56,19 @@ for (const renderer of ['webgl', 'software']) {
       });
     }
 
+    // The reflection holds linear light without banding too: a white box lit to 0.0015 behind the
+    // camera, seen in clear glass (T 1, ior 10: F = 81/121 at normal incidence) over black:
+    // encode(0.6694·0.0015) = 0.01297 → 3. An 8-bit linear reflection would hold 0.0015 as 0.
+    test('a dark reflection keeps its level: 3 where an 8-bit linear reflection would give 0', async ({ page }) => {
+      await openPage(page);
+      await mountHtml(page, `<glass-plane-scene renderer="${renderer}" time="0" spin="0" samples="0" background="0 0 0"
+        glass-center="0 0 0" glass-normal="0 0 1" glass-size="8 8" ior="10" transparency="1" camera-position="0 0 5"
+        camera-rotation="-90 0"><glass-object shape="cube" position="0 0 7" scale="4" texture="${WHITE}" ambient="0.0015 0.0015 0.0015"
+        diffuse="0 0 0" specular="0 0 0"></glass-object><glass-light ambient="1 1 1" diffuse="0 0 0" specular="0 0 0"></glass-light>
+        </glass-plane-scene>`);
+      for (const c of centre(await settled(page))) expect(Math.abs(c - 3), `channel ${c}`).toBeLessThanOrEqual(1);
+    });
+
     // No banding in the darks: light of 0.0015 encodes to 5 (0.0194); a frame held as 8-bit
     // linear levels would round it to 0 before the encode.
     test('a light level of 0.0015 shows as 5 in srgb (an 8-bit linear frame would hold 0)', async ({ page }) => {
