@@ -5,6 +5,7 @@ const PIXELS = 'tests/unit/software-pixels.test.ts';
 const GLASS = 'tests/unit/software-glass.test.ts';
 const VS_REFERENCE = 'tests/unit/software-reference.test.ts';
 const SRGB = 'tests/unit/software-srgb.test.ts';
+const ANISO = 'tests/unit/software-anisotropic.test.ts';
 
 export default [
   {
@@ -159,5 +160,23 @@ export default [
     name: 'S22 srgb: the encode table compares with > (a value exactly at a step rounds down)',
     edits: [{ file: 'src/software/encode.ts', find: 'return l >= NEXT[b] ? b + 1 : b;', replace: 'return l > NEXT[b] ? b + 1 : b;' }],
     tests: [SRGB],
+  },
+  {
+    name: 'S23 anisotropic taps spread along the minor axis instead of the major',
+    edits: [{ file: 'src/software/mip-texture.ts', find: 'if (px2 >= py2) { au = dux; av = dvx; } else { au = duy; av = dvy; }', replace: 'if (px2 < py2) { au = dux; av = dvx; } else { au = duy; av = dvy; }' }],
+    tests: [ANISO],
+  },
+  {
+    name: 'S24 anisotropic taps read at the level of Pmax, not Pmax / r (the footprint\'s length, not its width)',
+    edits: [{ file: 'src/software/mip-texture.ts', find: '        rho2 /= r * r;\n', replace: '' }],
+    tests: [ANISO],
+  },
+  {
+    name: 'S25 anisotropic reads with color-space none too (its frames no longer what they were)',
+    edits: [
+      { file: 'src/software/mip-texture.ts', find: "return (procedural[space] = new MipTexture(1, n, n, grey, space === 'srgb'));", replace: 'return (procedural[space] = new MipTexture(1, n, n, grey, true));' },
+      { file: 'src/software/mip-texture.ts', find: "return new MipTexture(3, w, h, rgb, space === 'srgb');", replace: 'return new MipTexture(3, w, h, rgb, true);' },
+    ],
+    tests: [ANISO],
   },
 ];
