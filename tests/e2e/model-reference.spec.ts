@@ -19,8 +19,11 @@ const BOUND_DB = 35;
  * filtering errors), with the anisotropic reads it now makes 42.5 / 48.9 / 52.8.
  */
 const MEASURED = {
-  webgl: { all: 42.5, objects: 48.9, glass: 52.8 },
-  software: { all: 42.4, objects: 53.5, glass: 51.1 },
+  'webgl srgb': { all: 42.5, objects: 48.9, glass: 52.8 },
+  // One sample per pixel: its aliased silhouettes, steepened by the encode over the dark
+  // background, hold the whole image to 36.3 dB (the objects' insides 50.2); as stored 42.4.
+  'software srgb': { all: 36.3, objects: 50.2, glass: 54.1 },
+  'software none': { all: 42.4, objects: 53.5, glass: 51.1 },
 } as const;
 const MODELS = path.resolve(path.dirname(fileURLToPath(import.meta.url)), 'pages/models');
 
@@ -28,14 +31,15 @@ interface JsonObject extends Omit<SceneObject, 'geometry'> {
   geometry: SceneObject['geometry'] | { kind: 'mesh'; key: string; data: Record<string, number[]> };
 }
 
-for (const renderer of ['webgl', 'software'] as const) test(`${renderer}: a textured OBJ with MTL, a concave n-gon and negative indices matches the reference`, async ({ page }) => {
+const CASES = [['webgl', 'srgb'], ['software', 'srgb'], ['software', 'none']] as const;
+for (const [renderer, space] of CASES) test(`${renderer}, color-space ${space}: a textured OBJ with MTL, a concave n-gon and negative indices matches the reference`, async ({ page }) => {
   await openPage(page);
   // The image arrives late (a slow server): `load`, hence `ready`, must still wait for it.
   await page.route('**/models/checker.png', async (route) => {
     await new Promise((r) => setTimeout(r, 600));
     await route.continue();
   });
-  await mountHtml(page, `<glass-plane-scene renderer="${renderer}" time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
+  await mountHtml(page, `<glass-plane-scene renderer="${renderer}" color-space="${space}" time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
     <glass-object src="/tests/e2e/pages/models/ngon-textured.obj" position="-1.5 0 1"></glass-object>
     <glass-light direction="0.3 0.8 1"></glass-light>
   </glass-plane-scene>`);
@@ -88,15 +92,17 @@ for (const renderer of ['webgl', 'software'] as const) test(`${renderer}: a text
   const state: FrameState = {
     width: image.width, height: image.height, time: 0, spin: 0, cubeDistance: 0.75, transparency: view.transparency,
     ior: view.ior, fresnel: 'exact', fov: view.fov, cameraPosition: view.position as [number, number, number],
-    yaw: view.rotation[0], pitch: view.rotation[1], colorSpace: 'srgb', view: 'final',
+    yaw: view.rotation[0], pitch: view.rotation[1], colorSpace: space, view: 'final',
     reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
   };
   const ref = renderScene({ ...scene, objects }, state, { samplesPerAxis: 4, images });
   const cmp = compareImages(ref, image.data);
-  const line = `${renderer}: textured OBJ + MTL, n-gon, negative indices: PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}, glass ${cmp.psnr.glass.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;
+  const line = `${renderer} ${space}: textured OBJ + MTL, n-gon, negative indices: PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}, glass ${cmp.psnr.glass.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;
   note(line);
   expect(cmp.pixels.objects, 'the model covers part of the frame').toBeGreaterThan(300);
-  // Issue 9's bar for WebGL; issue 11's (40 dB) holds for both.
-  expect(cmp.psnr.all, line).toBeGreaterThanOrEqual(Math.max(BOUND_DB, 40));
-  expectPsnr(cmp, MEASURED[renderer], renderer);
+  // Issue 9's bar for WebGL; issue 11's (40 dB) holds for both as stored, and for WebGL in linear
+  // light. The software renderer's one sample per pixel misses it in linear light (36.3 dB,
+  // the edges): issue 20's note says so; its own figure is held below.
+  if (!(renderer === 'software' && space === 'srgb')) expect(cmp.psnr.all, line).toBeGreaterThanOrEqual(Math.max(BOUND_DB, 40));
+  expectPsnr(cmp, MEASURED[`${renderer} ${space}`], `${renderer} ${space}`);
 });

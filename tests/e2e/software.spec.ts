@@ -20,8 +20,12 @@ const BOUND_DB = 40;
  * in dB: the software renderer (in a worker or on the main thread, the same pixels) and WebGL.
  * The bounds sit 2 dB under each (helpers/bounds.ts).
  */
-const SOFTWARE_MEASURED = { all: 47.1, objects: 41.8, glass: 53.8, edges: 36.7 };
-const WEBGL_MEASURED = { all: 48.8, objects: 41.8, glass: 52.8, edges: 39.7 };
+// In linear light (the default color-space; textures read anisotropically in both renderers).
+// As stored they were software 47.1 / 41.8 / 53.8 / 36.7 and WebGL 48.8 / 41.8 / 52.8 / 39.7:
+// the encode steepens the edges' errors over the dark background (one sample per pixel in
+// software), while the anisotropic reads lift the objects.
+const SOFTWARE_MEASURED = { all: 43.2, objects: 45.3, glass: 50.8, edges: 32.1 };
+const WEBGL_MEASURED = { all: 46.4, objects: 44.5, glass: 50.5, edges: 36.3 };
 
 function referenceOfDefault(time: number) {
   const state: FrameState = {
@@ -64,7 +68,8 @@ test('switching renderer at run time: software → webgl → software, each draw
   const gl = await capture(page, undefined, selector);
   const ref = referenceOfDefault(1.25);
   const a = compareImages(ref, soft.data).psnr.all, b = compareImages(ref, gl.data).psnr.all;
-  console.log(`default scene 320×180 against the reference: software ${a.toFixed(1)} dB, webgl ${b.toFixed(1)} dB`);
+  const w = compareImages(ref, gl.data).psnr;
+  console.log(`default scene 320×180 against the reference: software ${a.toFixed(1)} dB, webgl ${b.toFixed(1)} dB (objects ${w.objects.toFixed(1)}, glass ${w.glass.toFixed(1)}, edges ${w.edges.toFixed(1)})`);
   for (const [name, img] of [['software', soft], ['webgl', gl]] as const) {
     const c = compareImages(ref, img.data).psnr;
     console.log(`switch, ${name}: objects ${c.objects.toFixed(1)}, glass ${c.glass.toFixed(1)}, edges ${c.edges.toFixed(1)}`);
