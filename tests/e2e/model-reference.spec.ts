@@ -104,5 +104,5 @@ for (const [renderer, space] of CASES) test(`${renderer}, color-space ${space}: 
   // light. The software renderer's one sample per pixel misses it in linear light (36.3 dB,
   // the edges): issue 20's note says so; its own figure is held below.
   if (!(renderer === 'software' && space === 'srgb')) expect(cmp.psnr.all, line).toBeGreaterThanOrEqual(Math.max(BOUND_DB, 40));
-  expectPsnr(cmp, MEASURED[`${renderer} ${space}`], `${renderer} ${space}`);
+  expectPsnr(cmp, MEASURED[`${renderer} ${space}` as keyof typeof MEASURED], `${renderer} ${space}`);
 });
