@@ -165,7 +165,14 @@ if (q.get('timing') !== '0') {
   peer.render(state, peerOptions);
 }
 
-const result = { state, peerOptions, regions, timing, renderer: peerGl.getParameter(peerGl.RENDERER) as string };
+/** FNV-1a of the peer's pixels: tells a changed peer frame from an unchanged one. */
+function fnv1a(d: Uint8ClampedArray): string {
+  let h = 0x811c9dc5;
+  for (let i = 0; i < d.length; i++) h = Math.imul(h ^ d[i], 0x01000193);
+  return (h >>> 0).toString(16).padStart(8, '0');
+}
+
+const result = { state, peerOptions, regions, peerHash: fnv1a(b), timing, renderer: peerGl.getParameter(peerGl.RENDERER) as string };
 (window as unknown as { __peerCheck: unknown }).__peerCheck = result;
 document.getElementById('out')!.textContent = JSON.stringify(result, null, 1);
 document.body.dataset.done = '1';
