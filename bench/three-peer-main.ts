@@ -1,8 +1,8 @@
 // Manual check of the three.js peer: renders the default FrameState with our renderer and with
 // ThreePeer side by side, shows |difference| × 8, prints per-region differences and timings.
 // Serve with `npx vite --port 5191 --strictPort` and open /bench/three-peer.html; query
-// `?samples=4&scale=0.5&segments=32&type=byte&x=..&y=..&z=..&yaw=..&pitch=..&time=..&timing=0`
-// changes the frame. bench/check-peer.mjs loads it headless and reads `window.__peerCheck`.
+// `?samples=4&scale=0.5&segments=32&type=byte&cs=none&x=..&y=..&z=..&yaw=..&pitch=..&time=..&timing=0`
+// changes the frame (cs: color-space, srgb by default as on the element). bench/check-peer.mjs loads it headless and reads `window.__peerCheck`.
 import { Renderer } from '../src/render/renderer';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
 import type { FrameState } from '../src/frame/types';
@@ -19,7 +19,7 @@ const state: FrameState = {
   ior: num('ior', 1.5), fresnel: (q.get('fresnel') ?? 'exact') as FrameState['fresnel'], fov: 60,
   cameraPosition: [num('x', DEFAULT_CAMERA_POSITION[0]), num('y', DEFAULT_CAMERA_POSITION[1]), num('z', DEFAULT_CAMERA_POSITION[2])],
   yaw: num('yaw', DEFAULT_CAMERA_ROTATION[0]), pitch: num('pitch', DEFAULT_CAMERA_ROTATION[1]),
-  colorSpace: 'none', view: 'final', reflectionScale: num('scale', 1), samples, shading: (q.get('shading') ?? 'phong') as FrameState['shading'], tessellation: num('segments', 64),
+  colorSpace: (q.get('cs') ?? 'srgb') as FrameState['colorSpace'], view: 'final', reflectionScale: num('scale', 1), samples, shading: (q.get('shading') ?? 'phong') as FrameState['shading'], tessellation: num('segments', 64),
   reflectionFormat: 'rgba8',
 };
 const peerOptions: PeerOptions = {

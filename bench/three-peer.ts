@@ -7,8 +7,19 @@
 // What is matched on purpose, so an accuracy comparison measures the reflection technique and
 // not unrelated differences:
 //  - geometry and UVs: our own MeshData builders (boxMesh, sphereMesh, glassMesh);
-//  - the texture: proceduralTexture(), row 0 first (flipY false), RGBA8, repeat, trilinear mips,
-//    no colour space; renderer output linear, no tone mapping, ColorManagement off;
+//  - the texture: proceduralTexture(), row 0 first (flipY false), repeat, trilinear mips;
+//  - colour (SPEC §13), from state.colorSpace. 'srgb': three.js's own default pipeline — linear
+//    light, sRGB output (renderer.outputColorSpace SRGBColorSpace, ColorManagement on), the texture
+//    tagged SRGBColorSpace (three stores it SRGB8_ALPHA8: decoded on read, filtered in linear
+//    light) and read anisotropically up to 16 taps as ours is, the background set as an sRGB
+//    colour (three decodes it, and encodes it again when it clears the canvas), the 8-bit
+//    targets tagged SRGBColorSpace (SRGB8_ALPHA8: blended and resolved in linear light), and every
+//    fragment shader ending in three's <colorspace_fragment> (linearToOutputTexel: sRGB's OETF
+//    when drawing to the canvas, nothing when drawing into a render target). 'none': values as
+//    stored, as before issue 20 — RGBA8 texture and targets with no colour space, linear output,
+//    ColorManagement off, isotropic reads (linearToOutputTexel is then the identity: measured,
+//    the frames are bit for bit those of the peer before it had <colorspace_fragment>);
+//  - no tone mapping;
 //  - shading: ShaderMaterials that evaluate our Blinn-Phong (SPEC §3) per fragment, and the
 //    glass equation of SPEC §4 (exact / Schlick / classic Fresnel, premultiplied blending);
 //  - camera: same fov, near/far, position and lookAt(position + forward, +Y).
@@ -19,14 +30,19 @@
 // edge pixels with MSAA (the sample pattern is not mirror-symmetric and the reflection image is
 // flipped); with the stock 'half' target the mean difference on the glass is ~0.1–0.3 levels
 // (reflected highlights above 1 are not clamped), max 1 at samples 0, up to 16 with MSAA at ior 10.
+// Those figures are for color-space none; with 'srgb' (`cs=srgb`) and MSAA 4 the peer's pixels
+// equal ours off the glass, and on it differ by 0.03–0.06 levels on average with the stock 'half'
+// target (0.002–0.008 with 'byte'), max 20 on ~30 pixels along the reflected cube's edges; at
+// samples 0 the glass differs by ~6 levels on average (max 32): the peer's blend mixes encoded
+// values there (see below).
 //
 // Known differences from our renderer (each is what three.js does, or the simplest honest
 // equivalent of it):
 //  - Reflection clipping: oblique near plane (Reflector) instead of gl_ClipDistance; depth
 //    precision in the reflection degrades as the camera nears the plane.
 //  - Reflection texture: Reflector allocates a HalfFloatType target (values above 1, e.g.
-//    reflected specular highlights, survive into F·R); ours is RGBA8 (clamped at 1). Set
-//    `reflectionType: 'byte'` to match ours.
+//    reflected specular highlights, survive into F·R); ours is 8-bit (RGBA8, SRGB8_ALPHA8 in
+//    'srgb'; clamped at 1). Set `reflectionType: 'byte'` to match ours.
 //  - The mirrored camera is a proper rotation (Reflector reflects position, target and up), so
 //    the reflection texture is ours flipped left-right. The flip maps texel centres onto texel
 //    centres, so projective lookups sample the same values (measured: no difference).
@@ -44,12 +60,16 @@
 //  - The reflection pass renders the whole scene (no culling of objects wholly behind the glass,
 //    no scissor to the glass's screen rectangle, unlike SPEC §7). It is skipped only when three's
 //    frustum culling drops the Reflector mesh (onBeforeRender runs for visible meshes only).
+//  - sRGB at samples 0: the objects and the glass encode as they draw into the canvas, so the
+//    glass's premultiplied blend mixes encoded values (three's default without a render target).
+//    With MSAA the scene target is SRGB8_ALPHA8 and the blend is in linear light, as ours.
+//    three's encode is pow(x, 0.41666), not 1/2.4: up to ~0.1 level off the exact curve.
 //  - Only view 'final' is drawn (debug views are ignored); `state.tessellation` is ignored in
 //    favour of `options.sphereSegments`.
 import lighting from '../shaders/lighting.glsl?raw';
 import * as THREE from 'three';
 import { Reflector } from 'three/addons/objects/Reflector.js';
-import type { FrameState } from '../src/frame/types';
+import type { ColorSpace, FrameState } from '../src/frame/types';
 import type { MeshData } from '../src/scene/geometry/mesh-data';
 import { boxMesh } from '../src/scene/geometry/box';
 import { sphereMesh } from '../src/scene/geometry/sphere';
@@ -120,6 +140,7 @@ void main() {
   vec3 a = vLightA, s = vLightS;
 #endif
   gl_FragColor = vec4(texture2D(uTexture, vUv).rgb * a + s, 1.0);
+  #include <colorspace_fragment>
 }
 `;
 
@@ -179,6 +200,7 @@ void main() {
 #else
   gl_FragColor = vec4(f * r + (1.0 - f) * (1.0 - uTransparency) * d, 1.0 - (1.0 - f) * uTransparency);
 #endif
+  #include <colorspace_fragment>
 }
 `;
 
@@ -188,7 +210,10 @@ void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }
 
 const COPY_FRAGMENT = /* glsl */ `
 uniform sampler2D tSource;
-void main() { gl_FragColor = texelFetch(tSource, ivec2(gl_FragCoord.xy), 0); }
+void main() {
+  gl_FragColor = texelFetch(tSource, ivec2(gl_FragCoord.xy), 0);
+  #include <colorspace_fragment>
+}
 `;
 
 // ---- helpers ---------------------------------------------------------------------------------
@@ -219,6 +244,12 @@ function v3(a: readonly number[]): THREE.Vector3 {
 
 const DEFAULT_OPTIONS: PeerOptions = { samples: 0, reflectionScale: 1, sphereSegments: 64 };
 
+/** Most taps of an anisotropic read in 'srgb', as ours (src/render/gl/texture.ts). */
+const MAX_ANISOTROPY = 16;
+
+/** three's name for the colour space 8-bit colour is held in: sRGB-encoded, or as stored. */
+const held = (cs: ColorSpace): THREE.ColorSpace => (cs === 'srgb' ? THREE.SRGBColorSpace : THREE.NoColorSpace);
+
 // ---- the peer --------------------------------------------------------------------------------
 
 export class ThreePeer {
@@ -226,7 +257,9 @@ export class ThreePeer {
   private readonly gl: WebGL2RenderingContext;
   private readonly scene = new THREE.Scene();
   private readonly camera = new THREE.PerspectiveCamera(60, 1, CAMERA.near, CAMERA.far);
-  private readonly texture: THREE.DataTexture;
+  /** The procedural texture in each colour space (three fixes a texture's storage at its first upload). */
+  private readonly textures: Record<ColorSpace, THREE.DataTexture>;
+  private colorSpace: ColorSpace = 'none';
   private readonly cube: THREE.Mesh;
   private readonly sphere: THREE.Mesh;
   private readonly cubeMaterial: THREE.ShaderMaterial;
@@ -249,7 +282,7 @@ export class ThreePeer {
   private raw = new Uint8Array(0);
 
   constructor(canvas: HTMLCanvasElement | OffscreenCanvas) {
-    // Stored values everywhere: no sRGB decode/encode, no tone mapping.
+    // Stored values until a frame asks for 'srgb' (applyColorSpace); never tone mapping.
     THREE.ColorManagement.enabled = false;
     this.renderer = new THREE.WebGLRenderer({
       canvas, antialias: false, alpha: false, depth: true, stencil: false,
@@ -262,16 +295,21 @@ export class ThreePeer {
     r.setClearColor(new THREE.Color(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2]), 1);
     this.gl = r.getContext() as WebGL2RenderingContext;
 
-    const t = new THREE.DataTexture(proceduralTexture(), TEXTURE_SIZE, TEXTURE_SIZE, THREE.RGBAFormat, THREE.UnsignedByteType);
-    t.flipY = false; // row y = 0 is the first row uploaded: texel (x, y) at UV ((x+0.5)/512, (y+0.5)/512)
-    t.wrapS = t.wrapT = THREE.RepeatWrapping;
-    t.magFilter = THREE.LinearFilter;
-    t.minFilter = THREE.LinearMipmapLinearFilter;
-    t.generateMipmaps = true;
-    t.colorSpace = THREE.NoColorSpace;
-    t.unpackAlignment = 1;
-    t.needsUpdate = true;
-    this.texture = t;
+    const texels = proceduralTexture();
+    const texture = (cs: ColorSpace): THREE.DataTexture => {
+      const t = new THREE.DataTexture(texels, TEXTURE_SIZE, TEXTURE_SIZE, THREE.RGBAFormat, THREE.UnsignedByteType);
+      t.flipY = false; // row y = 0 is the first row uploaded: texel (x, y) at UV ((x+0.5)/512, (y+0.5)/512)
+      t.wrapS = t.wrapT = THREE.RepeatWrapping;
+      t.magFilter = THREE.LinearFilter;
+      t.minFilter = THREE.LinearMipmapLinearFilter;
+      t.generateMipmaps = true;
+      t.colorSpace = held(cs);
+      t.anisotropy = cs === 'srgb' ? Math.min(MAX_ANISOTROPY, r.capabilities.getMaxAnisotropy()) : 1;
+      t.unpackAlignment = 1;
+      t.needsUpdate = true;
+      return t;
+    };
+    this.textures = { srgb: texture('srgb'), none: texture('none') };
 
     this.cubeMaterial = this.objectMaterial(CUBE.albedo);
     this.sphereMaterial = this.objectMaterial(SPHERE.albedo);
@@ -299,6 +337,8 @@ export class ThreePeer {
   /** Draws one frame of `state` (view 'final') at state.width × state.height into the canvas. */
   render(state: FrameState, options: PeerOptions): void {
     const r = this.renderer;
+    // Global in three; set per frame so Color conversions (the clear) follow this frame's space.
+    THREE.ColorManagement.enabled = state.colorSpace === 'srgb';
     const w = Math.max(1, Math.floor(state.width));
     const h = Math.max(1, Math.floor(state.height));
     if (w !== this.width || h !== this.height) {
@@ -365,7 +405,8 @@ export class ThreePeer {
     this.cubeMaterial.dispose();
     this.sphereMaterial.dispose();
     this.reflector.dispose();
-    this.texture.dispose();
+    this.textures.srgb.dispose();
+    this.textures.none.dispose();
     this.sceneTarget?.dispose();
     this.sceneTarget = null;
     this.copyScene.traverse((o) => { if (o instanceof THREE.Mesh) o.geometry.dispose(); });
@@ -376,6 +417,7 @@ export class ThreePeer {
   // ---- per-frame configuration (allocates only when a knob changes) ------------------------
 
   private configure(state: FrameState, options: PeerOptions, w: number, h: number): void {
+    if (state.colorSpace !== this.colorSpace) this.applyColorSpace(state.colorSpace);
     const segments = Math.round(options.sphereSegments);
     if (segments !== this.sphereSegments) {
       this.sphere.geometry.dispose();
@@ -397,11 +439,13 @@ export class ThreePeer {
     }
     const type = options.reflectionType ?? 'half';
     const rt = this.reflector.getRenderTarget();
-    if (type !== this.reflectionType) {
+    const space = type === 'byte' ? held(this.colorSpace) : THREE.NoColorSpace; // half float: linear either way
+    if (type !== this.reflectionType || rt.texture.colorSpace !== space) {
       // The target's storage is created lazily; dispose so it is rebuilt with the new type.
       this.reflectionType = type;
       rt.dispose();
       rt.texture.type = type === 'byte' ? THREE.UnsignedByteType : THREE.HalfFloatType;
+      rt.texture.colorSpace = space;
     }
     if (rt.samples !== options.samples) {
       rt.dispose();
@@ -412,11 +456,30 @@ export class ThreePeer {
     if (rt.width !== rw || rt.height !== rh) rt.setSize(rw, rh);
   }
 
+  /** Output, texture and background for `cs`; the 8-bit targets follow (configure, ensureSceneTarget). */
+  private applyColorSpace(cs: ColorSpace): void {
+    this.colorSpace = cs;
+    const r = this.renderer;
+    const srgb = cs === 'srgb';
+    r.outputColorSpace = srgb ? THREE.SRGBColorSpace : THREE.LinearSRGBColorSpace;
+    // An sRGB colour, as a CSS colour is (ColorManagement is on for 'srgb': three decodes it).
+    r.setClearColor(srgb
+      ? new THREE.Color().setRGB(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], THREE.SRGBColorSpace)
+      : new THREE.Color(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2]), 1);
+    const glass = this.reflector.material as THREE.ShaderMaterial;
+    for (const m of [this.cubeMaterial, this.sphereMaterial, glass]) m.uniforms.uTexture.value = this.textures[cs];
+  }
+
   private ensureSceneTarget(w: number, h: number, samples: number): THREE.WebGLRenderTarget {
     let t = this.sceneTarget;
+    if (t && t.texture.colorSpace !== held(this.colorSpace)) {
+      t.dispose();
+      t = this.sceneTarget = null;
+    }
     if (!t) {
+      // 8-bit colour: SRGB8_ALPHA8 for 'srgb' (three picks it from the colour space), RGBA8 for 'none'.
       t = this.sceneTarget = new THREE.WebGLRenderTarget(w, h, {
-        samples, type: THREE.UnsignedByteType, format: THREE.RGBAFormat, colorSpace: THREE.NoColorSpace,
+        samples, type: THREE.UnsignedByteType, format: THREE.RGBAFormat, colorSpace: held(this.colorSpace),
         depthBuffer: true, stencilBuffer: false, generateMipmaps: false,
         minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter,
       });
@@ -436,7 +499,7 @@ export class ThreePeer {
       fragmentShader: OBJECT_FRAGMENT,
       defines: shadingDefines('phong'),
       uniforms: {
-        uTexture: { value: this.texture },
+        uTexture: { value: this.textures.none },
         uKa: { value: v3(albedo) },
         uKd: { value: v3(albedo) },
         uKs: { value: new THREE.Vector3(MATERIAL.ks, MATERIAL.ks, MATERIAL.ks) },
@@ -473,7 +536,7 @@ export class ThreePeer {
     });
     const m = reflector.material as THREE.ShaderMaterial;
     // Set after construction: Reflector clones the shader's uniforms, which would clone a texture.
-    m.uniforms.uTexture.value = this.texture;
+    m.uniforms.uTexture.value = this.textures.none;
     m.uniforms.uBodyTint.value = new THREE.Vector3(...GLASS.tint.map((c) => c * GLASS.darkness));
     m.uniforms.uGlassRect.value = new THREE.Vector4(
       GLASS.xMin, GLASS.yMin, 1 / (GLASS.xMax - GLASS.xMin), 1 / (GLASS.yMax - GLASS.yMin));
