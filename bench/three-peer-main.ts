@@ -172,7 +172,14 @@ function fnv1a(d: Uint8ClampedArray): string {
   return (h >>> 0).toString(16).padStart(8, '0');
 }
 
-const result = { state, peerOptions, regions, peerHash: fnv1a(b), timing, renderer: peerGl.getParameter(peerGl.RENDERER) as string };
+// The bench draws both colour spaces with one peer: a frame after a switch away and back must
+// be the frame drawn fresh (the same hash).
+peer.render({ ...state, colorSpace: state.colorSpace === 'srgb' ? 'none' : 'srgb' }, peerOptions);
+peer.render(state, peerOptions);
+const peerHashAfterSwitch = fnv1a(peer.readPixels());
+peer.render(state, peerOptions);
+
+const result = { state, peerOptions, regions, peerHash: fnv1a(b), peerHashAfterSwitch, timing, renderer: peerGl.getParameter(peerGl.RENDERER) as string };
 (window as unknown as { __peerCheck: unknown }).__peerCheck = result;
 document.getElementById('out')!.textContent = JSON.stringify(result, null, 1);
 document.body.dataset.done = '1';
