@@ -20,7 +20,7 @@ function frameState(scene: Scene, knobs: Knobs, view: BenchView, mode: FrameStat
     width: Math.max(1, Math.round(scene.width * knobs.pixelRatio)),
     height: Math.max(1, Math.round(scene.height * knobs.pixelRatio)),
     time: scene.time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: knobs.fresnel, fov: 60,
-    cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace: 'none', view: mode,
+    cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace: knobs.colorSpace, view: mode,
     reflectionScale: knobs.reflectionScale, samples: knobs.samples, shading: knobs.shading, tessellation: knobs.tessellation,
     reflectionFormat: knobs.reflectionFormat, projection: view.projection,
   };

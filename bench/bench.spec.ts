@@ -1,17 +1,17 @@
 // The benchmark: every configuration × view, timed in shuffled round-robin, scored against
 // the float64 reference (SPEC §5), with the three.js peer in the same run. Writes
 // bench/results.md and bench/results.json and prints the table. Asserts no timings.
-import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
-import { createHash } from 'node:crypto';
 import { test, expect } from '../tests/e2e/fixtures';
-import { renderReference, compareImages, type ReferenceImage } from '../src/reference';
+import { compareImages, type ReferenceImage } from '../src/reference';
+import { COLOR_SPACES } from '../src/math/srgb';
 import { BASELINE, CONFIGS, DEFAULTS, configName, type BenchConfig, type Knobs } from './configs';
 import { SKIP_VIEWS, VIEWS, type BenchView } from './views';
-import { DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
 import { summary, shuffled } from './stats';
 import { paretoFront } from './pareto';
 import { resample } from './resample';
+import { cachedReference } from './reference-cache';
 import { aggregate, formatResults, type Row, type ViewResult } from './report';
 import type { BenchApi, Scene } from './bench-page';
 
@@ -21,43 +21,8 @@ const REFERENCE_SPP_AXIS = SMOKE ? 1 : 8;
 const REPETITIONS = SMOKE ? 1 : 5;
 const FRAMES = SMOKE ? 2 : 8;
 const WARMUP = SMOKE ? 0 : 2;
-const CACHE = new URL('./.cache/', import.meta.url);
 
 type Bench = { bench: BenchApi };
-
-/** The reference is slow (64 spp, float64): cache it by everything that defines it. */
-function reference(view: BenchView): ReferenceImage {
-  const state = {
-    width: SCENE.width, height: SCENE.height, time: SCENE.time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5,
-    ior: 1.5, fresnel: 'exact' as const, fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch,
-    colorSpace: 'none' as const, view: 'final' as const,
-  };
-  const sources = ['../src/reference/', '../src/scene/', '../src/math/'].map((d) => new URL(d, import.meta.url));
-  const key = createHash('sha256').update(JSON.stringify({ state, REFERENCE_SPP_AXIS, v: sourcesVersion(sources) })).digest('hex').slice(0, 16);
-  const file = new URL(`reference-${key}.json`, CACHE);
-  if (existsSync(file)) {
-    const j = JSON.parse(readFileSync(file, 'utf8'));
-    return { ...j, rgba: new Uint8ClampedArray(Buffer.from(j.rgba, 'base64')), rgb: new Float64Array(new Uint8Array(Buffer.from(j.rgb, 'base64')).buffer), regions: new Uint8Array(Buffer.from(j.regions, 'base64')) };
-  }
-  const ref = renderReference(state, { samplesPerAxis: REFERENCE_SPP_AXIS });
-  mkdirSync(CACHE, { recursive: true });
-  writeFileSync(file, JSON.stringify({
-    ...ref, rgba: Buffer.from(ref.rgba).toString('base64'), rgb: Buffer.from(new Uint8Array(ref.rgb.buffer)).toString('base64'),
-    regions: Buffer.from(ref.regions).toString('base64'),
-  }));
-  return ref;
-}
-
-/** A digest of the reference's own sources, so a change to them invalidates the cache. */
-function sourcesVersion(dirs: URL[]): string {
-  const h = createHash('sha256');
-  for (const d of dirs) {
-    for (const f of readdirSync(d).sort()) {
-      if (f.endsWith('.ts')) h.update(readFileSync(new URL(f, d)));
-    }
-  }
-  return h.digest('hex').slice(0, 12);
-}
 
 test('bench', async ({ page }) => {
   test.setTimeout(80 * 60_000);
@@ -65,15 +30,18 @@ test('bench', async ({ page }) => {
   await page.waitForFunction(() => 'bench' in window);
   const info = await page.evaluate(() => (window as unknown as Bench).bench.info());
 
-  const configs: BenchConfig[] = SMOKE ? [{ name: 'baseline', ...BASELINE }] : [...CONFIGS];
+  // The smoke run keeps one configuration in each colour space, so both paths cannot rot.
+  const configs: BenchConfig[] = SMOKE ? CONFIGS.filter((c) => configName({ ...c, colorSpace: 'srgb' }) === 'baseline') : [...CONFIGS];
   const views: BenchView[] = SMOKE ? [VIEWS[0]] : [...VIEWS];
   type Kind = 'ours' | 'scene-only' | 'clear-only' | 'three';
+  const NONE: Knobs = { ...BASELINE, colorSpace: 'none' };
   const runs: { key: string; kind: Kind; knobs: Knobs; label: string }[] = [
     ...configs.map((c) => ({
       key: c.name, kind: 'ours' as const, knobs: c as Knobs,
-      label: c.name === configName(DEFAULTS) ? `**defaults**: ${c.name}` : c.name,
+      label: configName({ ...c, colorSpace: DEFAULTS.colorSpace }) === configName(DEFAULTS) ? `**defaults**: ${c.name}` : c.name,
     })),
-    { key: 'three.js', kind: 'three', knobs: BASELINE, label: 'three.js (Reflector, HalfFloat, MSAA 4)' },
+    { key: 'three.js', kind: 'three', knobs: BASELINE, label: 'three.js (Reflector, HalfFloat, MSAA 4, sRGB output)' },
+    { key: 'three.js, color-space none', kind: 'three', knobs: NONE, label: 'three.js (Reflector, HalfFloat, MSAA 4), color-space none' },
     { key: 'scene only', kind: 'scene-only', knobs: BASELINE, label: 'baseline, scene pass only' },
     { key: 'clear only', kind: 'clear-only', knobs: BASELINE, label: 'clear only' },
   ];
@@ -100,8 +68,15 @@ test('bench', async ({ page }) => {
     gpu.set(`${r.key}|${v.name}`, ms);
   }
 
-  // Accuracy against the reference, per view.
-  const refs = new Map(views.map((v) => [v.name, reference(v)]));
+  // Accuracy against the reference of the row's own colour space, per view.
+  const refs = new Map<string, ReferenceImage>();
+  for (const colorSpace of COLOR_SPACES) {
+    for (const view of views) {
+      refs.set(`${colorSpace}|${view.name}`, cachedReference({ ...SCENE, view, colorSpace, samplesPerAxis: REFERENCE_SPP_AXIS }));
+    }
+  }
+  /** Pixel-ratio rows brought back to the bench size in linear light instead of as stored (srgb only). */
+  const linearResampled = new Map<string, ViewResult[]>();
   const rows: Row[] = [];
   for (const r of runs) {
     const perView: ViewResult[] = [];
@@ -111,9 +86,14 @@ test('bench', async ({ page }) => {
       if (r.kind === 'ours' || r.kind === 'three') {
         const px = await page.evaluate(([kind, scene, knobs, view]) =>
           (window as unknown as Bench).bench.pixels(kind, scene, knobs, view), [r.kind as 'ours' | 'three', SCENE, r.knobs, v] as const);
-        const rgba = resample(Buffer.from(px.data, 'base64'), px.width, px.height, SCENE.width, SCENE.height);
-        const c = compareImages(refs.get(v.name)!, rgba);
+        const bytes = Buffer.from(px.data, 'base64');
+        const ref = refs.get(`${r.knobs.colorSpace}|${v.name}`)!;
+        const c = compareImages(ref, resample(bytes, px.width, px.height, SCENE.width, SCENE.height));
         error = { psnr: c.psnr, maxError: c.maxError };
+        if (r.knobs.pixelRatio !== 1 && r.knobs.colorSpace === 'srgb') {
+          const l = compareImages(ref, resample(bytes, px.width, px.height, SCENE.width, SCENE.height, 'srgb'));
+          linearResampled.set(r.key, [...(linearResampled.get(r.key) ?? []), { view: v.name, ms: NaN, iqr: NaN, gpuMs: null, error: { psnr: l.psnr, maxError: l.maxError } }]);
+        }
       }
       perView.push({ view: v.name, ms: t.median, iqr: t.iqr, gpuMs: gpu.get(`${r.key}|${v.name}`) ?? null, error });
     }
@@ -121,8 +101,11 @@ test('bench', async ({ page }) => {
   }
 
   const scored = rows.filter((r) => r.kind === 'ours' || r.kind === 'three');
-  const front = paretoFront(scored.map(aggregate));
-  scored.forEach((r, i) => { r.pareto = front[i]; });
+  // One front per colour space: a none row's PSNR is against another reference. Only srgb has
+  // enough rows for a front to mean anything; none rows are left off it.
+  const srgbRows = scored.filter((r) => r.knobs.colorSpace === 'srgb');
+  const front = paretoFront(srgbRows.map(aggregate));
+  srgbRows.forEach((r, i) => { r.pareto = front[i]; });
 
   // What SPEC §7's skips save: the defaults with and without them, same views, interleaved.
   const savings: { view: string; on: number; off: number }[] = [];
@@ -142,7 +125,11 @@ test('bench', async ({ page }) => {
   }
 
   const sizes = await bundleSizes();
-  const text = formatResults({ info, scene: SCENE, referenceSpp: REFERENCE_SPP_AXIS ** 2, repetitions: REPETITIONS, frames: FRAMES, rows, sizes, views: views.map((v) => v.name), savings });
+  const linear = [...linearResampled].map(([key, perView]) => ({ ...rows.find((r) => r.key === key)!, perView }));
+  const text = formatResults({
+    info, scene: SCENE, referenceSpp: REFERENCE_SPP_AXIS ** 2, repetitions: REPETITIONS, frames: FRAMES, rows, sizes, views: views.map((v) => v.name), savings,
+    linearResampled: linear,
+  });
   console.log('\n' + text.markdown);
   if (!SMOKE) {
     writeFileSync(new URL('./results.md', import.meta.url), text.markdown);

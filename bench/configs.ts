@@ -1,7 +1,10 @@
 // Bench configurations: a high-quality baseline, one knob at a time from it, and the grids
-// shading × tessellation and reflection-scale × samples (deduplicated).
+// shading × tessellation and reflection-scale × samples (deduplicated), all in linear light
+// (color-space srgb, the element's default), and the baseline and the defaults with values as
+// stored (color-space none) beside them. Each row is scored against the reference in its own
+// colour space, so rows of different spaces are not on one Pareto front.
 import type { FresnelModel } from '../src/math/fresnel';
-import type { ReflectionFormat, Shading } from '../src/frame/types';
+import type { ColorSpace, ReflectionFormat, Shading } from '../src/frame/types';
 
 export interface BenchConfig {
   name: string;
@@ -12,17 +15,20 @@ export interface BenchConfig {
   tessellation: number | 'auto';
   pixelRatio: number;
   reflectionFormat: ReflectionFormat;
+  colorSpace: ColorSpace;
 }
 
 export type Knobs = Omit<BenchConfig, 'name'>;
 
 export const BASELINE: Knobs = {
   reflectionScale: 1, samples: 4, fresnel: 'exact', shading: 'phong', tessellation: 128, pixelRatio: 1, reflectionFormat: 'rgba8',
+  colorSpace: 'srgb',
 };
 
 /** The element's defaults (src/element/attributes.ts), at pixel-ratio 1 like every row. */
 export const DEFAULTS: Knobs = {
   reflectionScale: 1, samples: 4, fresnel: 'exact', shading: 'phong', tessellation: 'auto', pixelRatio: 1, reflectionFormat: 'rgba8',
+  colorSpace: 'srgb',
 };
 
 /** Short, stable name: only the knobs that differ from the baseline. */
@@ -35,6 +41,7 @@ export function configName(k: Knobs): string {
   if (k.tessellation !== BASELINE.tessellation) parts.push(`tessellation ${k.tessellation}`);
   if (k.pixelRatio !== BASELINE.pixelRatio) parts.push(`pixel-ratio ${k.pixelRatio}`);
   if (k.reflectionFormat !== BASELINE.reflectionFormat) parts.push(`reflection-format ${k.reflectionFormat}`);
+  if (k.colorSpace !== BASELINE.colorSpace) parts.push(`color-space ${k.colorSpace}`);
   return parts.length ? parts.join(', ') : 'baseline';
 }
 
@@ -57,6 +64,8 @@ function build(): BenchConfig[] {
   for (const reflectionScale of [0.25, 0.5, 1]) {
     for (const samples of [0, 2, 4] as const) list.push({ ...BASELINE, reflectionScale, samples, tessellation: 'auto' });
   }
+  // Values as stored (the course's convention, and every row before issue 20), scored against the none reference.
+  list.push({ ...BASELINE, colorSpace: 'none' }, { ...DEFAULTS, colorSpace: 'none' });
   const seen = new Map<string, BenchConfig>();
   for (const k of list) {
     const name = configName(k);

@@ -25,7 +25,7 @@ type Bench = { bench: BenchApi };
 function psnrOf(view: BenchView, rgba: Uint8Array) {
   const ref = renderReference({
     width: SCENE.width, height: SCENE.height, time: SCENE.time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5,
-    ior: 1.5, fresnel: 'exact', fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace: 'none', view: 'final',
+    ior: 1.5, fresnel: 'exact', fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace: DEFAULTS.colorSpace, view: 'final',
     projection: view.projection,
   }, { samplesPerAxis: SPP_AXIS });
   return compareImages(ref, rgba).psnr;
@@ -46,26 +46,26 @@ test('bench: perspective and orthographic', async ({ page }) => {
       samples.set(key(v), [...(samples.get(key(v)) ?? []), ms]);
     }
   }
-  const cells = new Map<string, { ms: number; iqr: number; all: number; glass: number }>();
+  const cells = new Map<string, { ms: number; iqr: number; all: number; glass: number; dark: number }>();
   for (const v of jobs) {
     const px = await page.evaluate(([scene, knobs, view]) =>
       (window as unknown as Bench).bench.pixels('ours', scene, knobs, view), [SCENE, DEFAULTS, v] as const);
     const psnr = psnrOf(v, new Uint8Array(Buffer.from(px.data, 'base64')));
     const t = summary(samples.get(key(v))!);
-    cells.set(key(v), { ms: t.median, iqr: t.iqr, all: psnr.all, glass: psnr.glass });
+    cells.set(key(v), { ms: t.median, iqr: t.iqr, all: psnr.all, glass: psnr.glass, dark: psnr.dark });
   }
   const f = (x: number, d = 2) => (Number.isFinite(x) ? x.toFixed(d) : '—');
   const lines = [
     '# Bench: perspective and orthographic', '',
-    `The element's defaults (tessellation auto, samples 4, reflection-scale 1) at ${SCENE.width}×${SCENE.height}, time ${SCENE.time} s, in each bench view (bench/views.ts), drawn with projection perspective and orthographic (sized at the glass centre, SPEC §10).`,
-    `ms/frame: median [IQR] of ${REPETITIONS} repetitions × ${FRAMES} frames, shuffled round-robin, wall clock. PSNR: against the float64 reference of the same projection at ${SPP_AXIS ** 2} samples per pixel (all / glass).`, '',
+    `The element's defaults (tessellation auto, samples 4, reflection-scale 1, color-space ${DEFAULTS.colorSpace}) at ${SCENE.width}×${SCENE.height}, time ${SCENE.time} s, in each bench view (bench/views.ts), drawn with projection perspective and orthographic (sized at the glass centre, SPEC §10).`,
+    `ms/frame: median [IQR] of ${REPETITIONS} repetitions × ${FRAMES} frames, shuffled round-robin, wall clock. PSNR: against the float64 reference of the same projection and colour space at ${SPP_AXIS ** 2} samples per pixel (all / glass / dark; dark: pixels whose reference, as displayed, is below 32/255 in every channel).`, '',
     '| view | perspective ms | perspective PSNR dB | orthographic ms | orthographic PSNR dB |',
     '|---|---|---|---|---|',
   ];
   const mean = (xs: number[]) => xs.reduce((a, b) => a + b, 0) / xs.length;
   for (const v of views) {
     const [p, o] = PROJECTIONS.map((projection) => cells.get(`${projection}|${v.name}`)!);
-    lines.push(`| ${v.name} | ${f(p.ms)} [${f(p.iqr)}] | ${f(p.all, 1)} / ${f(p.glass, 1)} | ${f(o.ms)} [${f(o.iqr)}] | ${f(o.all, 1)} / ${f(o.glass, 1)} |`);
+    lines.push(`| ${v.name} | ${f(p.ms)} [${f(p.iqr)}] | ${f(p.all, 1)} / ${f(p.glass, 1)} / ${f(p.dark, 1)} | ${f(o.ms)} [${f(o.iqr)}] | ${f(o.all, 1)} / ${f(o.glass, 1)} / ${f(o.dark, 1)} |`);
   }
   const avg = PROJECTIONS.map((projection) => {
     const c = views.map((v) => cells.get(`${projection}|${v.name}`)!);

@@ -4,7 +4,7 @@
 import { SoftwareHost } from '../src/element/software-host';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
 import { Renderer } from '../src/render/renderer';
-import type { FrameState } from '../src/frame/types';
+import type { ColorSpace, FrameState } from '../src/frame/types';
 import type { SoftwareTiming } from '../src/software';
 import { defaultScene } from '../src/scene/default-scene';
 import { DEFAULTS } from './configs';
@@ -17,11 +17,11 @@ export interface Size { width: number; height: number }
 
 const DEFAULT_VIEW: BenchView = { name: 'default', cameraPosition: [...DEFAULT_CAMERA_POSITION], yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1] };
 
-/** The element's defaults (bench/configs.ts DEFAULTS) at `time`. */
-function frameState(size: Size, time: number, view: BenchView = DEFAULT_VIEW): FrameState {
+/** The element's defaults (bench/configs.ts DEFAULTS) at `time`, in `colorSpace` (the default's unless given). */
+function frameState(size: Size, time: number, view: BenchView = DEFAULT_VIEW, colorSpace: ColorSpace = DEFAULTS.colorSpace): FrameState {
   return {
     width: size.width, height: size.height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5,
-    fresnel: DEFAULTS.fresnel, fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace: 'none', view: 'final',
+    fresnel: DEFAULTS.fresnel, fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace, view: 'final',
     reflectionScale: DEFAULTS.reflectionScale, samples: DEFAULTS.samples, shading: DEFAULTS.shading, tessellation: DEFAULTS.tessellation,
     reflectionFormat: DEFAULTS.reflectionFormat,
   };
@@ -70,20 +70,20 @@ const api = {
    * Round trip per frame (ms) of the default scene through the element's SoftwareHost: request
    * posted, pixels back on the main thread. The clock moves each frame so the cube turns.
    */
-  async hostFrames(size: Size, samplesPerAxis: number, frames: number, warmup: number): Promise<number[]> {
+  async hostFrames(size: Size, samplesPerAxis: number, frames: number, warmup: number, colorSpace: ColorSpace = DEFAULTS.colorSpace): Promise<number[]> {
     const h = await softwareHost(), scene = defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), out: number[] = [];
     for (let i = 0; i < warmup + frames; i++) {
       const t0 = performance.now();
-      await h.render(frameState(size, 1 + i / 60), scene, samplesPerAxis);
+      await h.render(frameState(size, 1 + i / 60, DEFAULT_VIEW, colorSpace), scene, samplesPerAxis);
       if (i >= warmup) out.push(performance.now() - t0);
     }
     return out;
   },
 
   /** The default scene at `time` through SoftwareHost's worker: RGBA8, top row first, base64. */
-  async hostPixels(size: Size, samplesPerAxis: number, time: number): Promise<string> {
+  async hostPixels(size: Size, samplesPerAxis: number, time: number, colorSpace: ColorSpace = DEFAULTS.colorSpace): Promise<string> {
     const h = await softwareHost();
-    return toBase64(await h.render(frameState(size, time), defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), samplesPerAxis));
+    return toBase64(await h.render(frameState(size, time, DEFAULT_VIEW, colorSpace), defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), samplesPerAxis));
   },
 
   /**
@@ -106,7 +106,7 @@ const api = {
    * WebGL ms per frame, each frame closed by a 1-pixel readback (so it is complete, as a software
    * frame is when its pixels are back): the default scene, or the Bézier patch at E (`bezier`).
    */
-  glFrames(size: Size, frames: number, warmup: number, bezier: number | null = null): number[] {
+  glFrames(size: Size, frames: number, warmup: number, bezier: number | null = null, colorSpace: ColorSpace = DEFAULTS.colorSpace): number[] {
     if (canvas.width !== size.width) canvas.width = size.width;
     if (canvas.height !== size.height) canvas.height = size.height;
     const scene = bezier === null ? undefined : bezierScene(bezier);
@@ -114,18 +114,18 @@ const api = {
     const out: number[] = [];
     for (let i = 0; i < warmup + frames; i++) {
       const t0 = performance.now();
-      renderer.render(frameState(size, 1 + i / 60, view), scene);
+      renderer.render(frameState(size, 1 + i / 60, view, colorSpace), scene);
       gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
       if (i >= warmup) out.push(performance.now() - t0);
     }
     return out;
   },
 
-  glPixels(size: Size, time: number, bezier: number | null = null): string {
+  glPixels(size: Size, time: number, bezier: number | null = null, colorSpace: ColorSpace = DEFAULTS.colorSpace): string {
     if (canvas.width !== size.width) canvas.width = size.width;
     if (canvas.height !== size.height) canvas.height = size.height;
     const scene = bezier === null ? undefined : bezierScene(bezier);
-    const px = renderer.read('screen', frameState(size, time, bezier === null ? DEFAULT_VIEW : BEZIER_VIEW), scene);
+    const px = renderer.read('screen', frameState(size, time, bezier === null ? DEFAULT_VIEW : BEZIER_VIEW, colorSpace), scene);
     return toBase64(px.data);
   },
 };

@@ -3,7 +3,8 @@
 // against the float64 reference, and in Node by shading mode; a ~100k-triangle mesh with its
 // frame split into transform, raster and shading; a bicubic Bézier patch's evaluation time and
 // image error against E; and main-thread long tasks while the element draws continuously, in a
-// worker and without one.
+// worker and without one; and the default scene's accuracy in every view of bench/views.ts. In
+// linear light (color-space srgb, the default), with rows as stored (none) against their own reference.
 // Writes bench/software.md; BENCH_SMOKE=1 runs each part tiny so the pipeline cannot rot.
 import { writeFileSync } from 'node:fs';
 import { loadavg } from 'node:os';
@@ -13,11 +14,13 @@ import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE
 import { bezierPatchMesh } from '../src/scene/geometry/bezier';
 import { defaultScene } from '../src/scene/default-scene';
 import { SoftwareRenderer, type SoftwareTiming } from '../src/software';
-import type { FrameState } from '../src/frame/types';
+import type { ColorSpace, FrameState } from '../src/frame/types';
 import { BENCH_SCENES } from './scenes';
+import { cachedReference } from './reference-cache';
+import { BAR_ALL_DB, BAR_DARK_DB } from './report';
 import { BEZIER_PATCH, BEZIER_VIEW, bezierScene, WHITE, WHITE_URL } from './bezier-scene';
 import { summary, shuffled } from './stats';
-import type { BenchView } from './views';
+import { VIEWS, type BenchView } from './views';
 import type { Size, SoftwareBenchApi } from './software-page';
 
 const SMOKE = process.env.BENCH_SMOKE === '1';
@@ -34,6 +37,9 @@ const REF_E = SMOKE ? 40 : 1024;
 const REF_E_CHECK = SMOKE ? null : 512;
 const PROBE_MS = SMOKE ? 500 : 3000;
 const PIXEL_TIME = 1.25;
+/** Section 5's reference: bench.spec.ts's own (same size, time, views and spp), so the cache serves both. */
+const VIEWS_REF_SPP = SMOKE ? 1 : 8;
+const REGIONS = ['all', 'objects', 'glass', 'edges', 'dark'] as const;
 
 type Page = import('@playwright/test').Page;
 const api = (page: Page) => ({
@@ -44,10 +50,10 @@ const api = (page: Page) => ({
     }, [name, args] as const) as Promise<Awaited<ReturnType<SoftwareBenchApi[K]>>>,
 });
 
-function state(size: Size, view: BenchView, time = PIXEL_TIME): FrameState {
+function state(size: Size, view: BenchView, time = PIXEL_TIME, colorSpace: ColorSpace = 'srgb'): FrameState {
   return {
     width: size.width, height: size.height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace: 'none', view: 'final',
+    fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace, view: 'final',
     reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
   };
 }
@@ -56,7 +62,8 @@ const DEFAULT_VIEW: BenchView = { name: 'default', cameraPosition: [...DEFAULT_C
 const bytes = (b64: string) => new Uint8Array(Buffer.from(b64, 'base64'));
 const f1 = (x: number) => (Number.isFinite(x) ? x.toFixed(1) : String(x));
 const med = (xs: number[]) => { const s = summary(xs); return `${s.median.toFixed(1)} [${s.iqr.toFixed(1)}]`; };
-const psnrCells = (c: ImageComparison) => `${f1(c.psnr.all)} / ${f1(c.psnr.objects)} / ${f1(c.psnr.glass)} / ${f1(c.psnr.edges)} | ${c.maxError.toFixed(0)}`;
+const regionCells = (c: ImageComparison) => REGIONS.map((g) => (Number.isNaN(c.psnr[g]) ? '—' : f1(c.psnr[g]))).join(' / ');
+const psnrCells = (c: ImageComparison) => `${regionCells(c)} | ${c.maxError.toFixed(0)}`;
 
 /** Median ms of `f` over `runs` runs after one untimed. */
 function timeNode(f: () => unknown, runs: number): number[] {
@@ -86,14 +93,19 @@ async function defaultSceneRows(page: Page): Promise<string[]> {
       },
     })),
     { key: 'gl', run: async () => { push(rt, 'gl', await b.call('glFrames', SIZE, FRAMES, WARMUP)); } },
+    { key: 'host 1 none', run: async () => { push(rt, 'host 1 none', await b.call('hostFrames', SIZE, 1, FRAMES, WARMUP, 'none')); } },
+    { key: 'gl none', run: async () => { push(rt, 'gl none', await b.call('glFrames', SIZE, FRAMES, WARMUP, null, 'none')); } },
   ];
   for (let rep = 0; rep < REPETITIONS; rep++) for (const j of shuffled(jobs, 11 + rep)) await j.run();
 
   const ref = renderScene(defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), state(SIZE, DEFAULT_VIEW), { samplesPerAxis: REF_SPP });
+  const refNone = renderScene(defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), state(SIZE, DEFAULT_VIEW, PIXEL_TIME, 'none'), { samplesPerAxis: REF_SPP });
   const cmp = {
     1: compareImages(ref, bytes(await b.call('hostPixels', SIZE, 1, PIXEL_TIME))),
     2: compareImages(ref, bytes(await b.call('hostPixels', SIZE, 2, PIXEL_TIME))),
     gl: compareImages(ref, bytes(await b.call('glPixels', SIZE, PIXEL_TIME, null))),
+    '1 none': compareImages(refNone, bytes(await b.call('hostPixels', SIZE, 1, PIXEL_TIME, 'none'))),
+    'gl none': compareImages(refNone, bytes(await b.call('glPixels', SIZE, PIXEL_TIME, null, 'none'))),
   };
   for (const c of Object.values(cmp)) expect(Number.isFinite(c.psnr.all)).toBe(true);
   const met = (k: string) => (summary(rt.get(k)!).median <= TARGET_MS ? 'yes' : 'no');
@@ -104,14 +116,18 @@ async function defaultSceneRows(page: Page): Promise<string[]> {
       `**Round trip**: main thread, request posted → pixels back (one frame in flight, as the element does); through the element's own SoftwareHost ` +
       `(src/element/software-host.ts, its worker src/software/worker.ts) and through a bench worker (bench/software-worker.ts, the same SoftwareRenderer) ` +
       `that also reports **its own render time** (render() and the copy of the pixels, inside the worker). WebGL: renderer.render() closed by a 1-pixel readPixels per frame. ` +
-      `PSNR against the float64 reference (renderScene, ${REF_SPP}×${REF_SPP} spp, box-filtered) at t = ${PIXEL_TIME} s.`, '',
-    '| renderer | spp | round trip, ms/frame median [IQR] | worker\'s own render, ms median [IQR] | ≤ 25 ms? | PSNR dB all / objects / glass / edges | max err |',
+      `PSNR against the float64 reference (renderScene, ${REF_SPP}×${REF_SPP} spp, box-filtered) at t = ${PIXEL_TIME} s, in the row's colour space: ` +
+      'linear light with sRGB output (color-space srgb, the element\'s default) against the srgb reference, the rows marked color-space none (values as stored) against the none reference. ' +
+      'dark: pixels whose reference, as displayed, is below 32/255 in every channel (counted in their own region too).', '',
+    '| renderer | spp | round trip, ms/frame median [IQR] | worker\'s own render, ms median [IQR] | ≤ 25 ms? | PSNR dB all / objects / glass / edges / dark | max err |',
     '|---|---|---|---|---|---|---|',
     `| software, SoftwareHost (element's worker) | 1 | ${med(rt.get('host 1')!)} | — | ${met('host 1')} | ${psnrCells(cmp[1])} |`,
     `| software, bench worker | 1 | ${med(rt.get('worker 1')!)} | ${med(own.get('worker 1')!)} | ${met('worker 1')} | (same pixels) | |`,
     `| software, SoftwareHost (element's worker) | 2×2 | ${med(rt.get('host 2')!)} | — | ${met('host 2')} | ${psnrCells(cmp[2])} |`,
     `| software, bench worker | 2×2 | ${med(rt.get('worker 2')!)} | ${med(own.get('worker 2')!)} | ${met('worker 2')} | (same pixels) | |`,
     `| WebGL (SwiftShader), same page and run | MSAA 4 | ${med(rt.get('gl')!)} | — | ${met('gl')} | ${psnrCells(cmp.gl)} |`,
+    `| software, SoftwareHost (element's worker), color-space none | 1 | ${med(rt.get('host 1 none')!)} | — | ${met('host 1 none')} | ${psnrCells(cmp['1 none'])} |`,
+    `| WebGL (SwiftShader), color-space none | MSAA 4 | ${med(rt.get('gl none')!)} | — | ${met('gl none')} | ${psnrCells(cmp['gl none'])} |`,
     '',
     ...nodeRows(),
   ];
@@ -124,15 +140,15 @@ async function defaultSceneRows(page: Page): Promise<string[]> {
  */
 function nodeRows(): string[] {
   const scene = defaultScene(DEFAULT_CUBE_DISTANCE, 0.8);
-  const rows: [number, FrameState['shading']][] = [[1, 'phong'], [1, 'gouraud'], [1, 'flat'], [2, 'phong']];
+  const rows: [number, FrameState['shading'], ColorSpace][] = [[1, 'phong', 'srgb'], [1, 'gouraud', 'srgb'], [1, 'flat', 'srgb'], [2, 'phong', 'srgb'], [1, 'phong', 'none']];
   const times = new Map<string, number[]>();
   const renderers = new Map(rows.map(([n]) => [n, new SoftwareRenderer({ samplesPerAxis: n })]));
   let frame = 0;
   for (let rep = 0; rep < REPETITIONS; rep++) {
-    for (const [n, shading] of shuffled(rows, 71 + rep)) {
-      const r = renderers.get(n)!, key = `${n} ${shading}`;
+    for (const [n, shading, colorSpace] of shuffled(rows, 71 + rep)) {
+      const r = renderers.get(n)!, key = `${n} ${shading} ${colorSpace}`;
       // The clock moves so the cube turns: every frame is a new one.
-      const next = () => r.render({ ...state(SIZE, DEFAULT_VIEW, PIXEL_TIME + frame++ / 60), shading }, scene);
+      const next = () => r.render({ ...state(SIZE, DEFAULT_VIEW, PIXEL_TIME + frame++ / 60, colorSpace), shading }, scene);
       for (let i = 0; i < WARMUP; i++) next();
       times.set(key, [...(times.get(key) ?? []), ...timeNode(next, FRAMES)]);
     }
@@ -140,9 +156,9 @@ function nodeRows(): string[] {
   return [
     `In Node ${process.version} (SoftwareRenderer.render() on the main thread, no worker, no copy of the pixels), the same scene and clock, ` +
       `${REPETITIONS} repetitions × ${FRAMES} frames per row (after ${WARMUP + 1} warm-up frames), rows shuffled per repetition:`, '',
-    '| spp | shading | ms/frame median [IQR] |',
-    '|---|---|---|',
-    ...rows.map(([n, shading]) => `| ${n === 1 ? '1' : `${n}×${n}`} | ${shading} | ${med(times.get(`${n} ${shading}`)!)} |`),
+    '| spp | shading | color-space | ms/frame median [IQR] |',
+    '|---|---|---|---|',
+    ...rows.map(([n, shading, colorSpace]) => `| ${n === 1 ? '1' : `${n}×${n}`} | ${shading} | ${colorSpace} | ${med(times.get(`${n} ${shading} ${colorSpace}`)!)} |`),
     '',
   ];
 }
@@ -211,11 +227,12 @@ async function bezier(page: Page): Promise<string[]> {
       `in Node ${process.version}, median of repeated calls. **PSNR** against the float64 reference renderer drawing the same patch tessellated at E = ${REF_E} ` +
       `(2·${REF_E - 1}² triangles through its BVH, normals interpolated per ray), ${REF_SPP}×${REF_SPP} spp; the software renderer in Node ` +
       `at 1 spp and at ${REF_SPP}×${REF_SPP} spp (the reference's own sample positions: the row isolates the geometry's error), and WebGL (MSAA 4, this page) at each E.${check} ` +
-      'Both images are rounded to 8 bits, which alone caps PSNR near 59 dB where they differ by rounding only.', '',
-    `| E | triangles | bezierPatchMesh, ms median [IQR] (runs) | µs per point | software 1 spp: ms/frame (Node) | PSNR 1 spp all / objects / edges | software ${REF_SPP}×${REF_SPP}: PSNR all / objects / edges, max err | WebGL: ms/frame | WebGL PSNR all / objects / edges |`,
+      'Both images are rounded to 8 bits, which alone caps PSNR near 59 dB where they differ by rounding only. ' +
+      'In linear light (color-space srgb, the default) on every side; dark: pixels whose reference, as displayed, is below 32/255 in every channel.', '',
+    `| E | triangles | bezierPatchMesh, ms median [IQR] (runs) | µs per point | software 1 spp: ms/frame (Node) | PSNR 1 spp all / objects / edges / dark | software ${REF_SPP}×${REF_SPP}: PSNR all / objects / edges / dark, max err | WebGL: ms/frame | WebGL PSNR all / objects / edges / dark |`,
     '|---|---|---|---|---|---|---|---|---|',
   ];
-  const three = (c: ImageComparison) => `${f1(c.psnr.all)} / ${f1(c.psnr.objects)} / ${f1(c.psnr.edges)}`;
+  const three = (c: ImageComparison) => (['all', 'objects', 'edges', 'dark'] as const).map((g) => f1(c.psnr[g])).join(' / ');
   const one = new SoftwareRenderer({ samplesPerAxis: 1 }), fine = new SoftwareRenderer({ samplesPerAxis: REF_SPP });
   for (const e of [...BEZIER_E, ...(SMOKE ? [] : [REF_E])]) {
     const evals = e === REF_E ? timeNode(() => bezierPatchMesh(BEZIER_PATCH, e), SMOKE ? 1 : 5) : timeNode(() => bezierPatchMesh(BEZIER_PATCH, e), runs(e));
@@ -234,6 +251,49 @@ async function bezier(page: Page): Promise<string[]> {
       `${((1000 * ev.median) / (e * e)).toFixed(2)} | ${med(swMs)} | ${three(c1)} | ${three(c4)}, ${c4.maxError.toFixed(0)} | ${glCells} |`);
   }
   lines.push('');
+  return lines;
+}
+
+/**
+ * The default scene in every bench view (bench/views.ts), software renderer in Node (the pixels
+ * the worker returns), both colour spaces, each against its own float64 reference: issue 20's
+ * bars (srgb ≥ 45 dB overall and ≥ 40 dB in the dark region) for the software renderer.
+ */
+function views(): string[] {
+  const views = SMOKE ? [VIEWS[0]] : [...VIEWS];
+  const spps = SMOKE ? [1] : [1, 2];
+  const scene = defaultScene(DEFAULT_CUBE_DISTANCE, 0.8);
+  const under: string[] = [];
+  const lines = [
+    `## 5. Default scene in every bench view, ${SIZE.width}×${SIZE.height}`, '',
+    `bench/views.ts's ${views.length} views at t = ${PIXEL_TIME} s (those of bench/results.md), SoftwareRenderer.render() in Node at 1 spp${SMOKE ? '' : ' and 2×2'}, ` +
+      `against the float64 reference of the same view and colour space at ${VIEWS_REF_SPP ** 2} spp (bench.spec.ts's, cached). PSNR dB ${REGIONS.join(' / ')} ("—": no pixel of that region). ` +
+      `Marked ✗: an srgb figure under issue 20's bars (≥ ${BAR_ALL_DB} dB overall, ≥ ${BAR_DARK_DB} dB dark).`, '',
+    `| view | ${spps.flatMap((n) => [`srgb, ${n === 1 ? '1 spp' : `${n}×${n}`}`, `none, ${n === 1 ? '1 spp' : `${n}×${n}`}`]).join(' | ')} |`,
+    `|---|${spps.flatMap(() => ['---', '---']).join('|')}|`,
+  ];
+  const renderers = new Map(spps.map((n) => [n, new SoftwareRenderer({ samplesPerAxis: n })]));
+  const sums = new Map<string, number[]>();
+  for (const view of views) {
+    const cells: string[] = [];
+    for (const n of spps) {
+      for (const colorSpace of ['srgb', 'none'] as const) {
+        const ref = cachedReference({ ...SIZE, time: PIXEL_TIME, view, colorSpace, samplesPerAxis: VIEWS_REF_SPP });
+        const c = compareImages(ref, renderers.get(n)!.render(state(SIZE, view, PIXEL_TIME, colorSpace), scene));
+        expect(Number.isFinite(c.psnr.all), `${view.name} ${colorSpace} ${n} PSNR`).toBe(true);
+        const bad = colorSpace === 'srgb' && (c.psnr.all < BAR_ALL_DB || c.psnr.dark < BAR_DARK_DB);
+        if (colorSpace === 'srgb' && c.psnr.all < BAR_ALL_DB) under.push(`${view.name}, ${n}×${n} spp: all ${f1(c.psnr.all)}`);
+        if (colorSpace === 'srgb' && c.psnr.dark < BAR_DARK_DB) under.push(`${view.name}, ${n}×${n} spp: dark ${f1(c.psnr.dark)}`);
+        cells.push(`${regionCells(c)}${bad ? ' ✗' : ''}`);
+        const k = `${n} ${colorSpace}`;
+        sums.set(k, [...(sums.get(k) ?? []), Math.min(c.psnr.all, 99)]);
+      }
+    }
+    lines.push(`| ${view.name} | ${cells.join(' | ')} |`);
+  }
+  const mean = (xs: number[]) => xs.reduce((a, b) => a + b, 0) / xs.length;
+  lines.push(`| **mean, all** | ${spps.flatMap((n) => (['srgb', 'none'] as const).map((cs) => f1(mean(sums.get(`${n} ${cs}`)!)))).join(' | ')} |`, '');
+  lines.push(under.length ? `Under a bar in srgb: ${under.join('; ')}.` : 'No srgb figure is under a bar in any view.', '');
   return lines;
 }
 
@@ -339,6 +399,7 @@ test('bench: software renderer (issue 11)', async ({ page }) => {
     ...(await split(page)),
     ...(await bezier(page)),
     ...(await responsiveness(page)),
+    ...views(),
   ];
   const md = [
     '# Bench: the software renderer (issue 11)', '',

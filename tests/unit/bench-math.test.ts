@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { dominates, paretoFront, PSNR_TOLERANCE_DB } from '../../bench/pareto';
 import { quantile, shuffled, summary } from '../../bench/stats';
 import { resample } from '../../bench/resample';
-import { CONFIGS, BASELINE, configName } from '../../bench/configs';
+import { CONFIGS, BASELINE, DEFAULTS, configName } from '../../bench/configs';
 
 describe('pareto', () => {
   it('dominates when no slower, no worse, and better beyond the noise in one', () => {
@@ -44,6 +44,14 @@ describe('resample', () => {
     expect([...resample(src, 2, 2, 1, 1)]).toEqual([100, 100, 100, 255]);
     expect([...resample(src, 2, 2, 2, 2)]).toEqual([...src]);
   });
+  it("mixes as stored by default, in linear light with 'srgb' (alpha as stored either way)", () => {
+    const blackWhite = new Uint8ClampedArray([0, 0, 0, 255, 255, 255, 255, 0]);
+    expect([...resample(blackWhite, 2, 1, 1, 1)]).toEqual([128, 128, 128, 128]); // 127.5, rounded up
+    // Half-way between black and white in light: encode(0.5) = 0.7354, level 188 (issue 20).
+    expect([...resample(blackWhite, 2, 1, 1, 1, 'srgb')]).toEqual([188, 188, 188, 128]);
+    const grey = new Uint8ClampedArray(4 * 4).fill(77);
+    expect(new Set(resample(grey, 2, 2, 3, 3, 'srgb'))).toEqual(new Set([77])); // bilinear, decoded and encoded again
+  });
   it('bilinearly enlarges, preserving a constant image', () => {
     const src = new Uint8ClampedArray(4 * 4).fill(77);
     expect(new Set(resample(src, 2, 2, 3, 3))).toEqual(new Set([77]));
@@ -57,5 +65,14 @@ describe('configs', () => {
     expect(new Set(CONFIGS.map((c) => c.name)).size).toBe(CONFIGS.length);
     expect(configName(BASELINE)).toBe('baseline');
     expect(configName({ ...BASELINE, samples: 0 })).toBe('samples 0');
+  });
+  it('draws every row in linear light but the baseline and the defaults as stored, named so', () => {
+    expect(BASELINE.colorSpace).toBe('srgb');
+    expect(DEFAULTS.colorSpace).toBe('srgb');
+    const none = CONFIGS.filter((c) => c.colorSpace === 'none').map((c) => c.name);
+    expect(none).toContain('color-space none');
+    expect(none).toContain(configName({ ...DEFAULTS, colorSpace: 'none' }));
+    expect(configName({ ...DEFAULTS, colorSpace: 'none' })).toBe('tessellation auto, color-space none');
+    for (const c of CONFIGS) expect(c.name.includes('color-space none')).toBe(c.colorSpace === 'none');
   });
 });
