@@ -63,7 +63,7 @@
 //  - sRGB at samples 0: the objects and the glass encode as they draw into the canvas, so the
 //    glass's premultiplied blend mixes encoded values (three's default without a render target).
 //    With MSAA the scene target is SRGB8_ALPHA8 and the blend is in linear light, as ours.
-//    three's encode is pow(x, 0.41666), not 1/2.4: up to ~0.1 level off the exact curve.
+//    three's encode is pow(x, 0.41666), not 1/2.4: at most 0.0016 of a level off the exact curve.
 //  - Only view 'final' is drawn (debug views are ignored); `state.tessellation` is ignored in
 //    favour of `options.sphereSegments`.
 import lighting from '../shaders/lighting.glsl?raw';
