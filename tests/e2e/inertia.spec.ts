@@ -82,6 +82,14 @@ function fitTau(times: number[], remaining: number[], atRelease: number) {
 
 const RATES = [13, 30, 144];
 
+/**
+ * Frames as cheap as they were before linear light: the timing is what is measured here, and on
+ * SwiftShader a frame in srgb costs several times more (its multisampled sRGB resolve); with a
+ * bench or mutation run beside the tests, the trackball's 20 s wait for the motion's end ran out
+ * twice that way (alone it passed, τ 0.349 s).
+ */
+const CHEAP = { 'color-space': 'none' } as const;
+
 type DecayRun = { fps: number; tau: number; turn: number; frames: number; meanMs: number; maxMs: number };
 
 /** The decay measured at each paced rate: τ ≤ 0.5 s in real time, the element's own τ, and the same turn as at 144 fps. */
@@ -99,7 +107,7 @@ function expectWallClockDecay(what: string, runs: DecayRun[]): void {
 test('trackball: after a flick the objects\' turn decays with τ ≤ 0.5 s in real time at 13, 30 and 144 frames/s, and turns as far at each', async ({ page }) => {
   await page.addInitScript(pacedFrames);
   await openPage(page);
-  const { selector } = await mount(page, { time: 0, spin: 0, controls: 'trackball' }, { width: 160, height: 90 });
+  const { selector } = await mount(page, { ...CHEAP, time: 0, spin: 0, controls: 'trackball' }, { width: 160, height: 90 });
   const b = await box(page, selector);
   const cdp = await page.context().newCDPSession(page);
   const runs: DecayRun[] = [];
@@ -119,7 +127,7 @@ test('trackball: after a flick the objects\' turn decays with τ ≤ 0.5 s in re
 test('orbit: after a flick the camera\'s turn decays with τ ≤ 0.5 s in real time at 13, 30 and 144 frames/s, and turns as far at each', async ({ page }) => {
   await page.addInitScript(pacedFrames);
   await openPage(page);
-  const { selector } = await mount(page, { time: 0, spin: 0, controls: 'orbit', 'camera-position': '0 1 6', 'camera-target': '0 0 0' }, { width: 160, height: 90 });
+  const { selector } = await mount(page, { ...CHEAP, time: 0, spin: 0, controls: 'orbit', 'camera-position': '0 1 6', 'camera-target': '0 0 0' }, { width: 160, height: 90 });
   const b = await box(page, selector);
   const cdp = await page.context().newCDPSession(page);
   const runs: DecayRun[] = [];
@@ -139,7 +147,7 @@ test('orbit: after a flick the camera\'s turn decays with τ ≤ 0.5 s in real t
 
 test('orbit: a flick turns on at its release rate (no 6.3°/s cap), and its one camera-change comes as the rate falls below 0.05°/s, τ·ln(r₀ ÷ 0.05°/s) after release', async ({ page }) => {
   await openPage(page);
-  const { selector } = await mount(page, { time: 0, spin: 0, controls: 'orbit', 'camera-position': '0 1 6', 'camera-target': '0 0 0' }, { width: 160, height: 90 });
+  const { selector } = await mount(page, { ...CHEAP, time: 0, spin: 0, controls: 'orbit', 'camera-position': '0 1 6', 'camera-target': '0 0 0' }, { width: 160, height: 90 });
   const changes = await recordCameraChanges(page, selector);
   await page.evaluate((s) => {
     const el = document.querySelector(s) as unknown as ControlsElement & { cameraRotation: number[] };
