@@ -12,8 +12,9 @@ const REBUILDS = 'tests/e2e/scene-rebuilds.spec.ts';
 
 export default [
   {
+    // The default element's procedural texture is the sRGB one (color-space srgb).
     name: '4 dispose() skips the texture',
-    edits: [{ file: 'src/render/gl/shared-resources.ts', find: '    this.procedural?.dispose();\n', replace: '' }],
+    edits: [{ file: 'src/render/gl/shared-resources.ts', find: '    this.proceduralSrgb?.dispose();\n', replace: '' }],
     tests: [LEAKS],
   },
   {
