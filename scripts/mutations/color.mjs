@@ -46,7 +46,7 @@ export default [
   },
   {
     name: 'K8 the fresnel view encoded like a picture',
-    edits: [{ file: 'src/render/renderer.ts', find: "export const linearFrame = (state: FrameState): boolean => state.colorSpace === 'srgb' && state.view !== 'fresnel';", replace: "export const linearFrame = (state: FrameState): boolean => state.colorSpace === 'srgb';" }],
+    edits: [{ file: 'src/frame/linear-light.ts', find: "export const encodesAtEnd = (state: Pick<FrameState, 'colorSpace' | 'view'>): boolean =>\n  state.colorSpace === 'srgb' && state.view !== 'fresnel';", replace: "export const encodesAtEnd = (state: Pick<FrameState, 'colorSpace' | 'view'>): boolean =>\n  state.colorSpace === 'srgb';" }],
     tests: [GOLDENS],
   },
   {

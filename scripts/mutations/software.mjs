@@ -105,12 +105,12 @@ export default [
   },
   {
     name: 'S15 srgb: the final encode missing (linear light written to the bytes)',
-    edits: [{ file: 'src/software/software-renderer.ts', find: "this.resolve(source, width, height, n, this.space === 'srgb' && view !== 'fresnel');", replace: 'this.resolve(source, width, height, n, false);' }],
+    edits: [{ file: 'src/software/software-renderer.ts', find: 'this.resolve(source, width, height, n, encodesAtEnd(state));', replace: 'this.resolve(source, width, height, n, false);' }],
     tests: [SRGB],
   },
   {
     name: 'S16 srgb: the fresnel view encoded like a picture',
-    edits: [{ file: 'src/software/software-renderer.ts', find: "this.resolve(source, width, height, n, this.space === 'srgb' && view !== 'fresnel');", replace: "this.resolve(source, width, height, n, this.space === 'srgb');" }],
+    edits: [{ file: 'src/frame/linear-light.ts', find: "export const encodesAtEnd = (state: Pick<FrameState, 'colorSpace' | 'view'>): boolean =>\n  state.colorSpace === 'srgb' && state.view !== 'fresnel';", replace: "export const encodesAtEnd = (state: Pick<FrameState, 'colorSpace' | 'view'>): boolean =>\n  state.colorSpace === 'srgb';" }],
     tests: [SRGB],
   },
   {

@@ -13,6 +13,7 @@ import { ResourceCounter } from './gl/resource-counter';
 import { TextureCache } from './texture-cache';
 import { LinearFrame } from './linear-frame';
 import { srgbToLinear } from '../math/srgb';
+import { encodesAtEnd } from '../frame/linear-light';
 import { readFramebuffer, type Pixels } from './gl/read-pixels';
 import { SharedResources } from './gl/shared-resources';
 import { FrameSetup } from '../frame/frame-setup';
@@ -48,9 +49,6 @@ function setViewport(out: Viewport, x: number, y: number, width: number, height:
   out.height = height;
   return out;
 }
-
-/** Is this frame drawn in linear light and encoded at the end? */
-export const linearFrame = (state: FrameState): boolean => state.colorSpace === 'srgb' && state.view !== 'fresnel';
 
 export class Renderer {
   private readonly counter = new ResourceCounter();
@@ -283,7 +281,7 @@ export class Renderer {
     this.prepare(state);
     const samples = this.samplesFor(state);
     // The fresnel view is a number, not a picture: drawn as stored in either space (SPEC §13).
-    if (linearFrame(state)) {
+    if (encodesAtEnd(state)) {
       const n = this.drawView(state, this.linearFrame.begin(state.width, state.height, samples));
       return n + this.linearFrame.end(destination);
     }

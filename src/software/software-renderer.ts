@@ -7,6 +7,7 @@ import { eyeRelativePlane, signedDistance } from '../math/mirror';
 import { srgbToLinear, type ColorSpace } from '../math/srgb';
 import { encodeByte } from './encode';
 import { FrameSetup } from '../frame/frame-setup';
+import { encodesAtEnd } from '../frame/linear-light';
 import type { FrameState } from '../frame/types';
 import type { DecodedImage } from '../scene/decoded-image';
 import { DefaultSceneCache } from '../scene/default-scene';
@@ -166,7 +167,7 @@ export class SoftwareRenderer {
         this.drawObjects(this.main, state, scene, images, false, 'transparent', 'eye');
     }
     // F is a number, shown unencoded in either space (SPEC §13); every other view is a picture.
-    this.resolve(source, width, height, n, this.space === 'srgb' && view !== 'fresnel');
+    this.resolve(source, width, height, n, encodesAtEnd(state));
     return this.output;
   }
 

@@ -43,6 +43,19 @@ async function moveAndDraw(page: Page, cdp: CDPSession, s: string, x: number, y:
   await page.evaluate(() => (window as unknown as { __next: Promise<void> }).__next);
 }
 
+/**
+ * A drag of 64 moves of 1 px through the middle of `b`, each drawn before the next (64 frames
+ * whatever the machine's load), the pointer resting 200 ms before the release (no inertia).
+ */
+async function slowDrag(page: Page, cdp: CDPSession, selector: string, b: { cx: number; cy: number }): Promise<void> {
+  let t = EPOCH + 200;
+  const x0 = b.cx - 32;
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: x0, y: b.cy, timestamp: t });
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: x0, y: b.cy, button: 'left', buttons: 1, clickCount: 1, timestamp: (t += 0.01) });
+  for (let k = 1; k <= 64; k++) await moveAndDraw(page, cdp, selector, x0 + k, b.cy, (t += 0.016));
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: x0 + 64, y: b.cy, button: 'left', buttons: 0, clickCount: 1, timestamp: (t += 0.2) });
+}
+
 test('trackball: 64 frames of a drag and the frames of a flick\'s inertia build the scene value zero times; the turn still shows', async ({ page }) => {
   await openPage(page);
   const { selector } = await mount(page, { time: 0, spin: 0, controls: 'trackball' }, { width: 160, height: 90 });
@@ -52,12 +65,7 @@ test('trackball: 64 frames of a drag and the frames of a flick\'s inertia build 
   const before = await builds(page, selector);
   // 64 moves of 1 px, each drawn before the next (64 frames whatever the machine's load), the
   // pointer resting 200 ms before the release (no inertia) ...
-  let t = EPOCH + 200;
-  const x0 = b.cx - 32;
-  await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: x0, y: b.cy, timestamp: t });
-  await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: x0, y: b.cy, button: 'left', buttons: 1, clickCount: 1, timestamp: (t += 0.01) });
-  for (let k = 1; k <= 64; k++) await moveAndDraw(page, cdp, selector, x0 + k, b.cy, (t += 0.016));
-  await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: x0 + 64, y: b.cy, button: 'left', buttons: 0, clickCount: 1, timestamp: (t += 0.2) });
+  await slowDrag(page, cdp, selector, b);
   await settled(frames);
   const dragged = await frames();
   // ... then a flick: 8 moves 16 ms apart, released 8 ms after the last (as in inertia.spec.ts),
@@ -89,12 +97,7 @@ test('orbit: 60+ frames of a drag and its write-back build the scene value zero 
   const yaw0 = await page.evaluate((s) => (document.querySelector(s) as unknown as Counted).cameraRotation[0], selector);
   // 64 moves of 1 px, each drawn before the next; the pointer rests 200 ms before the release,
   // so no inertia: the gesture ends at the release and writes the camera attributes back.
-  let t = EPOCH + 200;
-  const x0 = b.cx - 32;
-  await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: x0, y: b.cy, timestamp: t });
-  await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: x0, y: b.cy, button: 'left', buttons: 1, clickCount: 1, timestamp: (t += 0.01) });
-  for (let k = 1; k <= 64; k++) await moveAndDraw(page, cdp, selector, x0 + k, b.cy, (t += 0.016));
-  await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: x0 + 64, y: b.cy, button: 'left', buttons: 0, clickCount: 1, timestamp: (t += 0.2) });
+  await slowDrag(page, cdp, selector, b);
   await expect.poll(async () => (await changes()).length, { timeout: 10_000 }).toBe(1);
   await settled(frames);
   const n = await frames(), after = await builds(page, selector);

@@ -2,6 +2,7 @@
 // premultiplied alpha (ONE, ONE_MINUS_SRC_ALPHA). `outputFresnel` writes F as grey instead.
 import { GLASS_BODY } from '../../scene/default-scene';
 import { setMatrices, type PassContext } from './pass-context';
+import { encodesAtEnd } from '../../frame/linear-light';
 
 const BODY_TINT = new Float32Array(GLASS_BODY);
 
@@ -27,7 +28,7 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
     gl.uniform1f(program.location('uIor'), state.ior);
     gl.uniform4fv(program.location('uViewVector'), setup.viewVectorMain);
     gl.uniform3fv(program.location('uBodyTint'), BODY_TINT);
-    gl.uniform1f(program.location('uLinearFrame'), state.colorSpace === 'srgb' && state.view !== 'fresnel' ? 1 : 0);
+    gl.uniform1f(program.location('uLinearFrame'), encodesAtEnd(state) ? 1 : 0);
     gl.uniform1i(program.location('uTexture'), 0);
     gl.uniform1i(program.location('uReflection'), 1);
     ctx.textures.procedural.bind(0);
