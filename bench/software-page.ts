@@ -18,11 +18,11 @@ export interface Size { width: number; height: number }
 const DEFAULT_VIEW: BenchView = { name: 'default', cameraPosition: [...DEFAULT_CAMERA_POSITION], yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1] };
 
 /** The element's defaults (bench/configs.ts DEFAULTS) at `time`, in `colorSpace` (the default's unless given). */
-function frameState(size: Size, time: number, view: BenchView = DEFAULT_VIEW, colorSpace: ColorSpace = DEFAULTS.colorSpace): FrameState {
+function frameState(size: Size, time: number, view: BenchView = DEFAULT_VIEW, colorSpace: ColorSpace = DEFAULTS.colorSpace, samples: number = DEFAULTS.samples): FrameState {
   return {
     width: size.width, height: size.height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5,
     fresnel: DEFAULTS.fresnel, fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace, view: 'final',
-    reflectionScale: DEFAULTS.reflectionScale, samples: DEFAULTS.samples, shading: DEFAULTS.shading, tessellation: DEFAULTS.tessellation,
+    reflectionScale: DEFAULTS.reflectionScale, samples, shading: DEFAULTS.shading, tessellation: DEFAULTS.tessellation,
     reflectionFormat: DEFAULTS.reflectionFormat,
   };
 }
@@ -70,20 +70,20 @@ const api = {
    * Round trip per frame (ms) of the default scene through the element's SoftwareHost: request
    * posted, pixels back on the main thread. The clock moves each frame so the cube turns.
    */
-  async hostFrames(size: Size, samplesPerAxis: number, frames: number, warmup: number, colorSpace: ColorSpace = DEFAULTS.colorSpace): Promise<number[]> {
+  async hostFrames(size: Size, samplesPerAxis: number, frames: number, warmup: number, colorSpace: ColorSpace = DEFAULTS.colorSpace, samples: number = DEFAULTS.samples): Promise<number[]> {
     const h = await softwareHost(), scene = defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), out: number[] = [];
     for (let i = 0; i < warmup + frames; i++) {
       const t0 = performance.now();
-      await h.render(frameState(size, 1 + i / 60, DEFAULT_VIEW, colorSpace), scene, samplesPerAxis);
+      await h.render(frameState(size, 1 + i / 60, DEFAULT_VIEW, colorSpace, samples), scene, samplesPerAxis);
       if (i >= warmup) out.push(performance.now() - t0);
     }
     return out;
   },
 
   /** The default scene at `time` through SoftwareHost's worker: RGBA8, top row first, base64. */
-  async hostPixels(size: Size, samplesPerAxis: number, time: number, colorSpace: ColorSpace = DEFAULTS.colorSpace): Promise<string> {
+  async hostPixels(size: Size, samplesPerAxis: number, time: number, colorSpace: ColorSpace = DEFAULTS.colorSpace, samples: number = DEFAULTS.samples): Promise<string> {
     const h = await softwareHost();
-    return toBase64(await h.render(frameState(size, time, DEFAULT_VIEW, colorSpace), defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), samplesPerAxis));
+    return toBase64(await h.render(frameState(size, time, DEFAULT_VIEW, colorSpace, samples), defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), samplesPerAxis));
   },
 
   /**

@@ -6,14 +6,15 @@ const GLASS = 'tests/unit/software-glass.test.ts';
 const VS_REFERENCE = 'tests/unit/software-reference.test.ts';
 const SRGB = 'tests/unit/software-srgb.test.ts';
 const ANISO = 'tests/unit/software-anisotropic.test.ts';
+const MSAA = 'tests/unit/software-msaa.test.ts';
 
 export default [
   {
-    name: '13 software rasterizer without the top-left rule',
+    name: 'S0 software rasterizer without the top-left rule',
     edits: [{
       file: 'src/software/raster.ts',
-      find: '    const bias0 = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;\n    const bias1 = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;\n    const bias2 = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;',
-      replace: '    const bias0 = 0;\n    const bias1 = 0;\n    const bias2 = 0;',
+      find: 'a left edge upwards. Pixels on other edges are left out.\n    const bias0 = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;\n    const bias1 = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;\n    const bias2 = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;',
+      replace: 'a left edge upwards. Pixels on other edges are left out.\n    const bias0 = 0;\n    const bias1 = 0;\n    const bias2 = 0;',
     }],
     tests: [RASTER],
   },
@@ -29,7 +30,7 @@ export default [
   },
   {
     name: 'S3 perspective-correct interpolation dropped (screen-space barycentrics)',
-    edits: [{ file: 'src/software/raster.ts', find: 'const a0 = l0 * w0, a1 = l1 * w1, a2 = l2 * w2;', replace: 'const a0 = l0, a1 = l1, a2 = l2;' }],
+    edits: [{ file: 'src/software/raster.ts', find: 'const a0 = l0 * this.w0, a1 = l1 * this.w1, a2 = (1 - l0 - l1) * this.w2;', replace: 'const a0 = l0, a1 = l1, a2 = 1 - l0 - l1;' }],
     tests: [RASTER],
   },
   {
@@ -74,8 +75,8 @@ export default [
     name: 'S10 transparency: colour·kt + framebuffer·(1 − kt)',
     edits: [{
       file: 'src/software/object-shader.ts',
-      find: '      c[o] = cr * a + c[o] * (1 - a);\n      c[o + 1] = cg * a + c[o + 1] * (1 - a);\n      c[o + 2] = cb * a + c[o + 2] * (1 - a);',
-      replace: '      c[o] = cr * (1 - a) + c[o] * a;\n      c[o + 1] = cg * (1 - a) + c[o + 1] * a;\n      c[o + 2] = cb * (1 - a) + c[o + 2] * a;',
+      find: '      c[o] = this.cr * a + c[o] * (1 - a);\n      c[o + 1] = this.cg * a + c[o + 1] * (1 - a);\n      c[o + 2] = this.cb * a + c[o + 2] * (1 - a);',
+      replace: '      c[o] = this.cr * (1 - a) + c[o] * a;\n      c[o + 1] = this.cg * (1 - a) + c[o + 1] * a;\n      c[o + 2] = this.cb * (1 - a) + c[o + 2] * a;',
     }],
     tests: [PIXELS],
   },
@@ -86,7 +87,7 @@ export default [
   },
   {
     name: 'S12 the software renderer sizes spheres as if in perspective in an orthographic view (its half-height dropped)',
-    edits: [{ file: 'src/software/software-renderer.ts', find: 'm.center, m.radius, s.halfHeight, r.width', replace: 'm.center, m.radius, 0, r.width' }],
+    edits: [{ file: 'src/software/software-renderer.ts', find: 'm.center, m.radius, s.halfHeight, this.pixelScale', replace: 'm.center, m.radius, 0, this.pixelScale' }],
     tests: ['tests/unit/mesh-choice.test.ts'],
   },
   {
@@ -138,8 +139,8 @@ export default [
     name: 'S19 srgb: colour held as 8-bit linear levels (the opaque write rounded to 1/255)',
     edits: [{
       file: 'src/software/object-shader.ts',
-      find: 'c[o] = cr; c[o + 1] = cg; c[o + 2] = cb;',
-      replace: 'c[o] = Math.round(cr * 255) / 255; c[o + 1] = Math.round(cg * 255) / 255; c[o + 2] = Math.round(cb * 255) / 255;',
+      find: 'c[o] = this.cr; c[o + 1] = this.cg; c[o + 2] = this.cb;',
+      replace: 'c[o] = Math.round(this.cr * 255) / 255; c[o + 1] = Math.round(this.cg * 255) / 255; c[o + 2] = Math.round(this.cb * 255) / 255;',
     }],
     tests: [SRGB],
   },
@@ -178,5 +179,35 @@ export default [
       { file: 'src/software/mip-texture.ts', find: "return new MipTexture(3, w, h, rgb, space === 'srgb');", replace: 'return new MipTexture(3, w, h, rgb, true);' },
     ],
     tests: [ANISO],
+  },
+  {
+    name: 'S26 multisampling: the frame state\'s samples ignored (one sample per pixel)',
+    edits: [{ file: 'src/software/software-renderer.ts', find: 'const msaa = ssaa === 1 && state.samples >= 2 ? 2 : 1;', replace: 'const msaa = 1;' }],
+    tests: [MSAA],
+  },
+  {
+    name: 'S27 multisampling: shaded at the pixel\'s first covered sample, not its centre',
+    edits: [{ file: 'src/software/raster.ts', find: 'const h = (n - 1) / 2;', replace: 'const h = 0;' }],
+    tests: [MSAA],
+  },
+  {
+    name: 'S28 multisampling: derivatives per sample (textures read one level too sharp)',
+    edits: [{ file: 'src/software/raster.ts', find: 'this.interpolate(i, j, k, inv, n * stepX0, n * stepX1, n * stepX2, n * stepY0, n * stepY1, n * stepY2);', replace: 'this.interpolate(i, j, k, inv, stepX0, stepX1, stepX2, stepY0, stepY1, stepY2);' }],
+    tests: [MSAA],
+  },
+  {
+    name: 'S29 multisampling: a pixel\'s other samples not written (only the shaded one)',
+    edits: [{ file: 'src/software/raster.ts', find: '              shader.repeat!(sample);\n', replace: '' }],
+    tests: [MSAA],
+  },
+  {
+    name: 'S30 multisampling: depth per pixel (a pixel\'s first sample decides for all of them)',
+    edits: [{ file: 'src/software/raster.ts', find: '            if (depthTest && !(z < depth[sample])) continue;', replace: '            if (depthTest && !(z < depth[sample - (sample % width % n) - ((sample / width | 0) % n) * width])) continue;' }],
+    tests: [MSAA],
+  },
+  {
+    name: 'S31 multisampling: the glass footprint marks only a pixel\'s shaded sample (no reflection at the others)',
+    edits: [{ file: 'src/software/glass-shader.ts', find: "    if (mode === 'mask') {\n      this.mask[sample] = 1;\n      return;\n    }", replace: "    if (mode === 'mask') return;" }],
+    tests: [MSAA],
   },
 ];

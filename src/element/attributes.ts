@@ -49,7 +49,7 @@ export interface SceneAttributes {
   debugView: DebugView;
   /** Reflection framebuffer size ÷ drawing-buffer size. */
   reflectionScale: number;
-  /** MSAA samples for the reflection and scene passes: 0, 2 or 4. */
+  /** MSAA samples for the reflection and scene passes: 0, 2 or 4 (software: 2 and 4 as 2×2 per pixel). */
   samples: number;
   shading: Shading;
   /** Sphere segments 4..512, or 'auto' (from the sphere's size on screen). */
@@ -294,7 +294,7 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
   numberSpec('reflectionScale', 'reflection-scale', 1, 0.125, 2, 'reflection framebuffer size ÷ drawing-buffer size'),
   {
     property: 'samples', attribute: 'samples', default: 4,
-    doc: 'MSAA samples of the reflection and scene passes: 0, 2 or 4',
+    doc: 'MSAA samples of the reflection and scene passes: 0, 2 or 4 (the software renderer draws 2 and 4 as 2×2 samples per pixel)',
     parse(raw) {
       if (raw === null) return { value: 4 };
       const x = num(raw);

@@ -49,7 +49,7 @@ export interface GlassPlaneScene extends SceneAttributes {}
  * @attr {number} [time=null] - fixes the scene clock, in seconds (deterministic frames); absent: the live clock
  * @attr {'none' | 'reflection' | 'scene' | 'fresnel' | 'passes'} [debug-view="none"] - shows one pass instead of the final image
  * @attr {number} [reflection-scale=1] - reflection framebuffer size ÷ drawing-buffer size, 0.125..2
- * @attr {0 | 2 | 4} [samples=4] - MSAA samples of the reflection and scene passes
+ * @attr {0 | 2 | 4} [samples=4] - MSAA samples of the reflection and scene passes (software: 2×2 per pixel for 2 and 4)
  * @attr {'phong' | 'gouraud' | 'flat'} [shading="phong"] - per-fragment phong, per-vertex gouraud, or flat
  * @attr {number | 'auto'} [tessellation="auto"] - sphere segments 4..512, or auto (from the sphere's size on screen)
  * @attr {number | 'auto'} [pixel-ratio="auto"] - drawing-buffer pixels per CSS pixel 0.25..4, or auto (devicePixelRatio)

@@ -94,20 +94,34 @@ export class GlassShader implements FragmentShader {
     const c = len > 0 ? Math.abs(this.nx * rx + this.ny * ry + this.nz * rz) / len : 1;
     this.cos = c > 1 ? 1 : c;
     this.fresnel();
-    const f = this.f;
-    const o = 3 * pixel, out = this.colour;
-    if (this.mode === 'fresnel') {
+    if (this.mode === 'compose') {
+      const ua = i0 + UV, ub = i1 + UV, uc = i2 + UV, l = this.lookup;
+      l[0] = b0 * p[ua] + b1 * p[ub] + b2 * p[uc];
+      l[1] = b0 * p[ua + 1] + b1 * p[ub + 1] + b2 * p[uc + 1];
+      l[2] = r.dbdx0 * p[ua] + r.dbdx1 * p[ub] + r.dbdx2 * p[uc];
+      l[3] = r.dbdx0 * p[ua + 1] + r.dbdx1 * p[ub + 1] + r.dbdx2 * p[uc + 1];
+      l[4] = r.dbdy0 * p[ua] + r.dbdy1 * p[ub] + r.dbdy2 * p[uc];
+      l[5] = r.dbdy0 * p[ua + 1] + r.dbdy1 * p[ub + 1] + r.dbdy2 * p[uc + 1];
+      this.texture.sample(l, this.tex);
+    }
+    this.repeat(pixel);
+  }
+
+  /**
+   * The last fragment's F and texel at `sample`: the footprint, F, or the glass equation over
+   * what that sample holds and the reflection there (a pixel's samples keep their own B and R).
+   */
+  repeat(sample: number): void {
+    const mode = this.mode;
+    if (mode === 'mask') {
+      this.mask[sample] = 1;
+      return;
+    }
+    const f = this.f, o = 3 * sample, out = this.colour;
+    if (mode === 'fresnel') {
       out[o] = out[o + 1] = out[o + 2] = f;
       return;
     }
-    const ua = i0 + UV, ub = i1 + UV, uc = i2 + UV, l = this.lookup;
-    l[0] = b0 * p[ua] + b1 * p[ub] + b2 * p[uc];
-    l[1] = b0 * p[ua + 1] + b1 * p[ub + 1] + b2 * p[uc + 1];
-    l[2] = r.dbdx0 * p[ua] + r.dbdx1 * p[ub] + r.dbdx2 * p[uc];
-    l[3] = r.dbdx0 * p[ua + 1] + r.dbdx1 * p[ub + 1] + r.dbdx2 * p[uc + 1];
-    l[4] = r.dbdy0 * p[ua] + r.dbdy1 * p[ub] + r.dbdy2 * p[uc];
-    l[5] = r.dbdy0 * p[ua + 1] + r.dbdy1 * p[ub + 1] + r.dbdy2 * p[uc + 1];
-    this.texture.sample(l, this.tex);
     const tex = this.tex[0], t = this.transparency, refl = this.reflection;
     if (this.model === 'classic') {
       // Seed 000 verbatim: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha.

@@ -69,6 +69,10 @@ export class ObjectShader implements FragmentShader {
   private vertices = new Float64Array(0);
   private draw!: ObjectDraw;
   private readonly sums = new Float64Array(6);
+  /** The last fragment's colour, clamped (written again at a pixel's other samples). */
+  private cr = 0;
+  private cg = 0;
+  private cb = 0;
   /** blinnPhong's point, normal and view vector; a texture lookup's UV and derivatives. */
   private readonly geometry = new Float64Array(9);
   private readonly lookup = new Float64Array(6);
@@ -178,21 +182,26 @@ export class ObjectShader implements FragmentShader {
       for (let k = 0; k < 6; k++) sums[k] = b0 * p[i0 + k] + b1 * p[i1 + k] + b2 * p[i2 + k];
     }
     const tex = this.texture(r);
-    const c = this.colour, o = 3 * pixel;
-    const alpha = d.material.opacity;
     // The 8-bit target's clamp, inline (a helper's double result is boxed when not inlined).
     let cr = tex[0] * sums[0] + sums[3], cg = tex[1] * sums[1] + sums[4], cb = tex[2] * sums[2] + sums[5];
-    cr = cr < 0 ? 0 : cr > 1 ? 1 : cr;
-    cg = cg < 0 ? 0 : cg > 1 ? 1 : cg;
-    cb = cb < 0 ? 0 : cb > 1 ? 1 : cb;
+    this.cr = cr < 0 ? 0 : cr > 1 ? 1 : cr;
+    this.cg = cg < 0 ? 0 : cg > 1 ? 1 : cg;
+    this.cb = cb < 0 ? 0 : cb > 1 ? 1 : cb;
+    this.repeat(pixel);
+  }
+
+  /** Writes the last fragment's colour at `sample` (blended by the material's opacity). */
+  repeat(sample: number): void {
+    const c = this.colour, o = 3 * sample;
+    const alpha = this.draw.material.opacity;
     if (alpha >= 1) {
-      c[o] = cr; c[o + 1] = cg; c[o + 2] = cb;
+      c[o] = this.cr; c[o + 1] = this.cg; c[o + 2] = this.cb;
     } else {
       // colour·(1 − kt) + framebuffer·kt (SPEC §11), kt = 1 − opacity.
       const a = alpha > 0 ? alpha : 0;
-      c[o] = cr * a + c[o] * (1 - a);
-      c[o + 1] = cg * a + c[o + 1] * (1 - a);
-      c[o + 2] = cb * a + c[o + 2] * (1 - a);
+      c[o] = this.cr * a + c[o] * (1 - a);
+      c[o + 1] = this.cg * a + c[o + 1] * (1 - a);
+      c[o + 2] = this.cb * a + c[o + 2] * (1 - a);
     }
   }
 

@@ -2,23 +2,14 @@
 // a fixed-point grid with the top-left fill rule, a Float32 z-buffer, perspective-correct
 // barycentrics (and their screen derivatives, for texture LOD). Knows nothing of shading.
 
-/**
- * Vertex layout in the buffers drawn: clip x, y, z, w, then a user clip distance (kept where
- * ≥ 0; used when `userClip` is set), then the shader's varyings. Clipping interpolates them all.
- */
-export const CLIP_W = 3;
-export const CLIP_DISTANCE = 4;
-export const VARYINGS = 5;
+import { ALL, copyVertex, inside, planeDistance, PLANES, USER, CLIP_W, CLIP_DISTANCE, VARYINGS } from './clip';
+
+export { CLIP_W, CLIP_DISTANCE, VARYINGS };
 
 /** Sub-pixel precision of the snapped vertices: 1/256 px, as GPUs commonly use (8 bits). */
 export const SUBPIXEL_BITS = 8;
 const SUB = 1 << SUBPIXEL_BITS;
 const HALF = SUB >> 1;
-/**
- * Guard band: x and y are clipped to ±GUARD·w (NDC ±4), so snapped coordinates stay below
- * 2^23 for grids up to 8192 px and every edge-function product is an exact integer in a double.
- */
-const GUARD = 4;
 /** A clipped triangle has at most 3 + one vertex per plane (near, far, 4 guard, user). */
 const MAX_POLY = 10;
 
@@ -27,6 +18,12 @@ export type CullMode = 'none' | 'back';
 /** Called for every pixel that passes the mask and the depth test; reads the rasterizer's fields. */
 export interface FragmentShader {
   fragment(pixel: number, r: Rasterizer): void;
+  /**
+   * Multisampling (Rasterizer.shadeEvery > 1): writes the result of the last `fragment` call at
+   * `sample`, another covered sample of the same pixel and triangle (blending with what that
+   * sample holds). Absent: `fragment` is called for every sample.
+   */
+  repeat?(sample: number): void;
 }
 
 export class Rasterizer {
@@ -49,6 +46,14 @@ export class Rasterizer {
   derivatives = true;
   /** Floats per vertex in the buffers drawn (≥ VARYINGS). */
   stride = VARYINGS;
+  /**
+   * Multisampling, as MSAA does it: the target is a grid of n×n samples per pixel (n =
+   * `shadeEvery`; width and height count samples), coverage and depth are decided per sample, and
+   * a triangle is shaded once per pixel — at its first covered sample that passes, with the
+   * pixel's derivatives — its result repeated at the pixel's other passing samples. 1: every
+   * sample is a pixel of its own (no multisampling, or supersampling when the caller sizes so).
+   */
+  shadeEvery = 1;
 
   // Per fragment, for the shader: the clipped vertices (`poly`), the triangle's three vertex
   // offsets into it, the perspective-correct barycentrics and their derivatives per pixel.
@@ -75,6 +80,18 @@ export class Rasterizer {
   private readonly fy = new Float64Array(MAX_POLY);
   private readonly iw = new Float64Array(MAX_POLY);
   private readonly nz = new Float64Array(MAX_POLY);
+  // The triangle being drawn: its vertices' 1/w and d(λ_v/w_v)/dx, /dy per pixel, and their sums.
+  private w0 = 0;
+  private w1 = 0;
+  private w2 = 0;
+  private ax = 0;
+  private bx = 0;
+  private cx = 0;
+  private ay = 0;
+  private by = 0;
+  private cy = 0;
+  private sumX = 0;
+  private sumY = 0;
 
   constructor(maxWidth = 0, maxHeight = 0) {
     this.depth = new Float32Array(0);
@@ -191,7 +208,39 @@ export class Rasterizer {
     const py0 = Math.max(0, Math.ceil((Math.min(y0, y1, y2) - HALF) / SUB));
     const py1 = Math.min(this.height - 1, Math.floor((Math.max(y0, y1, y2) - HALF) / SUB));
     if (px0 > px1 || py0 > py1) return;
-    this.scan(i, j, k, area, px0, px1, py0, py1, shader);
+    if (this.shadeEvery > 1) this.scanPixels(i, j, k, area, px0, px1, py0, py1, shader);
+    else this.scan(i, j, k, area, px0, px1, py0, py1, shader);
+  }
+
+  /**
+   * The triangle's interpolation: its vertices' varyings offsets and 1/w, and the derivatives of
+   * λ_v/w_v per step of the edge functions (`sx*`, `sy*`: one pixel, or one shaded pixel).
+   */
+  private interpolate(i: number, j: number, k: number, inv: number, sx0: number, sx1: number, sx2: number, sy0: number, sy1: number, sy2: number): void {
+    const s = this.stride;
+    this.o0 = i * s + VARYINGS;
+    this.o1 = j * s + VARYINGS;
+    this.o2 = k * s + VARYINGS;
+    const w0 = (this.w0 = this.iw[i]), w1 = (this.w1 = this.iw[j]), w2 = (this.w2 = this.iw[k]);
+    this.ax = sx0 * inv * w0; this.bx = sx1 * inv * w1; this.cx = sx2 * inv * w2;
+    this.ay = sy0 * inv * w0; this.by = sy1 * inv * w1; this.cy = sy2 * inv * w2;
+    this.sumX = this.ax + this.bx + this.cx;
+    this.sumY = this.ay + this.by + this.cy;
+  }
+
+  /** Perspective-corrects screen barycentrics (l0, l1) into b0..b2 (and derivatives) and shades. */
+  private shade(l0: number, l1: number, z: number, pixel: number, shader: FragmentShader): void {
+    const a0 = l0 * this.w0, a1 = l1 * this.w1, a2 = (1 - l0 - l1) * this.w2;
+    const q = 1 / (a0 + a1 + a2);
+    const b0 = a0 * q, b1 = a1 * q, b2 = a2 * q;
+    this.b0 = b0; this.b1 = b1; this.b2 = b2;
+    this.z = z;
+    if (this.derivatives) {
+      const sumX = this.sumX, sumY = this.sumY;
+      this.dbdx0 = (this.ax - b0 * sumX) * q; this.dbdx1 = (this.bx - b1 * sumX) * q; this.dbdx2 = (this.cx - b2 * sumX) * q;
+      this.dbdy0 = (this.ay - b0 * sumY) * q; this.dbdy1 = (this.by - b1 * sumY) * q; this.dbdy2 = (this.cy - b2 * sumY) * q;
+    }
+    shader.fragment(pixel, this);
   }
 
   /**
@@ -222,16 +271,8 @@ export class Rasterizer {
 
     const inv = 1 / area;
     const z0 = this.nz[i], z1 = this.nz[j], z2 = this.nz[k];
-    const w0 = this.iw[i], w1 = this.iw[j], w2 = this.iw[k];
-    // d(screen barycentric)/dx and /dy per pixel, times 1/w: the derivatives of λ_v/w_v.
-    const ax = stepX0 * inv * w0, bx = stepX1 * inv * w1, cxw = stepX2 * inv * w2;
-    const ay = stepY0 * inv * w0, by = stepY1 * inv * w1, cyw = stepY2 * inv * w2;
-    const sumX = ax + bx + cxw, sumY = ay + by + cyw;
-    const s = this.stride;
-    this.o0 = i * s + VARYINGS;
-    this.o1 = j * s + VARYINGS;
-    this.o2 = k * s + VARYINGS;
-    const { depth, mask, depthTest, depthWrite, depthBias, derivatives } = this;
+    this.interpolate(i, j, k, inv, stepX0, stepX1, stepX2, stepY0, stepY1, stepY2);
+    const { depth, mask, depthTest, depthWrite, depthBias } = this;
     const width = this.width;
 
     const span = px1 - px0;
@@ -254,16 +295,7 @@ export class Rasterizer {
             const z = Math.fround(l0 * z0 + l1 * z1 + l2 * z2 + depthBias);
             if (!depthTest || z < depth[pixel]) {
               if (depthWrite) depth[pixel] = z;
-              const a0 = l0 * w0, a1 = l1 * w1, a2 = l2 * w2;
-              const q = 1 / (a0 + a1 + a2);
-              const b0 = a0 * q, b1 = a1 * q, b2 = a2 * q;
-              this.b0 = b0; this.b1 = b1; this.b2 = b2;
-              this.z = z;
-              if (derivatives) {
-                this.dbdx0 = (ax - b0 * sumX) * q; this.dbdx1 = (bx - b1 * sumX) * q; this.dbdx2 = (cxw - b2 * sumX) * q;
-                this.dbdy0 = (ay - b0 * sumY) * q; this.dbdy1 = (by - b1 * sumY) * q; this.dbdy2 = (cyw - b2 * sumY) * q;
-              }
-              shader.fragment(pixel, this);
+              this.shade(l0, l1, z, pixel, shader);
             }
           }
         }
@@ -271,39 +303,85 @@ export class Rasterizer {
       }
     }
   }
-}
+  /**
+   * `scan` for a multisampled target (shadeEvery = n > 1): the box's samples visited pixel by
+   * pixel (n×n at a time), each sample covered by the top-left rule and depth-tested on its own;
+   * the first that passes is shaded, with derivatives per pixel (n samples), the others take
+   * `repeat`. Rows of pixels are bounded by the union of their sample rows' covered runs.
+   */
+  private scanPixels(i: number, j: number, k: number, area: number, px0: number, px1: number, py0: number, py1: number, shader: FragmentShader): void {
+    const { fx, fy } = this;
+    const n = this.shadeEvery;
+    const x0 = fx[i], y0 = fy[i], x1 = fx[j], y1 = fy[j], x2 = fx[k], y2 = fy[k];
+    const ax0 = x2 - x1, ay0 = y2 - y1;
+    const ax1 = x0 - x2, ay1 = y0 - y2;
+    const ax2 = x1 - x0, ay2 = y1 - y0;
+    const bias0 = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;
+    const bias1 = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;
+    const bias2 = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;
+    // The box in whole pixels; samples outside the triangle's box fail the edge test anyway.
+    const qx0 = Math.floor(px0 / n) * n, qy0 = Math.floor(py0 / n) * n;
+    const qx1 = Math.floor(px1 / n) * n + n - 1, qy1 = Math.floor(py1 / n) * n + n - 1;
+    const cx = qx0 * SUB + HALF, cy = qy0 * SUB + HALF;
+    let row0 = ax0 * (cy - y1) - ay0 * (cx - x1);
+    let row1 = ax1 * (cy - y2) - ay1 * (cx - x2);
+    let row2 = ax2 * (cy - y0) - ay2 * (cx - x0);
+    const stepX0 = -ay0 * SUB, stepX1 = -ay1 * SUB, stepX2 = -ay2 * SUB;
+    const stepY0 = ax0 * SUB, stepY1 = ax1 * SUB, stepY2 = ax2 * SUB;
 
-// Clip planes, as distances that are ≥ 0 inside: near z + w, far w − z, the guard band
-// G·w ± x and G·w ± y, and the user clip distance.
-const PLANES = 7;
-const USER = 6;
-const ALL_FRUSTUM = (1 << USER) - 1;
-const ALL = (1 << PLANES) - 1;
+    const inv = 1 / area;
+    const z0 = this.nz[i], z1 = this.nz[j], z2 = this.nz[k];
+    // Derivatives per pixel: n samples per step.
+    this.interpolate(i, j, k, inv, n * stepX0, n * stepX1, n * stepX2, n * stepY0, n * stepY1, n * stepY2);
+    const { depth, mask, depthTest, depthWrite, depthBias } = this;
+    const width = this.width, height = this.height;
+    const repeat = shader.repeat !== undefined;
+    const span = qx1 - qx0;
+    // From a pixel's first sample to its centre: (n − 1)/2 samples along each axis.
+    const h = (n - 1) / 2;
+    const centre0 = h * (stepX0 + stepY0), centre1 = h * (stepX1 + stepY1);
 
-function planeDistance(v: Float64Array, o: number, plane: number): number {
-  const w = v[o + CLIP_W];
-  switch (plane) {
-    case 0: return v[o + 2] + w;
-    case 1: return w - v[o + 2];
-    case 2: return GUARD * w + v[o];
-    case 3: return GUARD * w - v[o];
-    case 4: return GUARD * w + v[o + 1];
-    case 5: return GUARD * w - v[o + 1];
-    default: return v[o + CLIP_DISTANCE];
+    for (let y = qy0; y <= qy1 && y < height; y += n, row0 += n * stepY0, row1 += n * stepY1, row2 += n * stepY2) {
+      let k0 = span + 1, k1 = -1;
+      for (let sy = 0; sy < n; sy++) {
+        const r0 = row0 + sy * stepY0 + bias0, r1 = row1 + sy * stepY1 + bias1, r2 = row2 + sy * stepY2 + bias2;
+        const a = Math.max(0, runStart(r0, stepX0), runStart(r1, stepX1), runStart(r2, stepX2));
+        const b = Math.min(span, runEnd(r0, stepX0, span), runEnd(r1, stepX1, span), runEnd(r2, stepX2, span));
+        if (a <= b) { if (a < k0) k0 = a; if (b > k1) k1 = b; }
+      }
+      if (k0 > k1) continue;
+      // Whole pixels covering the run.
+      const xFirst = qx0 + Math.floor(k0 / n) * n, xLast = Math.min(qx0 + k1, width - 1);
+      for (let px = xFirst; px <= xLast; px += n) {
+        let shaded = false;
+        const dx = px - qx0;
+        for (let sy = 0; sy < n; sy++) {
+          const yy = y + sy;
+          if (yy >= height) break;
+          let e0 = row0 + sy * stepY0 + dx * stepX0, e1 = row1 + sy * stepY1 + dx * stepX1, e2 = row2 + sy * stepY2 + dx * stepX2;
+          const base = yy * width;
+          for (let sx = 0; sx < n; sx++, e0 += stepX0, e1 += stepX1, e2 += stepX2) {
+            const x = px + sx;
+            if (x >= width || e0 + bias0 < 0 || e1 + bias1 < 0 || e2 + bias2 < 0) continue;
+            const sample = base + x;
+            if (mask !== null && mask[sample] === 0) continue;
+            const l0 = e0 * inv, l1 = e1 * inv, l2 = 1 - l0 - l1;
+            const z = Math.fround(l0 * z0 + l1 * z1 + l2 * z2 + depthBias);
+            if (depthTest && !(z < depth[sample])) continue;
+            if (depthWrite) depth[sample] = z;
+            if (shaded && repeat) {
+              shader.repeat!(sample);
+              continue;
+            }
+            // Shaded at the pixel's centre, as a GPU interpolates without `centroid` (off the
+            // triangle at its edges): a sample's offset would shift textures by a part of a pixel.
+            this.shade((row0 + dx * stepX0 + centre0) * inv, (row1 + dx * stepX1 + centre1) * inv, z, sample, shader);
+            shaded = true;
+          }
+        }
+      }
+    }
   }
-}
-
-/** Bit p set: the vertex is inside plane p (the user bit is set when `user` is off). */
-function inside(v: Float64Array, o: number, user: boolean): number {
-  let bits = user ? (v[o + CLIP_DISTANCE] >= 0 ? 1 << USER : 0) : 1 << USER;
-  const x = v[o], y = v[o + 1], z = v[o + 2], w = v[o + CLIP_W], g = GUARD * w;
-  if (z + w >= 0) bits |= 1;
-  if (w - z >= 0) bits |= 2;
-  if (g + x >= 0) bits |= 4;
-  if (g - x >= 0) bits |= 8;
-  if (g + y >= 0) bits |= 16;
-  if (g - y >= 0) bits |= 32;
-  return bits & (ALL_FRUSTUM | (1 << USER));
 }
 
 /** First k ≥ 0 (one early) where e + k·step ≥ 0 can hold; a value past any span when it never can. */
@@ -316,8 +394,4 @@ function runStart(e: number, step: number): number {
 function runEnd(e: number, step: number, span: number): number {
   if (step < 0) return e < 0 ? -1 : Math.min(span, Math.floor(e / -step) + 1);
   return e >= 0 || step > 0 ? span : -1;
-}
-
-function copyVertex(src: Float64Array, from: number, dst: Float64Array, to: number, n: number): void {
-  for (let k = 0; k < n; k++) dst[to + k] = src[from + k];
 }

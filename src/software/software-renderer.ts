@@ -23,7 +23,9 @@ import { Rasterizer } from './raster';
 export interface SoftwareRendererOptions {
   /**
    * Samples per pixel along each axis (1..8): the frame is drawn on an n× finer grid at the
-   * sample positions of the reference renderer's n×n strata and box-filtered. Default 1.
+   * sample positions of the reference renderer's n×n strata and box-filtered, every sample
+   * shaded (supersampling). Default 1: the frame state's `samples` decides — 2 or 4 draw with
+   * 2×2 samples per pixel shaded once per pixel and triangle (multisampling, as MSAA), 0 with one.
    */
   samplesPerAxis?: number;
 }
@@ -64,6 +66,8 @@ export class SoftwareRenderer {
   private readonly tileState = {} as FrameState;
   private readonly draw: ObjectDraw;
   private readonly defaultScene = new DefaultSceneCache();
+  /** Shaded samples per pixel along an axis (supersampling's n; 1 when multisampled). */
+  private pixelScale = 1;
 
   constructor(options: SoftwareRendererOptions = {}) {
     this.samplesPerAxis = options.samplesPerAxis ?? 1;
@@ -124,7 +128,11 @@ export class SoftwareRenderer {
 
   private frame(state: FrameState, scene?: Scene, images?: ReadonlyMap<string, DecodedImage>): Uint8ClampedArray {
     scene ??= this.defaultScene.get(state.cubeDistance, state.spin);
-    const n = Math.max(1, Math.min(8, Math.floor(this.samplesPerAxis)));
+    const ssaa = Math.max(1, Math.min(8, Math.floor(this.samplesPerAxis)));
+    const msaa = ssaa === 1 && state.samples >= 2 ? 2 : 1;
+    const n = ssaa * msaa;
+    this.main.shadeEvery = this.mirror.shadeEvery = msaa;
+    this.pixelScale = ssaa;
     const width = Math.max(0, Math.floor(state.width)), height = Math.max(0, Math.floor(state.height));
     const W = width * n, H = height * n;
     this.resize(W, H, width * height);
@@ -277,7 +285,7 @@ export class SoftwareRenderer {
       const m = s.objects[i];
       // Culling, not selection (SPEC §4): bounds wholly beyond the glass cannot be reflected.
       if (mirrored && s.side * signedDistance(plane, m.center) <= -m.radius) continue;
-      d.mesh = this.meshes.get(o.geometry, state, m.center, m.radius, s.halfHeight, r.width / Math.max(1, state.width));
+      d.mesh = this.meshes.get(o.geometry, state, m.center, m.radius, s.halfHeight, this.pixelScale);
       d.model = m.model;
       d.normal = m.normal;
       d.eye = eye;
