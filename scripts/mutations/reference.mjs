@@ -6,6 +6,8 @@ const PIXELS = 'tests/unit/reference-pixels.test.ts';
 const ANY = 'tests/unit/reference-any-scene.test.ts';
 const SRGB = 'tests/unit/reference-srgb.test.ts';
 const METRICS = 'tests/unit/reference-metrics.test.ts';
+// The rough-glass reference and the microfacet maths it shares with the renderers (SPEC §14).
+const ROUGH = ['tests/unit/reference-rough.test.ts', 'tests/unit/ggx.test.ts'];
 const unit = (name) => `tests/unit/${name}.test.ts`;
 
 export default [
@@ -132,5 +134,35 @@ export default [
     name: "R21 metrics: 'dark' read from the reference's bytes, not its values",
     edits: [{ file: 'src/reference/metrics.ts', find: 'const dark = Math.max(ref.rgb[3 * i], ref.rgb[3 * i + 1], ref.rgb[3 * i + 2]) < DARK_LEVEL;', replace: 'const dark = Math.max(ref.rgba[4 * i], ref.rgba[4 * i + 1], ref.rgba[4 * i + 2]) < 32;' }],
     tests: [METRICS],
+  },
+  {
+    name: 'R22 rough glass: the lobe width squared twice (α = roughness⁴)',
+    edits: [{ file: 'src/math/ggx.ts', find: '  return r * r;\n}', replace: '  return r * r * r * r;\n}' }],
+    tests: ROUGH,
+  },
+  {
+    name: 'R23 rough glass: roughness ignored for the transmission (B̃ = B)',
+    edits: [{ file: 'src/reference/rough-glass.ts', find: 'for (let pass = 0; pass < 2; pass++) {', replace: 'for (let pass = 0; pass < 1; pass++) {' }],
+    tests: ROUGH,
+  },
+  {
+    name: 'R24 rough glass: reflected samples into the far side kept',
+    edits: [{ file: 'src/reference/rough-glass.ts', find: '          if (dir[0] * n[0] + dir[1] * n[1] + dir[2] * n[2] <= 0) continue;\n', replace: '' }],
+    tests: ROUGH,
+  },
+  {
+    name: 'R25 rough glass: dropped samples averaged in as black (sum ÷ all samples, not the kept ones)',
+    edits: [{ file: 'src/reference/rough-glass.ts', find: 'for (let k = 0; k < 3; k++) out[k] = sum[k] / kept;', replace: 'for (let k = 0; k < 3; k++) out[k] = sum[k] / mf.count;' }],
+    tests: ROUGH,
+  },
+  {
+    name: 'R26 rough glass: ξ2 tied to ξ1 (the N-rooks pairing dropped: φm follows θm)',
+    edits: [{ file: 'src/reference/microfacet-samples.ts', find: 'this.xi2[slot[i]] = (order[i] + next()) / m;', replace: 'this.xi2[slot[i]] = (i + next()) / m;' }],
+    tests: ROUGH,
+  },
+  {
+    name: 'R27 thin glass: the exit through the flat face skipped (the ray kept at its inside angle)',
+    edits: [{ file: 'src/math/ggx.ts', find: '  return refract(out, out, n, ior);', replace: '  return true;' }],
+    tests: ROUGH,
   },
 ];

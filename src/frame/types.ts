@@ -40,6 +40,11 @@ export interface FrameState {
    * light linearly and encodes the image once; `none` uses every value as stored.
    */
   colorSpace: ColorSpace;
+  /**
+   * SPEC §14: the glass's roughness, 0..1 (GGX α = roughness²); absent or 0: polished, today's
+   * glass exactly.
+   */
+  roughness?: number;
   /** Absent: perspective. Orthographic keeps the reflection (SPEC §10). */
   projection?: Projection;
   /** The camera target, if any: only the orthographic size reads it (depth of this point). */

@@ -9,7 +9,7 @@ import type { FrameState } from '../frame/types';
 export type ViewState = Pick<
   FrameState,
   'width' | 'height' | 'time' | 'transparency' | 'ior' | 'fresnel' | 'fov' | 'cameraPosition' | 'yaw' | 'pitch' | 'view'
-  | 'projection' | 'target' | 'courseCamera' | 'colorSpace'
+  | 'projection' | 'target' | 'courseCamera' | 'colorSpace' | 'roughness'
 >;
 
 /** A view of the default scene (SPEC §3): the view plus the cube's distance and spin. */

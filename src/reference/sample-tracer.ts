@@ -15,6 +15,8 @@ import type { SurfaceCodes } from './surface-codes';
 import { SurfaceHit, SURFACE_NONE } from './surface-hit';
 import { SurfaceTexture, type TextureFilter } from './surface-texture';
 import { srgbToLinear } from '../math/srgb';
+import { ggxAlpha } from '../math/ggx';
+import { RoughGlass, type Microfacets } from './rough-glass';
 
 export { MAX_FOOTPRINT_TEXELS, type TextureFilter } from './surface-texture';
 
@@ -72,6 +74,14 @@ export class SampleTracer {
   private reflected = SURFACE_NONE;
   /** The scene's background in the frame's colour space: a CSS colour, decoded to linear light with srgb. */
   private readonly backgroundColour = new Float64Array(3);
+  /** SPEC §14: the glass's GGX α (0: polished, the smooth path exactly). */
+  private readonly alpha: number;
+  /**
+   * The microfacet normals of the current sample: (xi1[i], xi2[i]) for i in [first, first +
+   * count), set by the renderer before each sample (renderScene's MicrofacetSamples).
+   */
+  microfacets: Microfacets | null = null;
+  private readonly rough = new RoughGlass();
 
   constructor(
     scene: Scene, private readonly view: ViewState, filter: TextureFilter,
@@ -88,6 +98,7 @@ export class SampleTracer {
     const bg = scene.background;
     for (let k = 0; k < 3; k++) this.backgroundColour[k] = view.colorSpace === 'srgb' ? srgbToLinear(bg[k]) : bg[k];
     this.plane = this.scene.glass === null ? null : this.scene.glass.plane;
+    this.alpha = ggxAlpha(view.roughness ?? 0);
     this.side = this.plane === null ? 1
       : viewerSide(this.plane, this.camera.eye, this.camera.forward, view.projection ?? 'perspective');
     if (this.plane !== null) reflectPoint(this.mirroredEye, this.camera.eye, this.plane);
@@ -144,6 +155,9 @@ export class SampleTracer {
     const behind = object ? object.surface : SURFACE_NONE;
     this.shadeChain(object, ray, this.camera.eye, 0, level, false, layer.behind);
     this.reflected = this.reflectionAlong(ray, layer.reflection);
+    if (this.alpha > 0 && this.microfacets !== null) {
+      this.rough.apply(this, ray, this.mirrored, glass, level, this.side, this.plane!, this.alpha, this.view.ior, this.microfacets, layer.reflection, layer.behind);
+    }
     composeGlass(model, f, transparency, this.texture.glassTexture(glass, ray), layer.reflection, layer.behind, out);
     this.first = glass.surface;
     return behind;
@@ -163,10 +177,20 @@ export class SampleTracer {
     return this.mirroredAlong(this.mirrored.mirrorOf(ray, this.plane), -Infinity, 0, out);
   }
 
-  private mirroredAlong(m: Ray, tMin: number, level: number, out: Float64Array): number {
+  private mirroredAlong(m: Ray, tMin: number, level: number, out: Float64Array, eye: Float64Array = this.mirroredEye): number {
     const object = this.nearest(m, tMin, this.side, this.mirror[level]);
-    this.shadeChain(object, m, this.mirroredEye, this.side, level, false, out);
+    this.shadeChain(object, m, eye, this.side, level, false, out);
     return object ? object.surface : SURFACE_NONE;
+  }
+
+  /** The rough reflection's path (RoughGlass): what pass 1 sees along `ray`, shaded towards `eye`. */
+  reflectedAlong(ray: Ray, eye: Float64Array, out: Float64Array): void {
+    this.mirroredAlong(ray, -Infinity, 0, out, eye);
+  }
+
+  /** The rough transmission's path (RoughGlass): what lies past depth `tMin` along `ray`, shaded towards `eye`. */
+  transmittedAlong(ray: Ray, tMin: number, level: number, eye: Float64Array, out: Float64Array): void {
+    this.shadeChain(this.nearest(ray, tMin, 0, this.direct[level]), ray, eye, 0, level, false, out);
   }
 
   /** debug-view fresnel: F on glass not hidden by an opaque object, black elsewhere. */

@@ -1,0 +1,84 @@
+// Rough glass (SPEC §14): GGX microfacet normals and the directions a view ray takes off one —
+// reflected about it, or refracted through it into thin glass and out of a smooth face parallel
+// to the plane. Shared by the float64 reference and the renderers' approximations: tied down by
+// tests/unit/ggx.test.ts (the sampled density against D(m)·cosθm integrated by quadrature,
+// Snell's law worked by hand).
+
+type Out3 = Float64Array | number[];
+type In3 = ArrayLike<number>;
+
+/** α = roughness², clamped to [0, 1]: the GGX width of SPEC §14. */
+export function ggxAlpha(roughness: number): number {
+  const r = roughness > 0 ? (roughness < 1 ? roughness : 1) : 0;
+  return r * r;
+}
+
+/** GGX D(m) for a normal at θm from the macro normal: α² / (π·cos⁴θm·(α² + tan²θm)²). */
+export function ggxD(alpha: number, cosTheta: number): number {
+  if (cosTheta <= 0) return 0;
+  const c2 = cosTheta * cosTheta, t2 = (1 - c2) / c2, a2 = alpha * alpha;
+  const s = a2 + t2;
+  return a2 / (Math.PI * c2 * c2 * s * s);
+}
+
+/**
+ * out = the microfacet normal for (ξ1, ξ2) ∈ [0, 1)², drawn with density D(m)·cosθm about the
+ * unit normal `n` (the viewer's side): θm = atan(α·√(ξ1/(1 − ξ1))), φm = 2π·ξ2, measured from
+ * a tangent frame of `n` (any orthonormal one: the density is symmetric about `n`).
+ */
+export function ggxNormal(out: Out3, alpha: number, xi1: number, xi2: number, n: In3): Out3 {
+  const tan = alpha * Math.sqrt(xi1 / (1 - xi1));
+  const cos = 1 / Math.sqrt(1 + tan * tan), sin = tan * cos;
+  const phi = 2 * Math.PI * xi2;
+  const cx = sin * Math.cos(phi), cy = sin * Math.sin(phi);
+  // Tangent frame (Duff et al. 2017, "Building an orthonormal basis, revisited").
+  const nx = n[0], ny = n[1], nz = n[2];
+  const sign = nz >= 0 ? 1 : -1;
+  const a = -1 / (sign + nz), b = nx * ny * a;
+  const tx = 1 + sign * nx * nx * a, ty = sign * b, tz = -sign * nx;
+  const bx = b, by = sign + ny * ny * a, bz = -ny;
+  out[0] = cx * tx + cy * bx + cos * nx;
+  out[1] = cx * ty + cy * by + cos * ny;
+  out[2] = cx * tz + cy * bz + cos * nz;
+  return out;
+}
+
+/** out = d − 2(d·m)m: the unit direction `d` reflected about the unit normal `m`. `out` may alias `d`. */
+export function reflectAbout(out: Out3, d: In3, m: In3): Out3 {
+  const k = 2 * (d[0] * m[0] + d[1] * m[1] + d[2] * m[2]);
+  out[0] = d[0] - k * m[0];
+  out[1] = d[1] - k * m[1];
+  out[2] = d[2] - k * m[2];
+  return out;
+}
+
+/**
+ * Refraction of the unit direction `d` through a surface of unit normal `nf` facing against it
+ * (d·nf < 0), from index 1 into index 1/eta·1 (eta = n₁/n₂): out, or false on total internal
+ * reflection. `out` may alias `d`.
+ */
+function refract(out: Out3, d: In3, nf: In3, eta: number): boolean {
+  const c = d[0] * nf[0] + d[1] * nf[1] + d[2] * nf[2];
+  const k = 1 - eta * eta * (1 - c * c);
+  if (k < 0) return false;
+  const s = eta * c + Math.sqrt(k);
+  out[0] = eta * d[0] - s * nf[0];
+  out[1] = eta * d[1] - s * nf[1];
+  out[2] = eta * d[2] - s * nf[2];
+  return true;
+}
+
+/**
+ * SPEC §14's transmission direction through thin rough glass: the unit view direction `d`
+ * refracted into the glass (index `ior`) through the microfacet normal `m`, then out again
+ * through a smooth face parallel to the plane (unit normal `n`, both on the viewer's side).
+ * Returns false when the sample is lost: `m` faces away from `d` (d·m ≥ 0, the facet is not
+ * seen), the ray turns back (it would not cross the glass), or it is totally reflected inside.
+ * With m = n the result is d. `out` may alias `d`.
+ */
+export function refractThin(out: Out3, d: In3, m: In3, n: In3, ior: number): boolean {
+  if (d[0] * m[0] + d[1] * m[1] + d[2] * m[2] >= 0) return false;
+  if (!refract(out, d, m, 1 / ior)) return false;
+  if (out[0] * n[0] + out[1] * n[1] + out[2] * n[2] >= 0) return false;
+  return refract(out, out, n, ior);
+}
