@@ -3,7 +3,7 @@
 // Reads the scene value (SPEC §9): any number of objects, any glass placement, up to 4 lights.
 import { mat3, mat4 } from 'gl-matrix';
 import { forwardFromYawPitch, orthoHalfHeight, orthographicMatrix, projectionMatrix, rotationOnlyView, viewerSide } from '../math/camera';
-import { eyeRelativePlane, reflectDirection, reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
+import { eyeRelativePlane, MIRROR_CONTACT, reflectDirection, reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
 import { courseViewProjection, type CourseCamera } from '../math/course-camera';
 import { courseSceneRange, type CourseDepthRange } from '../scene/course-depth';
 import { CAMERA, DEFAULT_GLASS } from '../scene/default-scene';
@@ -157,8 +157,11 @@ export class FrameSetup {
     this.drawMatrices(scene, s.time);
     this.lightValues(scene);
 
-    // Keep what lies on the viewer's side: side·(n·(rel + e′) + d) ≥ 0 (exact in either projection).
-    this.clipPlane.set(eyeRelativePlane(this.mirroredClip, plane, mirroredEye, this.side));
+    // Keep what lies on the viewer's side: side·(n·(rel + e′) + d) ≥ MIRROR_CONTACT (exact in
+    // either projection), so what touches the glass is not reflected.
+    eyeRelativePlane(this.mirroredClip, plane, mirroredEye, this.side);
+    this.mirroredClip[3] -= MIRROR_CONTACT;
+    this.clipPlane.set(this.mirroredClip);
   }
 
   /**

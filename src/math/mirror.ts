@@ -11,6 +11,14 @@ type Out3 = Float64Array | Float32Array | number[];
 type Out4 = Float64Array | Float32Array | number[];
 type Out16 = Float64Array | Float32Array | number[];
 
+/**
+ * How close to the glass, on the viewer's side, geometry may come and still be reflected: what
+ * lies nearer touches the glass — a face in its plane is against it, not in front of it (a
+ * picture behind a glass wall) — and the reflection pass leaves it out. Far above rounding
+ * (float32 clip distances of points a few units away), far below anything one could see.
+ */
+export const MIRROR_CONTACT = 1e-5;
+
 /** Signed distance of a point from the plane (positive on the side n points to). */
 export function signedDistance(plane: Plane, p: ReadonlyVec3): number {
   return plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3];

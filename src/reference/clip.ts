@@ -1,5 +1,5 @@
 // Which hits the GPU keeps: view depth within [near, far] and, for the mirrored pass, the eye's side of the glass.
-import { signedDistance, type Plane } from '../math/mirror';
+import { MIRROR_CONTACT, signedDistance, type Plane } from '../math/mirror';
 import { CAMERA } from '../scene/default-scene';
 import type { Ray } from './ray';
 import type { SurfaceHit } from './surface-hit';
@@ -21,10 +21,11 @@ export function visible(t: number): boolean {
 
 /**
  * A hit at depth t is kept when t > tMin (what lies beyond a transparent surface), within
- * [near, far], and, when `clipSide` ≠ 0 (the mirrored pass), on that side of the glass plane.
+ * [near, far], and, when `clipSide` ≠ 0 (the mirrored pass), on that side of the glass plane, at
+ * least MIRROR_CONTACT from it (what touches the glass is not reflected).
  */
 export function kept(hit: SurfaceHit, tMin: number, clipSide: number, plane: Plane | null): boolean {
-  return hit.t > tMin && visible(hit.t) && (clipSide === 0 || clipSide * signedDistance(plane!, hit.p) >= 0);
+  return hit.t > tMin && visible(hit.t) && (clipSide === 0 || clipSide * signedDistance(plane!, hit.p) >= MIRROR_CONTACT);
 }
 
 /**
@@ -37,7 +38,7 @@ export function keptInterval(ray: Ray, tMin: number, clipSide: number, plane: Pl
   let hi: number = clipRange.far;
   if (clipSide !== 0) {
     const o = ray.origin, d = ray.direction;
-    const s0 = clipSide * signedDistance(plane!, o);
+    const s0 = clipSide * signedDistance(plane!, o) - MIRROR_CONTACT;
     const s1 = clipSide * (plane![0] * d[0] + plane![1] * d[1] + plane![2] * d[2]);
     if (s1 > 0) lo = Math.max(lo, -s0 / s1);
     else if (s1 < 0) hi = Math.min(hi, -s0 / s1);

@@ -40,9 +40,17 @@ export class RayScene {
   readonly glass: GlassFrame | null;
   private readonly size: readonly [number, number] = [0, 0];
 
+  /** Each object's bounds centre in the world at the frame's time (which side of the glass it is on). */
+  readonly centres: readonly Float64Array[];
+
   constructor(readonly scene: Scene, time: number) {
     this.codes = new SurfaceCodes(scene);
     this.tracers = scene.objects.map((o, i) => tracerOf(o, i, this.codes.first[i], time));
+    this.centres = scene.objects.map((o) => {
+      const f = new ObjectFrame(o.transform, time), m = f.matrix, c = o.bounds.center, s = f.scale;
+      const x = c[0] * s[0], y = c[1] * s[1], z = c[2] * s[2];
+      return new Float64Array([m[0] * x + m[4] * y + m[8] * z + m[12], m[1] * x + m[5] * y + m[9] * z + m[13], m[2] * x + m[6] * y + m[10] * z + m[14]]);
+    });
     this.glass = scene.glass === null ? null : glassFrame(scene.glass);
     if (scene.glass !== null) this.size = scene.glass.size;
   }

@@ -1,6 +1,6 @@
 // One sample of one view: primary ray, what lies behind the glass (B), the mirror ray (R), composited.
 import { viewerSide } from '../math/camera';
-import { reflectPoint, type Plane } from '../math/mirror';
+import { reflectPoint, signedDistance, type Plane } from '../math/mirror';
 import type { Scene } from '../scene/scene';
 import { setClipRange, visible } from './clip';
 import { courseSceneRange } from '../scene/course-depth';
@@ -13,6 +13,7 @@ import type { ViewState } from './reference-state';
 import { clamp01, composeGlass, glassFresnel, prepareLight, shadeObject, type PreparedLight } from './shade';
 import type { SurfaceCodes } from './surface-codes';
 import { SurfaceHit, SURFACE_NONE } from './surface-hit';
+import { Layer } from './layer';
 import { SurfaceTexture, type TextureFilter } from './surface-texture';
 import { srgbToLinear } from '../math/srgb';
 import { ggxAlpha } from '../math/ggx';
@@ -23,20 +24,12 @@ export { MAX_FOOTPRINT_TEXELS, type TextureFilter } from './surface-texture';
 /** Surfaces per key digit in the default scene (0 none, 1..6 cube faces, 7 sphere, 8 glass). */
 export const KEY_BASE = 9;
 
+/** A depth tie between the glass and a face in its plane: t equal to this relative rounding. */
+const TIE = 1e-9;
+
 /** Surfaces one ray passes through at most: the last one is taken as opaque. */
 export const MAX_LAYERS = 16;
 
-/** Per transparency layer, for one path (direct or mirrored): its hits and colour buffers. */
-class Layer {
-  readonly a = new SurfaceHit();
-  readonly b = new SurfaceHit();
-  readonly glass = new SurfaceHit();
-  /** The colour of this layer's ray segment (written by the layer above). */
-  readonly colour = new Float64Array(3);
-  readonly behind = new Float64Array(3);
-  readonly reflection = new Float64Array(3);
-  readonly tex = new Float64Array(3);
-}
 
 /**
  * Traces samples of one frame. A sample returns its colour and a key naming what it saw:
@@ -144,7 +137,7 @@ export class SampleTracer {
     const object = this.nearest(ray, tMin, 0, layer);
     const g = layer.glass;
     const glass = glassOn && this.scene.hitGlass(ray, g) && g.t > tMin && visible(g.t)
-      && (object === null || g.t < object.t) ? g : null;
+      && this.glassInFront(g, object) ? g : null;
     if (glass === null) {
       const next = this.shadeChain(object, ray, this.camera.eye, 0, level, glassOn, out);
       this.first = object ? object.surface : SURFACE_NONE;
@@ -193,6 +186,18 @@ export class SampleTracer {
     this.shadeChain(this.nearest(ray, tMin, 0, this.direct[level]), ray, eye, 0, level, false, out);
   }
 
+  /**
+   * Whether the glass hit is seen before `object`'s: nearer, or level with it (a face in the
+   * glass plane) when the object is not on the viewer's side — what lies on the glass or beyond
+   * is seen through it (the renderers pull the glass forward a hair, and objects on the
+   * viewer's side further).
+   */
+  private glassInFront(g: SurfaceHit, object: SurfaceHit | null): boolean {
+    if (object === null || g.t < object.t) return true;
+    if (Math.abs(object.t - g.t) > TIE * Math.abs(g.t)) return false;
+    return this.side * signedDistance(this.plane!, this.scene.centres[object.object]) <= 0;
+  }
+
   /** debug-view fresnel: F on glass not hidden by an opaque object, black elsewhere. */
   private fresnelAlong(ray: Ray, out: Float64Array): number {
     const layer = this.direct[0];
@@ -200,7 +205,7 @@ export class SampleTracer {
     const code = object ? object.surface : SURFACE_NONE;
     while (object !== null && this.opacity(object) < 1) object = this.nearest(ray, object.t, 0, layer);
     const g = layer.glass;
-    if (this.scene.hitGlass(ray, g) && visible(g.t) && (object === null || g.t < object.t)) {
+    if (this.scene.hitGlass(ray, g) && visible(g.t) && this.glassInFront(g, object)) {
       out.fill(glassFresnel(this.view.fresnel, this.view.ior, g, ray.direction));
       return g.surface;
     }

@@ -10,6 +10,9 @@ import { CLIP_DISTANCE, VARYINGS, type FragmentShader, type Rasterizer } from '.
 const REL = 0, UV = 3;
 const STRIDE = VARYINGS + 5;
 
+/** How far (NDC depth) the glass is pushed back; objects on the plane or beyond it go twice as far. */
+export const GLASS_TIE_BIAS = 1e-6;
+
 export type GlassMode = 'mask' | 'compose' | 'fresnel';
 
 export class GlassShader implements FragmentShader {
@@ -62,9 +65,11 @@ export class GlassShader implements FragmentShader {
     r.derivatives = this.mode === 'compose';
     r.depthTest = true;
     r.depthWrite = false;
-    // A cube face lying in the glass plane wins the depth test every time (glass-pass.ts's
-    // polygonOffset): well above rounding, far below any real depth step.
-    r.depthBias = 1e-6;
+    // Pushed back a hair (glass-pass.ts's polygonOffset): a face of an object on the viewer's side
+    // in the glass plane stays in front — well above rounding, far below any real depth step;
+    // objects on the plane or beyond it are pushed back twice as far (software-renderer.ts), so
+    // the glass covers their faces there.
+    r.depthBias = GLASS_TIE_BIAS;
     try {
       r.drawTriangles(this.vertices, indices, indices.length, this);
     } finally {

@@ -12,7 +12,7 @@ import type { FrameState } from '../frame/types';
 import type { DecodedImage } from '../scene/decoded-image';
 import { DefaultSceneCache } from '../scene/default-scene';
 import type { Scene, SceneObject } from '../scene/scene';
-import { GlassShader, GLASS_INDICES } from './glass-shader';
+import { GlassShader, GLASS_INDICES, GLASS_TIE_BIAS } from './glass-shader';
 import { Lights } from './lighting';
 import { isTwoSided } from '../frame/mesh-choice';
 import { SoftwareMeshes } from './meshes';
@@ -298,8 +298,12 @@ export class SoftwareRenderer {
       d.shading = state.shading;
       d.lights = mirrored ? this.lightsMirrored : this.lightsMain;
       r.cull = d.twoSided ? 'none' : 'back';
+      // A depth tie with the glass: an object on the viewer's side wins, one on the plane or
+      // beyond it loses (pushed back twice as far as the glass).
+      r.depthBias = !mirrored && s.hasGlass && s.side * signedDistance(plane, m.center) <= 0 ? 2 * GLASS_TIE_BIAS : 0;
       this.objectShader.render(d, r);
     }
+    r.depthBias = 0;
   }
 
   private textureOf(o: SceneObject, images: ReadonlyMap<string, DecodedImage> | undefined): MipTexture {

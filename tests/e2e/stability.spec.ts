@@ -155,8 +155,10 @@ test.describe('SPEC §6 extremes', () => {
       debugLog(`continuity ${view}: 89° → 89.9° (not bounded): ${formatDiff(first)}`);
       // In the fresnel view that wedge is white-ish (F ≈ 0.75–1) on black: its ~4 px × 90 rows
       // (≈ 2.8 % of the pixels) vanish at 89.99°, which is geometry, not a jump. Measured: final
-      // view mean 0.071, 0.04 % of the pixels; fresnel view mean 4.03, 1.88 %.
-      const last = expectContinuous(shots[1].image, shots[2].image, `${view}: 89.9° → 89.99°`, view === 'none' ? near(0.071, 0.0004) : near(4.03, 0.0188));
+      // view mean 0.071, 0.04 % of the pixels; fresnel view mean 5.56, 2.50 % (4.03, 1.88 % while
+      // the glass was pushed back by its depth slope: at 89.9° objects behind it within that slope
+      // covered part of the wedge — 22.4 dB against the reference's fresnel view, 56.5 now).
+      const last = expectContinuous(shots[1].image, shots[2].image, `${view}: 89.9° → 89.99°`, view === 'none' ? near(0.071, 0.0004) : near(5.56, 0.025));
       expect(last.mean, 'the image settles as the incidence approaches 90°').toBeLessThan(first.mean);
     }
   });

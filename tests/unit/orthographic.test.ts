@@ -9,7 +9,7 @@ import { apply, expectClose } from './helpers';
 import {
   forwardFromYawPitch, MIN_ORTHO_DEPTH, orthoHalfHeight, orthographicMatrix, viewerSide, type OrthoView,
 } from '../../src/math/camera';
-import { reflectDirection, reflectPoint, type Plane } from '../../src/math/mirror';
+import { MIRROR_CONTACT, reflectDirection, reflectPoint, type Plane } from '../../src/math/mirror';
 import { FrameSetup } from '../../src/frame/frame-setup';
 import { sphereScreenRadius } from '../../src/frame/sphere-screen';
 import { orthoPixelsPerUnit } from '../../src/frame/reflection-lod';
@@ -161,9 +161,12 @@ describe('the mirrored orthographic camera (FrameSetup)', () => {
       const c = low.clipPlane, e = low.mirroredEye;
       return c[0] * (p[0] - e[0]) + c[1] * (p[1] - e[1]) + c[2] * (p[2] - e[2]) + c[3];
     };
-    expect(keep([0.5, 1, 0])).toBeCloseTo(1, 5);
-    expect(keep([0.5, -1, 0])).toBeCloseTo(-1, 5);
-    expect(keep([3, 0, -2])).toBeCloseTo(0, 5);
+    // Kept where side·d ≥ MIRROR_CONTACT: what touches the glass is not reflected.
+    expect(keep([0.5, 1, 0])).toBeCloseTo(1 - MIRROR_CONTACT, 6);
+    expect(keep([0.5, -1, 0])).toBeCloseTo(-1 - MIRROR_CONTACT, 6);
+    expect(keep([3, 0, -2])).toBeCloseTo(-MIRROR_CONTACT, 6);
+    expect(keep([3, 0, -2])).toBeLessThan(0);
+    expect(keep([3, 2 * MIRROR_CONTACT, -2])).toBeGreaterThan(0);
   });
 });
 

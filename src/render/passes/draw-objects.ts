@@ -69,6 +69,12 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean,
       }
       if (twoSided) gl.disable(gl.CULL_FACE);
       else gl.enable(gl.CULL_FACE);
+      // On a depth tie with the glass (a face in its plane) an object on the viewer's side wins,
+      // one on the plane or beyond it loses: pushed back further than glass-pass.ts pushes the glass.
+      if (!mirrored && setup.hasGlass && setup.side * signedDistance(setup.glass.plane, m.center) <= 0) {
+        gl.enable(gl.POLYGON_OFFSET_FILL);
+        gl.polygonOffset(0, 2);
+      } else gl.disable(gl.POLYGON_OFFSET_FILL);
       if (transparent) {
         gl.enable(gl.BLEND);
         // Straight alpha over what is drawn; the target's alpha stays 1 for the glass pass.
@@ -93,5 +99,6 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean,
   gl.disable(gl.BLEND);
   gl.depthMask(true);
   gl.disable(gl.CULL_FACE);
+  gl.disable(gl.POLYGON_OFFSET_FILL);
   return draws;
 }

@@ -12,10 +12,12 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
   const program = ctx.programs.glass(state.fresnel, outputFresnel);
   gl.enable(gl.DEPTH_TEST);
   gl.depthMask(false);
-  // Pushed back a hair, so a cube face lying in the glass plane wins the depth test every
-  // time instead of z-fighting (cube-distance ±0.5 with spin 0).
-  gl.enable(gl.POLYGON_OFFSET_FILL);
-  gl.polygonOffset(1, 1);
+  // Pushed back a hair — a constant, not scaled by its depth slope, which at grazing incidence
+  // let objects behind the glass cover it — so a face of an object on the viewer's side lying in
+  // the glass plane stays in front of it instead of z-fighting; objects on the plane or beyond
+  // it are pushed back further in the scene pass (draw-objects.ts), so the glass covers their
+  // faces in the plane (a picture behind a glass wall, cube-distance −0.5 with spin 0).
+  gl.polygonOffset(0, 1);
   if (!outputFresnel) {
     gl.enable(gl.BLEND);
     gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA);

@@ -1,0 +1,86 @@
+// A face lying in the glass plane (issue 21: a picture behind a glass wall): the glass covers it
+// when its object is on the plane or beyond it, and an object on the viewer's side stays in front
+// — in the float64 reference and the software renderer alike, against values worked by hand.
+import { describe, expect, it } from 'vitest';
+import { renderScene } from '../../src/reference';
+import { SoftwareRenderer } from '../../src/software';
+import { fresnel } from '../../src/math/fresnel';
+import type { FrameState } from '../../src/frame/types';
+import type { Light, Material, Scene, SceneObject } from '../../src/scene/scene';
+
+// 17 × 17, fov 90°, the eye at (0, 0, 2) looking down −Z at a glass wall z = 0: the centre pixel
+// looks along the normal (F = 0.04 at ior 1.5).
+const N = 17;
+const STATE: FrameState = {
+  width: N, height: N, time: 0, spin: 0, cubeDistance: 0, transparency: 1, ior: 1.5, fresnel: 'exact',
+  fov: 90, cameraPosition: [0, 0, 2], yaw: -90, pitch: 0, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0,
+  shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
+};
+const AMBIENT: Light = { kind: 'directional', vector: [0, 0, 1], ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0] };
+const WHITE: Material = { ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0], shininess: 1, opacity: 1, texture: { kind: 'none' }, mapping: 'uv' };
+
+/** A white picture at z (the glass plane by default), x, y ∈ [−0.5, 0.5], facing the viewer; its bounds' centre at z = `centreZ`. */
+function picture(centreZ: number, z = 0): SceneObject {
+  return {
+    geometry: {
+      kind: 'mesh', key: `picture ${centreZ} ${z}`,
+      data: {
+        positions: new Float32Array([-0.5, -0.5, z, 0.5, -0.5, z, 0.5, 0.5, z, -0.5, 0.5, z]),
+        normals: new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]),
+        uvs: new Float32Array(8), indices: new Uint16Array([0, 1, 2, 0, 2, 3]),
+      },
+    },
+    transform: { position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
+    material: WHITE,
+    bounds: { center: [0, 0, centreZ], radius: 0.8 },
+  };
+}
+
+const scene = (o: SceneObject): Scene => ({ glass: { center: [0, 0, 0], normal: [0, 0, 1], size: [6, 6] }, objects: [o], lights: [AMBIENT], background: [0, 0, 0] });
+const centre = (rgba: ArrayLike<number>) => rgba[4 * (8 * N + 8)];
+/** `name`'s renderer with the state changed by `over`. */
+function drawWith(name: string, over: Partial<FrameState>, s: Scene): ArrayLike<number> {
+  const state = { ...STATE, ...over };
+  if (name === 'reference') return renderScene(s, state).rgba;
+  return new SoftwareRenderer().render(name.includes('multisampled') ? { ...state, samples: 4 } : state, s);
+}
+
+describe('a face in the glass plane', () => {
+  // T = 1: out = F·R + (1 − F)·B, R = the black background, B = 1: (1 − 0.04)·255 = 244.8.
+  const covered = Math.round((1 - fresnel('exact', 1, 1.5)) * 255);
+
+  it('the hand value: 245', () => expect(covered).toBe(245));
+
+  for (const [name, draw] of [
+    ['reference', (s: Scene) => renderScene(s, STATE).rgba],
+    ['software renderer', (s: Scene) => new SoftwareRenderer().render(STATE, s)],
+    ['software renderer, multisampled', (s: Scene) => new SoftwareRenderer().render({ ...STATE, samples: 4 }, s)],
+  ] as const) {
+    it(`${name}: a picture on the glass, seen through it, is 245, not 255`, () => {
+      expect(centre(draw(scene(picture(0))))).toBe(covered);
+      // Its object beyond the plane: the same.
+      expect(centre(draw(scene(picture(-0.1))))).toBe(covered);
+    });
+
+    it(`${name}: an object on the viewer's side keeps its face in the plane in front of the glass (255)`, () => {
+      expect(centre(draw(scene(picture(0.1))))).toBe(255);
+    });
+
+    it(`${name}: a face in front of the glass stays in front whatever side its object's centre is on (255)`, () => {
+      // Drawn over with transparency 0 the glass would show its dark body there, not white.
+      expect(centre(drawWith(name, { transparency: 0 }, scene(picture(-0.1, 0.3))))).toBe(255);
+      expect(centre(drawWith(name, { transparency: 0 }, scene(picture(0, 0.01))))).toBe(255);
+    });
+  }
+
+  for (const [name, draw] of [
+    ['reference', (s: Scene) => renderScene(s, { ...STATE, view: 'reflection' }).rgba],
+    ['software renderer', (s: Scene) => new SoftwareRenderer().render({ ...STATE, view: 'reflection' }, s)],
+  ] as const) {
+    it(`${name}: the reflection leaves out a face touching the glass (5e-6 in front of it), keeps one 1e-3 in front`, () => {
+      // MIRROR_CONTACT (1e-5): nearer than that to the glass is against it, not in front of it.
+      expect(centre(draw(scene(picture(0.1, 5e-6))))).toBe(0);
+      expect(centre(draw(scene(picture(0.1, 1e-3))))).toBe(255);
+    });
+  }
+});
