@@ -39,8 +39,8 @@ export default [
     name: 'R5 mirrored pass keeps the far side of the glass (clip sign flipped)',
     edits: [{
       file: 'src/reference/clip.ts',
-      find: 'return hit.t > tMin && visible(hit.t) && (clipSide === 0 || clipSide * signedDistance(plane!, hit.p) >= 0);',
-      replace: 'return hit.t > tMin && visible(hit.t) && (clipSide === 0 || clipSide * signedDistance(plane!, hit.p) <= 0);',
+      find: 'return hit.t > tMin && visible(hit.t) && (clipSide === 0 || clipSide * signedDistance(plane!, hit.p) >= MIRROR_CONTACT);',
+      replace: 'return hit.t > tMin && visible(hit.t) && (clipSide === 0 || clipSide * signedDistance(plane!, hit.p) <= -MIRROR_CONTACT);',
     }],
     tests: [PIXELS],
   },
