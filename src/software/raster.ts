@@ -80,6 +80,8 @@ export class Rasterizer {
   private readonly fy = new Float64Array(MAX_POLY);
   private readonly iw = new Float64Array(MAX_POLY);
   private readonly nz = new Float64Array(MAX_POLY);
+  /** The triangle's edge functions, their steps and biases (edges()). */
+  private readonly edge = new Float64Array(12);
   // The triangle being drawn: its vertices' 1/w and d(λ_v/w_v)/dx, /dy per pixel, and their sums.
   private w0 = 0;
   private w1 = 0;
@@ -244,30 +246,41 @@ export class Rasterizer {
   }
 
   /**
+   * Triangle (i, j, k)'s edge functions at the centre of pixel (px, py) and their steps per
+   * pixel (exact integers), with the top-left rule's biases, into `this.edge`: row0..2,
+   * stepX0..2, stepY0..2, bias0..2. Edge e_v is opposite vertex v: e0 = E(1→2), e1 = E(2→0),
+   * e2 = E(0→1); E(a→b)(p) = (bx − ax)(py − ay) − (by − ay)(px − ax), positive inside (area > 0).
+   */
+  private edges(i: number, j: number, k: number, px: number, py: number): Float64Array {
+    const { fx, fy } = this, e = this.edge;
+    const x0 = fx[i], y0 = fy[i], x1 = fx[j], y1 = fy[j], x2 = fx[k], y2 = fy[k];
+    const ax0 = x2 - x1, ay0 = y2 - y1; // edge 1→2
+    const ax1 = x0 - x2, ay1 = y0 - y2; // edge 2→0
+    const ax2 = x1 - x0, ay2 = y1 - y0; // edge 0→1
+    const cx = px * SUB + HALF, cy = py * SUB + HALF;
+    e[0] = ax0 * (cy - y1) - ay0 * (cx - x1);
+    e[1] = ax1 * (cy - y2) - ay1 * (cx - x2);
+    e[2] = ax2 * (cy - y0) - ay2 * (cx - x0);
+    e[3] = -ay0 * SUB; e[4] = -ay1 * SUB; e[5] = -ay2 * SUB;
+    e[6] = ax0 * SUB; e[7] = ax1 * SUB; e[8] = ax2 * SUB;
+    // Top-left rule (y down, interior on the right of each edge as walked): a top edge runs
+    // exactly horizontally rightwards, a left edge upwards. Pixels on other edges are left out.
+    e[9] = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;
+    e[10] = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;
+    e[11] = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;
+    return e;
+  }
+
+  /**
    * The pixels of triangle (i, j, k), ordered so that its edge functions' `area` is positive,
    * whose centres lie in it (top-left rule) within the box px0..px1 × py0..py1: depth-tested,
    * their barycentrics (and derivatives) set, and shaded.
    */
   private scan(i: number, j: number, k: number, area: number, px0: number, px1: number, py0: number, py1: number, shader: FragmentShader): void {
-    const { fx, fy } = this;
-    const x0 = fx[i], y0 = fy[i], x1 = fx[j], y1 = fy[j], x2 = fx[k], y2 = fy[k];
-    // Edge e_v is opposite vertex v: e0 = E(1→2), e1 = E(2→0), e2 = E(0→1); E(a→b)(p) =
-    // (bx − ax)(py − ay) − (by − ay)(px − ax), positive inside (area > 0).
-    const ax0 = x2 - x1, ay0 = y2 - y1; // edge 1→2
-    const ax1 = x0 - x2, ay1 = y0 - y2; // edge 2→0
-    const ax2 = x1 - x0, ay2 = y1 - y0; // edge 0→1
-    // Top-left rule (y down, interior on the right of each edge as walked): a top edge runs
-    // exactly horizontally rightwards, a left edge upwards. Pixels on other edges are left out.
-    const bias0 = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;
-    const bias1 = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;
-    const bias2 = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;
-    const cx = px0 * SUB + HALF, cy = py0 * SUB + HALF;
-    let row0 = ax0 * (cy - y1) - ay0 * (cx - x1);
-    let row1 = ax1 * (cy - y2) - ay1 * (cx - x2);
-    let row2 = ax2 * (cy - y0) - ay2 * (cx - x0);
-    // Steps per pixel (exact integers).
-    const stepX0 = -ay0 * SUB, stepX1 = -ay1 * SUB, stepX2 = -ay2 * SUB;
-    const stepY0 = ax0 * SUB, stepY1 = ax1 * SUB, stepY2 = ax2 * SUB;
+    const e = this.edges(i, j, k, px0, py0);
+    let row0 = e[0], row1 = e[1], row2 = e[2];
+    const stepX0 = e[3], stepX1 = e[4], stepX2 = e[5], stepY0 = e[6], stepY1 = e[7], stepY2 = e[8];
+    const bias0 = e[9], bias1 = e[10], bias2 = e[11];
 
     const inv = 1 / area;
     const z0 = this.nz[i], z1 = this.nz[j], z2 = this.nz[k];
@@ -310,24 +323,14 @@ export class Rasterizer {
    * `repeat`. Rows of pixels are bounded by the union of their sample rows' covered runs.
    */
   private scanPixels(i: number, j: number, k: number, area: number, px0: number, px1: number, py0: number, py1: number, shader: FragmentShader): void {
-    const { fx, fy } = this;
     const n = this.shadeEvery;
-    const x0 = fx[i], y0 = fy[i], x1 = fx[j], y1 = fy[j], x2 = fx[k], y2 = fy[k];
-    const ax0 = x2 - x1, ay0 = y2 - y1;
-    const ax1 = x0 - x2, ay1 = y0 - y2;
-    const ax2 = x1 - x0, ay2 = y1 - y0;
-    const bias0 = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;
-    const bias1 = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;
-    const bias2 = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;
     // The box in whole pixels; samples outside the triangle's box fail the edge test anyway.
     const qx0 = Math.floor(px0 / n) * n, qy0 = Math.floor(py0 / n) * n;
     const qx1 = Math.floor(px1 / n) * n + n - 1, qy1 = Math.floor(py1 / n) * n + n - 1;
-    const cx = qx0 * SUB + HALF, cy = qy0 * SUB + HALF;
-    let row0 = ax0 * (cy - y1) - ay0 * (cx - x1);
-    let row1 = ax1 * (cy - y2) - ay1 * (cx - x2);
-    let row2 = ax2 * (cy - y0) - ay2 * (cx - x0);
-    const stepX0 = -ay0 * SUB, stepX1 = -ay1 * SUB, stepX2 = -ay2 * SUB;
-    const stepY0 = ax0 * SUB, stepY1 = ax1 * SUB, stepY2 = ax2 * SUB;
+    const e = this.edges(i, j, k, qx0, qy0);
+    let row0 = e[0], row1 = e[1], row2 = e[2];
+    const stepX0 = e[3], stepX1 = e[4], stepX2 = e[5], stepY0 = e[6], stepY1 = e[7], stepY2 = e[8];
+    const bias0 = e[9], bias1 = e[10], bias2 = e[11];
 
     const inv = 1 / area;
     const z0 = this.nz[i], z1 = this.nz[j], z2 = this.nz[k];
