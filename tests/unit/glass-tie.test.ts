@@ -6,35 +6,16 @@ import { renderScene } from '../../src/reference';
 import { SoftwareRenderer } from '../../src/software';
 import { fresnel } from '../../src/math/fresnel';
 import type { FrameState } from '../../src/frame/types';
-import type { Light, Material, Scene, SceneObject } from '../../src/scene/scene';
+import type { Scene, SceneObject } from '../../src/scene/scene';
+import { AMBIENT, material, N, quad, STATE as BASE } from './quad-scenes';
 
-// 17 × 17, fov 90°, the eye at (0, 0, 2) looking down −Z at a glass wall z = 0: the centre pixel
-// looks along the normal (F = 0.04 at ior 1.5).
-const N = 17;
-const STATE: FrameState = {
-  width: N, height: N, time: 0, spin: 0, cubeDistance: 0, transparency: 1, ior: 1.5, fresnel: 'exact',
-  fov: 90, cameraPosition: [0, 0, 2], yaw: -90, pitch: 0, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0,
-  shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-};
-const AMBIENT: Light = { kind: 'directional', vector: [0, 0, 1], ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0] };
-const WHITE: Material = { ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0], shininess: 1, opacity: 1, texture: { kind: 'none' }, mapping: 'uv' };
+// quad-scenes.ts's 17 × 17 frame, looking head-on at a glass wall z = 0: the centre pixel looks
+// along the normal (F = 0.04 at ior 1.5). As stored, T = 1.
+const STATE: FrameState = { ...BASE, transparency: 1, colorSpace: 'none' };
+const WHITE = material([1, 1, 1], { kind: 'none' });
 
 /** A white picture at z (the glass plane by default), x, y ∈ [−0.5, 0.5], facing the viewer; its bounds' centre at z = `centreZ`. */
-function picture(centreZ: number, z = 0): SceneObject {
-  return {
-    geometry: {
-      kind: 'mesh', key: `picture ${centreZ} ${z}`,
-      data: {
-        positions: new Float32Array([-0.5, -0.5, z, 0.5, -0.5, z, 0.5, 0.5, z, -0.5, 0.5, z]),
-        normals: new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]),
-        uvs: new Float32Array(8), indices: new Uint16Array([0, 1, 2, 0, 2, 3]),
-      },
-    },
-    transform: { position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
-    material: WHITE,
-    bounds: { center: [0, 0, centreZ], radius: 0.8 },
-  };
-}
+const picture = (centreZ: number, z = 0): SceneObject => quad(-0.5, -0.5, 0.5, 0.5, z, WHITE, 1, centreZ);
 
 const scene = (o: SceneObject): Scene => ({ glass: { center: [0, 0, 0], normal: [0, 0, 1], size: [6, 6] }, objects: [o], lights: [AMBIENT], background: [0, 0, 0] });
 const centre = (rgba: ArrayLike<number>) => rgba[4 * (8 * N + 8)];

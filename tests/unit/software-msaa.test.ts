@@ -10,7 +10,8 @@ import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE
 import { linearToSrgbByte, type ColorSpace } from '../../src/math/srgb';
 import type { FrameState } from '../../src/frame/types';
 import type { DecodedImage } from '../../src/scene/decoded-image';
-import type { Light, Material, Scene, SceneObject } from '../../src/scene/scene';
+import type { Scene, SceneObject } from '../../src/scene/scene';
+import { AMBIENT, material, N, quad, STATE as BASE } from './quad-scenes';
 
 const STRIDE = VARYINGS + 1;
 
@@ -118,38 +119,11 @@ describe('the rasterizer, multisampled (shadeEvery 2)', () => {
   });
 });
 
-// The renderer: software-srgb.test.ts's 17×17 frame, vertical fov 90°, the eye at (0, 0, 2)
-// looking down −Z; a point (x, y, 0) lands on pixel column 8.5·(1 + x/2), row 8.5·(1 − y/2), so
-// the edge x = 0 runs through the centres of column 8.
-const N = 17;
-const STATE: FrameState = {
-  width: N, height: N, time: 0, spin: 0, cubeDistance: 0, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-  fov: 90, cameraPosition: [0, 0, 2], yaw: -90, pitch: 0, colorSpace: 'srgb', view: 'final', reflectionScale: 1, samples: 4,
-  shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-};
-const AMBIENT: Light = { kind: 'directional', vector: [0, 0, 1], ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0] };
+// The renderer: quad-scenes.ts's 17×17 frame, multisampled; the edge x = 0 runs through the
+// centres of column 8.
+const STATE: FrameState = { ...BASE, samples: 4 };
 const IMAGES = new Map<string, DecodedImage>([['white', { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }]]);
-
-function material(ambient: [number, number, number], opacity = 1): Material {
-  return { ambient, diffuse: [0, 0, 0], specular: [0, 0, 0], shininess: 1, opacity, texture: { kind: 'image', url: 'white' }, mapping: 'uv' };
-}
-
-function quad(x0: number, y0: number, x1: number, y1: number, z: number, m: Material): SceneObject {
-  return {
-    geometry: {
-      kind: 'mesh', key: `quad ${x0} ${y0} ${x1} ${y1} ${z}`,
-      data: {
-        positions: new Float32Array([x0, y0, z, x1, y0, z, x1, y1, z, x0, y1, z]),
-        normals: new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]),
-        uvs: new Float32Array([0, 0, 1, 0, 1, 1, 0, 1]),
-        indices: new Uint16Array([0, 1, 2, 0, 2, 3]),
-      },
-    },
-    transform: { position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
-    material: m,
-    bounds: { center: [(x0 + x1) / 2, (y0 + y1) / 2, z], radius: Math.hypot(x1 - x0, y1 - y0) / 2 },
-  };
-}
+const white = (ka: [number, number, number], opacity = 1) => material(ka, { kind: 'image', url: 'white' }, opacity);
 
 const scene = (objects: SceneObject[]): Scene => ({ glass: null, objects, lights: [AMBIENT], background: [0, 0, 0] });
 const channel = (rgba: ArrayLike<number>, i: number, j: number, k: number) => rgba[4 * (j * N + i) + k];
@@ -159,7 +133,7 @@ const shown = (x: number, space: ColorSpace) => (space === 'srgb' ? linearToSrgb
 describe('the software renderer honours `samples`', () => {
   for (const space of ['srgb', 'none'] as const) {
     it(`${space}: an edge through a pixel's centre gives it half of the object's light (samples 4), all of it with samples 0`, () => {
-      const s = scene([quad(0, -1, 1, 1, 0, material([1, 1, 1]))]);
+      const s = scene([quad(0, -1, 1, 1, 0, white([1, 1, 1]))]);
       const four = new SoftwareRenderer().render({ ...STATE, colorSpace: space }, s, IMAGES);
       // Column 8: two of its four samples covered; the mean is taken in linear light and encoded.
       for (let j = 6; j <= 10; j++) expect(channel(four, 8, j, 0), `row ${j}`).toBe(shown(0.5, space));
@@ -171,14 +145,14 @@ describe('the software renderer honours `samples`', () => {
     });
 
     it(`${space}: a nearer object over half a pixel and a farther one under all of it mix by coverage`, () => {
-      const s = scene([quad(-1, -1, 1, 1, 0, material([0, 1, 0])), quad(0, -0.5, 0.5, 0.5, 0.5, material([1, 0, 0]))]);
+      const s = scene([quad(-1, -1, 1, 1, 0, white([0, 1, 0])), quad(0, -0.5, 0.5, 0.5, 0.5, white([1, 0, 0]))]);
       const px = new SoftwareRenderer().render({ ...STATE, colorSpace: space }, s, IMAGES);
       // The near quad's left edge x = 0 at depth 0.5 still projects to column 8.5.
       expect([channel(px, 8, 8, 0), channel(px, 8, 8, 1), channel(px, 8, 8, 2)]).toEqual([shown(0.5, space), shown(0.5, space), 0]);
     });
 
     it(`${space}: a half-transparent object blends per sample, over the samples it covers only`, () => {
-      const s = scene([quad(-1, -1, 1, 1, 0, material([0, 0, 1])), quad(0, -0.5, 0.5, 0.5, 0.5, material([1, 0, 0], 0.5))]);
+      const s = scene([quad(-1, -1, 1, 1, 0, white([0, 0, 1])), quad(0, -0.5, 0.5, 0.5, 0.5, white([1, 0, 0], 0.5))]);
       const px = new SoftwareRenderer().render({ ...STATE, colorSpace: space }, s, IMAGES);
       // Two samples blue, two ½ red + ½ blue: red ¼, blue ¾ in linear light.
       expect([channel(px, 8, 8, 0), channel(px, 8, 8, 2)]).toEqual([shown(0.25, space), shown(0.75, space)]);

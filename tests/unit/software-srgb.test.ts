@@ -11,48 +11,17 @@ import { linearToSrgb, linearToSrgbByte, srgbToLinear, type ColorSpace } from '.
 import { texel } from '../../src/scene/procedural-texture';
 import { TEXTURE_SIZE } from '../../src/scene/default-scene';
 import type { FrameState } from '../../src/frame/types';
+import { AMBIENT, material, N, quad, STATE } from './quad-scenes';
 import type { DecodedImage } from '../../src/scene/decoded-image';
-import type { Glass, Light, Material, Scene, SceneObject, TextureSource } from '../../src/scene/scene';
+import type { Glass, Scene, SceneObject } from '../../src/scene/scene';
 
-// As software-pixels.test.ts: 17×17 pixels, vertical fov 90°, the eye at (0, 0, 2) looking down
-// −Z; a point (x, y, 0) lands on pixel column 8.5·(1 + x/2), row 8.5·(1 − y/2).
-const N = 17;
-const STATE: FrameState = {
-  width: N, height: N, time: 0, spin: 0, cubeDistance: 0, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-  fov: 90, cameraPosition: [0, 0, 2], yaw: -90, pitch: 0, colorSpace: 'srgb', view: 'final', reflectionScale: 1, samples: 0,
-  shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-};
+// quad-scenes.ts's 17×17 frame: a point (x, y, 0) lands on pixel column 8.5·(1 + x/2), row 8.5·(1 − y/2).
 const SPACES: ColorSpace[] = ['srgb', 'none'];
 
 const solid = (r: number, g: number, b: number): DecodedImage => ({ width: 1, height: 1, data: new Uint8Array([r, g, b, 255]) });
 /** A 2×2 checker of black and white texels: every mip level above the base is its mean. */
 const BLACK_WHITE: DecodedImage = { width: 2, height: 2, data: new Uint8Array([0, 0, 0, 255, 255, 255, 255, 255, 255, 255, 255, 255, 0, 0, 0, 255]) };
 const IMAGES = new Map([['white', solid(255, 255, 255)], ['grey188', solid(188, 188, 188)], ['black-white', BLACK_WHITE]]);
-
-/** Ambient light only: an object's colour is Ka ⊙ tex, nothing else. */
-const AMBIENT: Light = { kind: 'directional', vector: [0, 0, 1], ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0] };
-
-function material(ambient: [number, number, number], texture: TextureSource, opacity = 1): Material {
-  return { ambient, diffuse: [0, 0, 0], specular: [0, 0, 0], shininess: 1, opacity, texture, mapping: 'uv' };
-}
-
-/** A quad facing +Z at depth z from (x0, y0) to (x1, y1), UVs 0..uv across it. */
-function quad(x0: number, y0: number, x1: number, y1: number, z: number, m: Material, uv = 1): SceneObject {
-  return {
-    geometry: {
-      kind: 'mesh', key: `quad ${x0} ${y0} ${x1} ${y1} ${z} ${uv}`,
-      data: {
-        positions: new Float32Array([x0, y0, z, x1, y0, z, x1, y1, z, x0, y1, z]),
-        normals: new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]),
-        uvs: new Float32Array([0, 0, uv, 0, uv, uv, 0, uv]),
-        indices: new Uint16Array([0, 1, 2, 0, 2, 3]),
-      },
-    },
-    transform: { position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
-    material: m,
-    bounds: { center: [(x0 + x1) / 2, (y0 + y1) / 2, z], radius: Math.hypot(x1 - x0, y1 - y0) / 2 },
-  };
-}
 
 const scene = (objects: SceneObject[], background: [number, number, number], glass: Glass | null = null): Scene =>
   ({ glass, objects, lights: [AMBIENT], background });
