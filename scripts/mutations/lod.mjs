@@ -20,9 +20,9 @@ export default [
   {
     name: 'D2 reflection culling ignores the camera\'s side: from behind the glass the wrong objects are culled',
     edits: [{
-      file: 'src/render/passes/draw-objects.ts',
-      find: 'ctx.cull && setup.side * signedDistance(setup.glass.plane, m.center) <= -m.radius',
-      replace: 'ctx.cull && signedDistance(setup.glass.plane, m.center) <= -m.radius',
+      file: 'src/frame/frame-setup.ts',
+      find: 'out.viewerDistance = this.side * signedDistance(this.glass.plane, out.center);',
+      replace: 'out.viewerDistance = signedDistance(this.glass.plane, out.center);',
     }],
     tests: [ON_DEMAND],
   },

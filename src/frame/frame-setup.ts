@@ -30,6 +30,8 @@ export class ObjectMatrices {
   readonly mirrored = new DrawMatrices();
   readonly center = new Float64Array(3);
   radius = 0;
+  /** The centre's signed distance from the glass plane, positive on the viewer's side. */
+  viewerDistance = 0;
 }
 
 /** Light vectors (xyz; w 0 directional, 1 point) relative to one eye, for upload. */
@@ -298,6 +300,7 @@ export class FrameSetup {
     out.center[1] = mm[1] * t[0] + mm[5] * t[1] + mm[9] * t[2] + mm[13];
     out.center[2] = mm[2] * t[0] + mm[6] * t[1] + mm[10] * t[2] + mm[14];
     out.radius = object.bounds.radius * Math.max(Math.abs(scale[0]), Math.abs(scale[1]), Math.abs(scale[2]));
+    out.viewerDistance = this.side * signedDistance(this.glass.plane, out.center);
   }
 
   private compose(out: DrawMatrices, model: Float64Array, normal: Float64Array, eye: Float64Array, viewProjection: Float64Array): void {

@@ -3,7 +3,7 @@
 // in a worker. Pixels come back as RGBA8, top row first, like `capture()` and the reference.
 // With colorSpace 'srgb' (SPEC §13) textures and the background are decoded, the Float32
 // buffers sum linear light, and the resolve encodes once; 'none' uses every value as stored.
-import { eyeRelativePlane, signedDistance } from '../math/mirror';
+import { eyeRelativePlane } from '../math/mirror';
 import { srgbToLinear, type ColorSpace } from '../math/srgb';
 import { encodeByte } from './encode';
 import { FrameSetup } from '../frame/frame-setup';
@@ -284,7 +284,7 @@ export class SoftwareRenderer {
       if (selection === 'opaque' && o.material.opacity < 1) continue;
       const m = s.objects[i];
       // Culling, not selection (SPEC §4): bounds wholly beyond the glass cannot be reflected.
-      if (mirrored && s.side * signedDistance(plane, m.center) <= -m.radius) continue;
+      if (mirrored && m.viewerDistance <= -m.radius) continue;
       d.mesh = this.meshes.get(o.geometry, state, m.center, m.radius, s.halfHeight, this.pixelScale);
       d.model = m.model;
       d.normal = m.normal;
@@ -300,7 +300,7 @@ export class SoftwareRenderer {
       r.cull = d.twoSided ? 'none' : 'back';
       // A depth tie with the glass: an object on the viewer's side wins, one on the plane or
       // beyond it loses (pushed back twice as far as the glass).
-      r.depthBias = !mirrored && s.hasGlass && s.side * signedDistance(plane, m.center) <= 0 ? 2 * GLASS_TIE_BIAS : 0;
+      r.depthBias = !mirrored && s.hasGlass && m.viewerDistance <= 0 ? 2 * GLASS_TIE_BIAS : 0;
       this.objectShader.render(d, r);
     }
     r.depthBias = 0;

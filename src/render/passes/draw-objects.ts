@@ -1,7 +1,6 @@
 // The scene's objects drawn with the standard program, from the real eye (pass 2) or the
 // mirrored one (pass 1): opaque ones first, then those with opacity < 1 blended over them
 // (depth-tested, no depth write), as SPEC §9 and seed 002 ask.
-import { signedDistance } from '../../math/mirror';
 import { focalPixels, orthoPixelsPerUnit } from '../../frame/reflection-lod';
 import type { Program } from '../gl/program';
 import type { Texture } from '../gl/texture';
@@ -51,7 +50,7 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean,
       if ((o.material.opacity < 1) !== transparent) continue;
       const m = setup.objects[i];
       // Culling, not selection (SPEC §4): bounds wholly beyond the glass cannot be reflected.
-      if (mirrored && ctx.cull && setup.side * signedDistance(setup.glass.plane, m.center) <= -m.radius) continue;
+      if (mirrored && ctx.cull && m.viewerDistance <= -m.radius) continue;
       const twoSided = isTwoSided(o.geometry);
       const program = ctx.programs.standard(clip, ctx.state.shading, variantOf(ctx, o));
       const switched = program !== current;
@@ -71,7 +70,7 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean,
       else gl.enable(gl.CULL_FACE);
       // On a depth tie with the glass (a face in its plane) an object on the viewer's side wins,
       // one on the plane or beyond it loses: pushed back further than glass-pass.ts pushes the glass.
-      if (!mirrored && setup.hasGlass && setup.side * signedDistance(setup.glass.plane, m.center) <= 0) {
+      if (!mirrored && setup.hasGlass && m.viewerDistance <= 0) {
         gl.enable(gl.POLYGON_OFFSET_FILL);
         gl.polygonOffset(0, 2);
       } else gl.disable(gl.POLYGON_OFFSET_FILL);
