@@ -4,6 +4,7 @@ import type { ColorSpace } from '../math/srgb';
 import type { Projection } from '../math/camera';
 import type { CourseCamera } from '../math/course-camera';
 import type { SceneTurn } from '../scene/group-rotation';
+import type { RoughnessQuality } from './rough-glass';
 
 export type { Projection, ColorSpace };
 
@@ -45,6 +46,8 @@ export interface FrameState {
    * glass exactly.
    */
   roughness?: number;
+  /** How many neighbours rough glass gathers (frame/rough-glass.ts); absent: 'medium'. */
+  roughnessQuality?: RoughnessQuality;
   /** Absent: perspective. Orthographic keeps the reflection (SPEC §10). */
   projection?: Projection;
   /** The camera target, if any: only the orthographic size reads it (depth of this point). */
