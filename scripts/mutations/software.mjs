@@ -106,7 +106,7 @@ export default [
   },
   {
     name: 'S15 srgb: the final encode missing (linear light written to the bytes)',
-    edits: [{ file: 'src/software/software-renderer.ts', find: 'this.resolve(source, width, height, n, encodesAtEnd(state));', replace: 'this.resolve(source, width, height, n, false);' }],
+    edits: [{ file: 'src/software/software-renderer.ts', find: 'resolveSamples(this.output, source, width, height, n, encodesAtEnd(state));', replace: 'resolveSamples(this.output, source, width, height, n, false);' }],
     tests: [SRGB],
   },
   {
@@ -118,14 +118,14 @@ export default [
     name: 'S17 srgb: each sample encoded, then the box filter (averaging encoded values)',
     edits: [
       {
-        file: 'src/software/software-renderer.ts',
+        file: 'src/software/encode.ts',
         find: 'r += source[o]; g += source[o + 1]; b += source[o + 2];',
         replace: 'r += encode ? encodeByte(source[o]) / 255 : source[o]; g += encode ? encodeByte(source[o + 1]) / 255 : source[o + 1]; b += encode ? encodeByte(source[o + 2]) / 255 : source[o + 2];',
       },
       {
-        file: 'src/software/software-renderer.ts',
-        find: 'out[p] = encode ? encodeByte(r * mean) : Math.round(r * k);\n        out[p + 1] = encode ? encodeByte(g * mean) : Math.round(g * k);\n        out[p + 2] = encode ? encodeByte(b * mean) : Math.round(b * k);',
-        replace: 'out[p] = Math.round(r * k);\n        out[p + 1] = Math.round(g * k);\n        out[p + 2] = Math.round(b * k);',
+        file: 'src/software/encode.ts',
+        find: 'out[p] = encode ? encodeByte(r * mean) : Math.round(r * k);\n      out[p + 1] = encode ? encodeByte(g * mean) : Math.round(g * k);\n      out[p + 2] = encode ? encodeByte(b * mean) : Math.round(b * k);',
+        replace: 'out[p] = Math.round(r * k);\n      out[p + 1] = Math.round(g * k);\n      out[p + 2] = Math.round(b * k);',
       },
     ],
     tests: [SRGB],

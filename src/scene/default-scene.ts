@@ -52,7 +52,7 @@ export { CAMERA } from '../math/camera';
 export const TEXTURE_SIZE = 512;
 
 /** The material of SPEC §3's objects: Ka = Kd = albedo (⊙ tex), Ks = 0.5, shininess 32. */
-function defaultMaterial(albedo: Vec3): Material {
+export function defaultMaterial(albedo: Vec3): Material {
   const ks = MATERIAL.ks;
   return {
     ambient: albedo, diffuse: albedo, specular: [ks, ks, ks], shininess: MATERIAL.shininess,

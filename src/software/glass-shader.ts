@@ -4,6 +4,7 @@ import { fresnel, type FresnelModel } from '../math/fresnel';
 import { GLASS_BODY as BODY } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
 import type { MipTexture } from './mip-texture';
+import type { RoughGather } from './rough-gather';
 import { CLIP_DISTANCE, VARYINGS, type FragmentShader, type Rasterizer } from './raster';
 
 // Varyings: eye-relative position, UV.
@@ -26,6 +27,15 @@ export class GlassShader implements FragmentShader {
   ior = 1.5;
   transparency = 0.5;
   texture!: MipTexture;
+  /** Rough glass (SPEC §14): R̃ (and B̃ with `roughTransmission`) gathered once per pixel; null: polished. */
+  rough: RoughGather | null = null;
+  roughTransmission = false;
+  private readonly rel = new Float64Array(3);
+  private readonly rr = new Float64Array(3);
+  private readonly rb = new Float64Array(3);
+  /** Whether this pixel's R̃ / B̃ were gathered (else its samples keep their own R / B). */
+  private hasR = false;
+  private hasB = false;
   /** The glass's unit normal. */
   private nx = 0;
   private ny = 0;
@@ -108,6 +118,13 @@ export class GlassShader implements FragmentShader {
       l[4] = r.dbdy0 * p[ua] + r.dbdy1 * p[ub] + r.dbdy2 * p[uc];
       l[5] = r.dbdy0 * p[ua + 1] + r.dbdy1 * p[ub + 1] + r.dbdy2 * p[uc + 1];
       this.texture.sample(l, this.tex);
+      const rough = this.rough;
+      if (rough !== null) {
+        const rel = this.rel;
+        rel[0] = rx; rel[1] = ry; rel[2] = rz;
+        this.hasR = rough.gather(this.rr, rel, 0);
+        this.hasB = this.roughTransmission && rough.gather(this.rb, rel, 1);
+      }
     }
     this.repeat(pixel);
   }
@@ -127,6 +144,10 @@ export class GlassShader implements FragmentShader {
       out[o] = out[o + 1] = out[o + 2] = f;
       return;
     }
+    if (this.rough !== null) {
+      this.composeRough(sample);
+      return;
+    }
     const tex = this.tex[0], t = this.transparency, refl = this.reflection;
     if (this.model === 'classic') {
       // Seed 000 verbatim: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha.
@@ -142,6 +163,18 @@ export class GlassShader implements FragmentShader {
     for (let k = 0; k < 3; k++) {
       const d = tex * BODY[k], rk = Math.min(refl[o + k], 1);
       const x = f * rk + (1 - f) * (t * out[o + k] + (1 - t) * d);
+      out[o + k] = x < 0 ? 0 : x > 1 ? 1 : x;
+    }
+  }
+
+  /** repeat()'s glass equation with the pixel's R̃ and B̃ in place of each sample's R and B. */
+  private composeRough(sample: number): void {
+    const f = this.f, o = 3 * sample, out = this.colour, refl = this.reflection;
+    const tex = this.tex[0], t = this.transparency, rr = this.rr, rb = this.rb, hasR = this.hasR, hasB = this.hasB;
+    const classic = this.model === 'classic', a = (1 - t) * (0.2 + 0.8 * f);
+    for (let k = 0; k < 3; k++) {
+      const d = tex * BODY[k], rk = Math.min(hasR ? rr[k] : refl[o + k], 1), b = hasB ? rb[k] : out[o + k];
+      const x = classic ? (d + (rk - d) * f) * a + b * (1 - a) : f * rk + (1 - f) * (t * b + (1 - t) * d);
       out[o + k] = x < 0 ? 0 : x > 1 ? 1 : x;
     }
   }

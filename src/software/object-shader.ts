@@ -69,6 +69,14 @@ export class ObjectShader implements FragmentShader {
   private vertices = new Float64Array(0);
   private draw!: ObjectDraw;
   private readonly sums = new Float64Array(6);
+  /**
+   * Rough glass (SPEC §14): per sample, the distance code h/(1 + h) of the opaque surface drawn
+   * there (frame/rough-glass.ts), h its distance from the plane `codePlane` (positive on the side
+   * the pass draws); null: not kept.
+   */
+  codes: Float32Array | null = null;
+  readonly codePlane = new Float64Array(4);
+  private code = 0;
   /** The last fragment's colour, clamped (written again at a pixel's other samples). */
   private cr = 0;
   private cg = 0;
@@ -187,6 +195,16 @@ export class ObjectShader implements FragmentShader {
     this.cr = cr < 0 ? 0 : cr > 1 ? 1 : cr;
     this.cg = cg < 0 ? 0 : cg > 1 ? 1 : cg;
     this.cb = cb < 0 ? 0 : cb > 1 ? 1 : cb;
+    if (this.codes !== null) {
+      // The fragment's world point (the model matrix over its object-space position) and its
+      // distance from the plane, coded as distanceCode() does (inline: its double would be boxed).
+      const m = d.model, pl = this.codePlane, a = i0 + OBJ, b = i1 + OBJ, c = i2 + OBJ;
+      const x = b0 * p[a] + b1 * p[b] + b2 * p[c], y = b0 * p[a + 1] + b1 * p[b + 1] + b2 * p[c + 1];
+      const z = b0 * p[a + 2] + b1 * p[b + 2] + b2 * p[c + 2];
+      const h = pl[0] * (m[0] * x + m[4] * y + m[8] * z + m[12]) + pl[1] * (m[1] * x + m[5] * y + m[9] * z + m[13])
+        + pl[2] * (m[2] * x + m[6] * y + m[10] * z + m[14]) + pl[3];
+      this.code = h > 0 ? h / (1 + h) : 0;
+    }
     this.repeat(pixel);
   }
 
@@ -196,6 +214,7 @@ export class ObjectShader implements FragmentShader {
     const alpha = this.draw.material.opacity;
     if (alpha >= 1) {
       c[o] = this.cr; c[o + 1] = this.cg; c[o + 2] = this.cb;
+      if (this.codes !== null) this.codes[sample] = this.code;
     } else {
       // colour·(1 − kt) + framebuffer·kt (SPEC §11), kt = 1 − opacity.
       const a = alpha > 0 ? alpha : 0;

@@ -5,7 +5,7 @@
 // buffers sum linear light, and the resolve encodes once; 'none' uses every value as stored.
 import { eyeRelativePlane } from '../math/mirror';
 import { srgbToLinear, type ColorSpace } from '../math/srgb';
-import { encodeByte } from './encode';
+import { resolveSamples } from './encode';
 import { FrameSetup } from '../frame/frame-setup';
 import { encodesAtEnd } from '../frame/linear-light';
 import type { FrameState } from '../frame/types';
@@ -19,6 +19,9 @@ import { SoftwareMeshes } from './meshes';
 import { imageMipTexture, proceduralMipTexture, type MipTexture } from './mip-texture';
 import { ObjectShader, type ObjectDraw, type SoftwareTiming } from './object-shader';
 import { Rasterizer } from './raster';
+import { RoughBuffers, RoughGather } from './rough-gather';
+import { ROUGH_GATHER } from '../frame/rough-glass';
+import { ggxAlpha } from '../math/ggx';
 
 export interface SoftwareRendererOptions {
   /**
@@ -68,6 +71,11 @@ export class SoftwareRenderer {
   private readonly defaultScene = new DefaultSceneCache();
   /** Shaded samples per pixel along an axis (supersampling's n; 1 when multisampled). */
   private pixelScale = 1;
+  /** Rough glass (SPEC §14). */
+  private readonly rough = new RoughGather();
+  private readonly roughBuffers = new RoughBuffers();
+  private readonly forward = new Float64Array(3);
+  private readonly viewerNormal = new Float64Array(3);
 
   constructor(options: SoftwareRendererOptions = {}) {
     this.samplesPerAxis = options.samplesPerAxis ?? 1;
@@ -167,16 +175,70 @@ export class SoftwareRenderer {
         }
         // Opaque objects, transparent ones beyond the glass, the glass's footprint, the
         // reflection there only, the glass over it all, transparent objects on the eye's side.
-        this.scenePass(state, scene, images, 'beyond');
-        this.mask.fill(0, 0, W * H);
-        this.glass('mask');
-        this.reflectionPass(state, scene, images, true);
-        this.glass('compose');
+        if ((state.roughness ?? 0) > 0) this.roughGlass(state, scene, images, width);
+        else {
+          this.scenePass(state, scene, images, 'beyond');
+          this.mask.fill(0, 0, W * H);
+          this.glass('mask');
+          this.reflectionPass(state, scene, images, true);
+          this.glass('compose');
+        }
         this.drawObjects(this.main, state, scene, images, false, 'transparent', 'eye');
     }
     // F is a number, shown unencoded in either space (SPEC §13); every other view is a picture.
-    this.resolve(source, width, height, n, encodesAtEnd(state));
+    resolveSamples(this.output, source, width, height, n, encodesAtEnd(state));
     return this.output;
+  }
+
+  /**
+   * The glass passes when rough (SPEC §14): the frame beyond the glass alone (when T > 0) and
+   * the whole reflection, each with its distance codes and mips, then the scene and the glass
+   * gathering R̃ and B̃ from them (rough-gather.ts).
+   */
+  private roughGlass(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined, width: number): void {
+    const r = this.main, W = r.width, H = r.height, s = this.setup, g = this.rough, b = this.roughBuffers, shader = this.objectShader;
+    b.resize(W * H);
+    const transmits = state.transparency > 0, plane = s.glass.plane, codePlane = shader.codePlane;
+    shader.codes = b.codes;
+    try {
+      if (transmits) {
+        for (let k = 0; k < 4; k++) codePlane[k] = -s.side * plane[k];
+        fill(b.behind, W * H, this.background);
+        b.codes.fill(1, 0, W * H);
+        r.clearDepth();
+        r.mask = null;
+        shader.colour = b.behind;
+        this.drawObjects(r, state, scene, images, false, 'opaque', 'beyond');
+        this.drawObjects(r, state, scene, images, false, 'transparent', 'beyond');
+        b.build(g, 1, b.behind, W, H);
+      }
+      shader.colour = this.colour;
+      for (let k = 0; k < 4; k++) codePlane[k] = s.side * plane[k];
+      b.codes.fill(1, 0, W * H);
+      this.reflectionPass(state, scene, images, false);
+      b.build(g, 0, this.reflection, W, H);
+    } finally {
+      shader.codes = null;
+      shader.colour = this.colour;
+    }
+    this.scenePass(state, scene, images, 'beyond');
+    g.alpha = ggxAlpha(state.roughness ?? 0);
+    g.ior = state.ior;
+    g.settings = ROUGH_GATHER[state.roughnessQuality ?? 'medium'];
+    g.cells = W / width;
+    const v = s.viewVectorMain;
+    this.forward[0] = -v[0]; this.forward[1] = -v[1]; this.forward[2] = -v[2];
+    for (let k = 0; k < 3; k++) this.viewerNormal[k] = s.side * plane[k];
+    g.background.set(this.background);
+    g.frame(s.viewProjection, s.eye, W, H, this.viewerNormal, s.orthographic, this.forward);
+    const glass = this.glassShader;
+    glass.rough = g;
+    glass.roughTransmission = transmits;
+    try {
+      this.glass('compose');
+    } finally {
+      glass.rough = null;
+    }
   }
 
   private resize(W: number, H: number, pixels: number): void {
@@ -316,50 +378,6 @@ export class SoftwareRenderer {
     let t = built.get(image);
     if (t === undefined) built.set(image, (t = imageMipTexture(image, space)));
     return t ?? proceduralMipTexture(space);
-  }
-
-  /**
-   * Box filter of n×n samples per pixel, rounded to RGBA8. With `encode` the mean (linear light)
-   * is encoded to sRGB after the average, as an MSAA resolve into an sRGB target does, by a
-   * table read (no pow per pixel).
-   */
-  private resolve(source: Float32Array, width: number, height: number, n: number, encode: boolean): void {
-    const out = this.output, W = width * n, k = 255 / (n * n), mean = 1 / (n * n);
-    if (n === 1 && encode) {
-      for (let i = 0, o = 0, p = 0; i < width * height; i++, o += 3, p += 4) {
-        out[p] = encodeByte(source[o]);
-        out[p + 1] = encodeByte(source[o + 1]);
-        out[p + 2] = encodeByte(source[o + 2]);
-        out[p + 3] = 255;
-      }
-      return;
-    }
-    if (n === 1) {
-      // Values are in [0, 1]: (x·255 + ½) | 0 is Math.round, without the call.
-      for (let i = 0, o = 0, p = 0; i < width * height; i++, o += 3, p += 4) {
-        out[p] = (source[o] * 255 + 0.5) | 0;
-        out[p + 1] = (source[o + 1] * 255 + 0.5) | 0;
-        out[p + 2] = (source[o + 2] * 255 + 0.5) | 0;
-        out[p + 3] = 255;
-      }
-      return;
-    }
-    for (let y = 0; y < height; y++) {
-      for (let x = 0; x < width; x++) {
-        let r = 0, g = 0, b = 0;
-        for (let sy = 0; sy < n; sy++) {
-          let o = 3 * ((y * n + sy) * W + x * n);
-          for (let sx = 0; sx < n; sx++, o += 3) {
-            r += source[o]; g += source[o + 1]; b += source[o + 2];
-          }
-        }
-        const p = 4 * (y * width + x);
-        out[p] = encode ? encodeByte(r * mean) : Math.round(r * k);
-        out[p + 1] = encode ? encodeByte(g * mean) : Math.round(g * k);
-        out[p + 2] = encode ? encodeByte(b * mean) : Math.round(b * k);
-        out[p + 3] = 255;
-      }
-    }
   }
 }
 
