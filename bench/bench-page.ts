@@ -7,6 +7,7 @@ import { ThreePeer } from './three-peer';
 import { DEFAULTS, type Knobs } from './configs';
 import type { BenchView } from './views';
 import { BENCH_SCENES } from './scenes';
+import { roughFloorScene } from './rough-scene';
 import type { Shading } from '../src/frame/types';
 
 export interface Scene {
@@ -34,6 +35,7 @@ const gl = oursCanvas.getContext('webgl2', {
 })!;
 const renderer = new Renderer(gl, {});
 let peer: ThreePeer | null = null;
+let roughScene: ReturnType<typeof roughFloorScene> | null = null;
 const pixel = new Uint8Array(4);
 
 function resize(canvas: HTMLCanvasElement, s: FrameState): void {
@@ -164,6 +166,24 @@ const api = {
     const s = frameState(size, { ...DEFAULTS, ...knobs, shading }, b.view);
     resize(oursCanvas, s);
     const px = renderer.read('screen', s, b.scene);
+    return { width: px.width, height: px.height, data: toBase64(px.data) };
+  },
+
+  /** Issue 21's rough floor (bench/rough-scene.ts) in frame state `s`: ms per frame over `frames` after `warmup`. */
+  roughTime(s: FrameState, frames: number, warmup: number): number {
+    resize(oursCanvas, s);
+    const scene = (roughScene ??= roughFloorScene());
+    for (let i = 0; i < warmup; i++) renderer.render(s, scene);
+    finish(gl);
+    const t0 = performance.now();
+    for (let i = 0; i < frames; i++) renderer.render(s, scene);
+    finish(gl);
+    return (performance.now() - t0) / frames;
+  },
+
+  roughPixels(s: FrameState): { width: number; height: number; data: string } {
+    resize(oursCanvas, s);
+    const px = renderer.read('screen', s, (roughScene ??= roughFloorScene()));
     return { width: px.width, height: px.height, data: toBase64(px.data) };
   },
 

@@ -45,7 +45,7 @@ export function cachedReference(r: ReferenceRequest): ReferenceImage {
 }
 
 /** A digest of the reference's own sources, so a change to them invalidates the cache. */
-function sourcesVersion(dirs: URL[]): string {
+export function sourcesVersion(dirs: URL[]): string {
   const h = createHash('sha256');
   for (const d of dirs) {
     for (const f of readdirSync(d).sort()) {

@@ -48,6 +48,11 @@ export interface FrameState {
   roughness?: number;
   /** How many neighbours rough glass gathers (frame/rough-glass.ts); absent: 'medium'. */
   roughnessQuality?: RoughnessQuality;
+  /**
+   * The bench's comparison (the peers' method), not a user setting: with roughness > 0, the
+   * reflection read at this one mip level over the whole glass, what is behind it left sharp.
+   */
+  fixedBlurLevel?: number;
   /** Absent: perspective. Orthographic keeps the reflection (SPEC §10). */
   projection?: Projection;
   /** The camera target, if any: only the orthographic size reads it (depth of this point). */

@@ -26,6 +26,8 @@ export class RoughGather {
   alpha = 0;
   ior = 1.5;
   settings: RoughGatherSettings = { angles: 8, lodBias: -1 };
+  /** ≥ 0: the bench's fixed-radius comparison at this mip level (in pixels' levels); −1: the gather. */
+  fixedLevel = -1;
   /** Sample-grid cells per pixel along an axis (the gather works in pixels, reads the grid). */
   cells = 1;
   private width = 0;
@@ -77,6 +79,7 @@ export class RoughGather {
    * neighbour has weight (the caller keeps the sharp value).
    */
   gather(out: Float64Array, rel: ArrayLike<number>, pass: 0 | 1): boolean {
+    if (this.fixedLevel >= 0) return pass === 0 && this.fixed(out, rel);
     const n = this.n, d = this.d, e1 = this.e1, e2 = this.e2, J = this.J, A = this.A;
     const L = Math.sqrt(rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2]);
     if (this.orthographic) d.set(this.forward);
@@ -105,6 +108,15 @@ export class RoughGather {
     A[0] = m00 * J[0] + m01 * J[2]; A[1] = m00 * J[1] + m01 * J[3];
     A[2] = m10 * J[0] + m11 * J[2]; A[3] = m10 * J[1] + m11 * J[3];
     return this.rings(out, pass, qx, qy, c, L);
+  }
+
+  /** The bench's comparison: the reflection at one mip level wherever the pixel is (FrameState.fixedBlurLevel). */
+  private fixed(out: Float64Array, rel: ArrayLike<number>): boolean {
+    if (!this.project(this.eye[0] + rel[0], this.eye[1] + rel[1], this.eye[2] + rel[2])) return false;
+    this.read(this.images[0], this.at[0], this.at[1], this.fixedLevel + Math.log2(this.cells));
+    const t = this.texel;
+    out[0] = t[0]; out[1] = t[1]; out[2] = t[2];
+    return true;
   }
 
   /** J for this pass at cosθ = c: false where the glass lets no ray through (total internal reflection). */

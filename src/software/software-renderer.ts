@@ -225,6 +225,7 @@ export class SoftwareRenderer {
     g.alpha = ggxAlpha(state.roughness ?? 0);
     g.ior = state.ior;
     g.settings = ROUGH_GATHER[state.roughnessQuality ?? 'medium'];
+    g.fixedLevel = state.fixedBlurLevel ?? -1;
     g.cells = W / width;
     const v = s.viewVectorMain;
     this.forward[0] = -v[0]; this.forward[1] = -v[1]; this.forward[2] = -v[2];

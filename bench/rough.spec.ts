@@ -1,0 +1,162 @@
+// `npm run bench`, issue 21's rows: rough glass (SPEC §14) on a glass floor with a cube resting on
+// it and a sphere 1.5 above it (bench/rough-scene.ts), at roughness 0.1, 0.3 and 0.6 and ior 1.5
+// and 10 (where F ≥ 0.67: the glass shows mostly the reflection). For each renderer (WebGL in the
+// page, the software renderer in Node) and each setting of `roughness-quality`: ms per frame and
+// PSNR on the glass against the float64 reference; the Pareto front; and the peers' method — the
+// reflection blurred by one radius over the whole glass (a mip level, eight of them, the best
+// kept) — beside the polished frame. The reference's own noise: its glass against itself with
+// twice the microfacet normals, and how much that moves the rows. Writes bench/rough.md;
+// BENCH_SMOKE=1 runs it tiny so the pipeline cannot rot.
+import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { createHash } from 'node:crypto';
+import { test, expect } from '../tests/e2e/fixtures';
+import { compareImages, renderScene, type ReferenceImage } from '../src/reference';
+import { SoftwareRenderer } from '../src/software';
+import { ROUGHNESS_QUALITIES, type RoughnessQuality } from '../src/frame/rough-glass';
+import type { FrameState } from '../src/frame/types';
+import { roughFloorScene, ROUGH_FLOOR_VIEW, SPHERE_HEIGHT } from './rough-scene';
+import { sourcesVersion } from './reference-cache';
+import { paretoFront } from './pareto';
+import { summary } from './stats';
+
+const SMOKE = process.env.BENCH_SMOKE === '1';
+const SIZE = SMOKE ? { width: 80, height: 45 } : { width: 320, height: 180 };
+const CASES: [number, number][] = SMOKE ? [[0.3, 10]] : [[0.1, 1.5], [0.1, 10], [0.3, 1.5], [0.3, 10], [0.6, 1.5], [0.6, 10]];
+/** The reference: 2×2 strata per pixel, this many microfacet normals each; the check doubles them. */
+const REF_SPP = SMOKE ? 1 : 2;
+const MICROFACETS = SMOKE ? 16 : 256;
+const CHECK_CASE = '0.3/10';
+const LEVELS = SMOKE ? [2] : [0, 1, 2, 3, 4, 5, 6, 7];
+const FRAMES = SMOKE ? 1 : 5;
+const WARMUP = SMOKE ? 0 : 2;
+const RUNS = SMOKE ? 1 : 3;
+
+type Page = import('@playwright/test').Page;
+interface Bench {
+  bench: {
+    roughTime(s: FrameState, frames: number, warmup: number): number;
+    roughPixels(s: FrameState): { width: number; height: number; data: string };
+    info(): { renderer: string };
+  };
+}
+
+function state(roughness: number, ior: number, extra: Partial<FrameState> = {}): FrameState {
+  const v = ROUGH_FLOOR_VIEW;
+  return {
+    width: SIZE.width, height: SIZE.height, time: 0, spin: 0, cubeDistance: 0, transparency: 0.5, ior, fresnel: 'exact', fov: 60,
+    cameraPosition: v.cameraPosition, yaw: v.yaw, pitch: v.pitch, colorSpace: 'srgb', view: 'final', reflectionScale: 1,
+    samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8', roughness, ...extra,
+  };
+}
+
+/** The reference of a case, cached in bench/.cache by its state, sampling and the reference's sources. */
+function reference(roughness: number, ior: number, microfacets: number): { ref: ReferenceImage; ms: number | null } {
+  const s = state(roughness, ior);
+  const sources = ['../src/reference/', '../src/scene/', '../src/math/'].map((d) => new URL(d, import.meta.url));
+  const key = createHash('sha256').update(JSON.stringify({ s, spp: REF_SPP, microfacets, v: sourcesVersion(sources), scene: 'rough-floor' })).digest('hex').slice(0, 16);
+  const file = new URL(`./.cache/rough-${key}.json`, import.meta.url);
+  if (existsSync(file)) {
+    const j = JSON.parse(readFileSync(file, 'utf8'));
+    const ref = { ...j, rgba: new Uint8ClampedArray(Buffer.from(j.rgba, 'base64')), rgb: new Float64Array(new Uint8Array(Buffer.from(j.rgb, 'base64')).buffer), regions: new Uint8Array(Buffer.from(j.regions, 'base64')) };
+    return { ref, ms: null };
+  }
+  const t0 = performance.now();
+  const ref = renderScene(roughFloorScene(), s, { samplesPerAxis: REF_SPP, microfacetSamples: microfacets });
+  const ms = performance.now() - t0;
+  mkdirSync(new URL('./.cache/', import.meta.url), { recursive: true });
+  writeFileSync(file, JSON.stringify({
+    ...ref, rgba: Buffer.from(ref.rgba).toString('base64'), rgb: Buffer.from(new Uint8Array(ref.rgb.buffer)).toString('base64'),
+    regions: Buffer.from(ref.regions).toString('base64'), keys: undefined, codes: undefined,
+  }));
+  return { ref, ms };
+}
+
+interface Config { label: string; extra: Partial<FrameState>; rough: boolean; quality?: RoughnessQuality; level?: number }
+const CONFIGS: Config[] = [
+  { label: 'polished (roughness 0)', extra: { roughness: 0 }, rough: false },
+  ...LEVELS.map((level) => ({ label: `one radius: mip level ${level}`, extra: { fixedBlurLevel: level }, rough: false, level })),
+  ...ROUGHNESS_QUALITIES.map((quality) => ({ label: `roughness-quality ${quality}`, extra: { roughnessQuality: quality }, rough: true, quality })),
+];
+
+interface Row { config: Config; ms: number; noise: number; psnr: number; image: Uint8ClampedArray }
+
+async function webglRows(page: Page, roughness: number, ior: number, ref: ReferenceImage): Promise<Row[]> {
+  const rows: Row[] = [];
+  for (const config of CONFIGS) {
+    const s = state(roughness, ior, config.extra);
+    const ms: number[] = [];
+    for (let r = 0; r < RUNS; r++) ms.push(await page.evaluate(([s, f, w]) => (window as unknown as Bench).bench.roughTime(s, f, w), [s, FRAMES, WARMUP] as const));
+    const px = await page.evaluate((s) => (window as unknown as Bench).bench.roughPixels(s), s);
+    const image = new Uint8ClampedArray(Buffer.from(px.data, 'base64'));
+    rows.push({ config, ms: summary(ms).median, noise: summary(ms).iqr, psnr: compareImages(ref, image).psnr.glass, image });
+  }
+  return rows;
+}
+
+function softwareRows(roughness: number, ior: number, ref: ReferenceImage): Row[] {
+  const rows: Row[] = [];
+  const scene = roughFloorScene();
+  for (const config of CONFIGS) {
+    const s = state(roughness, ior, config.extra), r = new SoftwareRenderer();
+    const image = r.render(s, scene).slice();
+    const ms: number[] = [];
+    for (let k = 0; k < RUNS; k++) {
+      const t0 = performance.now();
+      for (let f = 0; f < FRAMES; f++) r.render(s, scene);
+      ms.push((performance.now() - t0) / FRAMES);
+    }
+    rows.push({ config, ms: summary(ms).median, noise: summary(ms).iqr, psnr: compareImages(ref, image).psnr.glass, image });
+  }
+  return rows;
+}
+
+const f1 = (x: number) => (Number.isFinite(x) ? x.toFixed(1) : String(x));
+
+/** The best of the one-radius rows (the peers' method at its best radius). */
+const bestFixed = (rows: Row[]) => rows.filter((r) => r.config.level !== undefined).reduce((a, b) => (b.psnr > a.psnr ? b : a));
+const medium = (rows: Row[]) => rows.find((r) => r.config.quality === 'medium')!;
+
+test('rough glass', async ({ page }) => {
+  test.setTimeout(SMOKE ? 5 * 60_000 : 75 * 60_000);
+  await page.goto('/bench/page.html');
+  const info = await page.evaluate(() => (window as unknown as Bench).bench.info());
+  const out: string[] = [
+    '# Rough glass (issue 21, SPEC §14)', '',
+    `Written by \`npm run bench\` (bench/rough.spec.ts) on ${new Date().toISOString().slice(0, 10)}; WebGL: ${info.renderer}; software: Node ${process.version}.`,
+    `Scene: bench/rough-scene.ts — a glass floor, a cube resting on it, a sphere ${SPHERE_HEIGHT} above it; ${SIZE.width}×${SIZE.height},`,
+    'color-space srgb, samples 4, transparency 0.5. PSNR (dB) on the glass against the float64 reference',
+    `(${REF_SPP}×${REF_SPP} strata per pixel, ${MICROFACETS} microfacet normals each). ms: median of ${RUNS} runs of ${FRAMES} frames.`,
+    '"one radius": the reflection blurred by one radius over the whole glass (a mip level), the peers\' method; front: on the',
+    'Pareto front of the rows beside it (no row both faster and more accurate).', '',
+  ];
+  const summaryRows: string[] = ['| roughness / ior | renderer | polished | best one radius (level) | low | medium | high | medium − best one radius |', '|---|---|---|---|---|---|---|---|'];
+  let check = '';
+  for (const [roughness, ior] of CASES) {
+    const { ref, ms: refMs } = reference(roughness, ior, MICROFACETS);
+    const gl = await webglRows(page, roughness, ior, ref);
+    const sw = softwareRows(roughness, ior, ref);
+    out.push(`## roughness ${roughness}, ior ${ior}`, '');
+    if (refMs !== null) out.push(`Reference computed in ${(refMs / 1000).toFixed(0)} s.`, '');
+    const glFront = paretoFront(gl);
+    const swFront = paretoFront(sw);
+    out.push('| configuration | WebGL ms | WebGL dB | front | software ms | software dB | front |', '|---|---|---|---|---|---|---|');
+    gl.forEach((g, i) => out.push(`| ${g.config.label} | ${f1(g.ms)} | ${f1(g.psnr)} | ${glFront[i] ? '✓' : ''} | ${f1(sw[i].ms)} | ${f1(sw[i].psnr)} | ${swFront[i] ? '✓' : ''} |`));
+    out.push('');
+    for (const [name, rows] of [['WebGL', gl], ['software', sw]] as const) {
+      const b = bestFixed(rows), q = (k: RoughnessQuality) => f1(rows.find((r) => r.config.quality === k)!.psnr);
+      summaryRows.push(`| ${roughness} / ${ior} | ${name} | ${f1(rows[0].psnr)} | ${f1(b.psnr)} (${b.config.level}) | ${q('low')} | ${q('medium')} | ${q('high')} | ${(medium(rows).psnr - b.psnr >= 0 ? '+' : '')}${f1(medium(rows).psnr - b.psnr)} |`);
+      for (const r of rows) expect(Number.isFinite(r.psnr), `${name} ${r.config.label}`).toBe(true);
+    }
+    if (`${roughness}/${ior}` === CHECK_CASE || SMOKE) {
+      // The reference against itself with twice the normals, and how far that moves the medium rows.
+      const doubled = reference(roughness, ior, 2 * MICROFACETS).ref;
+      const self = compareImages(doubled, ref.rgba).psnr.glass;
+      const moves = [gl, sw].map((rows) => compareImages(doubled, medium(rows).image).psnr.glass - medium(rows).psnr);
+      check = `The reference's noise (roughness ${roughness}, ior ${ior}): its glass with ${MICROFACETS} normals per stratum against ${2 * MICROFACETS}: ` +
+        `${f1(self)} dB; scored against the doubled reference the medium rows move by ${moves.map((m) => `${m >= 0 ? '+' : ''}${m.toFixed(2)}`).join(' (WebGL) and ')} (software) dB.`;
+    }
+  }
+  out.splice(9, 0, '## Summary', '', ...summaryRows, '', check, '');
+  if (!SMOKE) writeFileSync(new URL('./rough.md', import.meta.url), out.join('\n') + '\n');
+  else console.log(out.join('\n'));
+});
