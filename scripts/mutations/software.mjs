@@ -61,8 +61,8 @@ export default [
     name: 'S8 glass: cos θ = N·V without abs() (from one side F = 1 everywhere)',
     edits: [{
       file: 'src/software/glass-shader.ts',
-      find: 'const c = len > 0 ? Math.abs(this.nx * rx + this.ny * ry + this.nz * rz) / len : 1;',
-      replace: 'const c = len > 0 ? (this.nx * rx + this.ny * ry + this.nz * rz) / len : 1;',
+      find: 'const c = len > 0 ? Math.abs(this.nx * vx + this.ny * vy + this.nz * vz) / len : 1;',
+      replace: 'const c = len > 0 ? (this.nx * vx + this.ny * vy + this.nz * vz) / len : 1;',
     }],
     tests: [GLASS],
   },
@@ -209,5 +209,15 @@ export default [
     name: 'S31 multisampling: the glass footprint marks only a pixel\'s shaded sample (no reflection at the others)',
     edits: [{ file: 'src/software/glass-shader.ts', find: "    if (mode === 'mask') {\n      this.mask[sample] = 1;\n      return;\n    }", replace: "    if (mode === 'mask') return;" }],
     tests: [MSAA],
+  },
+  {
+    name: 'S32 orthographic: the glass\'s F from the eye point (the view vector ignored)',
+    edits: [{ file: 'src/software/glass-shader.ts', find: 'const v = this.view, vx = v[3] === 0 ? v[0] : rx,', replace: 'const v = [0, 0, 0, 1], vx = v[3] === 0 ? v[0] : rx,' }],
+    tests: [VS_REFERENCE],
+  },
+  {
+    name: 'S33 orthographic: highlights seen from the eye point (the view vector ignored)',
+    edits: [{ file: 'src/software/object-shader.ts', find: "if (ov[3] === 0) { g[6] = ov[0]; g[7] = ov[1]; g[8] = ov[2]; } else {", replace: "if (ov[3] === 2) { g[6] = ov[0]; g[7] = ov[1]; g[8] = ov[2]; } else {" }],
+    tests: [VS_REFERENCE],
   },
 ];

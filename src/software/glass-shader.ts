@@ -36,6 +36,8 @@ export class GlassShader implements FragmentShader {
   /** Whether this pixel's R̃ / B̃ were gathered (else its samples keep their own R / B). */
   private hasR = false;
   private hasB = false;
+  /** The frame's view vector (FrameSetup.viewVectorMain): w = 0, orthographic, xyz toward the eye. */
+  private view: ArrayLike<number> = [0, 0, 0, 1];
   /** The glass's unit normal. */
   private nx = 0;
   private ny = 0;
@@ -51,7 +53,8 @@ export class GlassShader implements FragmentShader {
    * height, as rectangle.ts builds it) seen from `eye` through `viewProjection` (eye-relative →
    * clip); call once per frame before `draw`.
    */
-  setup(frame: GlassFrame, eye: ArrayLike<number>, viewProjection: Float64Array): void {
+  setup(frame: GlassFrame, eye: ArrayLike<number>, viewProjection: Float64Array, view: ArrayLike<number>): void {
+    this.view = view;
     this.nx = frame.plane[0]; this.ny = frame.plane[1]; this.nz = frame.plane[2];
     const vp = viewProjection, out = this.vertices, uvs = CORNER_UV;
     for (let i = 0; i < 4; i++) {
@@ -104,9 +107,10 @@ export class GlassShader implements FragmentShader {
     const rx = b0 * p[i0 + REL] + b1 * p[i1 + REL] + b2 * p[i2 + REL];
     const ry = b0 * p[i0 + REL + 1] + b1 * p[i1 + REL + 1] + b2 * p[i2 + REL + 1];
     const rz = b0 * p[i0 + REL + 2] + b1 * p[i1 + REL + 2] + b2 * p[i2 + REL + 2];
-    const len = Math.sqrt(rx * rx + ry * ry + rz * rz);
-    // Two-sided: cosθ = |N·V|, clamped to [0, 1].
-    const c = len > 0 ? Math.abs(this.nx * rx + this.ny * ry + this.nz * rz) / len : 1;
+    // Two-sided: cosθ = |N·V|, clamped to [0, 1]; V from the eye, or (orthographic) the view's.
+    const v = this.view, vx = v[3] === 0 ? v[0] : rx, vy = v[3] === 0 ? v[1] : ry, vz = v[3] === 0 ? v[2] : rz;
+    const len = Math.sqrt(vx * vx + vy * vy + vz * vz);
+    const c = len > 0 ? Math.abs(this.nx * vx + this.ny * vy + this.nz * vz) / len : 1;
     this.cos = c > 1 ? 1 : c;
     this.fresnel();
     if (this.mode === 'compose') {

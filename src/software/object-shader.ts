@@ -23,6 +23,8 @@ export interface ObjectDraw {
   normal: Float64Array;
   /** The eye drawn from (world) and projection × view for eye-relative points (float64). */
   eye: ArrayLike<number>;
+  /** The pass's view vector (FrameSetup.viewVector*): w = 1 toward the eye point; w = 0 orthographic, xyz toward the viewer. */
+  view: ArrayLike<number>;
   viewProjection: Float64Array;
   /** Kept where plane·(rel, 1) ≥ 0 (rel eye-relative); null: no user clip. */
   clipPlane: ArrayLike<number> | null;
@@ -158,7 +160,9 @@ export class ObjectShader implements FragmentShader {
         }
         const vl = Math.sqrt(lx * lx + ly * ly + lz * lz) || 1;
         const nl = Math.sqrt(wx * wx + wy * wy + wz * wz) || 1;
-        setGeometry(this.geometry, lx, ly, lz, wx / nl, wy / nl, wz / nl, -lx / vl, -ly / vl, -lz / vl);
+        const ov = d.view;
+        if (ov[3] === 0) setGeometry(this.geometry, lx, ly, lz, wx / nl, wy / nl, wz / nl, ov[0], ov[1], ov[2]);
+        else setGeometry(this.geometry, lx, ly, lz, wx / nl, wy / nl, wz / nl, -lx / vl, -ly / vl, -lz / vl);
         blinnPhong(d.lights, d.material, d.twoSided, this.geometry, sums);
         for (let k = 0; k < 6; k++) out[v + k] = sums[k];
       }
@@ -182,9 +186,11 @@ export class ObjectShader implements FragmentShader {
       let nz = b0 * p[i0 + NRM + 2] + b1 * p[i1 + NRM + 2] + b2 * p[i2 + NRM + 2];
       const nl = Math.sqrt(nx * nx + ny * ny + nz * nz);
       if (nl > 0) { nx /= nl; ny /= nl; nz /= nl; }
-      const vl = Math.sqrt(rx * rx + ry * ry + rz * rz) || 1;
+      const vl = Math.sqrt(rx * rx + ry * ry + rz * rz) || 1, ov = d.view;
       const g = this.geometry;
-      g[0] = rx; g[1] = ry; g[2] = rz; g[3] = nx; g[4] = ny; g[5] = nz; g[6] = -rx / vl; g[7] = -ry / vl; g[8] = -rz / vl;
+      g[0] = rx; g[1] = ry; g[2] = rz; g[3] = nx; g[4] = ny; g[5] = nz;
+      // V toward the eye point, or (orthographic) the view's own direction.
+      if (ov[3] === 0) { g[6] = ov[0]; g[7] = ov[1]; g[8] = ov[2]; } else { g[6] = -rx / vl; g[7] = -ry / vl; g[8] = -rz / vl; }
       blinnPhong(d.lights, d.material, d.twoSided, g, sums);
     } else {
       for (let k = 0; k < 6; k++) sums[k] = b0 * p[i0 + k] + b1 * p[i1 + k] + b2 * p[i2 + k];

@@ -97,10 +97,12 @@ export class RoughGather {
     for (let k = 0; k < 3; k++) e1[k] /= l1;
     e2[0] = d[1] * e1[2] - d[2] * e1[1]; e2[1] = d[2] * e1[0] - d[0] * e1[2]; e2[2] = d[0] * e1[1] - d[1] * e1[0];
     if (!this.lobe(pass, c)) return false;
-    // M: pixels per radian of the eye ray's turn along e1, e2 (orthographic: per unit across).
+    // M: pixels per radian of the eye ray's turn along e1, e2 at P's distance L from the eye
+    // (orthographic: from the camera's point; the scale below saturates for the background there
+    // too, which keeps its share of the lobe — a scale s, unbounded, lost it: 29.4 dB in WebGL).
     const P0 = this.eye[0] + rel[0], P1 = this.eye[1] + rel[1], P2 = this.eye[2] + rel[2], at = this.at;
     if (!this.project(P0, P1, P2)) return false;
-    const qx = at[0], qy = at[1], step = this.orthographic ? 1e-3 : 1e-3 * L;
+    const qx = at[0], qy = at[1], step = 1e-3 * L;
     if (!this.project(P0 + step * e1[0], P1 + step * e1[1], P2 + step * e1[2])) return false;
     const m00 = (at[0] - qx) / 1e-3, m10 = (at[1] - qy) / 1e-3;
     if (!this.project(P0 + step * e2[0], P1 + step * e2[1], P2 + step * e2[2])) return false;
@@ -155,7 +157,7 @@ export class RoughGather {
     const smax = Math.sqrt((sq + Math.sqrt(Math.max(0, sq * sq - 4 * detPx * detPx))) / 2);
     const lodCells = Math.log2(s), { angles, lodBias } = this.settings;
     const rings = roughRings(this.alpha, smax), px = qx / s, py = qy / s;
-    const t = this.texel, bg = this.background, far = this.orthographic ? 1e6 : 1;
+    const t = this.texel, bg = this.background;
     this.read(image, qx, qy, lodCells);
     const gq = this.scaleOf(t[4] + 1 - t[3], c, L);
     let sum = 0, r = 0, g = 0, b = 0;
@@ -185,7 +187,7 @@ export class RoughGather {
             // (the bench floor, roughness 0.5: 40.6 dB with it, 42.5 without; 0.6 at ior 10:
             // 37.5, 39.3), for the transmission better (the wall, 0.5: 40.3, 38.9).
             if (pass === 1 && !this.leaves(x, y)) continue;
-            gs = far;
+            gs = 1;
           }
           if (ring >= 0 && gs > FARTHER * gq) {
             // Hidden where the ray passes the pixel's own surface first.
@@ -236,8 +238,8 @@ export class RoughGather {
   }
 
   private scaleOf(u: number, c: number, L: number): number {
-    if (u >= NOTHING) return this.orthographic ? 1e6 : 1;
-    const s = u / (1 - u) / c, g = this.orthographic ? s : s / (L + s);
+    if (u >= NOTHING) return 1;
+    const s = u / (1 - u) / c, g = s / (L + s);
     return g > 1e-6 ? g : 1e-6;
   }
 

@@ -83,7 +83,7 @@ export class SoftwareRenderer {
     this.glassShader.texture = procedural;
     this.draw = {
       mesh: { positions: new Float32Array(0), normals: new Float32Array(0), uvs: new Float32Array(0), indices: new Uint16Array(0) },
-      model: new Float64Array(16), normal: new Float64Array(9), eye: [0, 0, 0], viewProjection: new Float64Array(16),
+      model: new Float64Array(16), normal: new Float64Array(9), eye: [0, 0, 0], view: [0, 0, 0, 1], viewProjection: new Float64Array(16),
       clipPlane: null, material: undefined as unknown as ObjectDraw['material'], bounds: { center: [0, 0, 0], radius: 1 },
       texture: procedural, twoSided: false, shading: 'phong', lights: this.lightsMain,
     };
@@ -231,7 +231,7 @@ export class SoftwareRenderer {
     this.forward[0] = -v[0]; this.forward[1] = -v[1]; this.forward[2] = -v[2];
     for (let k = 0; k < 3; k++) this.viewerNormal[k] = s.side * plane[k];
     g.background.set(this.background);
-    g.frame(s.viewProjection, s.eye, W, H, this.viewerNormal, s.orthographic, this.forward);
+    g.frame(s.viewProjection, s.eye, W, H, this.viewerNormal, v[3] === 0, this.forward);
     const glass = this.glassShader;
     glass.rough = g;
     glass.roughTransmission = transmits;
@@ -318,7 +318,7 @@ export class SoftwareRenderer {
   private glass(mode: GlassShader['mode']): void {
     const g = this.glassShader, s = this.setup;
     g.mode = mode;
-    g.setup(s.glass, s.eye, s.viewProjection);
+    g.setup(s.glass, s.eye, s.viewProjection, s.viewVectorMain);
     this.main.mask = null;
     const timing = this.timing;
     const t0 = timing ? performance.now() : 0;
@@ -352,6 +352,7 @@ export class SoftwareRenderer {
       d.model = m.model;
       d.normal = m.normal;
       d.eye = eye;
+      d.view = mirrored ? s.viewVectorMirrored : s.viewVectorMain;
       d.viewProjection = mirrored ? s.mirroredViewProjection : s.viewProjection;
       d.clipPlane = clip;
       d.material = o.material;

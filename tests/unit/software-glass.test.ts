@@ -92,7 +92,7 @@ function drawGlass(mode: 'compose' | 'fresnel', model: FresnelModel, ior: number
     g.colour.set(B, 3 * p);
     g.reflection.set(R, 3 * p);
   }
-  g.setup(FRAME, [0, 0, fromFront ? DISTANCE : -DISTANCE], viewProjection(fromFront));
+  g.setup(FRAME, [0, 0, fromFront ? DISTANCE : -DISTANCE], viewProjection(fromFront), [0, 0, 0, 1]);
   g.draw(r, GLASS_INDICES);
   return g.colour;
 }

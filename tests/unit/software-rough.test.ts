@@ -45,6 +45,8 @@ describe('software renderer: rough glass against the reference (SPEC §14)', () 
     ['wall', () => defaultScene(DEFAULT_CUBE_DISTANCE, 0), wallState, 0.5, 39.7], // 40.25 (33.71)
     // A bright sky: what the lobe drops past the horizon, and the sky's light around the objects, show.
     ['bright floor', () => ({ ...roughFloorScene(), background: [0.9, 0.9, 0.9] as Vec3 }), floorState, 0.5, 44.5], // 45.02 (37.78)
+    // Orthographic (SPEC §10): the lobe's scale as in perspective, from the camera's point.
+    ['orthographic floor', roughFloorScene, (r) => ({ ...floorState(r), projection: 'orthographic', target: [0, 0.6, 0] }), 0.3, 50.2], // 50.69 (44.15)
     // T = 1, ior 1.5: F ≤ 0.04 head-on, so the glass shows mostly B̃ (the sphere through it).
     ['clear wall', () => defaultScene(DEFAULT_CUBE_DISTANCE, 0), (r) => wallState(r, 1), 0.5, 32.2], // 32.77 (26.07)
   ];
