@@ -50,6 +50,27 @@ const api = {
   stats() {
     return renderer.stats;
   },
+  /**
+   * Mean ms per frame of `frames` frames of `state` drawn to the canvas, each waited for (a
+   * one-pixel read), after one unmeasured frame (compiles, allocations). A rough figure only.
+   */
+  time(state: FrameState, scene: Scene, frames: number): number {
+    canvas.width = state.width;
+    canvas.height = state.height;
+    const s = revive(scene), px = new Uint8Array(4);
+    renderer.render(state, s);
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    const t0 = performance.now();
+    for (let i = 0; i < frames; i++) {
+      renderer.render(state, s);
+      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    }
+    return (performance.now() - t0) / frames;
+  },
+  /** Frees the renderer's GL objects (the page is done with it). */
+  dispose() {
+    renderer.dispose();
+  },
 };
 
 (window as unknown as { __renderer: typeof api }).__renderer = api;
