@@ -289,7 +289,7 @@ export class Renderer {
 
   /** SPEC §14: rough glass's images, before the glass pass (rough-targets.ts). Returns the draw calls. */
   private drawRough(): number {
-    this.rough ??= new RoughTargets(this.gl, this.counter, this.programs, this.blitVao);
+    this.rough ??= new RoughTargets(this.gl, this.counter, this.programs, this.blitVao, this.maxTargetSize);
     return this.rough.draw(this.ctx, this.reflection, this.reflectionSamples());
   }
 

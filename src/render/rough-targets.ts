@@ -30,8 +30,8 @@ export class RoughTargets {
   private transmissionMsaa: MultisampleTarget | null = null;
   /** What the glass pass reads (glass-pass.ts), filled in place. */
   readonly inputs: RoughGlassInputs = {
-    alpha: 0, settings: ROUGH_GATHER.medium, reflectionWidth: 1, reflectionHeight: 1,
-    transmission: null, transmissionWidth: 1, transmissionHeight: 1,
+    alpha: 0, settings: ROUGH_GATHER.medium, reflectionWidth: 1, reflectionHeight: 1, reflectionTextureWidth: 1, reflectionTextureHeight: 1,
+    transmission: null, transmissionWidth: 1, transmissionHeight: 1, transmissionTextureWidth: 1, transmissionTextureHeight: 1,
   };
   private readonly inverse64 = new Float64Array(16);
   private readonly inverse = new Float32Array(16);
@@ -41,6 +41,8 @@ export class RoughTargets {
   constructor(
     private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter,
     private readonly programs: ProgramCache, private readonly vao: WebGLVertexArrayObject,
+    /** The largest side of a render target (gl/limits.ts). */
+    private readonly maxSize: number,
   ) {}
 
   /** The mip-mapped reflection the glass pass reads (after draw()). */
@@ -68,9 +70,12 @@ export class RoughTargets {
 
     ctx.scissor = null;
     const reflection = (this.reflection = this.fit(this.reflection, sharp.format, sharp.width, sharp.height));
-    let n = this.run(ctx, reflection, msaa, reflectionPass);
+    // Each pass's draws and its distance pass's one.
+    let n = this.run(ctx, reflection, msaa, reflectionPass) + 1;
     this.inputs.reflectionWidth = reflection.width;
     this.inputs.reflectionHeight = reflection.height;
+    this.inputs.reflectionTextureWidth = reflection.textureWidth;
+    this.inputs.reflectionTextureHeight = reflection.textureHeight;
 
     // SPEC §4: exact and Schlick let through T; the classic blend 1 − (1 − T)(0.2 + 0.8F) > 0 always.
     this.inputs.transmission = null;
@@ -86,10 +91,12 @@ export class RoughTargets {
         }
         samples.setSize(target.width, target.height, msaa.samples);
       }
-      n += this.run(ctx, target, samples, transmissionPass);
+      n += this.run(ctx, target, samples, transmissionPass) + 1;
       this.inputs.transmission = target.color;
       this.inputs.transmissionWidth = target.width;
       this.inputs.transmissionHeight = target.height;
+      this.inputs.transmissionTextureWidth = target.textureWidth;
+      this.inputs.transmissionTextureHeight = target.textureHeight;
     }
     return n;
   }
@@ -98,28 +105,38 @@ export class RoughTargets {
   private fit(target: MipTarget | null, format: TargetFormat, width: number, height: number): MipTarget {
     if (target?.format !== format) {
       target?.dispose();
-      target = new MipTarget(this.gl, this.counter, format);
+      target = new MipTarget(this.gl, this.counter, format, this.maxSize);
     }
     target.setSize(width, height);
     return target;
   }
 
-  /** One pass into `target` (through `msaa` when given), its distance codes, its mips. */
+  /** One pass into `target` (through `msaa` when given), its distance codes, its mips; returns the pass's draw calls. */
   private run(
     ctx: PassContext, target: MipTarget, msaa: MultisampleTarget | null,
     pass: (ctx: PassContext, framebuffer: WebGLFramebuffer, width: number, height: number) => number,
   ): number {
     const { width, height } = target;
+    const gl = this.gl;
+    // The padding beyond the image: nothing there (the background, u = 1).
+    if (target.textureWidth > width || target.textureHeight > height) {
+      const bg = ctx.background;
+      gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
+      gl.clearColor(bg[0], bg[1], bg[2], 1);
+      gl.clearDepth(1);
+      gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    }
     let n: number;
     if (msaa) {
       n = pass(ctx, msaa.framebuffer, width, height);
       msaa.resolve(target.framebuffer, true);
     } else n = pass(ctx, target.framebuffer, width, height);
-    return n + this.distances(target);
+    this.distances(target);
+    return n;
   }
 
-  /** shaders/distance.frag into `target`'s alpha, then its mip chain. */
-  private distances(target: MipTarget): number {
+  /** shaders/distance.frag into `target`'s alpha (one draw call), then its mip chain. */
+  private distances(target: MipTarget): void {
     const gl = this.gl;
     const p = this.programs.distance();
     gl.bindFramebuffer(gl.FRAMEBUFFER, target.colorFramebuffer);
@@ -138,7 +155,6 @@ export class RoughTargets {
     gl.colorMask(true, true, true, true);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     target.generateMips();
-    return 1;
   }
 
   dispose(): void {

@@ -18,10 +18,14 @@ export interface RoughGlassInputs {
   /** The mip-mapped reflection (the distance code in alpha) and its size in texels. */
   reflectionWidth: number;
   reflectionHeight: number;
+  reflectionTextureWidth: number;
+  reflectionTextureHeight: number;
   /** The frame beyond the glass, mip-mapped likewise; null when the glass lets nothing through. */
   transmission: WebGLTexture | null;
   transmissionWidth: number;
   transmissionHeight: number;
+  transmissionTextureWidth: number;
+  transmissionTextureHeight: number;
 }
 
 /** Uploads (float32) of this frame's camera for the rough variant: filled in place, never allocated per frame. */
@@ -44,8 +48,8 @@ function setRough(gl: WebGL2RenderingContext, p: Program, ctx: PassContext, roug
   gl.uniform1f(p.location('uAlpha'), rough.alpha);
   gl.uniform1i(p.location('uAngles'), rough.settings.angles);
   gl.uniform1f(p.location('uLodBias'), rough.settings.lodBias);
-  gl.uniform2f(p.location('uReflectionSize'), rough.reflectionWidth, rough.reflectionHeight);
-  gl.uniform2f(p.location('uTransmissionSize'), rough.transmissionWidth, rough.transmissionHeight);
+  gl.uniform4f(p.location('uReflectionSize'), rough.reflectionWidth, rough.reflectionHeight, rough.reflectionTextureWidth, rough.reflectionTextureHeight);
+  gl.uniform4f(p.location('uTransmissionSize'), rough.transmissionWidth, rough.transmissionHeight, rough.transmissionTextureWidth, rough.transmissionTextureHeight);
   gl.uniform1f(p.location('uTransmits'), rough.transmission ? 1 : 0);
   gl.uniform1i(p.location('uTransmission'), 2);
   gl.activeTexture(gl.TEXTURE2);
