@@ -62,3 +62,11 @@ export const floorState = (v: RoughView): FrameState => state([0.3, 1.9, 5.2], [
 
 /** The wall from in front, the cube's reflection and the sphere through the glass both in view. */
 export const wallState = (v: RoughView): FrameState => state([1.5, 1.4, 4.5], [-0.2, 0.9, 0], v);
+
+/** `scene` with its objects untextured (flat colours: edges in its reflection are the objects' outlines alone). */
+export const untextured = (scene: Scene): Scene => ({
+  ...scene, objects: scene.objects.map((o) => ({ ...o, material: { ...o.material, texture: { kind: 'none' } } })),
+});
+
+/** `scene` without its objects (the glass, the lights and the background alone). */
+export const withoutObjects = (scene: Scene): Scene => ({ ...scene, objects: [] });

@@ -43,7 +43,8 @@ const api = {
     for (const [url, img] of Object.entries(images)) {
       renderer.setImage(url, new ImageData(new Uint8ClampedArray(img.rgba), img.width, img.height));
     }
-    const source = state.view === 'final' || state.view === 'scene' || state.view === 'reflection' ? state.view : 'final';
+    // 'passes' is drawn to the canvas and read back; the fresnel view as 'final' (its pass reads).
+    const source = state.view === 'final' || state.view === 'scene' || state.view === 'reflection' ? state.view : state.view === 'passes' ? 'screen' : 'final';
     return toBase64(renderer.read(source, state, revive(scene)).data);
   },
   /** The renderer's stats after the last draw. */
