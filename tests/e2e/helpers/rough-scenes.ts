@@ -70,3 +70,23 @@ export const untextured = (scene: Scene): Scene => ({
 
 /** `scene` without its objects (the glass, the lights and the background alone). */
 export const withoutObjects = (scene: Scene): Scene => ({ ...scene, objects: [] });
+
+/**
+ * A long glass floor seen at grazing incidence (the camera 0.6 above it), a bright wall far off
+ * on it: near the glass's far end much of each pixel's lobe would leave through the glass's far
+ * side, and the reference drops those rays (SPEC §14) where keeping them would mix in the dark
+ * beyond the horizon.
+ */
+export const HORIZON_SCENE: Scene = {
+  glass: { center: [0, 0, -10], normal: [0, 1, 0], size: [60, 40] },
+  objects: [{
+    geometry: { kind: 'box', size: 1 },
+    transform: { position: [0, 2, -25], rotation: [0, 0, 0], scale: [16, 4, 1], spin: 0 },
+    material: { ...material([1, 0.9, 0.4]), texture: { kind: 'none' } },
+    bounds: { center: [0, 0, 0], radius: 9 },
+  }],
+  lights: [DEFAULT_LIGHT],
+  background: [0.05, 0.05, 0.1],
+};
+
+export const horizonState = (v: RoughView): FrameState => state([0, 0.6, 4], [0, 0.3, -10], v);
