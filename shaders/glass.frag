@@ -1,6 +1,8 @@
 #version 300 es
 // Dark glass of SPEC §4: out = F·R + (1 − F)·(T·B + (1 − T)·D), premultiplied over pass 2.
 // One of FRESNEL_EXACT / FRESNEL_SCHLICK / FRESNEL_CLASSIC; OUTPUT_FRESNEL writes F as grey.
+// ROUGH (SPEC §14): R and B become R̃ and B̃, gathered from mip-mapped images of the reflection
+// and of the frame beyond the glass (rough-glass.glsl), and the glass is written opaque.
 precision highp float;
 
 uniform sampler2D uTexture;
@@ -17,6 +19,10 @@ in vec2 vUv;
 in highp vec4 vReflectionClip;
 
 out vec4 outColor;
+
+#ifdef ROUGH
+// shaders/rough-glass.glsl is put here (render/programs.ts).
+#endif
 
 float fresnel(float c) {
 #if defined(FRESNEL_EXACT)
@@ -47,12 +53,25 @@ void main() {
 #else
   vec2 uv = vReflectionClip.xy / vReflectionClip.w * 0.5 + 0.5;
   // Clamped as an 8-bit target would: the reflection is what pass 1 shows, highlights included.
+#ifdef ROUGH
+  // R̃ and B̃ (B̃ only where the glass lets light through), each its sharp value where no
+  // neighbour has weight; opaque over pass 2, which the glass covers.
+  vec3 r = roughReflection(vRelPos, uv);
+  vec3 b = roughTransmission();
+#else
   vec3 r = min(texture(uReflection, uv).rgb, vec3(1.0));
+#endif
   vec3 d = texture(uTexture, vUv).rgb * uBodyTint;
 #ifdef FRESNEL_CLASSIC
   // Seed 000 verbatim: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha.
   float a = (1.0 - uTransparency) * (0.2 + 0.8 * f);
+#ifdef ROUGH
+  outColor = vec4(mix(d, r, f) * a + (1.0 - a) * b, 1.0);
+#else
   outColor = vec4(mix(d, r, f) * a, a);
+#endif
+#elif defined(ROUGH)
+  outColor = vec4(f * r + (1.0 - f) * (uTransparency * b + (1.0 - uTransparency) * d), 1.0);
 #else
   outColor = vec4(f * r + (1.0 - f) * (1.0 - uTransparency) * d, 1.0 - (1.0 - f) * uTransparency);
 #endif

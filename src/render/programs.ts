@@ -6,8 +6,11 @@ import glassFrag from '../../shaders/glass.frag?raw';
 import blitVert from '../../shaders/blit.vert?raw';
 import blitFrag from '../../shaders/blit.frag?raw';
 import encodeFrag from '../../shaders/encode.frag?raw';
+import distanceFrag from '../../shaders/distance.frag?raw';
+import roughGlass from '../../shaders/rough-glass.glsl?raw';
 import lighting from '../../shaders/lighting.glsl?raw';
 import type { FresnelModel } from '../math/fresnel';
+import { ROUGH_FIRST_RING, ROUGH_MAX_RINGS, ROUGH_REACH } from '../frame/rough-glass';
 import type { Shading } from '../frame/types';
 import { MAPPINGS, MAX_LIGHTS, type Mapping } from '../scene/scene';
 import { Program, ShaderError } from './gl/program';
@@ -39,9 +42,22 @@ function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant): str
   return header;
 }
 
-function glassHeader(model: FresnelModel, outputFresnel: boolean): string[] {
+/** The marker line in glass.frag where its ROUGH variant takes rough-glass.glsl (after the declarations it reads). */
+const ROUGH_MARKER = '// shaders/rough-glass.glsl is put here (render/programs.ts).\n';
+
+/** A number as a GLSL float literal. */
+const glslFloat = (x: number): string => (Number.isInteger(x) ? x.toFixed(1) : String(x));
+
+function glassHeader(model: FresnelModel, outputFresnel: boolean, rough = false): string[] {
   const header = [`#define FRESNEL_${model.toUpperCase()}`];
   if (outputFresnel) header.push('#define OUTPUT_FRESNEL');
+  // SPEC §14's gather, with frame/rough-glass.ts's constants (the software renderer reads the same).
+  if (rough) {
+    header.push(
+      '#define ROUGH', `#define ROUGH_FIRST_RING ${glslFloat(ROUGH_FIRST_RING)}`, `#define ROUGH_REACH ${glslFloat(ROUGH_REACH)}`,
+      `#define ROUGH_MAX_RINGS ${ROUGH_MAX_RINGS}`,
+    );
+  }
   return header;
 }
 
@@ -56,9 +72,10 @@ export class ProgramCache {
   // array: those are made only on a miss.
   /** [clip][shading][variantIndex(v)] */
   private standards: Partial<Record<ClipMode, Partial<Record<Shading, (Program | undefined)[]>>>> = {};
-  private glasses: Partial<Record<FresnelModel, { colour?: Program; fresnel?: Program }>> = {};
+  private glasses: Partial<Record<FresnelModel, { colour?: Program; fresnel?: Program; rough?: Program }>> = {};
   private blitProgram: Program | undefined;
   private encodeProgram: Program | undefined;
+  private distanceProgram: Program | undefined;
   /**
    * Variants that failed to compile, by key: asked again (the same state drawn again), they throw
    * the same error without compiling again. A new context means a new cache, so a restore retries.
@@ -83,8 +100,14 @@ export class ProgramCache {
     ));
   }
 
-  glass(model: FresnelModel, outputFresnel: boolean): Program {
+  /** `rough`: SPEC §14's gather (the colour variant only; roughness 0 never asks for it). */
+  glass(model: FresnelModel, outputFresnel: boolean, rough = false): Program {
     const variants = (this.glasses[model] ??= {});
+    if (rough && !outputFresnel) {
+      return (variants.rough ??= this.build(
+        `glass:${model}:false:rough`, glassVert, glassFrag.replace(ROUGH_MARKER, () => roughGlass), glassHeader(model, false, true),
+      ));
+    }
     return outputFresnel
       ? (variants.fresnel ??= this.build(`glass:${model}:true`, glassVert, glassFrag, glassHeader(model, true)))
       : (variants.colour ??= this.build(`glass:${model}:false`, glassVert, glassFrag, glassHeader(model, false)));
@@ -97,6 +120,11 @@ export class ProgramCache {
   /** The frame's one sRGB encode (SPEC §13), with the blit's full-screen triangle. */
   encode(): Program {
     return (this.encodeProgram ??= this.build('encode', blitVert, encodeFrag, []));
+  }
+
+  /** Rough glass's distance code into a target's alpha (shaders/distance.frag), with the blit's triangle. */
+  distance(): Program {
+    return (this.distanceProgram ??= this.build('distance', blitVert, distanceFrag, []));
   }
 
   private build(key: string, vert: string, frag: string, header: string[]): Program {
@@ -117,7 +145,7 @@ export class ProgramCache {
     this.all.length = 0;
     this.standards = {};
     this.glasses = {};
-    this.blitProgram = this.encodeProgram = undefined;
+    this.blitProgram = this.encodeProgram = this.distanceProgram = undefined;
     this.broken.clear();
   }
 }

@@ -22,6 +22,7 @@ import { beginTarget, type PassContext } from './passes/pass-context';
 import { reflectionPass } from './passes/reflection-pass';
 import { scenePass } from './passes/scene-pass';
 import { glassPass } from './passes/glass-pass';
+import { isRough, RoughTargets } from './rough-targets';
 import { glassMesh } from '../scene/geometry/rectangle';
 import { DefaultSceneCache } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
@@ -71,6 +72,8 @@ export class Renderer {
   /** Multisampled stand-ins, created only when `samples` > 0. */
   private reflectionMsaa: MultisampleTarget | null = null;
   private mainMsaa: MultisampleTarget | null = null;
+  /** Rough glass's mip-mapped images (SPEC §14), made on the first rough frame. */
+  private rough: RoughTargets | null = null;
   private readonly maxSamples: number;
   /** Can the context render to RGBA16F (EXT_color_buffer_float)? */
   private readonly canHalfFloat: boolean;
@@ -201,6 +204,8 @@ export class Renderer {
     this.reflectionMsaa?.dispose();
     this.mainMsaa?.dispose();
     this.reflectionMsaa = this.mainMsaa = null;
+    this.rough?.dispose();
+    this.rough = null;
     this.glassMesh.dispose();
     this.textures.dispose();
     this.shared.release();
@@ -267,13 +272,25 @@ export class Renderer {
   private runReflection(scissored = false): number {
     const { width, height } = this.reflection;
     this.ctx.scissor = scissored && this.optimize ? this.reflectionScissor() : null;
-    const samples = this.samplesFor(this.ctx.state);
-    if (samples === 0) return reflectionPass(this.ctx, this.reflection.framebuffer, width, height);
-    const msaa = (this.reflectionMsaa ??= new MultisampleTarget(this.gl, this.counter, this.reflection.format));
-    msaa.setSize(width, height, samples);
-    const n = reflectionPass(this.ctx, msaa.framebuffer, width, height);
-    msaa.resolve(this.reflection.framebuffer);
+    const msaa = this.reflectionSamples();
+    const n = reflectionPass(this.ctx, msaa?.framebuffer ?? this.reflection.framebuffer, width, height);
+    msaa?.resolve(this.reflection.framebuffer);
     return n;
+  }
+
+  /** The reflection's multisampled stand-in at this frame's size and samples, or null for none. */
+  private reflectionSamples(): MultisampleTarget | null {
+    const samples = this.samplesFor(this.ctx.state);
+    if (samples === 0) return null;
+    const msaa = (this.reflectionMsaa ??= new MultisampleTarget(this.gl, this.counter, this.reflection.format));
+    msaa.setSize(this.reflection.width, this.reflection.height, samples);
+    return msaa;
+  }
+
+  /** SPEC §14: rough glass's images, before the glass pass (rough-targets.ts). Returns the draw calls. */
+  private drawRough(): number {
+    this.rough ??= new RoughTargets(this.gl, this.counter, this.programs, this.blitVao, this.maxTargetSize);
+    return this.rough.draw(this.ctx, this.reflection, this.reflectionSamples());
   }
 
   /** Draws `state.view` into `destination` (null = canvas), multisampled when asked. */
@@ -314,9 +331,10 @@ export class Renderer {
           beginTarget(this.gl, framebuffer, full, this.background);
           return scenePass(ctx);
         }
-        const n = this.runReflection(true);
+        const rough = isRough(state);
+        const n = rough ? this.drawRough() : this.runReflection(true);
         beginTarget(this.gl, framebuffer, full, this.background);
-        return n + scenePass(ctx) + glassPass(ctx, this.reflection.color);
+        return n + scenePass(ctx) + this.glass(rough);
       }
     }
   }
@@ -337,14 +355,20 @@ export class Renderer {
     const bottom = Math.floor(height / 2);
     const top = height - bottom;
     const t = this.tile;
-    let n = this.runReflection();
+    const rough = isRough(ctx.state) && this.glassSkipReason === undefined;
+    let n = (rough ? this.drawRough() : 0) + this.runReflection();
     n += this.blit(framebuffer, setViewport(t, 0, bottom, left, top));
     beginTarget(this.gl, framebuffer, setViewport(t, left, bottom, right, top), this.background);
     n += scenePass(ctx);
     n += this.drawFresnel(framebuffer, setViewport(t, 0, 0, left, bottom));
     beginTarget(this.gl, framebuffer, setViewport(t, left, 0, right, bottom), this.background);
-    n += scenePass(ctx) + glassPass(ctx, this.reflection.color);
+    n += scenePass(ctx) + this.glass(rough);
     return n;
+  }
+
+  /** Pass 3 over this frame's reflection: sharp, or (after drawRough) rough-glass.glsl's gather. */
+  private glass(rough: boolean): number {
+    return rough ? glassPass(this.ctx, this.rough!.reflectionColor, false, this.rough!.inputs) : glassPass(this.ctx, this.reflection.color);
   }
 
   private blit(framebuffer: WebGLFramebuffer | null, vp: Viewport): number {

@@ -39,12 +39,16 @@ export class MultisampleTarget {
     return true;
   }
 
-  /** Averages the samples into `target` (null = the canvas), same size. */
-  resolve(target: WebGLFramebuffer | null): void {
+  /**
+   * Averages the samples into `target` (null = the canvas), same size. `depth`: depth too (one
+   * sample per pixel, not averaged; the target's depth must be DEPTH_COMPONENT24 as well).
+   */
+  resolve(target: WebGLFramebuffer | null, depth = false): void {
     const gl = this.gl;
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, this.framebuffer);
     gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, target);
-    gl.blitFramebuffer(0, 0, this.width, this.height, 0, 0, this.width, this.height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+    const mask = depth ? gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT : gl.COLOR_BUFFER_BIT;
+    gl.blitFramebuffer(0, 0, this.width, this.height, 0, 0, this.width, this.height, mask, gl.NEAREST);
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
     gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
   }

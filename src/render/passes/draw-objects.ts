@@ -31,9 +31,13 @@ function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
  * Draws into the bound framebuffer; depth test on, blending and culling as each object needs.
  * `mirrored`: pass 1 (mirrored matrices and lights, the clip plane, objects wholly beyond
  * the glass culled). `targetHeight`: the height in pixels of the target drawn into, which sets
- * how coarse a dense mesh's reflection may be (reflection-lod.ts). Returns the draw calls.
+ * how coarse a dense mesh's reflection may be (reflection-lod.ts). `farSide` (not mirrored): the
+ * frame beyond the glass for rough glass (transmission-pass.ts), clipped by this eye-relative
+ * plane, objects wholly on the viewer's side culled. Returns the draw calls.
  */
-export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean, targetHeight: number): number {
+export function drawObjects(
+  ctx: PassContext, clip: ClipMode, mirrored: boolean, targetHeight: number, farSide: Float32Array | null = null,
+): number {
   const { gl, setup, scene } = ctx;
   const eye = setup.mirroredEye;
   const focal = focalPixels(targetHeight, ctx.state.fov);
@@ -51,6 +55,7 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean,
       const m = setup.objects[i];
       // Culling, not selection (SPEC §4): bounds wholly beyond the glass cannot be reflected.
       if (mirrored && ctx.cull && m.viewerDistance <= -m.radius) continue;
+      if (farSide && ctx.cull && m.viewerDistance >= m.radius) continue;
       const twoSided = isTwoSided(o.geometry);
       const program = ctx.programs.standard(clip, ctx.state.shading, variantOf(ctx, o));
       const switched = program !== current;
@@ -59,6 +64,7 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean,
         program.use();
         setLights(gl, program, setup, mirrored);
         if (mirrored) gl.uniform4fv(program.location('uClipPlane'), setup.clipPlane);
+        else if (farSide) gl.uniform4fv(program.location('uClipPlane'), farSide);
       }
       const t = ctx.textures.textureFor(o.material.texture);
       if (switched || t !== texture) {
@@ -70,7 +76,7 @@ export function drawObjects(ctx: PassContext, clip: ClipMode, mirrored: boolean,
       else gl.enable(gl.CULL_FACE);
       // On a depth tie with the glass (a face in its plane) an object on the viewer's side wins,
       // one on the plane or beyond it loses: pushed back further than glass-pass.ts pushes the glass.
-      if (!mirrored && setup.hasGlass && m.viewerDistance <= 0) {
+      if (!mirrored && !farSide && setup.hasGlass && m.viewerDistance <= 0) {
         gl.enable(gl.POLYGON_OFFSET_FILL);
         gl.polygonOffset(0, 2);
       } else gl.disable(gl.POLYGON_OFFSET_FILL);

@@ -1,15 +1,68 @@
 // Pass 3: the two-sided glass, depth-tested without depth writes, blended over pass 2 with
 // premultiplied alpha (ONE, ONE_MINUS_SRC_ALPHA). `outputFresnel` writes F as grey instead.
+// Rough (SPEC §14): R̃ and B̃ gathered from mip-mapped images (rough-targets.ts), written with
+// alpha 1, so the same blend leaves the glass opaque over pass 2.
 import { GLASS_BODY } from '../../scene/default-scene';
 import { setMatrices, type PassContext } from './pass-context';
 import { encodesAtEnd } from '../../frame/linear-light';
+import type { Program } from '../gl/program';
+import type { RoughGatherSettings } from '../../frame/rough-glass';
 
 const BODY_TINT = new Float32Array(GLASS_BODY);
 
-/** Draws into the bound framebuffer and viewport; returns the number of draw calls. */
-export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFresnel = false): number {
+/** What the rough variant reads beyond the sharp glass's inputs (filled in place each frame). */
+export interface RoughGlassInputs {
+  /** GGX α = roughness². */
+  alpha: number;
+  settings: RoughGatherSettings;
+  /** The mip-mapped reflection (the distance code in alpha) and its size in texels. */
+  reflectionWidth: number;
+  reflectionHeight: number;
+  reflectionTextureWidth: number;
+  reflectionTextureHeight: number;
+  /** The frame beyond the glass, mip-mapped likewise; null when the glass lets nothing through. */
+  transmission: WebGLTexture | null;
+  transmissionWidth: number;
+  transmissionHeight: number;
+  transmissionTextureWidth: number;
+  transmissionTextureHeight: number;
+}
+
+/** Uploads (float32) of this frame's camera for the rough variant: filled in place, never allocated per frame. */
+const viewProjection = new Float32Array(16);
+const normal = new Float32Array(3);
+const forward = new Float32Array(3);
+
+function setRough(gl: WebGL2RenderingContext, p: Program, ctx: PassContext, rough: RoughGlassInputs): void {
+  const { setup } = ctx;
+  viewProjection.set(setup.viewProjection);
+  const plane = setup.glass.plane;
+  for (let k = 0; k < 3; k++) {
+    normal[k] = setup.side * plane[k];
+    forward[k] = setup.forward[k];
+  }
+  gl.uniformMatrix4fv(p.location('uViewProjection'), false, viewProjection);
+  gl.uniform3fv(p.location('uGlassNormal'), normal);
+  gl.uniform3fv(p.location('uForward'), forward);
+  gl.uniform1f(p.location('uOrthographic'), setup.orthographic ? 1 : 0);
+  gl.uniform1f(p.location('uAlpha'), rough.alpha);
+  gl.uniform1i(p.location('uAngles'), rough.settings.angles);
+  gl.uniform1f(p.location('uLodBias'), rough.settings.lodBias);
+  gl.uniform4f(p.location('uReflectionSize'), rough.reflectionWidth, rough.reflectionHeight, rough.reflectionTextureWidth, rough.reflectionTextureHeight);
+  gl.uniform4f(p.location('uTransmissionSize'), rough.transmissionWidth, rough.transmissionHeight, rough.transmissionTextureWidth, rough.transmissionTextureHeight);
+  gl.uniform1f(p.location('uTransmits'), rough.transmission ? 1 : 0);
+  gl.uniform1i(p.location('uTransmission'), 2);
+  gl.activeTexture(gl.TEXTURE2);
+  gl.bindTexture(gl.TEXTURE_2D, rough.transmission);
+}
+
+/**
+ * Draws into the bound framebuffer and viewport; returns the number of draw calls. `rough`
+ * (roughness > 0, colour only): the rough variant, `reflection` then being the mip-mapped one.
+ */
+export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFresnel = false, rough: RoughGlassInputs | null = null): number {
   const { gl, setup, state } = ctx;
-  const program = ctx.programs.glass(state.fresnel, outputFresnel);
+  const program = ctx.programs.glass(state.fresnel, outputFresnel, rough !== null);
   gl.enable(gl.DEPTH_TEST);
   gl.depthMask(false);
   // Pushed back a hair — a constant, not scaled by its depth slope, which at grazing incidence
@@ -34,10 +87,16 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
     gl.uniform1i(program.location('uTexture'), 0);
     gl.uniform1i(program.location('uReflection'), 1);
     ctx.textures.procedural.bind(0);
+    if (rough) setRough(gl, program, ctx, rough);
     gl.activeTexture(gl.TEXTURE1);
     gl.bindTexture(gl.TEXTURE_2D, reflection);
     ctx.glassMesh.draw();
   } finally {
+    if (rough) {
+      gl.activeTexture(gl.TEXTURE2);
+      gl.bindTexture(gl.TEXTURE_2D, null);
+      gl.activeTexture(gl.TEXTURE1);
+    }
     gl.bindTexture(gl.TEXTURE_2D, null);
     gl.activeTexture(gl.TEXTURE0);
     gl.disable(gl.BLEND);

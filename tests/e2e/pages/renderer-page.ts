@@ -43,12 +43,34 @@ const api = {
     for (const [url, img] of Object.entries(images)) {
       renderer.setImage(url, new ImageData(new Uint8ClampedArray(img.rgba), img.width, img.height));
     }
-    const source = state.view === 'final' || state.view === 'scene' || state.view === 'reflection' ? state.view : 'final';
+    // 'passes' is drawn to the canvas and read back; the fresnel view as 'final' (its pass reads).
+    const source = state.view === 'final' || state.view === 'scene' || state.view === 'reflection' ? state.view : state.view === 'passes' ? 'screen' : 'final';
     return toBase64(renderer.read(source, state, revive(scene)).data);
   },
   /** The renderer's stats after the last draw. */
   stats() {
     return renderer.stats;
+  },
+  /**
+   * Mean ms per frame of `frames` frames of `state` drawn to the canvas, each waited for (a
+   * one-pixel read), after one unmeasured frame (compiles, allocations). A rough figure only.
+   */
+  time(state: FrameState, scene: Scene, frames: number): number {
+    canvas.width = state.width;
+    canvas.height = state.height;
+    const s = revive(scene), px = new Uint8Array(4);
+    renderer.render(state, s);
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    const t0 = performance.now();
+    for (let i = 0; i < frames; i++) {
+      renderer.render(state, s);
+      gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    }
+    return (performance.now() - t0) / frames;
+  },
+  /** Frees the renderer's GL objects (the page is done with it). */
+  dispose() {
+    renderer.dispose();
   },
 };
 

@@ -1,0 +1,67 @@
+// Rough glass in the WebGL renderer (SPEC §14): the gather of shaders/rough-glass.glsl and the
+// mip-mapped images render/rough-targets.ts draws for it.
+// Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
+const ROUGH = 'tests/e2e/rough-glass.spec.ts';
+const GATHER = 'shaders/rough-glass.glsl';
+
+export default [
+  {
+    name: 'W1 the transmission left sharp when rough (B̃ never gathered)',
+    edits: [{
+      file: GATHER,
+      find: '  vec4 acc = roughGather(uTransmission, uTransmissionSize, J, false);\n  return acc.a > 0.0 ? acc.rgb / acc.a : sharp;',
+      replace: '  return sharp;',
+    }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W2 the lobe width squared twice (α = roughness⁴)',
+    edits: [{ file: 'src/render/rough-targets.ts', find: 'this.inputs.alpha = ggxAlpha(state.roughness ?? 0);', replace: 'this.inputs.alpha = ggxAlpha(state.roughness ?? 0) ** 2;' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W3 samples whose ray leaves the glass\'s far side kept (the tanβ test dropped)',
+    edits: [{ file: GATHER, find: '      if (J.x * slope.x + J.y * slope.y > tanBeta) continue;\n', replace: '' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W4 a neighbour behind the pixel\'s own surface kept (the occlusion test dropped)',
+    edits: [{ file: GATHER, find: '        if (go < ROUGH_HIDDEN * g) continue;\n', replace: '' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W5 every neighbour taken at the pixel\'s own distance (gq for each sample)',
+    edits: [{ file: GATHER, find: 'float g = roughScale(texel.a);', replace: 'float g = gq;' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W6 the distance code measured on the viewer\'s side (h clamps to 0: everything touches the glass)',
+    edits: [{ file: 'src/render/rough-targets.ts', find: 'eyeRelativePlane(this.farSide64, setup.glass.plane, setup.eye, -setup.side);', replace: 'eyeRelativePlane(this.farSide64, setup.glass.plane, setup.eye, setup.side);' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W7 the frame beyond the glass clipped to the viewer\'s side instead',
+    edits: [{ file: 'src/render/passes/transmission-pass.ts', find: 'eyeRelativePlane(farSide64, setup.glass.plane, setup.eye, -setup.side);', replace: 'eyeRelativePlane(farSide64, setup.glass.plane, setup.eye, setup.side);' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W8 the multisampled depth not resolved (the distance code reads a cleared depth)',
+    edits: [{ file: 'src/render/rough-targets.ts', find: 'msaa.resolve(target.framebuffer, true);', replace: 'msaa.resolve(target.framebuffer);' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W9 the image\'s rows scaled by its width (M\'s second row in the wrong texels)',
+    edits: [{ file: GATHER, find: 'rM.zw * (0.5 * size.y)', replace: 'rM.zw * (0.5 * size.x)' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W10 the mip chain not rebuilt after the distance pass (levels above 0 left empty)',
+    edits: [{ file: 'src/render/gl/mip-target.ts', find: '    gl.generateMipmap(gl.TEXTURE_2D);\n', replace: '' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W11 the renderer\'s dispose forgets the rough targets',
+    edits: [{ file: 'src/render/renderer.ts', find: '    this.rough?.dispose();\n', replace: '' }],
+    tests: [ROUGH],
+  },
+];

@@ -1,0 +1,167 @@
+// Rough glass (SPEC §14) before the glass pass: the reflection, unscissored (the lobe reads
+// beyond the glass's rectangle), and — when the glass lets light through — the frame beyond the
+// glass, each into a mip-mapped target whose alpha holds frame/rough-glass.ts's distance code
+// u = h/(1 + h) (shaders/distance.frag, from the pass's depth, resolved with the colour when
+// multisampled). shaders/rough-glass.glsl gathers R̃ and B̃ from them. Made on the first rough
+// frame, kept while the renderer lives; nothing is allocated per frame.
+import { mat4 } from 'gl-matrix';
+import { MipTarget } from './gl/mip-target';
+import { MultisampleTarget } from './gl/multisample-target';
+import type { RenderTarget, TargetFormat } from './gl/render-target';
+import type { ResourceCounter } from './gl/resource-counter';
+import type { ProgramCache } from './programs';
+import type { PassContext } from './passes/pass-context';
+import type { RoughGlassInputs } from './passes/glass-pass';
+import { reflectionPass } from './passes/reflection-pass';
+import { transmissionPass } from './passes/transmission-pass';
+import { eyeRelativePlane } from '../math/mirror';
+import { ggxAlpha } from '../math/ggx';
+import { ROUGH_GATHER } from '../frame/rough-glass';
+import type { FrameState } from '../frame/types';
+
+/** Is the glass rough this frame? Roughness absent, 0 or not a number: polished, and nothing here runs. */
+export function isRough(state: FrameState): boolean {
+  return (state.roughness ?? 0) > 0;
+}
+
+export class RoughTargets {
+  private reflection: MipTarget | null = null;
+  private transmission: MipTarget | null = null;
+  private transmissionMsaa: MultisampleTarget | null = null;
+  /** What the glass pass reads (glass-pass.ts), filled in place. */
+  readonly inputs: RoughGlassInputs = {
+    alpha: 0, settings: ROUGH_GATHER.medium, reflectionWidth: 1, reflectionHeight: 1, reflectionTextureWidth: 1, reflectionTextureHeight: 1,
+    transmission: null, transmissionWidth: 1, transmissionHeight: 1, transmissionTextureWidth: 1, transmissionTextureHeight: 1,
+  };
+  private readonly inverse64 = new Float64Array(16);
+  private readonly inverse = new Float32Array(16);
+  private readonly farSide64 = new Float64Array(4);
+  private readonly farSide = new Float32Array(4);
+
+  constructor(
+    private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter,
+    private readonly programs: ProgramCache, private readonly vao: WebGLVertexArrayObject,
+    /** The largest side of a render target (gl/limits.ts). */
+    private readonly maxSize: number,
+  ) {}
+
+  /** The mip-mapped reflection the glass pass reads (after draw()). */
+  get reflectionColor(): WebGLTexture {
+    return this.reflection!.color;
+  }
+
+  /**
+   * Draws both images for ctx.state (sized and formatted as `sharp`, the sharp reflection's
+   * target; `msaa`: its multisampled stand-in, or null) and fills `inputs`. Returns the draw calls.
+   */
+  draw(ctx: PassContext, sharp: RenderTarget, msaa: MultisampleTarget | null): number {
+    const { state, setup } = ctx;
+    // Compiled first: a variant that fails throws before any state is set.
+    this.programs.distance();
+    const quality = state.roughnessQuality ?? 'medium';
+    this.inputs.alpha = ggxAlpha(state.roughness ?? 0);
+    this.inputs.settings = ROUGH_GATHER[quality] ?? ROUGH_GATHER.medium;
+    // Mirror images and what lies beyond the glass both sit on its far side: h = −side·(n·x + d),
+    // x unprojected by the inverse of the eye-relative view-projection (the mirrored pass's own
+    // projection is that one times the plane's reflection: the same inverse gives the image).
+    if (mat4.invert(this.inverse64 as unknown as mat4, setup.viewProjection as unknown as mat4)) this.inverse.set(this.inverse64);
+    eyeRelativePlane(this.farSide64, setup.glass.plane, setup.eye, -setup.side);
+    this.farSide.set(this.farSide64);
+
+    ctx.scissor = null;
+    const reflection = (this.reflection = this.fit(this.reflection, sharp.format, sharp.width, sharp.height));
+    // Each pass's draws and its distance pass's one.
+    let n = this.run(ctx, reflection, msaa, reflectionPass) + 1;
+    this.inputs.reflectionWidth = reflection.width;
+    this.inputs.reflectionHeight = reflection.height;
+    this.inputs.reflectionTextureWidth = reflection.textureWidth;
+    this.inputs.reflectionTextureHeight = reflection.textureHeight;
+
+    // SPEC §4: exact and Schlick let through T; the classic blend 1 − (1 − T)(0.2 + 0.8F) > 0 always.
+    this.inputs.transmission = null;
+    if (state.transparency > 0 || state.fresnel === 'classic') {
+      const format = state.colorSpace === 'srgb' ? 'srgb8' : 'rgba8';
+      const target = (this.transmission = this.fit(this.transmission, format, state.width, state.height));
+      let samples: MultisampleTarget | null = null;
+      if (msaa) {
+        samples = this.transmissionMsaa?.format === format ? this.transmissionMsaa : null;
+        if (!samples) {
+          this.transmissionMsaa?.dispose();
+          samples = this.transmissionMsaa = new MultisampleTarget(this.gl, this.counter, format);
+        }
+        samples.setSize(target.width, target.height, msaa.samples);
+      }
+      n += this.run(ctx, target, samples, transmissionPass) + 1;
+      this.inputs.transmission = target.color;
+      this.inputs.transmissionWidth = target.width;
+      this.inputs.transmissionHeight = target.height;
+      this.inputs.transmissionTextureWidth = target.textureWidth;
+      this.inputs.transmissionTextureHeight = target.textureHeight;
+    }
+    return n;
+  }
+
+  /** `target` if it has `format`, else a new one; sized. */
+  private fit(target: MipTarget | null, format: TargetFormat, width: number, height: number): MipTarget {
+    if (target?.format !== format) {
+      target?.dispose();
+      target = new MipTarget(this.gl, this.counter, format, this.maxSize);
+    }
+    target.setSize(width, height);
+    return target;
+  }
+
+  /** One pass into `target` (through `msaa` when given), its distance codes, its mips; returns the pass's draw calls. */
+  private run(
+    ctx: PassContext, target: MipTarget, msaa: MultisampleTarget | null,
+    pass: (ctx: PassContext, framebuffer: WebGLFramebuffer, width: number, height: number) => number,
+  ): number {
+    const { width, height } = target;
+    const gl = this.gl;
+    // The padding beyond the image: nothing there (the background, u = 1).
+    if (target.textureWidth > width || target.textureHeight > height) {
+      const bg = ctx.background;
+      gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
+      gl.clearColor(bg[0], bg[1], bg[2], 1);
+      gl.clearDepth(1);
+      gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    }
+    let n: number;
+    if (msaa) {
+      n = pass(ctx, msaa.framebuffer, width, height);
+      msaa.resolve(target.framebuffer, true);
+    } else n = pass(ctx, target.framebuffer, width, height);
+    this.distances(target);
+    return n;
+  }
+
+  /** shaders/distance.frag into `target`'s alpha (one draw call), then its mip chain. */
+  private distances(target: MipTarget): void {
+    const gl = this.gl;
+    const p = this.programs.distance();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, target.colorFramebuffer);
+    gl.viewport(0, 0, target.width, target.height);
+    gl.colorMask(false, false, false, true);
+    p.use();
+    gl.uniform1i(p.location('uDepth'), 0);
+    gl.uniformMatrix4fv(p.location('uInverseViewProjection'), false, this.inverse);
+    gl.uniform4fv(p.location('uFarSide'), this.farSide);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, target.depth);
+    gl.bindVertexArray(this.vao);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    gl.bindVertexArray(null);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    gl.colorMask(true, true, true, true);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    target.generateMips();
+  }
+
+  dispose(): void {
+    this.reflection?.dispose();
+    this.transmission?.dispose();
+    this.transmissionMsaa?.dispose();
+    this.reflection = this.transmission = null;
+    this.transmissionMsaa = null;
+  }
+}
