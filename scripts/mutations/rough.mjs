@@ -14,8 +14,8 @@ export default [
     tests: [ROUGH],
   },
   {
-    name: 'Q3 transmitted rays turned back to the viewer\'s side kept (the background read where no ray goes)',
-    edits: [{ file: 'src/software/rough-gather.ts', find: 'if (pass === 1 && !this.leaves(x, y)) continue;', replace: 'void pass;' }],
+    name: 'Q3 rays turned past the glass kept (the background read beyond the horizon)',
+    edits: [{ file: 'src/software/rough-gather.ts', find: '            if (!this.leaves(x, y)) continue;\n', replace: '' }],
     tests: [ROUGH],
   },
   {
