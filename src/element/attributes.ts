@@ -3,6 +3,7 @@
 import { FRESNEL_MODELS, type FresnelModel } from '../math/fresnel';
 import { COLOR_SPACES, type ColorSpace } from '../math/srgb';
 import { clampPitch, wrapYaw, type Projection } from '../math/camera';
+import type { RoughnessQuality } from '../frame/rough-glass';
 import { browserCssColor, parseCssColor } from './css-color';
 
 export const DEBUG_VIEWS = ['none', 'reflection', 'scene', 'fresnel', 'passes'] as const;
@@ -60,6 +61,10 @@ export interface SceneAttributes {
   reflectionFormat: 'rgba8' | 'rgba16f';
   /** Linear light with sRGB in and out, or values used as stored (SPEC §13). */
   colorSpace: ColorSpace;
+  /** The glass's roughness, 0..1 (SPEC §14): 0 polished. */
+  roughness: number;
+  /** How many neighbours rough glass gathers per pixel (frame/rough-glass.ts). */
+  roughnessQuality: RoughnessQuality;
   /** Centre of the glass rectangle. */
   glassCenter: Vec3Tuple;
   /** Unit normal of the glass. */
@@ -310,6 +315,8 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
   autoOrNumberSpec('pixelRatio', 'pixel-ratio', 0.25, 4, false, 'drawing-buffer pixels per CSS pixel, or auto (devicePixelRatio)'),
   keywordSpec('reflectionFormat', 'reflection-format', ['rgba8', 'rgba16f'], 'reflection storage: rgba8, or rgba16f (half float, where supported)'),
   keywordSpec('colorSpace', 'color-space', COLOR_SPACES, 'srgb: linear-light rendering with sRGB in and out; none: colours used as stored (the course programs)'),
+  numberSpec('roughness', 'roughness', 0, 0, 1, 'rough glass (GGX, α = roughness²): 0 polished; blurs what the glass reflects and lets through, sharp where an object touches it'),
+  keywordSpec('roughnessQuality', 'roughness-quality', ['medium', 'low', 'high'], 'neighbours rough glass gathers per pixel: low 4, medium 8, high 16 per ring'),
   tupleSpec('glassCenter', 'glass-center', [0, 1, 0], '"x y z"', 'centre of the glass rectangle', clampCoords),
   tupleSpec('glassNormal', 'glass-normal', [0, 0, 1], '"x y z"', 'normal of the glass (normalised); "0 1 0" makes a glass floor', (xs) => {
     const l = Math.hypot(xs[0], xs[1], xs[2]);

@@ -10,7 +10,7 @@ export class FrameStates {
     width: 1, height: 1, time: 0, spin: 0, cubeDistance: 0, transparency: 0, ior: 1, fresnel: 'exact',
     fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final',
     reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8', colorSpace: 'srgb',
-    projection: 'perspective', target: null,
+    projection: 'perspective', target: null, roughness: 0, roughnessQuality: 'medium',
   };
   /** The state of the last frame drawn; null before the first. */
   last: FrameState | null = null;
@@ -37,6 +37,8 @@ export class FrameStates {
     s.tessellation = v.tessellation;
     s.reflectionFormat = v.reflectionFormat;
     s.colorSpace = v.colorSpace;
+    s.roughness = v.roughness;
+    s.roughnessQuality = v.roughnessQuality;
     return s;
   }
 

@@ -55,6 +55,8 @@ export interface GlassPlaneScene extends SceneAttributes {}
  * @attr {number | 'auto'} [pixel-ratio="auto"] - drawing-buffer pixels per CSS pixel 0.25..4, or auto (devicePixelRatio)
  * @attr {'rgba8' | 'rgba16f'} [reflection-format="rgba8"] - reflection storage (rgba16f: half float, where supported)
  * @attr {'srgb' | 'none'} [color-space="srgb"] - srgb: linear-light rendering with sRGB in and out; none: colours used as stored (the course programs)
+ * @attr {number} [roughness=0] - rough glass (GGX, α = roughness²), 0..1: 0 polished; blurs what the glass reflects and lets through, sharp where an object touches it
+ * @attr {'low' | 'medium' | 'high'} [roughness-quality="medium"] - neighbours rough glass gathers per pixel: low 4, medium 8, high 16 per ring
  * @attr {string} [glass-center="0 1 0"] - "x y z": centre of the glass rectangle
  * @attr {string} [glass-normal="0 0 1"] - "x y z": normal of the glass; "0 1 0" makes a glass floor
  * @attr {string} [glass-size="8 4"] - "w h": width and height of the glass; "0 0" means no glass
