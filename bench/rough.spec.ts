@@ -27,8 +27,8 @@ const REF_SPP = SMOKE ? 1 : 2;
 const MICROFACETS = SMOKE ? 16 : 256;
 const CHECK_CASE = '0.3/10';
 const LEVELS = SMOKE ? [2] : [0, 1, 2, 3, 4, 5, 6, 7];
-const FRAMES = SMOKE ? 1 : 5;
-const WARMUP = SMOKE ? 0 : 2;
+const FRAMES = SMOKE ? 1 : 3;
+const WARMUP = SMOKE ? 0 : 1;
 const RUNS = SMOKE ? 1 : 3;
 
 type Page = import('@playwright/test').Page;

@@ -12,6 +12,7 @@ export const bad = (
     <glass-plane-scene shading="smooth" /> {/* BAD */}
     <glass-plane-scene samples={3} /> {/* BAD */}
     <glass-plane-scene transparency="half" /> {/* BAD */}
+    <glass-plane-scene roughness-quality="ultra" /> {/* BAD */}
     <glass-object mapping="planar" /> {/* BAD */}
     <glass-object shape="torus" /> {/* BAD */}
     <glass-object onLoad={() => {}} /> {/* BAD */}
