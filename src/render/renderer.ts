@@ -289,7 +289,7 @@ export class Renderer {
 
   /** SPEC §14: rough glass's images, before the glass pass (rough-targets.ts). Returns the draw calls. */
   private drawRough(): number {
-    this.rough ??= new RoughTargets(this.gl, this.counter, this.programs, this.blitVao, this.maxTargetSize);
+    this.rough ??= new RoughTargets(this.gl, this.counter, this.programs, this.blitVao, this.maxTargetSize, this.canHalfFloat);
     return this.rough.draw(this.ctx, this.reflection, this.reflectionSamples());
   }
 
@@ -334,7 +334,7 @@ export class Renderer {
         const rough = isRough(state);
         const n = rough ? this.drawRough() : this.runReflection(true);
         beginTarget(this.gl, framebuffer, full, this.background);
-        return n + scenePass(ctx) + this.glass(rough);
+        return n + this.sceneAndGlass(rough);
       }
     }
   }
@@ -362,8 +362,18 @@ export class Renderer {
     n += scenePass(ctx);
     n += this.drawFresnel(framebuffer, setViewport(t, 0, 0, left, bottom));
     beginTarget(this.gl, framebuffer, setViewport(t, left, 0, right, bottom), this.background);
-    n += scenePass(ctx) + this.glass(rough);
-    return n;
+    return n + this.sceneAndGlass(rough);
+  }
+
+  /**
+   * Pass 2 and the glass over it. Rough, the glass is opaque and writes its depth (glass-pass.ts):
+   * the transparent objects go after it, those on the viewer's side (or parts of them) over it,
+   * those beyond it hidden where it covers them (they are in the frame beyond it it gathers from),
+   * as the software renderer draws them; drawn before it they were erased.
+   */
+  private sceneAndGlass(rough: boolean): number {
+    if (!rough) return scenePass(this.ctx) + this.glass(false);
+    return scenePass(this.ctx, false, 'opaque') + this.glass(true) + scenePass(this.ctx, false, 'transparent');
   }
 
   /** Pass 3 over this frame's reflection: sharp, or (after drawRough) rough-glass.glsl's gather. */

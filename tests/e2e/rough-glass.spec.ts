@@ -69,22 +69,23 @@ function courseFloor(v: RoughView): FrameState {
 // reference is far below every bound, so a gather that blurred nothing would fail.
 const CASES: Case[] = [
   // Sharp frame 40.9 dB.
-  { name: 'floor', scene: FLOOR_SCENE, state: floorState, roughness: 0.1, ior: 10, measured: 46.2 },
+  { name: 'floor', scene: FLOOR_SCENE, state: floorState, roughness: 0.1, ior: 10, measured: 47.3 },
   // Sharp frame 29.0 dB.
-  { name: 'floor', scene: FLOOR_SCENE, state: floorState, roughness: 0.5, ior: 10, measured: 36.9 },
+  { name: 'floor', scene: FLOOR_SCENE, state: floorState, roughness: 0.5, ior: 10, measured: 37.4 },
   // At ior 10 the wall shows mostly the reflection (the cube's); sharp frame 46.5 dB.
-  { name: 'wall', scene: WALL_SCENE, state: wallState, roughness: 0.1, ior: 10, measured: 51.1 },
+  { name: 'wall', scene: WALL_SCENE, state: wallState, roughness: 0.1, ior: 10, measured: 52.4 },
   // At ior 1.5 mostly the sphere behind it, blurred by the transmission; sharp frame 40.5 dB.
-  { name: 'wall', scene: WALL_SCENE, state: wallState, roughness: 0.5, ior: 1.5, measured: 46.4 },
+  { name: 'wall', scene: WALL_SCENE, state: wallState, roughness: 0.5, ior: 1.5, measured: 47.4 },
   {
     // Sharp frame 38.6 dB.
-    name: 'floor, orthographic', scene: FLOOR_SCENE, roughness: 0.3, ior: 10, measured: 44.4,
+    name: 'floor, orthographic', scene: FLOOR_SCENE, roughness: 0.3, ior: 10, measured: 45.3,
     state: (v) => ({ ...floorState(v), projection: 'orthographic', target: [0, 0.6, 0] }),
   },
   // Sharp frame 31.7 dB.
-  { name: 'floor, course camera', scene: FLOOR_SCENE, state: courseFloor, roughness: 0.3, ior: 10, measured: 40.1 },
-  // Grazing: the lobe's share beyond the horizon dropped, as the reference drops those rays (kept: 34.5 dB); sharp frame 25.9 dB.
-  { name: 'a long floor at grazing incidence', scene: HORIZON_SCENE, state: horizonState, roughness: 0.3, ior: 10, measured: 37.3 },
+  { name: 'floor, course camera', scene: FLOOR_SCENE, state: courseFloor, roughness: 0.3, ior: 10, measured: 40.6 },
+  // Grazing: the background's share of the lobe dropped where its eye ray would not go beyond the glass, as the reference
+  // drops rays that leave beyond the horizon; sharp frame 25.9 dB.
+  { name: 'a long floor at grazing incidence', scene: HORIZON_SCENE, state: horizonState, roughness: 0.3, ior: 10, measured: 40.2 },
 ];
 
 for (const c of CASES) {
@@ -143,8 +144,9 @@ test('the passes view\'s final tile is rough, its reflection tile the sharp pass
   const reflection = differing(0, 0), final = differing(W / 2, H / 2);
   note(`passes view, roughness 0.5 against 0: ${reflection} px differ in the reflection tile, ${final} in the final one`);
   expect(reflection).toBe(0);
-  // Measured 1,607 of the tile's 3,600 (the glass covers about half of it); bound 10% under.
-  expect(final).toBeGreaterThan(0.9 * 1607);
+  // Measured 1,088 of the tile's 3,600 (the glass covers about half of it; near surfaces' light no
+  // longer spread over the background around them leaves more of it as sharp); bound 10% under.
+  expect(final).toBeGreaterThan(0.9 * 1088);
 });
 
 test('every GL object rough glass makes is deleted with the renderer, by the context\'s own count', async ({ page }) => {
