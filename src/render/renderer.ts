@@ -331,8 +331,7 @@ export class Renderer {
           beginTarget(this.gl, framebuffer, full, this.background);
           return scenePass(ctx);
         }
-        const rough = isRough(state);
-        const n = rough ? this.drawRough() : this.runReflection(true);
+        const rough = isRough(state), n = rough ? this.drawRough() : this.runReflection(true);
         beginTarget(this.gl, framebuffer, full, this.background);
         return n + this.sceneAndGlass(rough);
       }
@@ -365,20 +364,11 @@ export class Renderer {
     return n + this.sceneAndGlass(rough);
   }
 
-  /**
-   * Pass 2 and the glass over it. Rough, the glass is opaque and writes its depth (glass-pass.ts):
-   * the transparent objects go after it, those on the viewer's side (or parts of them) over it,
-   * those beyond it hidden where it covers them (they are in the frame beyond it it gathers from),
-   * as the software renderer draws them; drawn before it they were erased.
-   */
+  /** Passes 2 and 3; rough (after drawRough), the opaque glass then the transparent objects, which it erased drawn first. */
   private sceneAndGlass(rough: boolean): number {
-    if (!rough) return scenePass(this.ctx) + this.glass(false);
-    return scenePass(this.ctx, false, 'opaque') + this.glass(true) + scenePass(this.ctx, false, 'transparent');
-  }
-
-  /** Pass 3 over this frame's reflection: sharp, or (after drawRough) rough-glass.glsl's gather. */
-  private glass(rough: boolean): number {
-    return rough ? glassPass(this.ctx, this.rough!.reflectionColor, false, this.rough!.inputs) : glassPass(this.ctx, this.reflection.color);
+    const ctx = this.ctx, r = this.rough;
+    if (!rough || !r) return scenePass(ctx) + glassPass(ctx, this.reflection.color);
+    return scenePass(ctx, false, 'opaque') + glassPass(ctx, r.reflectionColor, false, r.inputs) + scenePass(ctx, false, 'transparent');
   }
 
   private blit(framebuffer: WebGLFramebuffer | null, vp: Viewport): number {
