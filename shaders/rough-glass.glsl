@@ -2,11 +2,14 @@
 // frame/rough-glass.ts says ("scatter as gather"), the same steps as software/rough-gather.ts.
 // At the glass point P: the lobe's 2×2 map A = M·J from microfacet slope to texels of an image
 // (M: texels per radian of the eye ray's turn along e1, e2; J: the ray's turn per unit slope),
-// then rings doubling in radius around P's texel, each read at the mip level its spacing leaves;
-// each neighbour weighted by the share of the GGX lobe that lands on it at its own distance from
-// the glass (the code u in the image's alpha), dropped where its ray would leave the glass's far
-// side or pass P's own surface first. Images: the reflection (mirror images, pass 1) and the
-// frame beyond the glass, both drawn with the frame's camera, both mip-mapped with u.
+// then rings doubling in radius around P's texel, each read at the mip level its spacing leaves.
+// Each neighbour gives two parts: the surfaces it covers (coverage c in the image's alpha, their
+// code u = cu/c from the codes' alpha, their colour the texel's less the background's share) and
+// the background where it covers none; each part weighted by the share of the GGX lobe that lands
+// on it at its own distance from the glass, dropped where its ray would pass P's own surface
+// first, the background's also where the eye ray through its texel does not go to the glass's
+// far side. Images: the reflection (mirror images, pass 1) and the frame beyond the glass, both
+// drawn with the frame's camera, both mip-mapped with c and cu (software/rough-gather.ts alike).
 
 uniform highp mat4 uViewProjection; // the frame's camera, eye-relative points → clip
 uniform vec3 uGlassNormal;          // unit, on the viewer's side
@@ -19,6 +22,11 @@ uniform vec4 uReflectionSize;       // texels: the image's size (xy), its storag
 uniform sampler2D uTransmission;    // the frame beyond the glass (when uTransmits is 1)
 uniform vec4 uTransmissionSize;
 uniform float uTransmits;           // 0: the glass lets nothing through
+uniform sampler2D uReflectionCodes; // coverage × distance code (alpha), as large as the image
+uniform sampler2D uTransmissionCodes;
+uniform highp mat4 uInverseViewProjection; // the inverse of uViewProjection
+uniform vec3 uBackground;           // the clear colour (linear light in srgb)
+uniform float uFixedLevel;          // ≥ 0: the bench's comparison, the reflection at this level (FrameState.fixedBlurLevel)
 
 /** A code at or above this is nothing (the background). */
 const float ROUGH_NOTHING = 0.9999;
@@ -118,22 +126,32 @@ bool transmissionLobe(out vec4 J) {
   return true;
 }
 
-/** Σ w·colour and Σ w over the rings around P in `image` (`size` texels), for the lobe J. */
-vec4 roughGather(sampler2D image, vec4 sizes, vec4 J, bool clampColour) {
+/** Whether the eye ray through texel x of an image of `size` texels goes to the glass's far side. */
+bool roughLeaves(vec2 x, vec2 size) {
+  vec2 ndc = x / size * 2.0 - 1.0;
+  vec4 a = uInverseViewProjection * vec4(ndc, -1.0, 1.0);
+  vec4 b = uInverseViewProjection * vec4(ndc, 1.0, 1.0);
+  return dot(b.xyz / b.w - a.xyz / a.w, uGlassNormal) < 0.0;
+}
+
+/** The mixed code cu + (1 − c) at uv, level `lod`: a surface's code, nothing's 1. */
+float roughMixed(sampler2D image, sampler2D codes, vec2 uv, float lod) {
+  return textureLod(codes, uv, lod).a + 1.0 - textureLod(image, uv, lod).a;
+}
+
+/** Σ w·colour and Σ w over the rings around P in `image` (`size` texels; its codes beside it), for the lobe J. */
+vec4 roughGather(sampler2D image, sampler2D codes, vec4 sizes, vec4 J, bool clampColour) {
   vec2 size = sizes.xy, storage = sizes.zw;
   vec4 A = mul22(vec4(rM.xy * (0.5 * size.x), rM.zw * (0.5 * size.y)), J);
-  float signedDet = A.x * A.w - A.y * A.z;
-  float det = abs(signedDet);
+  float det = abs(A.x * A.w - A.y * A.z);
   if (!(det > 1e-12)) return vec4(0.0);
-  vec4 inverse = vec4(A.w, -A.y, -A.z, A.x) / signedDet;
   float sq = dot(A, A);
   float smax = sqrt(0.5 * (sq + sqrt(max(0.0, sq * sq - 4.0 * det * det))));
-  float tanBeta = rC / sqrt(max(1e-12, 1.0 - rC * rC));
   // roughRings(α, smax)
   float reach = ROUGH_REACH * uAlpha * smax / ROUGH_FIRST_RING;
   int rings = reach > 1.0 ? min(int(ceil(log2(reach))) + 1, ROUGH_MAX_RINGS) : 1;
   vec2 q = (rQ * 0.5 + 0.5) * size;
-  float gq = roughScale(textureLod(image, q / storage, 0.0).a);
+  float gq = roughScale(roughMixed(image, codes, q / storage, 0.0));
   // α² floored: a roughness whose square underflows gathers its centre alone, not NaN.
   float a2 = max(uAlpha * uAlpha, 1e-30);
   vec4 acc = vec4(0.0);
@@ -150,21 +168,35 @@ vec4 roughGather(sampler2D image, vec4 sizes, vec4 J, bool clampColour) {
     for (int i = 0; i < count; i++) {
       float phi = 2.0 * ROUGH_PI * (float(i) + 0.5 * float(ring & 1)) / float(count);
       vec2 delta = mul2(A, vec2(cos(phi), sin(phi)) * (mid / smax));
-      vec4 texel = textureLod(image, (q + delta) / storage, level);
-      float g = roughScale(texel.a);
-      // The slope that sends the ray there at that distance; a ray turned past the glass is dropped.
-      vec2 slope = mul2(inverse, delta) / g;
-      if (J.x * slope.x + J.y * slope.y > tanBeta) continue;
-      if (ring >= 0 && g > ROUGH_FARTHER * gq) {
-        float go = roughScale(textureLod(image, (q + delta * (gq / g)) / storage, level).a);
-        if (go < ROUGH_HIDDEN * g) continue;
+      vec2 uv = (q + delta) / storage;
+      vec4 texel = textureLod(image, uv, level);
+      // Clamped as an 8-bit target would: the reflection is what pass 1 shows, highlights included.
+      vec3 rgb = clampColour ? min(texel.rgb, vec3(1.0)) : texel.rgb;
+      float cover = texel.a;
+      float cu = textureLod(codes, uv, level).a;
+      // Two parts: the surfaces the sample covers, and the background where it covers none.
+      for (int layer = 0; layer < 2; layer++) {
+        float part = layer == 0 ? cover : 1.0 - cover;
+        if (!(part > 1e-6)) continue;
+        float g = 1.0;
+        if (layer == 0) g = roughScale(cu / cover);
+        // A ray turned toward the background must still leave on the far side (SPEC §14 drops
+        // the rest): at grazing incidence much of the lobe would go beyond the horizon.
+        else if (!roughLeaves(q + delta, size)) continue;
+        if (ring >= 0 && g > ROUGH_FARTHER * gq) {
+          // Hidden where the ray passes P's own surface first.
+          float go = roughScale(roughMixed(image, codes, (q + delta * (gq / g)) / storage, level));
+          if (go < ROUGH_HIDDEN * g) continue;
+        }
+        // The lobe's share of this part's piece of the ring: P(|slope| < x) = x²/(α² + x²),
+        // written as differences of α²/(α² + x²) (no cancellation when both are near 1).
+        float o = xo / g, ii = xi / g;
+        float w = part * (a2 / (a2 + ii * ii) - a2 / (a2 + o * o)) / float(count);
+        if (!(w > 0.0)) continue;
+        // The surfaces' own colour: the sample's less the background's share of it.
+        vec3 colour = layer == 0 ? (rgb - uBackground * (1.0 - cover)) / cover : uBackground;
+        acc += w * vec4(colour, 1.0);
       }
-      // The lobe's share of this sample's piece of the ring: P(|slope| < x) = x²/(α² + x²),
-      // written as differences of α²/(α² + x²) (no cancellation when both are near 1).
-      float o = xo / g, ii = xi / g;
-      float w = (a2 / (a2 + ii * ii) - a2 / (a2 + o * o)) / float(count);
-      if (!(w > 0.0)) continue;
-      acc += w * vec4(clampColour ? min(texel.rgb, vec3(1.0)) : texel.rgb, 1.0);
     }
   }
   return acc;
@@ -176,17 +208,22 @@ vec3 roughReflection(vec3 rel, vec2 uv) {
   // Clamped as an 8-bit target would: the reflection is what pass 1 shows, highlights included.
   vec3 sharp = min(textureLod(uReflection, uv * uReflectionSize.xy / uReflectionSize.zw, 0.0).rgb, vec3(1.0));
   if (!rOk) return sharp;
+  if (uFixedLevel >= 0.0) {
+    // The bench's comparison: the reflection at one level wherever the pixel is, no gather.
+    return min(textureLod(uReflection, uv * uReflectionSize.xy / uReflectionSize.zw, uFixedLevel).rgb, vec3(1.0));
+  }
   // A facet tilted by slope σ along the view's slope turns the mirrored ray by 2σ; across it by 2σ·cosθ.
-  vec4 acc = roughGather(uReflection, uReflectionSize, vec4(2.0, 0.0, 0.0, 2.0 * rC), true);
+  vec4 acc = roughGather(uReflection, uReflectionCodes, uReflectionSize, vec4(2.0, 0.0, 0.0, 2.0 * rC), true);
   return acc.a > 0.0 ? acc.rgb / acc.a : sharp;
 }
 
-/** B̃ at the pixel roughReflection set up (black when the glass lets nothing through). */
+/** B̃ at the pixel roughReflection set up (black when the glass lets nothing through; sharp for the bench's comparison). */
 vec3 roughTransmission() {
   if (uTransmits < 0.5) return vec3(0.0);
   vec3 sharp = textureLod(uTransmission, (rQ * 0.5 + 0.5) * uTransmissionSize.xy / uTransmissionSize.zw, 0.0).rgb;
   vec4 J;
-  if (!rOk || !transmissionLobe(J)) return sharp;
-  vec4 acc = roughGather(uTransmission, uTransmissionSize, J, false);
+  // The bench's comparison leaves what is behind the glass sharp.
+  if (!rOk || uFixedLevel >= 0.0 || !transmissionLobe(J)) return sharp;
+  vec4 acc = roughGather(uTransmission, uTransmissionCodes, uTransmissionSize, J, false);
   return acc.a > 0.0 ? acc.rgb / acc.a : sharp;
 }

@@ -20,8 +20,8 @@ export default [
     tests: [ROUGH],
   },
   {
-    name: 'W3 samples whose ray leaves the glass\'s far side kept (the tanβ test dropped)',
-    edits: [{ file: GATHER, find: '      if (J.x * slope.x + J.y * slope.y > tanBeta) continue;\n', replace: '' }],
+    name: 'W3 the background kept where its eye ray does not go beyond the glass (the horizon test dropped)',
+    edits: [{ file: GATHER, find: '        else if (!roughLeaves(q + delta, size)) continue;\n', replace: '' }],
     tests: [ROUGH],
   },
   {
@@ -31,7 +31,7 @@ export default [
   },
   {
     name: 'W5 every neighbour taken at the pixel\'s own distance (gq for each sample)',
-    edits: [{ file: GATHER, find: 'float g = roughScale(texel.a);', replace: 'float g = gq;' }],
+    edits: [{ file: GATHER, find: '        if (layer == 0) g = roughScale(cu / cover);\n', replace: '        if (layer == 0) g = gq;\n' }],
     tests: [ROUGH],
   },
   {
@@ -62,6 +62,26 @@ export default [
   {
     name: 'W11 the renderer\'s dispose forgets the rough targets',
     edits: [{ file: 'src/render/renderer.ts', find: '    this.rough?.dispose();\n', replace: '' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W12 the surfaces\' colour not separated from the background (one layer: the sample\'s colour as is)',
+    edits: [{ file: GATHER, find: 'vec3 colour = layer == 0 ? (rgb - uBackground * (1.0 - cover)) / cover : uBackground;', replace: 'vec3 colour = layer == 0 ? rgb : uBackground;' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W13 the bench\'s fixed blur level ignored (the gather runs)',
+    edits: [{ file: GATHER, find: '  if (uFixedLevel >= 0.0) {\n', replace: '  if (uFixedLevel > 1e9) {\n' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W14 the transparent objects drawn before the rough glass (it erases those in front of it)',
+    edits: [{ file: 'src/render/renderer.ts', find: "return scenePass(ctx, false, 'opaque') + glassPass(ctx, r.reflectionColor, false, r.inputs) + scenePass(ctx, false, 'transparent');", replace: 'return scenePass(ctx) + glassPass(ctx, r.reflectionColor, false, r.inputs);' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W15 the rough glass leaves no depth (transparent objects beyond it drawn over it)',
+    edits: [{ file: 'src/render/passes/glass-pass.ts', find: '  gl.depthMask(rough !== null);', replace: '  gl.depthMask(false);' }],
     tests: [ROUGH],
   },
 ];

@@ -289,7 +289,7 @@ export class Renderer {
 
   /** SPEC §14: rough glass's images, before the glass pass (rough-targets.ts). Returns the draw calls. */
   private drawRough(): number {
-    this.rough ??= new RoughTargets(this.gl, this.counter, this.programs, this.blitVao, this.maxTargetSize);
+    this.rough ??= new RoughTargets(this.gl, this.counter, this.programs, this.blitVao, this.maxTargetSize, this.canHalfFloat);
     return this.rough.draw(this.ctx, this.reflection, this.reflectionSamples());
   }
 
@@ -331,10 +331,9 @@ export class Renderer {
           beginTarget(this.gl, framebuffer, full, this.background);
           return scenePass(ctx);
         }
-        const rough = isRough(state);
-        const n = rough ? this.drawRough() : this.runReflection(true);
+        const rough = isRough(state), n = rough ? this.drawRough() : this.runReflection(true);
         beginTarget(this.gl, framebuffer, full, this.background);
-        return n + scenePass(ctx) + this.glass(rough);
+        return n + this.sceneAndGlass(rough);
       }
     }
   }
@@ -362,13 +361,14 @@ export class Renderer {
     n += scenePass(ctx);
     n += this.drawFresnel(framebuffer, setViewport(t, 0, 0, left, bottom));
     beginTarget(this.gl, framebuffer, setViewport(t, left, 0, right, bottom), this.background);
-    n += scenePass(ctx) + this.glass(rough);
-    return n;
+    return n + this.sceneAndGlass(rough);
   }
 
-  /** Pass 3 over this frame's reflection: sharp, or (after drawRough) rough-glass.glsl's gather. */
-  private glass(rough: boolean): number {
-    return rough ? glassPass(this.ctx, this.rough!.reflectionColor, false, this.rough!.inputs) : glassPass(this.ctx, this.reflection.color);
+  /** Passes 2 and 3; rough (after drawRough), the opaque glass then the transparent objects, which it erased drawn first. */
+  private sceneAndGlass(rough: boolean): number {
+    const ctx = this.ctx, r = this.rough;
+    if (!rough || !r) return scenePass(ctx) + glassPass(ctx, this.reflection.color);
+    return scenePass(ctx, false, 'opaque') + glassPass(ctx, r.reflectionColor, false, r.inputs) + scenePass(ctx, false, 'transparent');
   }
 
   private blit(framebuffer: WebGLFramebuffer | null, vp: Viewport): number {

@@ -1,9 +1,10 @@
 // Rough glass (SPEC §14) before the glass pass: the reflection, unscissored (the lobe reads
 // beyond the glass's rectangle), and — when the glass lets light through — the frame beyond the
-// glass, each into a mip-mapped target whose alpha holds frame/rough-glass.ts's distance code
-// u = h/(1 + h) (shaders/distance.frag, from the pass's depth, resolved with the colour when
-// multisampled). shaders/rough-glass.glsl gathers R̃ and B̃ from them. Made on the first rough
-// frame, kept while the renderer lives; nothing is allocated per frame.
+// glass, each into a mip-mapped target whose alpha holds the coverage c (1 where a surface was
+// drawn) and whose codes hold c·u, u = h/(1 + h) frame/rough-glass.ts's distance code
+// (shaders/distance.frag, from the pass's depth, resolved with the colour when multisampled).
+// shaders/rough-glass.glsl gathers R̃ and B̃ from them. Made on the first rough frame, kept
+// while the renderer lives; nothing is allocated per frame.
 import { mat4 } from 'gl-matrix';
 import { MipTarget } from './gl/mip-target';
 import { MultisampleTarget } from './gl/multisample-target';
@@ -32,9 +33,10 @@ export class RoughTargets {
   readonly inputs: RoughGlassInputs = {
     alpha: 0, settings: ROUGH_GATHER.medium, reflectionWidth: 1, reflectionHeight: 1, reflectionTextureWidth: 1, reflectionTextureHeight: 1,
     transmission: null, transmissionWidth: 1, transmissionHeight: 1, transmissionTextureWidth: 1, transmissionTextureHeight: 1,
+    reflectionCodes: null, transmissionCodes: null, inverseViewProjection: new Float32Array(16), fixedLevel: -1,
   };
   private readonly inverse64 = new Float64Array(16);
-  private readonly inverse = new Float32Array(16);
+  private readonly inverse = this.inputs.inverseViewProjection;
   private readonly farSide64 = new Float64Array(4);
   private readonly farSide = new Float32Array(4);
 
@@ -43,6 +45,8 @@ export class RoughTargets {
     private readonly programs: ProgramCache, private readonly vao: WebGLVertexArrayObject,
     /** The largest side of a render target (gl/limits.ts). */
     private readonly maxSize: number,
+    /** Can the context render to RGBA16F? The codes then keep 16 bits, else 8. */
+    private readonly halfFloat: boolean,
   ) {}
 
   /** The mip-mapped reflection the glass pass reads (after draw()). */
@@ -61,6 +65,9 @@ export class RoughTargets {
     const quality = state.roughnessQuality ?? 'medium';
     this.inputs.alpha = ggxAlpha(state.roughness ?? 0);
     this.inputs.settings = ROUGH_GATHER[quality] ?? ROUGH_GATHER.medium;
+    // In pixels' levels, as the software renderer counts them; the target's own scale added there.
+    const fixed = state.fixedBlurLevel;
+    this.inputs.fixedLevel = fixed !== undefined && fixed >= 0 ? fixed : -1;
     // Mirror images and what lies beyond the glass both sit on its far side: h = −side·(n·x + d),
     // x unprojected by the inverse of the eye-relative view-projection (the mirrored pass's own
     // projection is that one times the plane's reflection: the same inverse gives the image).
@@ -76,9 +83,10 @@ export class RoughTargets {
     this.inputs.reflectionHeight = reflection.height;
     this.inputs.reflectionTextureWidth = reflection.textureWidth;
     this.inputs.reflectionTextureHeight = reflection.textureHeight;
+    this.inputs.reflectionCodes = reflection.codes;
 
     // SPEC §4: exact and Schlick let through T; the classic blend 1 − (1 − T)(0.2 + 0.8F) > 0 always.
-    this.inputs.transmission = null;
+    this.inputs.transmission = this.inputs.transmissionCodes = null;
     if (state.transparency > 0 || state.fresnel === 'classic') {
       const format = state.colorSpace === 'srgb' ? 'srgb8' : 'rgba8';
       const target = (this.transmission = this.fit(this.transmission, format, state.width, state.height));
@@ -93,6 +101,7 @@ export class RoughTargets {
       }
       n += this.run(ctx, target, samples, transmissionPass) + 1;
       this.inputs.transmission = target.color;
+      this.inputs.transmissionCodes = target.codes;
       this.inputs.transmissionWidth = target.width;
       this.inputs.transmissionHeight = target.height;
       this.inputs.transmissionTextureWidth = target.textureWidth;
@@ -105,7 +114,7 @@ export class RoughTargets {
   private fit(target: MipTarget | null, format: TargetFormat, width: number, height: number): MipTarget {
     if (target?.format !== format) {
       target?.dispose();
-      target = new MipTarget(this.gl, this.counter, format, this.maxSize);
+      target = new MipTarget(this.gl, this.counter, format, this.maxSize, this.halfFloat ? 'rgba16f' : 'rgba8');
     }
     target.setSize(width, height);
     return target;
@@ -118,11 +127,11 @@ export class RoughTargets {
   ): number {
     const { width, height } = target;
     const gl = this.gl;
-    // The padding beyond the image: nothing there (the background, u = 1).
+    // The padding beyond the image: nothing there (the background, coverage 0).
     if (target.textureWidth > width || target.textureHeight > height) {
       const bg = ctx.background;
       gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
-      gl.clearColor(bg[0], bg[1], bg[2], 1);
+      gl.clearColor(bg[0], bg[1], bg[2], 0);
       gl.clearDepth(1);
       gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
     }
@@ -135,7 +144,7 @@ export class RoughTargets {
     return n;
   }
 
-  /** shaders/distance.frag into `target`'s alpha (one draw call), then its mip chain. */
+  /** shaders/distance.frag into `target`'s alpha and codes (one draw call), then their mip chains. */
   private distances(target: MipTarget): void {
     const gl = this.gl;
     const p = this.programs.distance();

@@ -1,17 +1,24 @@
 // An off-screen target for rough glass (SPEC §14): a colour texture with a full mip chain
-// (trilinear reads at a per-ring level) and a depth texture (read back to write each texel's
-// distance from the glass into the colour's alpha; frame/rough-glass.ts). Two framebuffers:
-// colour and depth (drawn into, or resolved into from a multisampled one), and colour alone
-// (the distance pass reads the depth texture, which must not be attached while it draws).
-// Immutable storage, remade only when the size changes; padded beyond the image (setSize), the
-// padding holding nothing (the background, u = 1: RoughTargets clears it).
+// (trilinear reads at a per-ring level), a second one as large with as many levels (the codes:
+// coverage × distance code in its alpha), and a depth texture (read back to write each texel's
+// coverage into the colour's alpha and its code into the codes; frame/rough-glass.ts). Two
+// framebuffers: colour and depth (drawn into, or resolved into from a multisampled one), and
+// colour with the codes (the distance pass reads the depth texture, which must not be attached
+// while it draws). Immutable storage, remade only when the size changes; padded beyond the image
+// (setSize), the padding holding nothing (coverage 0: RoughTargets clears the colour's; the
+// codes' starts as zeros, as WebGL initialises every texture, and is never drawn).
 import type { ResourceCounter } from './resource-counter';
 import { internalFormat, type TargetFormat } from './render-target';
+
+/** The colour framebuffer's draw buffers: coverage into the colour's alpha, codes into the second. */
+const DRAW_BOTH = [0x8ce0, 0x8ce1]; // COLOR_ATTACHMENT0, COLOR_ATTACHMENT1
 
 export class MipTarget {
   readonly framebuffer: WebGLFramebuffer;
   readonly colorFramebuffer: WebGLFramebuffer;
   color: WebGLTexture;
+  /** Coverage × distance code in alpha, mip-mapped with the colour. */
+  codes: WebGLTexture;
   depth: WebGLTexture;
   width = 0;
   height = 0;
@@ -23,13 +30,16 @@ export class MipTarget {
     private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter, readonly format: TargetFormat,
     /** The largest side the storage may have (gl/limits.ts). */
     private readonly maxSize: number,
+    /** The codes' format: rgba16f where the context renders half float, else rgba8. */
+    readonly codesFormat: TargetFormat,
   ) {
     this.framebuffer = gl.createFramebuffer()!;
     this.colorFramebuffer = gl.createFramebuffer()!;
     this.color = gl.createTexture()!;
+    this.codes = gl.createTexture()!;
     this.depth = gl.createTexture()!;
     counter.add('framebuffers', 2);
-    counter.add('textures', 2);
+    counter.add('textures', 3);
   }
 
   /** Remakes the storage when the image's size changed (width, height ≤ maxSize); returns true if it did. */
@@ -41,8 +51,10 @@ export class MipTarget {
     // texStorage2D is immutable: a new size needs new textures (the count is unchanged).
     if (this.width > 0) {
       gl.deleteTexture(this.color);
+      gl.deleteTexture(this.codes);
       gl.deleteTexture(this.depth);
       this.color = gl.createTexture()!;
+      this.codes = gl.createTexture()!;
       this.depth = gl.createTexture()!;
     }
     this.width = width;
@@ -57,12 +69,14 @@ export class MipTarget {
     const tw = padded(width), th = padded(height), levels = k + 1;
     this.textureWidth = tw;
     this.textureHeight = th;
-    gl.bindTexture(gl.TEXTURE_2D, this.color);
-    gl.texStorage2D(gl.TEXTURE_2D, levels, internalFormat(gl, this.format), tw, th);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+    for (const [texture, format] of [[this.color, this.format], [this.codes, this.codesFormat]] as const) {
+      gl.bindTexture(gl.TEXTURE_2D, texture);
+      gl.texStorage2D(gl.TEXTURE_2D, levels, internalFormat(gl, format), tw, th);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+    }
     gl.bindTexture(gl.TEXTURE_2D, this.depth);
     gl.texStorage2D(gl.TEXTURE_2D, 1, gl.DEPTH_COMPONENT24, tw, th);
     // Depth is not filterable: read texel by texel.
@@ -74,14 +88,18 @@ export class MipTarget {
     gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.TEXTURE_2D, this.depth, 0);
     gl.bindFramebuffer(gl.FRAMEBUFFER, this.colorFramebuffer);
     gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, this.color, 0);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT1, gl.TEXTURE_2D, this.codes, 0);
+    gl.drawBuffers(DRAW_BOTH);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     return true;
   }
 
-  /** Rebuilds the mip chain from level 0 (box filtered, colour and distance code alike). */
+  /** Rebuilds both mip chains from level 0 (box filtered, colour, coverage and codes alike). */
   generateMips(): void {
     const gl = this.gl;
     gl.bindTexture(gl.TEXTURE_2D, this.color);
+    gl.generateMipmap(gl.TEXTURE_2D);
+    gl.bindTexture(gl.TEXTURE_2D, this.codes);
     gl.generateMipmap(gl.TEXTURE_2D);
     gl.bindTexture(gl.TEXTURE_2D, null);
   }
@@ -91,8 +109,9 @@ export class MipTarget {
     gl.deleteFramebuffer(this.framebuffer);
     gl.deleteFramebuffer(this.colorFramebuffer);
     gl.deleteTexture(this.color);
+    gl.deleteTexture(this.codes);
     gl.deleteTexture(this.depth);
     this.counter.add('framebuffers', -2);
-    this.counter.add('textures', -2);
+    this.counter.add('textures', -3);
   }
 }

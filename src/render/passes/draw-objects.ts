@@ -27,16 +27,20 @@ function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
   return variant;
 }
 
+/** Which objects a call draws: all, or (rough glass's scene pass, renderer.ts) the opaque or the transparent ones alone. */
+export type Selection = 'all' | 'opaque' | 'transparent';
+
 /**
  * Draws into the bound framebuffer; depth test on, blending and culling as each object needs.
  * `mirrored`: pass 1 (mirrored matrices and lights, the clip plane, objects wholly beyond
  * the glass culled). `targetHeight`: the height in pixels of the target drawn into, which sets
  * how coarse a dense mesh's reflection may be (reflection-lod.ts). `farSide` (not mirrored): the
  * frame beyond the glass for rough glass (transmission-pass.ts), clipped by this eye-relative
- * plane, objects wholly on the viewer's side culled. Returns the draw calls.
+ * plane, objects wholly on the viewer's side culled. `selection`: which objects. Returns the draw calls.
  */
 export function drawObjects(
   ctx: PassContext, clip: ClipMode, mirrored: boolean, targetHeight: number, farSide: Float32Array | null = null,
+  selection: Selection = 'all',
 ): number {
   const { gl, setup, scene } = ctx;
   const eye = setup.mirroredEye;
@@ -47,7 +51,7 @@ export function drawObjects(
   let draws = 0;
   let current: Program | null = null;
   let texture: Texture | null = null;
-  for (let pass = 0; pass < 2; pass++) {
+  for (let pass = selection === 'transparent' ? 1 : 0; pass < (selection === 'opaque' ? 1 : 2); pass++) {
     const transparent = pass === 1;
     for (let i = 0; i < objects.length; i++) {
       const o = objects[i];

@@ -26,16 +26,27 @@ export interface RoughGlassInputs {
   transmissionHeight: number;
   transmissionTextureWidth: number;
   transmissionTextureHeight: number;
+  /** Each image's codes (coverage × distance code in alpha), mip-mapped as the image. */
+  reflectionCodes: WebGLTexture | null;
+  transmissionCodes: WebGLTexture | null;
+  /** The inverse of the frame's eye-relative view-projection (float32). */
+  inverseViewProjection: Float32Array;
+  /** FrameState.fixedBlurLevel (≥ 0), or −1: the gather. */
+  fixedLevel: number;
 }
 
 /** Uploads (float32) of this frame's camera for the rough variant: filled in place, never allocated per frame. */
 const viewProjection = new Float32Array(16);
 const normal = new Float32Array(3);
 const forward = new Float32Array(3);
+const background = new Float32Array(3);
+/** The texture units the rough variant binds beyond the sharp glass's (unbound after the draw). */
+const ROUGH_UNITS = [0x84c2, 0x84c3, 0x84c4]; // TEXTURE2..4
 
 function setRough(gl: WebGL2RenderingContext, p: Program, ctx: PassContext, rough: RoughGlassInputs): void {
-  const { setup } = ctx;
+  const { setup, state } = ctx;
   viewProjection.set(setup.viewProjection);
+  for (let k = 0; k < 3; k++) background[k] = ctx.background[k];
   const plane = setup.glass.plane;
   for (let k = 0; k < 3; k++) {
     normal[k] = setup.side * plane[k];
@@ -51,9 +62,20 @@ function setRough(gl: WebGL2RenderingContext, p: Program, ctx: PassContext, roug
   gl.uniform4f(p.location('uReflectionSize'), rough.reflectionWidth, rough.reflectionHeight, rough.reflectionTextureWidth, rough.reflectionTextureHeight);
   gl.uniform4f(p.location('uTransmissionSize'), rough.transmissionWidth, rough.transmissionHeight, rough.transmissionTextureWidth, rough.transmissionTextureHeight);
   gl.uniform1f(p.location('uTransmits'), rough.transmission ? 1 : 0);
+  gl.uniformMatrix4fv(p.location('uInverseViewProjection'), false, rough.inverseViewProjection);
+  gl.uniform3fv(p.location('uBackground'), background);
+  // In the reflection target's levels: its scale to the frame's pixels added.
+  const level = rough.fixedLevel < 0 ? -1 : rough.fixedLevel + Math.log2(rough.reflectionWidth / state.width);
+  gl.uniform1f(p.location('uFixedLevel'), level);
   gl.uniform1i(p.location('uTransmission'), 2);
+  gl.uniform1i(p.location('uReflectionCodes'), 3);
+  gl.uniform1i(p.location('uTransmissionCodes'), 4);
   gl.activeTexture(gl.TEXTURE2);
   gl.bindTexture(gl.TEXTURE_2D, rough.transmission);
+  gl.activeTexture(gl.TEXTURE3);
+  gl.bindTexture(gl.TEXTURE_2D, rough.reflectionCodes);
+  gl.activeTexture(gl.TEXTURE4);
+  gl.bindTexture(gl.TEXTURE_2D, rough.transmissionCodes);
 }
 
 /**
@@ -64,7 +86,9 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
   const { gl, setup, state } = ctx;
   const program = ctx.programs.glass(state.fresnel, outputFresnel, rough !== null);
   gl.enable(gl.DEPTH_TEST);
-  gl.depthMask(false);
+  // Rough, the glass is opaque: its depth hides what lies beyond it from the transparent objects
+  // drawn after it (renderer.ts).
+  gl.depthMask(rough !== null);
   // Pushed back a hair — a constant, not scaled by its depth slope, which at grazing incidence
   // let objects behind the glass cover it — so a face of an object on the viewer's side lying in
   // the glass plane stays in front of it instead of z-fighting; objects on the plane or beyond
@@ -93,8 +117,10 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
     ctx.glassMesh.draw();
   } finally {
     if (rough) {
-      gl.activeTexture(gl.TEXTURE2);
-      gl.bindTexture(gl.TEXTURE_2D, null);
+      for (const unit of ROUGH_UNITS) {
+        gl.activeTexture(unit);
+        gl.bindTexture(gl.TEXTURE_2D, null);
+      }
       gl.activeTexture(gl.TEXTURE1);
     }
     gl.bindTexture(gl.TEXTURE_2D, null);

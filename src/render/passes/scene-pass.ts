@@ -1,10 +1,11 @@
 // Pass 2: the objects from the real eye, depth-tested. `depthOnly` primes depth for the
-// Fresnel debug view without writing colour.
-import { drawObjects, prepareObjectPrograms } from './draw-objects';
+// Fresnel debug view without writing colour. `selection`: with rough glass the opaque objects
+// before it and the transparent ones after it (renderer.ts).
+import { drawObjects, prepareObjectPrograms, type Selection } from './draw-objects';
 import type { PassContext } from './pass-context';
 
 /** Draws into the bound framebuffer and viewport; returns the number of draw calls. */
-export function scenePass(ctx: PassContext, depthOnly = false): number {
+export function scenePass(ctx: PassContext, depthOnly = false, selection: Selection = 'all'): number {
   const { gl } = ctx;
   prepareObjectPrograms(ctx, 'none');
   gl.enable(gl.DEPTH_TEST);
@@ -12,7 +13,7 @@ export function scenePass(ctx: PassContext, depthOnly = false): number {
   if (ctx.setup.mirrorsWinding) gl.frontFace(gl.CW);
   if (depthOnly) gl.colorMask(false, false, false, false);
   try {
-    return drawObjects(ctx, 'none', false, ctx.state.height);
+    return drawObjects(ctx, 'none', false, ctx.state.height, null, selection);
   } finally {
     if (depthOnly) gl.colorMask(true, true, true, true);
     gl.frontFace(gl.CCW);
