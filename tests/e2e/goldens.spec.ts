@@ -4,7 +4,8 @@
 // Pixels come from the element's capture() (read back from GL), not page.screenshot(), so fonts
 // and compositing cannot interfere. Regenerate with `npm run goldens` after looking at the change.
 import path from 'node:path';
-import { test, expect, mount, openPage, capture, type RgbaImage } from './fixtures';
+import { test, expect, mount, openPage, capture, nextFrame, type RgbaImage } from './fixtures';
+import { mountHtml } from './helpers/scene-children';
 import { compareToGolden, GOLDEN_DIR, readPng } from './helpers/golden';
 
 const SIZE = { width: 320, height: 180 };
@@ -55,4 +56,21 @@ test('README picture with color-space none: the frame before color-space, byte f
   await openPage(page);
   await mount(page, { time: 1.25, 'color-space': 'none' }, { width: 640, height: 360 });
   expect(bytesDifferingFromNone('readme-default-view', await capture(page))).toBe(0);
+});
+
+// The README's rough glass (SPEC §14): the bench's floor — a cube resting on the glass, a sphere
+// 1.5 above it — at roughness 0.3 and ior 10, where the glass shows mostly the reflection: sharp
+// at the cube's contact, the sphere's light spread wide.
+test('README picture: a rough glass floor at 640×360', async ({ page }) => {
+  await openPage(page);
+  await mountHtml(page, `<glass-plane-scene time="0" spin="0" pixel-ratio="1" ior="10" roughness="0.3"
+    glass-center="0 0 0" glass-normal="0 1 0" glass-size="8 8" background="0.1 0.1 0.12"
+    camera-position="0.3 1.9 5.2" camera-target="0 0.6 0">
+    <glass-object shape="cube" position="-0.9 0.5 0.2" rotation="0 25 0" diffuse="0.9 0.3 0.3" ambient="0.9 0.3 0.3"></glass-object>
+    <glass-object shape="sphere" position="0.9 2 -0.2" diffuse="0.3 0.8 0.4" ambient="0.3 0.8 0.4"></glass-object>
+  </glass-plane-scene>`);
+  await nextFrame(page, 'glass-plane-scene', (el) => { el.style.width = '640px'; el.style.height = '360px'; });
+  const image = await capture(page);
+  expect([image.width, image.height]).toEqual([640, 360]);
+  compareToGolden('readme-rough-floor', image);
 });
