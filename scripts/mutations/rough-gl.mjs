@@ -9,7 +9,7 @@ export default [
     name: 'W1 the transmission left sharp when rough (B̃ never gathered)',
     edits: [{
       file: GATHER,
-      find: '  vec4 acc = roughGather(uTransmission, uTransmissionSize, J, false);\n  return acc.a > 0.0 ? acc.rgb / acc.a : sharp;',
+      find: '  vec4 acc = roughGather(uTransmission, uTransmissionCodes, uTransmissionSize, J, false);\n  return acc.a > 0.0 ? acc.rgb / acc.a : sharp;',
       replace: '  return sharp;',
     }],
     tests: [ROUGH],
@@ -55,8 +55,8 @@ export default [
     tests: [ROUGH],
   },
   {
-    name: 'W10 the mip chain not rebuilt after the distance pass (levels above 0 left empty)',
-    edits: [{ file: 'src/render/gl/mip-target.ts', find: '    gl.generateMipmap(gl.TEXTURE_2D);\n', replace: '' }],
+    name: 'W10 the codes\' mip chain not rebuilt after the distance pass (levels above 0 left empty)',
+    edits: [{ file: 'src/render/gl/mip-target.ts', find: '    gl.bindTexture(gl.TEXTURE_2D, this.codes);\n    gl.generateMipmap(gl.TEXTURE_2D);\n', replace: '' }],
     tests: [ROUGH],
   },
   {
