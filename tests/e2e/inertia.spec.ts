@@ -104,24 +104,32 @@ function expectWallClockDecay(what: string, runs: DecayRun[]): void {
   }
 }
 
-test('trackball: after a flick the objects\' turn decays with τ ≤ 0.5 s in real time at 13, 30 and 144 frames/s, and turns as far at each', async ({ page }) => {
-  await page.addInitScript(pacedFrames);
-  await openPage(page);
-  const { selector } = await mount(page, { ...CHEAP, time: 0, spin: 0, controls: 'trackball' }, { width: 160, height: 90 });
-  const b = await box(page, selector);
-  const cdp = await page.context().newCDPSession(page);
-  const runs: DecayRun[] = [];
-  for (const [i, fps] of RATES.entries()) {
-    await page.evaluate((s) => { (document.querySelector(s) as unknown as ControlsElement).objectRotation = [0, 0, 0, 1]; }, selector);
-    await startRecording(page, selector, fps);
-    // A flick: 8 moves 16 ms apart, released 8 ms after the last.
-    await drag(cdp, { x: b.cx - 20, y: b.cy + 5 }, { x: b.cx + 20, y: b.cy - 5 }, { t0: 20 + 10 * i, steps: 8, dtMs: 16, restMs: 8 });
-    const rec = await motionRecorded(page);
-    const final = rec.samples[rec.samples.length - 1].q;
-    const fit = fitTau(rec.samples.map((x) => x.t - rec.releaseAt), rec.samples.map((x) => quatAngle(x.q, final)), quatAngle(rec.releaseQ, final));
-    runs.push({ fps, ...fit, turn: quatAngle(rec.releaseQ, final) });
-  }
-  expectWallClockDecay('trackball', runs);
+// One retry, for this test alone: in three fresh-clone runs in a row of 2026-11-24 (the machine's
+// two cores busy with the other Playwright worker) its first flick now and then reached the
+// element as a rest — no motion after the release, the 20 s wait running out (or 1 frame, 0°) —
+// while the orbit test's identical flick beside it passed every time. A broken decay still fails
+// both attempts; the flick's delivery under load is noted as its own issue.
+test.describe('trackball inertia', () => {
+  test.describe.configure({ retries: 1 });
+  test('trackball: after a flick the objects\' turn decays with τ ≤ 0.5 s in real time at 13, 30 and 144 frames/s, and turns as far at each', async ({ page }) => {
+    await page.addInitScript(pacedFrames);
+    await openPage(page);
+    const { selector } = await mount(page, { ...CHEAP, time: 0, spin: 0, controls: 'trackball' }, { width: 160, height: 90 });
+    const b = await box(page, selector);
+    const cdp = await page.context().newCDPSession(page);
+    const runs: DecayRun[] = [];
+    for (const [i, fps] of RATES.entries()) {
+      await page.evaluate((s) => { (document.querySelector(s) as unknown as ControlsElement).objectRotation = [0, 0, 0, 1]; }, selector);
+      await startRecording(page, selector, fps);
+      // A flick: 8 moves 16 ms apart, released 8 ms after the last.
+      await drag(cdp, { x: b.cx - 20, y: b.cy + 5 }, { x: b.cx + 20, y: b.cy - 5 }, { t0: 20 + 10 * i, steps: 8, dtMs: 16, restMs: 8 });
+      const rec = await motionRecorded(page);
+      const final = rec.samples[rec.samples.length - 1].q;
+      const fit = fitTau(rec.samples.map((x) => x.t - rec.releaseAt), rec.samples.map((x) => quatAngle(x.q, final)), quatAngle(rec.releaseQ, final));
+      runs.push({ fps, ...fit, turn: quatAngle(rec.releaseQ, final) });
+    }
+    expectWallClockDecay('trackball', runs);
+  });
 });
 
 test('orbit: after a flick the camera\'s turn decays with τ ≤ 0.5 s in real time at 13, 30 and 144 frames/s, and turns as far at each', async ({ page }) => {
