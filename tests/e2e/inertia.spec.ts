@@ -104,13 +104,7 @@ function expectWallClockDecay(what: string, runs: DecayRun[]): void {
   }
 }
 
-// One retry, for this test alone: in three fresh-clone runs in a row of 2026-11-24 (the machine's
-// two cores busy with the other Playwright worker) its first flick now and then reached the
-// element as a rest — no motion after the release, the 20 s wait running out (or 1 frame, 0°) —
-// while the orbit test's identical flick beside it passed every time. A broken decay still fails
-// both attempts; the flick's delivery under load is noted as its own issue.
 test.describe('trackball inertia', () => {
-  test.describe.configure({ retries: 1 });
   test('trackball: after a flick the objects\' turn decays with τ ≤ 0.5 s in real time at 13, 30 and 144 frames/s, and turns as far at each', async ({ page }) => {
     await page.addInitScript(pacedFrames);
     await openPage(page);

@@ -28,8 +28,13 @@ export const pose = (page: Page, s: string): Promise<Pose> => page.evaluate((s) 
 
 export const rotationOf = (page: Page, s: string) => page.evaluate((s) => (document.querySelector(s) as unknown as ControlsElement).objectRotation, s);
 
-/** CDP timestamps are seconds since the epoch; events before the page's time origin read 0. */
-export const EPOCH = Date.now() / 1000 + 60;
+/**
+ * CDP timestamps are seconds since the epoch; events before the page's time origin read 0. The
+ * base is fixed when a worker first loads this file, and a worker's pages open later and later:
+ * at +60 s, a page opened more than a minute on (the trackball inertia test, late in a full run)
+ * got every drag's events at 0 — no time between them, no flick. Three hours outlasts any run.
+ */
+export const EPOCH = Date.now() / 1000 + 3 * 3600;
 
 /**
  * Mouse drag through CDP: press at `from`, `steps` moves to `to`, `dtMs` apart, release `restMs`
