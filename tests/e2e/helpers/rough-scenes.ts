@@ -2,38 +2,15 @@
 // reflection sharp at the contact) and a sphere whose lowest point is 1.5 above it (blurred), as
 // on the bench's rough floor; and SPEC §3's glass wall with the cube in front of it (reflected)
 // and the sphere behind it (seen through it, blurred by the transmission).
-import { DEFAULT_LIGHT, defaultScene } from '../../../src/scene/default-scene';
+import { DEFAULT_LIGHT, defaultMaterial, defaultScene } from '../../../src/scene/default-scene';
+import { roughFloorScene, SPHERE_HEIGHT } from '../../../bench/rough-scene';
 import type { FrameState } from '../../../src/frame/types';
-import type { Material, Scene, Vec3 } from '../../../src/scene/scene';
+import type { Scene, Vec3 } from '../../../src/scene/scene';
 import { lookAt } from './stability';
 
-/** SPEC §3's object material: Ka = Kd = albedo (⊙ the procedural texture), Ks 0.5, shininess 32. */
-const material = (albedo: Vec3): Material => ({
-  ambient: albedo, diffuse: albedo, specular: [0.5, 0.5, 0.5], shininess: 32, opacity: 1, texture: { kind: 'procedural' }, mapping: 'uv',
-});
-
-/** The sphere's lowest point above the floor. */
-export const SPHERE_HEIGHT = 1.5;
-
-export const FLOOR_SCENE: Scene = {
-  glass: { center: [0, 0, 0], normal: [0, 1, 0], size: [8, 8] },
-  objects: [
-    {
-      geometry: { kind: 'box', size: 1 },
-      transform: { position: [-0.9, 0.5, 0.2], rotation: [0, 25, 0], scale: [1, 1, 1], spin: 0 },
-      material: material([0.9, 0.3, 0.3]),
-      bounds: { center: [0, 0, 0], radius: Math.sqrt(3) / 2 },
-    },
-    {
-      geometry: { kind: 'sphere', radius: 0.5 },
-      transform: { position: [0.9, SPHERE_HEIGHT + 0.5, -0.2], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
-      material: material([0.3, 0.8, 0.4]),
-      bounds: { center: [0, 0, 0], radius: 0.5 },
-    },
-  ],
-  lights: [DEFAULT_LIGHT],
-  background: [0.1, 0.1, 0.12],
-};
+/** The bench's rough floor (bench/rough-scene.ts): one scene for the bench and the tests. */
+export { SPHERE_HEIGHT };
+export const FLOOR_SCENE: Scene = roughFloorScene();
 
 /** SPEC §3's scene: the cube 0.75 in front of the glass wall z = 0, the sphere 1.5 behind it. */
 export const WALL_SCENE: Scene = defaultScene(0.75, 0);
@@ -82,7 +59,7 @@ export const HORIZON_SCENE: Scene = {
   objects: [{
     geometry: { kind: 'box', size: 1 },
     transform: { position: [0, 2, -25], rotation: [0, 0, 0], scale: [16, 4, 1], spin: 0 },
-    material: { ...material([1, 0.9, 0.4]), texture: { kind: 'none' } },
+    material: { ...defaultMaterial([1, 0.9, 0.4]), texture: { kind: 'none' } },
     bounds: { center: [0, 0, 0], radius: 9 },
   }],
   lights: [DEFAULT_LIGHT],
