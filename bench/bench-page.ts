@@ -170,7 +170,8 @@ const api = {
   },
 
   /** Issue 21's rough floor (bench/rough-scene.ts) in frame state `s`: ms per frame over `frames` after `warmup`. */
-  roughTime(s: FrameState, frames: number, warmup: number): number {
+  async roughTime(s: FrameState, frames: number, warmup: number): Promise<number> {
+    await renderer.load(s);
     resize(oursCanvas, s);
     const scene = (roughScene ??= roughFloorScene());
     for (let i = 0; i < warmup; i++) renderer.render(s, scene);
@@ -181,7 +182,8 @@ const api = {
     return (performance.now() - t0) / frames;
   },
 
-  roughPixels(s: FrameState): { width: number; height: number; data: string } {
+  async roughPixels(s: FrameState): Promise<{ width: number; height: number; data: string }> {
+    await renderer.load(s);
     resize(oursCanvas, s);
     const px = renderer.read('screen', s, (roughScene ??= roughFloorScene()));
     return { width: px.width, height: px.height, data: toBase64(px.data) };

@@ -34,8 +34,8 @@ const RUNS = SMOKE ? 1 : 3;
 type Page = import('@playwright/test').Page;
 interface Bench {
   bench: {
-    roughTime(s: FrameState, frames: number, warmup: number): number;
-    roughPixels(s: FrameState): { width: number; height: number; data: string };
+    roughTime(s: FrameState, frames: number, warmup: number): Promise<number>;
+    roughPixels(s: FrameState): Promise<{ width: number; height: number; data: string }>;
     info(): { renderer: string };
   };
 }

@@ -1,7 +1,9 @@
 // Rough glass in the WebGL renderer (SPEC §14): the gather of shaders/rough-glass.glsl and the
-// mip-mapped images render/rough-targets.ts draws for it.
+// mip-mapped images render/rough-targets.ts draws for it, in a chunk loaded when a frame first
+// asks for roughness (render/rough-loader.ts, element/webgl-backend.ts).
 // Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
 const ROUGH = 'tests/e2e/rough-glass.spec.ts';
+const ELEMENT = 'tests/e2e/rough-element.spec.ts';
 const GATHER = 'shaders/rough-glass.glsl';
 
 export default [
@@ -61,7 +63,7 @@ export default [
   },
   {
     name: 'W11 the renderer\'s dispose forgets the rough targets',
-    edits: [{ file: 'src/render/renderer.ts', find: '    this.rough?.dispose();\n', replace: '' }],
+    edits: [{ file: 'src/render/rough-loader.ts', find: '    this.targets?.dispose();\n', replace: '' }],
     tests: [ROUGH],
   },
   {
@@ -76,12 +78,32 @@ export default [
   },
   {
     name: 'W14 the transparent objects drawn before the rough glass (it erases those in front of it)',
-    edits: [{ file: 'src/render/renderer.ts', find: "return scenePass(ctx, false, 'opaque') + glassPass(ctx, r.reflectionColor, false, r.inputs) + scenePass(ctx, false, 'transparent');", replace: 'return scenePass(ctx) + glassPass(ctx, r.reflectionColor, false, r.inputs);' }],
+    edits: [{ file: 'src/render/renderer.ts', find: "return scenePass(ctx, false, 'opaque') + glassPass(ctx, r.reflectionColor, false, r) + scenePass(ctx, false, 'transparent');", replace: 'return scenePass(ctx) + glassPass(ctx, r.reflectionColor, false, r);' }],
     tests: [ROUGH],
   },
   {
     name: 'W15 the rough glass leaves no depth (transparent objects beyond it drawn over it)',
     edits: [{ file: 'src/render/passes/glass-pass.ts', find: '  gl.depthMask(rough !== null);', replace: '  gl.depthMask(false);' }],
+    tests: [ROUGH],
+  },
+  {
+    name: 'W16 the element draws its first rough frame before rough glass\'s chunk is in (polished, then rough)',
+    edits: [{ file: 'src/element/webgl-backend.ts', find: '      return;\n    }\n    const { width, height } = this.host.canvas;', replace: '    }\n    const { width, height } = this.host.canvas;' }],
+    tests: [ELEMENT],
+  },
+  {
+    name: 'W17 no frame asked for once the chunk is in (the element waits for ever)',
+    edits: [{ file: 'src/element/webgl-backend.ts', find: '        if (!this.disposed) this.host.requestRender();\n', replace: '' }],
+    tests: [ELEMENT],
+  },
+  {
+    name: 'W18 a chunk that fails to load goes unreported',
+    edits: [{ file: 'src/element/webgl-backend.ts', find: 'loading.catch((e: unknown) => warn(`rough glass could not load (${String(e).slice(0, 200)}); drawing the glass polished`))', replace: 'loading.catch(() => undefined)' }],
+    tests: [ELEMENT],
+  },
+  {
+    name: 'W19 the renderer takes a rough frame as rough before its chunk is in',
+    edits: [{ file: 'src/render/rough-loader.ts', find: 'return (state.roughness ?? 0) > 0 && this.chunk !== null;', replace: 'return (state.roughness ?? 0) > 0;' }],
     tests: [ROUGH],
   },
 ];

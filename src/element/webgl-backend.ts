@@ -5,6 +5,7 @@ import type { FrameState, RenderStats } from '../render/types';
 import type { Scene } from '../scene/scene';
 import type { Backend, BackendHost } from './backend';
 import type { Presenter, SharedContext } from './shared-context';
+import { warn } from './warnings';
 
 function checksEnabled(): boolean {
   return (globalThis as { __GLASS_PLANE_SCENE_CHECKS__?: unknown }).__GLASS_PLANE_SCENE_CHECKS__ === true;
@@ -12,7 +13,9 @@ function checksEnabled(): boolean {
 
 export class WebGLBackend implements Backend {
   readonly kind = 'webgl';
-  readonly busy = false;
+  /** Waiting for a part of the renderer a frame needs (rough glass's chunk): that frame is drawn once it is in. */
+  busy = false;
+  private disposed = false;
   private readonly renderer: Renderer;
 
   /** Throws what the renderer's constructor throws (a shader that fails, a lost context). */
@@ -25,6 +28,16 @@ export class WebGLBackend implements Backend {
   }
 
   draw(state: FrameState, scene: Scene): void {
+    // The first frame that needs a lazy part waits for it rather than show the glass polished.
+    const loading = this.renderer.load(state);
+    if (loading) {
+      this.busy = true;
+      loading.catch((e: unknown) => warn(`rough glass could not load (${String(e).slice(0, 200)}); drawing the glass polished`)).finally(() => {
+        this.busy = false;
+        if (!this.disposed) this.host.requestRender();
+      });
+      return;
+    }
     const { width, height } = this.host.canvas;
     let report;
     try {
@@ -54,6 +67,7 @@ export class WebGLBackend implements Backend {
   }
 
   dispose(): RenderStats {
+    this.disposed = true;
     const last = this.renderer.stats;
     this.renderer.dispose();
     return last;

@@ -6,11 +6,8 @@ import glassFrag from '../../shaders/glass.frag?raw';
 import blitVert from '../../shaders/blit.vert?raw';
 import blitFrag from '../../shaders/blit.frag?raw';
 import encodeFrag from '../../shaders/encode.frag?raw';
-import distanceFrag from '../../shaders/distance.frag?raw';
-import roughGlass from '../../shaders/rough-glass.glsl?raw';
 import lighting from '../../shaders/lighting.glsl?raw';
 import type { FresnelModel } from '../math/fresnel';
-import { ROUGH_FIRST_RING, ROUGH_MAX_RINGS, ROUGH_REACH } from '../frame/rough-glass';
 import type { Shading } from '../frame/types';
 import { MAPPINGS, MAX_LIGHTS, type Mapping } from '../scene/scene';
 import { Program, ShaderError } from './gl/program';
@@ -45,19 +42,23 @@ function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant): str
 /** The marker line in glass.frag where its ROUGH variant takes rough-glass.glsl (after the declarations it reads). */
 const ROUGH_MARKER = '// shaders/rough-glass.glsl is put here (render/programs.ts).\n';
 
-/** A number as a GLSL float literal. */
-const glslFloat = (x: number): string => (Number.isInteger(x) ? x.toFixed(1) : String(x));
+/**
+ * Rough glass's shader parts (SPEC §14). They live in rough glass's own chunk
+ * (rough-glass-gl.ts), which the renderer loads the first time a frame's glass is rough.
+ */
+export interface RoughSources {
+  /** shaders/rough-glass.glsl: the gather, put into glass.frag at ROUGH_MARKER. */
+  gather: string;
+  /** shaders/distance.frag: depth → distance codes. */
+  distance: string;
+  /** The ROUGH variant's #define lines. */
+  defines: string[];
+}
 
-function glassHeader(model: FresnelModel, outputFresnel: boolean, rough = false): string[] {
+function glassHeader(model: FresnelModel, outputFresnel: boolean, roughDefines: string[] = []): string[] {
   const header = [`#define FRESNEL_${model.toUpperCase()}`];
   if (outputFresnel) header.push('#define OUTPUT_FRESNEL');
-  // SPEC §14's gather, with frame/rough-glass.ts's constants (the software renderer reads the same).
-  if (rough) {
-    header.push(
-      '#define ROUGH', `#define ROUGH_FIRST_RING ${glslFloat(ROUGH_FIRST_RING)}`, `#define ROUGH_REACH ${glslFloat(ROUGH_REACH)}`,
-      `#define ROUGH_MAX_RINGS ${ROUGH_MAX_RINGS}`,
-    );
-  }
+  header.push(...roughDefines);
   return header;
 }
 
@@ -76,6 +77,8 @@ export class ProgramCache {
   private blitProgram: Program | undefined;
   private encodeProgram: Program | undefined;
   private distanceProgram: Program | undefined;
+  /** Rough glass's shader parts, once its chunk has loaded (setRoughSources). */
+  private rough: RoughSources | null = null;
   /**
    * Variants that failed to compile, by key: asked again (the same state drawn again), they throw
    * the same error without compiling again. A new context means a new cache, so a restore retries.
@@ -100,12 +103,24 @@ export class ProgramCache {
     ));
   }
 
+  /** Takes rough glass's shader parts once its chunk has loaded (Renderer.loadRough). */
+  setRoughSources(sources: RoughSources): void {
+    this.rough = sources;
+  }
+
+  private roughSources(): RoughSources {
+    if (!this.rough) throw new Error('glass-plane-scene: a rough glass program was asked for before its chunk loaded');
+    return this.rough;
+  }
+
   /** `rough`: SPEC §14's gather (the colour variant only; roughness 0 never asks for it). */
   glass(model: FresnelModel, outputFresnel: boolean, rough = false): Program {
     const variants = (this.glasses[model] ??= {});
     if (rough && !outputFresnel) {
-      return (variants.rough ??= this.build(
-        `glass:${model}:false:rough`, glassVert, glassFrag.replace(ROUGH_MARKER, () => roughGlass), glassHeader(model, false, true),
+      if (variants.rough) return variants.rough;
+      const { gather, defines } = this.roughSources();
+      return (variants.rough = this.build(
+        `glass:${model}:false:rough`, glassVert, glassFrag.replace(ROUGH_MARKER, () => gather), glassHeader(model, false, defines),
       ));
     }
     return outputFresnel
@@ -124,7 +139,7 @@ export class ProgramCache {
 
   /** Rough glass's distance code into a target's alpha (shaders/distance.frag), with the blit's triangle. */
   distance(): Program {
-    return (this.distanceProgram ??= this.build('distance', blitVert, distanceFrag, []));
+    return (this.distanceProgram ??= this.build('distance', blitVert, this.roughSources().distance, []));
   }
 
   private build(key: string, vert: string, frag: string, header: string[]): Program {

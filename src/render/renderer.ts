@@ -9,6 +9,7 @@ import { reflectionScissor, reflectionTargetSide } from '../frame/reflection-sci
 import { findNonFinite } from '../frame/finite-check';
 import { glassSkipReason, PASSES, passesFor } from '../frame/pass-reports';
 import { maxTargetSize } from './gl/limits';
+import { reportGlErrors } from './gl/errors';
 import { ResourceCounter } from './gl/resource-counter';
 import { TextureCache } from './texture-cache';
 import { LinearFrame } from './linear-frame';
@@ -22,7 +23,7 @@ import { beginTarget, type PassContext } from './passes/pass-context';
 import { reflectionPass } from './passes/reflection-pass';
 import { scenePass } from './passes/scene-pass';
 import { glassPass } from './passes/glass-pass';
-import { isRough, RoughTargets } from './rough-targets';
+import { RoughLoader } from './rough-loader';
 import { glassMesh } from '../scene/geometry/rectangle';
 import { DefaultSceneCache } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
@@ -72,8 +73,8 @@ export class Renderer {
   /** Multisampled stand-ins, created only when `samples` > 0. */
   private reflectionMsaa: MultisampleTarget | null = null;
   private mainMsaa: MultisampleTarget | null = null;
-  /** Rough glass's mip-mapped images (SPEC §14), made on the first rough frame. */
-  private rough: RoughTargets | null = null;
+  /** Rough glass (SPEC §14): its chunk, loaded by load(), and its mip-mapped images. */
+  private readonly rough: RoughLoader;
   private readonly maxSamples: number;
   /** Can the context render to RGBA16F (EXT_color_buffer_float)? */
   private readonly canHalfFloat: boolean;
@@ -118,6 +119,7 @@ export class Renderer {
     this.reflection = new RenderTarget(gl, c, 'srgb8'); // the default color-space's; prepare() remakes it for another
     this.blitVao = gl.createVertexArray()!;
     c.add('vertexArrays');
+    this.rough = new RoughLoader(gl, c, this.programs, this.blitVao, this.maxTargetSize, this.canHalfFloat);
     this.linearFrame = new LinearFrame(gl, c, this.programs, this.blitVao);
     this.ctx = {
       gl, programs: this.programs, objectMeshes: this.objectMeshes, glassMesh: this.glassMesh, textures: this.textures, background: this.background,
@@ -146,8 +148,18 @@ export class Renderer {
       if (passes[p].ran) this.counts.passesRun[p]++;
       else this.counts.passesSkipped[p]++;
     }
-    if (this.options.checks) this.checkErrors();
+    if (this.options.checks) reportGlErrors(this.gl, this.counts.frames);
     return r;
+  }
+
+  /**
+   * Loads what `state` needs that the core leaves out — rough glass's passes and shaders
+   * (SPEC §14) — or returns null when nothing is missing. Until it resolves, render() and read()
+   * draw that glass polished. Asked again while loading: the same promise. A chunk that fails to
+   * load rejects; after that this returns null and the glass stays polished.
+   */
+  load(state: FrameState): Promise<void> | null {
+    return this.rough.load(state);
   }
 
   /**
@@ -204,8 +216,7 @@ export class Renderer {
     this.reflectionMsaa?.dispose();
     this.mainMsaa?.dispose();
     this.reflectionMsaa = this.mainMsaa = null;
-    this.rough?.dispose();
-    this.rough = null;
+    this.rough.dispose();
     this.glassMesh.dispose();
     this.textures.dispose();
     this.shared.release();
@@ -237,11 +248,9 @@ export class Renderer {
     const rect = glassScreenRect(this.setup.viewProjection, this.setup.eye, state.width, state.height, this.glassRect, this.setup.glass.corners);
     this.glassSkipReason = glassSkipReason(this.setup, rect, this.optimize);
     this.ctx.cull = this.optimize;
-    // Clamped like the canvas: the glass reads it with normalised coordinates, so a smaller
-    // target still lines up.
-    // rgba16f: at grazing incidence F nears 1 and an 8-bit reflection's rounding shows through
-    // undimmed (+3.6 dB on the glass at 89° in the bench); it falls back to rgba8 where the
-    // context cannot render to half float.
+    // Clamped like the canvas (the glass reads it with normalised coordinates). rgba16f: at
+    // grazing incidence F nears 1 and an 8-bit reflection's rounding shows through undimmed
+    // (+3.6 dB on the glass at 89° in the bench); rgba8 where half float cannot be rendered to.
     // In linear light an 8-bit reflection is held encoded (SRGB8_ALPHA8): linear in 8 bits bands.
     const format = state.reflectionFormat === 'rgba16f' && this.canHalfFloat ? 'rgba16f' : srgb ? 'srgb8' : 'rgba8';
     if (format !== this.reflection.format) {
@@ -287,12 +296,6 @@ export class Renderer {
     return msaa;
   }
 
-  /** SPEC §14: rough glass's images, before the glass pass (rough-targets.ts). Returns the draw calls. */
-  private drawRough(): number {
-    this.rough ??= new RoughTargets(this.gl, this.counter, this.programs, this.blitVao, this.maxTargetSize, this.canHalfFloat);
-    return this.rough.draw(this.ctx, this.reflection, this.reflectionSamples());
-  }
-
   /** Draws `state.view` into `destination` (null = canvas), multisampled when asked. */
   private draw(state: FrameState, destination: WebGLFramebuffer | null): number {
     this.prepare(state);
@@ -331,7 +334,8 @@ export class Renderer {
           beginTarget(this.gl, framebuffer, full, this.background);
           return scenePass(ctx);
         }
-        const rough = isRough(state), n = rough ? this.drawRough() : this.runReflection(true);
+        const rough = this.rough.active(state);
+        const n = rough ? this.rough.draw(this.ctx, this.reflection, this.reflectionSamples()) : this.runReflection(true);
         beginTarget(this.gl, framebuffer, full, this.background);
         return n + this.sceneAndGlass(rough);
       }
@@ -354,8 +358,8 @@ export class Renderer {
     const bottom = Math.floor(height / 2);
     const top = height - bottom;
     const t = this.tile;
-    const rough = isRough(ctx.state) && this.glassSkipReason === undefined;
-    let n = (rough ? this.drawRough() : 0) + this.runReflection();
+    const rough = this.rough.active(ctx.state) && this.glassSkipReason === undefined;
+    let n = (rough ? this.rough.draw(this.ctx, this.reflection, this.reflectionSamples()) : 0) + this.runReflection();
     n += this.blit(framebuffer, setViewport(t, 0, bottom, left, top));
     beginTarget(this.gl, framebuffer, setViewport(t, left, bottom, right, top), this.background);
     n += scenePass(ctx);
@@ -364,11 +368,11 @@ export class Renderer {
     return n + this.sceneAndGlass(rough);
   }
 
-  /** Passes 2 and 3; rough (after drawRough), the opaque glass then the transparent objects, which it erased drawn first. */
+  /** Passes 2 and 3; rough (after RoughLoader.draw), the opaque glass then the transparent objects, which it erased drawn first. */
   private sceneAndGlass(rough: boolean): number {
-    const ctx = this.ctx, r = this.rough;
+    const ctx = this.ctx, r = this.rough.current;
     if (!rough || !r) return scenePass(ctx) + glassPass(ctx, this.reflection.color);
-    return scenePass(ctx, false, 'opaque') + glassPass(ctx, r.reflectionColor, false, r.inputs) + scenePass(ctx, false, 'transparent');
+    return scenePass(ctx, false, 'opaque') + glassPass(ctx, r.reflectionColor, false, r) + scenePass(ctx, false, 'transparent');
   }
 
   private blit(framebuffer: WebGLFramebuffer | null, vp: Viewport): number {
@@ -389,12 +393,5 @@ export class Renderer {
   private checkFinite(state: FrameState): void {
     const bad = findNonFinite(this.setup, state, this.ctx.scene.objects.length);
     if (bad) console.error(`glass-plane-scene: non-finite uniform ${bad} in frame ${this.counts.frames + 1}`);
-  }
-
-  private checkErrors(): void {
-    const gl = this.gl;
-    for (let e = gl.getError(), i = 0; e !== gl.NO_ERROR && i < 8; e = gl.getError(), i++) {
-      console.error(`glass-plane-scene: WebGL error 0x${e.toString(16)} after frame ${this.counts.frames}`);
-    }
   }
 }

@@ -3,8 +3,9 @@
 // glass, each into a mip-mapped target whose alpha holds the coverage c (1 where a surface was
 // drawn) and whose codes hold c·u, u = h/(1 + h) frame/rough-glass.ts's distance code
 // (shaders/distance.frag, from the pass's depth, resolved with the colour when multisampled).
-// shaders/rough-glass.glsl gathers R̃ and B̃ from them. Made on the first rough frame, kept
-// while the renderer lives; nothing is allocated per frame.
+// shaders/rough-glass.glsl gathers R̃ and B̃ from them (bind() sets its inputs). In rough glass's
+// own chunk (rough-glass-gl.ts); made on the first rough frame, kept while the renderer lives;
+// nothing is allocated per frame.
 import { mat4 } from 'gl-matrix';
 import { MipTarget } from './gl/mip-target';
 import { MultisampleTarget } from './gl/multisample-target';
@@ -12,20 +13,43 @@ import type { RenderTarget, TargetFormat } from './gl/render-target';
 import type { ResourceCounter } from './gl/resource-counter';
 import type { ProgramCache } from './programs';
 import type { PassContext } from './passes/pass-context';
-import type { RoughGlassInputs } from './passes/glass-pass';
+import type { RoughBinding } from './passes/glass-pass';
+import type { Program } from './gl/program';
 import { reflectionPass } from './passes/reflection-pass';
 import { transmissionPass } from './passes/transmission-pass';
 import { eyeRelativePlane } from '../math/mirror';
 import { ggxAlpha } from '../math/ggx';
-import { ROUGH_GATHER } from '../frame/rough-glass';
-import type { FrameState } from '../frame/types';
+import { ROUGH_GATHER, type RoughGatherSettings } from '../frame/rough-glass';
 
-/** Is the glass rough this frame? Roughness absent, 0 or not a number: polished, and nothing here runs. */
-export function isRough(state: FrameState): boolean {
-  return (state.roughness ?? 0) > 0;
+/** What the rough variant reads beyond the sharp glass's inputs (filled in place each frame). */
+interface RoughGlassInputs {
+  /** GGX α = roughness². */
+  alpha: number;
+  settings: RoughGatherSettings;
+  /** The mip-mapped reflection (the distance code in alpha) and its size in texels. */
+  reflectionWidth: number;
+  reflectionHeight: number;
+  reflectionTextureWidth: number;
+  reflectionTextureHeight: number;
+  /** The frame beyond the glass, mip-mapped likewise; null when the glass lets nothing through. */
+  transmission: WebGLTexture | null;
+  transmissionWidth: number;
+  transmissionHeight: number;
+  transmissionTextureWidth: number;
+  transmissionTextureHeight: number;
+  /** Each image's codes (coverage × distance code in alpha), mip-mapped as the image. */
+  reflectionCodes: WebGLTexture | null;
+  transmissionCodes: WebGLTexture | null;
+  /** The inverse of the frame's eye-relative view-projection (float32). */
+  inverseViewProjection: Float32Array;
+  /** FrameState.fixedBlurLevel (≥ 0), or −1: the gather. */
+  fixedLevel: number;
 }
 
-export class RoughTargets {
+/** The texture units the rough variant binds beyond the sharp glass's (unbound after the draw). */
+const ROUGH_UNITS = [0x84c2, 0x84c3, 0x84c4]; // TEXTURE2..4
+
+export class RoughTargets implements RoughBinding {
   private reflection: MipTarget | null = null;
   private transmission: MipTarget | null = null;
   private transmissionMsaa: MultisampleTarget | null = null;
@@ -39,6 +63,11 @@ export class RoughTargets {
   private readonly inverse = this.inputs.inverseViewProjection;
   private readonly farSide64 = new Float64Array(4);
   private readonly farSide = new Float32Array(4);
+  /** Uploads (float32) of this frame's camera for the glass pass. */
+  private readonly viewProjection = new Float32Array(16);
+  private readonly normal = new Float32Array(3);
+  private readonly forward = new Float32Array(3);
+  private readonly background = new Float32Array(3);
 
   constructor(
     private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter,
@@ -164,6 +193,54 @@ export class RoughTargets {
     gl.colorMask(true, true, true, true);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     target.generateMips();
+  }
+
+  /** RoughBinding: the glass pass's rough inputs, after draw(). */
+  bind(p: Program, ctx: PassContext): void {
+    const gl = this.gl, rough = this.inputs;
+    const { setup, state } = ctx;
+    const { viewProjection, normal, forward, background } = this;
+    viewProjection.set(setup.viewProjection);
+    for (let k = 0; k < 3; k++) background[k] = ctx.background[k];
+    const plane = setup.glass.plane;
+    for (let k = 0; k < 3; k++) {
+      normal[k] = setup.side * plane[k];
+      forward[k] = setup.forward[k];
+    }
+    gl.uniformMatrix4fv(p.location('uViewProjection'), false, viewProjection);
+    gl.uniform3fv(p.location('uGlassNormal'), normal);
+    gl.uniform3fv(p.location('uForward'), forward);
+    gl.uniform1f(p.location('uOrthographic'), setup.orthographic ? 1 : 0);
+    gl.uniform1f(p.location('uAlpha'), rough.alpha);
+    gl.uniform1i(p.location('uAngles'), rough.settings.angles);
+    gl.uniform1f(p.location('uLodBias'), rough.settings.lodBias);
+    gl.uniform4f(p.location('uReflectionSize'), rough.reflectionWidth, rough.reflectionHeight, rough.reflectionTextureWidth, rough.reflectionTextureHeight);
+    gl.uniform4f(p.location('uTransmissionSize'), rough.transmissionWidth, rough.transmissionHeight, rough.transmissionTextureWidth, rough.transmissionTextureHeight);
+    gl.uniform1f(p.location('uTransmits'), rough.transmission ? 1 : 0);
+    gl.uniformMatrix4fv(p.location('uInverseViewProjection'), false, rough.inverseViewProjection);
+    gl.uniform3fv(p.location('uBackground'), background);
+    // In the reflection target's levels: its scale to the frame's pixels added.
+    const level = rough.fixedLevel < 0 ? -1 : rough.fixedLevel + Math.log2(rough.reflectionWidth / state.width);
+    gl.uniform1f(p.location('uFixedLevel'), level);
+    gl.uniform1i(p.location('uTransmission'), 2);
+    gl.uniform1i(p.location('uReflectionCodes'), 3);
+    gl.uniform1i(p.location('uTransmissionCodes'), 4);
+    gl.activeTexture(gl.TEXTURE2);
+    gl.bindTexture(gl.TEXTURE_2D, rough.transmission);
+    gl.activeTexture(gl.TEXTURE3);
+    gl.bindTexture(gl.TEXTURE_2D, rough.reflectionCodes);
+    gl.activeTexture(gl.TEXTURE4);
+    gl.bindTexture(gl.TEXTURE_2D, rough.transmissionCodes);
+  }
+
+  /** RoughBinding: unbinds units 2..4, unit 1 left active. */
+  unbind(): void {
+    const gl = this.gl;
+    for (const unit of ROUGH_UNITS) {
+      gl.activeTexture(unit);
+      gl.bindTexture(gl.TEXTURE_2D, null);
+    }
+    gl.activeTexture(gl.TEXTURE1);
   }
 
   dispose(): void {

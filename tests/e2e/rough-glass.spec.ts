@@ -4,7 +4,7 @@
 // today's frame exactly; a contact stays sharp while a far object's reflection blurs; every GL
 // object it makes goes with the renderer. Scenes: helpers/rough-scenes.ts.
 import { test, expect } from './fixtures';
-import { drawScene, openRendererPage } from './helpers/scene-json';
+import { drawScene, openRendererPage, sceneToJson } from './helpers/scene-json';
 import { MARGIN_DB, note } from './helpers/bounds';
 import { countGlObjects, glCensus, liveTotal } from './helpers/gl-census';
 import { maskedError, formatError } from './helpers/reference-match';
@@ -124,6 +124,17 @@ test('roughness 0 is the frame without it, bit for bit, final and passes views: 
   expect(Buffer.compare(Buffer.from(rough.data), Buffer.from(without.data))).not.toBe(0);
   expect(after.programs).toBeGreaterThan(before.programs);
   expect(after.resources.total).toBeGreaterThan(before.resources.total);
+});
+
+test('before its chunk has loaded (Renderer.load), rough glass is drawn polished; after, rough', async ({ page }) => {
+  const base = floorState({ width: W, height: H, roughness: 0.5 });
+  type Api = { __renderer: { drawNow(s: FrameState, sc: unknown): string } };
+  const now = (s: FrameState) => page.evaluate(([s, sc]) => (window as unknown as Api).__renderer.drawNow(s, sc), [s, sceneToJson(FLOOR_SCENE)] as const);
+  const early = await now(base);
+  const polished = await now({ ...base, roughness: 0 });
+  expect(early === polished, 'a rough state before load() draws the polished glass').toBe(true);
+  await drawScene(page, base, FLOOR_SCENE); // loads the chunk
+  expect(await now(base) === polished, 'after load() the same state is rough').toBe(false);
 });
 
 test('the passes view\'s final tile is rough, its reflection tile the sharp pass 1', async ({ page }) => {

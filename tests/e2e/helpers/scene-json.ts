@@ -27,7 +27,7 @@ export type Images = Record<string, { width: number; height: number; rgba: numbe
 /** `state.view` of `scene` drawn by the Renderer in the page. */
 export async function drawScene(page: Page, state: FrameState, scene: Scene, images: Images = {}): Promise<RgbaImage> {
   const b64 = await page.evaluate(
-    ({ state, scene, images }) => (window as unknown as { __renderer: { draw(s: unknown, sc: unknown, i: unknown): string } }).__renderer.draw(state, scene, images),
+    ({ state, scene, images }) => (window as unknown as { __renderer: { draw(s: unknown, sc: unknown, i: unknown): Promise<string> } }).__renderer.draw(state, scene, images),
     { state, scene: sceneToJson(scene), images },
   );
   const buf = Buffer.from(b64, 'base64');

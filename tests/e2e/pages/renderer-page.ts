@@ -36,8 +36,9 @@ function toBase64(bytes: Uint8ClampedArray): string {
 }
 
 const api = {
-  /** RGBA8 of `state.view` of `scene`, top row first, base64. */
-  draw(state: FrameState, scene: Scene, images: Record<string, { width: number; height: number; rgba: number[] }> = {}): string {
+  /** RGBA8 of `state.view` of `scene`, top row first, base64 (after loading what it needs: rough glass's chunk). */
+  async draw(state: FrameState, scene: Scene, images: Record<string, { width: number; height: number; rgba: number[] }> = {}): Promise<string> {
+    await renderer.load(state);
     canvas.width = state.width;
     canvas.height = state.height;
     for (const [url, img] of Object.entries(images)) {
@@ -47,6 +48,12 @@ const api = {
     const source = state.view === 'final' || state.view === 'scene' || state.view === 'reflection' ? state.view : state.view === 'passes' ? 'screen' : 'final';
     return toBase64(renderer.read(source, state, revive(scene)).data);
   },
+  /** A state drawn without loading first (rough glass before its chunk is in). */
+  drawNow(state: FrameState, scene: Scene): string {
+    canvas.width = state.width;
+    canvas.height = state.height;
+    return toBase64(renderer.read('final', state, revive(scene)).data);
+  },
   /** The renderer's stats after the last draw. */
   stats() {
     return renderer.stats;
@@ -55,7 +62,8 @@ const api = {
    * Mean ms per frame of `frames` frames of `state` drawn to the canvas, each waited for (a
    * one-pixel read), after one unmeasured frame (compiles, allocations). A rough figure only.
    */
-  time(state: FrameState, scene: Scene, frames: number): number {
+  async time(state: FrameState, scene: Scene, frames: number): Promise<number> {
+    await renderer.load(state);
     canvas.width = state.width;
     canvas.height = state.height;
     const s = revive(scene), px = new Uint8Array(4);
