@@ -3,6 +3,7 @@
 //   `vite build --mode standalone`  one self-contained minified file for <script type="module">
 import { defineConfig, type Plugin } from 'vite';
 import { demoModels } from './demo/demo-models.ts';
+import { glslMinify } from './scripts/glsl-minify.ts';
 
 /** `/` opens the demo, so `npm run demo` lands on it. */
 const demoAtRoot: Plugin = {
@@ -25,7 +26,7 @@ export default defineConfig(({ mode, command }) => {
   return {
     // Built files find their workers and chunks relative to their own URL, wherever they are served.
     base: command === 'build' ? './' : '/',
-    plugins: [demoAtRoot, demoModels()],
+    plugins: [demoAtRoot, demoModels(), glslMinify()],
     appType: 'mpa',
     // The software renderer's worker is a module worker (it imports the renderer's chunk).
     worker: { format: 'es' as const },

@@ -103,10 +103,22 @@ function run(cmd, args, cwd, env, log) {
 
 const strip = (s) => s.replace(/\x1b\[[0-9;]*m/g, '');
 
-/** Runs `tests` in `dir`: Playwright for *.spec.ts (own Vite on a free port), vitest for *.test.ts. */
-async function runTests(dir, tests, logName) {
+/**
+ * Runs `tests` in `dir`: Playwright for *.spec.ts (own Vite on a free port), vitest for *.test.ts.
+ * `build`: the library is built first (both vite builds), for specs that load dist/.
+ */
+async function runTests(dir, tests, logName, build = false) {
   fs.mkdirSync(LOG_DIR, { recursive: true });
   const log = fs.createWriteStream(path.join(LOG_DIR, `${logName.replace(/\W+/g, '-')}.log`));
+  if (build) {
+    for (const args of [['vite', 'build'], ['vite', 'build', '--mode', 'standalone']]) {
+      const b = await run('npx', args, dir, {}, log);
+      if (b.code !== 0) {
+        log.end();
+        return { failed: 0, passed: 0, failures: [], errors: [`the build failed (${args.join(' ')})`] };
+      }
+    }
+  }
   const specs = tests.filter((t) => t.endsWith('.spec.ts'));
   const units = tests.filter((t) => t.endsWith('.test.ts'));
   const result = { failed: 0, passed: 0, failures: [], errors: [] };
@@ -170,7 +182,7 @@ async function main() {
   console.log(`baseline: ${allTests.join(' ')}`);
   const baseDir = makeCopy('baseline');
   dirs.push(baseDir);
-  const base = await runTests(baseDir, allTests, 'baseline');
+  const base = await runTests(baseDir, allTests, 'baseline', chosen.some((m) => m.build));
   cleanup();
   console.log(`baseline: ${base.passed} passed, ${base.failed} failed (${seconds(t0)})`);
   if (base.failed || base.errors.length || !base.passed) {
@@ -188,7 +200,7 @@ async function main() {
     if (stale) {
       row = { area: m.area, name: m.name, status: 'STALE', counts: '-', by: stale, time: seconds(t0) };
     } else {
-      const r = await runTests(dir, m.tests, m.name);
+      const r = await runTests(dir, m.tests, m.name, m.build === true);
       const status = r.errors.length ? 'ERROR' : r.failed > 0 ? 'caught' : 'MISSED';
       const by = r.errors.length ? r.errors.join('; ') : r.failures.join('; ') || '-';
       row = { area: m.area, name: m.name, status, counts: `${r.failed} / ${r.failed + r.passed}`, by, time: seconds(t0) };

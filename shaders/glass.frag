@@ -21,7 +21,8 @@ in highp vec4 vReflectionClip;
 out vec4 outColor;
 
 #ifdef ROUGH
-// shaders/rough-glass.glsl is put here (render/programs.ts).
+// shaders/rough-glass.glsl replaces the next line (render/programs.ts); without it, ROUGH does not compile.
+ROUGH_GATHER_SOURCE
 #endif
 
 float fresnel(float c) {

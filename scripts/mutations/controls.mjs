@@ -109,4 +109,19 @@ export default [
     edits: [{ file: 'src/frame/frame-setup.ts', find: '      const g = i === 0 ? g0 : null, t', replace: '      const g = null, t' }],
     tests: [CONTROLS],
   },
+  {
+    name: 'C18 frames not held while the controls\' chunk loads (a drag after the next frame is lost)',
+    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '    if (backend.busy || this.rig.controlsLoading) return;', replace: '    if (backend.busy) return;' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C19 the controls\' chunk arrives but its listeners are never added',
+    edits: [{ file: 'src/element/camera-rig.ts', find: '      if (this.connected) this.pointer.hostConnected();\n', replace: '' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C20 no frame asked for once the controls\' chunk is in (frames held for ever)',
+    edits: [{ file: 'src/element/camera-rig.ts', find: '      this.pointerLoading = false;\n      this.host.requestRender();', replace: '      this.pointerLoading = false;' }],
+    tests: [CONTROLS],
+  },
 ];

@@ -12,8 +12,7 @@ import type { Backend, BackendHost } from './backend';
 import type { Controller } from './controller';
 import type { Failure } from './failure';
 import { SharedContext, type ContextClient, type Presenter } from './shared-context';
-import { SOFTWARE_MAX_SIZE, SoftwareBackend } from './software-backend';
-import { SoftwareHost } from './software-host';
+import { SOFTWARE_MAX_SIZE } from './software-size';
 import { WebGLBackend } from './webgl-backend';
 
 /** What BackendController needs of the scene element (and passes on to the backends). */
@@ -144,15 +143,16 @@ export class BackendController implements Controller, ContextClient {
     this.host.started(this.current);
   }
 
-  /** The software renderer, loaded as a chunk of its own; `error` only if it cannot start either. */
+  /** The software renderer, loaded as chunks of its own (software-start.ts); `error` only if it cannot start either. */
   private startSoftware(): void {
     const token = {};
     this.starting = token;
-    SoftwareHost.create().then((software) => {
+    const started = import('./software-start').then(async (chunk) => ({ chunk, software: await chunk.SoftwareHost.create() }));
+    started.then(({ chunk, software }) => {
       if (this.starting !== token) return software.dispose();
       this.starting = null;
       if (!this.host.element.isConnected) return software.dispose();
-      this.current = new SoftwareBackend(this.backendHost, software);
+      this.current = new chunk.SoftwareBackend(this.backendHost, software);
       this.host.started(this.current);
     }, (e: unknown) => {
       if (this.starting !== token) return;

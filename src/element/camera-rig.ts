@@ -7,10 +7,12 @@ import type { Scene } from '../scene/scene';
 import type { SceneAttributes } from './attributes';
 import { CameraSource } from './camera-source';
 import type { Controller } from './controller';
-import { PointerControls, type PointerMode } from './controls/pointer-controls';
+import type { quat } from 'gl-matrix';
+import type { PointerControls, PointerControlsHost, PointerMode } from './controls/pointer-controls';
 import { FlybyController } from './flyby-controller';
 import { FlybyInput } from './flyby-input';
 import type { CameraChangeDetail } from './types';
+import { warn } from './warnings';
 
 /** The flyby's mouse look ends this long after its last movement, ms. */
 const LOOK_END_MS = 150;
@@ -40,8 +42,19 @@ export class CameraRig implements Controller {
   readonly flyby = new FlybyController();
   /** `camera-src`: the course camera, when one is in force (SPEC §11). */
   readonly cameraSource: CameraSource;
-  /** orbit and trackball input, and the trackball's rotations. */
-  readonly pointer: PointerControls;
+  /** The trackball's rotation of the objects, a unit quaternion [x, y, z, w]. */
+  readonly objectRotation = new Float64Array([0, 0, 0, 1]);
+  /** The trackball's rotation of the first light about the objects' centre. */
+  readonly lightRotation = new Float64Array([0, 0, 0, 1]);
+  /**
+   * orbit and trackball input (controls/pointer-controls.ts): a chunk of its own, loaded the
+   * first time `controls` asks for either; null until then.
+   */
+  private pointer: PointerControls | null = null;
+  private readonly pointerHost: PointerControlsHost;
+  /** The pointer controls' chunk is on its way: frames wait for it (see controlsLoading). */
+  private pointerLoading = false;
+  private connected = false;
   private readonly input: FlybyInput;
   private readonly parts: Controller[];
   private lookTimer: ReturnType<typeof setTimeout> | undefined;
@@ -80,8 +93,9 @@ export class CameraRig implements Controller {
       },
       cycleDebugView: () => host.cycleDebugView(),
     });
-    this.pointer = new PointerControls({
+    this.pointerHost = {
       element, canvas,
+      objectRotation: this.objectRotation as unknown as quat, lightRotation: this.lightRotation as unknown as quat,
       mode: () => (host.values.controls === 'orbit' || host.values.controls === 'trackball' ? host.values.controls as PointerMode : null),
       pose: () => this.flyby.pose,
       target: () => host.values.cameraTarget ?? host.objectsCenter(),
@@ -93,17 +107,43 @@ export class CameraRig implements Controller {
         host.requestRender();
       },
       gestureEnd: () => this.gestureEnd(),
-    });
-    this.parts = [this.input, this.pointer, this.cameraSource];
+    };
+    this.parts = [this.input, this.cameraSource];
   }
 
   hostConnected(): void {
+    this.connected = true;
     for (const p of this.parts) p.hostConnected?.();
+    this.pointer?.hostConnected();
+    this.loadPointer();
   }
 
   hostDisconnected(): void {
+    this.connected = false;
     for (const p of this.parts) p.hostDisconnected?.();
+    this.pointer?.hostDisconnected();
     clearTimeout(this.lookTimer);
+  }
+
+  /** orbit or trackball asked for and their chunk not yet in: it is fetched, then a frame drawn. */
+  private loadPointer(): void {
+    const c = this.host.values.controls;
+    if (this.pointer || this.pointerLoading || (c !== 'orbit' && c !== 'trackball')) return;
+    this.pointerLoading = true;
+    import('./controls/pointer-controls').then((chunk) => {
+      this.pointer = new chunk.PointerControls(this.pointerHost);
+      if (this.connected) this.pointer.hostConnected();
+    }, (e: unknown) => {
+      warn(`controls="${c}" could not load (${String(e).slice(0, 200)}); the scene does not respond to pointers`);
+    }).finally(() => {
+      this.pointerLoading = false;
+      this.host.requestRender();
+    });
+  }
+
+  /** The controls' chunk is loading: the element holds its frames until it is in (a drag then finds it ready). */
+  get controlsLoading(): boolean {
+    return this.pointerLoading;
   }
 
   /** True while the pose is written back to the attributes (their changes are not news). */
@@ -113,7 +153,7 @@ export class CameraRig implements Controller {
 
   /** Keys held or a motion after release going on: frames keep coming. */
   get moving(): boolean {
-    return this.flyby.active || this.pointer.active;
+    return this.flyby.active || (this.pointer?.active ?? false);
   }
 
   /** The flown camera's attributes read live (the pose moves before it is written back); else undefined. */
@@ -124,7 +164,7 @@ export class CameraRig implements Controller {
     return undefined;
   }
 
-  /** A course camera file is loading (`ready` waits for it). */
+  /** A course camera file is loading (`ready` waits for it; for the controls' chunk frames wait). */
   get loading(): boolean {
     return this.cameraSource.loading;
   }
@@ -145,7 +185,7 @@ export class CameraRig implements Controller {
     const q = Array.from(value ?? [], Number);
     const len = Math.hypot(...q);
     if (q.length !== 4 || !Number.isFinite(len) || len === 0) return false;
-    const r = this.pointer.objectRotation;
+    const r = this.objectRotation;
     for (let i = 0; i < 4; i++) r[i] = q[i] / len;
     this.host.turned();
     this.host.requestRender();
@@ -154,14 +194,15 @@ export class CameraRig implements Controller {
 
   /** `controls` changed: a gesture and a motion under way stop. */
   controlsChanged(): void {
-    this.pointer.cancel();
+    this.pointer?.cancel();
+    this.loadPointer();
   }
 
   /** A frame begins: the flyby and the motion after release advance. */
   step(): void {
     this.advanceFlyby();
     // The motion after release, by the wall clock (SPEC §10), not the frame's timestamp.
-    if (!this.pointer.update(performance.now())) return;
+    if (!this.pointer?.update(performance.now())) return;
     if (this.host.values.controls === 'orbit') this.cameraDirty = true; // a trackball's spin turns objects, not the camera
     else this.host.turned();
   }
@@ -258,7 +299,7 @@ export class CameraRig implements Controller {
       element.setAttribute('camera-position', `${position[0]} ${position[1]} ${position[2]}`);
       element.setAttribute('camera-rotation', `${yaw} ${pitch}`);
       // A pan moves what the camera looks at: with camera-target set, the target moves with it.
-      if (this.pointer.takePanned() && this.host.values.cameraTarget) {
+      if (this.pointer?.takePanned() && this.host.values.cameraTarget) {
         const t = this.pointer.orbitTarget;
         element.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);
       }

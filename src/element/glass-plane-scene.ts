@@ -112,7 +112,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
       objectsCenter: () => boundsCenter(this.scene.objects),
       cycleDebugView: () => { this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length]; },
     });
-    const { objectRotation, lightRotation } = this.rig.pointer;
+    const { objectRotation, lightRotation } = this.rig;
     this.scenes = new SceneValue({
       inputs: () => ({ ...this.values, spin: this.effectiveSpin() }),
       parts: () => this.source.current(),
@@ -212,7 +212,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
    * a value that is not four finite numbers, or zero, is ignored with a warning).
    */
   get objectRotation(): [number, number, number, number] {
-    return [...this.rig.pointer.objectRotation] as [number, number, number, number];
+    return [...this.rig.objectRotation] as [number, number, number, number];
   }
 
   set objectRotation(value: ArrayLike<number>) {
@@ -255,7 +255,8 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
   private drawFrame(now: number): void {
     this.rig.step();
     const backend = this.backend.current!;
-    if (backend.busy) return; // dirty stays set: drawn when this one is back
+    // Dirty stays set: drawn when the last frame is back, or the controls' chunk is in.
+    if (backend.busy || this.rig.controlsLoading) return;
     this.loop.dirty = false;
     if (this.clientWidth === 0 || this.clientHeight === 0) return; // nothing to show
     const state = this.frameState(now), scene = this.scenes.current;

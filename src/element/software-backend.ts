@@ -7,8 +7,6 @@ import type { Scene } from '../scene/scene';
 import type { Backend, BackendHost } from './backend';
 import type { SoftwareHost } from './software-host';
 
-/** Largest side of a software frame (the CPU's cost grows with the pixels; 4096 is a 4K canvas's side). */
-export const SOFTWARE_MAX_SIZE = 4096;
 
 export class SoftwareBackend implements Backend {
   readonly kind = 'software';

@@ -39,8 +39,12 @@ function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant): str
   return header;
 }
 
-/** The marker line in glass.frag where its ROUGH variant takes rough-glass.glsl (after the declarations it reads). */
-const ROUGH_MARKER = '// shaders/rough-glass.glsl is put here (render/programs.ts).\n';
+/**
+ * The marker line in glass.frag where its ROUGH variant takes rough-glass.glsl (after the
+ * declarations it reads): a line of its own, not a comment, so it outlasts the build's shader
+ * minification (scripts/glsl-minify.ts).
+ */
+const ROUGH_MARKER = /^ROUGH_GATHER_SOURCE$/m;
 
 /**
  * Rough glass's shader parts (SPEC §14). They live in rough glass's own chunk

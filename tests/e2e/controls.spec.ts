@@ -368,3 +368,21 @@ test('camera-change: one per batch of camera attributes set by the page, none fo
   await page.waitForTimeout(100);
   expect((await changes()).length).toBe(2);
 });
+
+// orbit and trackball are a chunk of their own (controls/pointer-controls.ts), loaded the first
+// time `controls` asks for them: the frame after that waits for it, so a drag after the next
+// frame is never lost — even when the chunk is slow to come (held back 600 ms here).
+test('controls set on a drawn element: after the next frame a drag turns the camera, however slow the controls\' chunk', async ({ page }) => {
+  await page.route('**/pointer-controls*', async (route) => {
+    await new Promise((r) => setTimeout(r, 600));
+    await route.continue();
+  });
+  await openPage(page);
+  const { selector } = await mount(page, { time: 0, spin: 0, 'camera-position': '0 1 6', 'camera-target': '0 0 0' }, SIZE);
+  await setAttributes(page, selector, { controls: 'orbit' });
+  const start = await pose(page, selector);
+  const b = await box(page, selector);
+  const cdp = await page.context().newCDPSession(page);
+  await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 40, y: b.cy }, { t0: 40, steps: 10, dtMs: 16, restMs: 200 });
+  await expect.poll(async () => (await pose(page, selector)).rotation[0] - start.rotation[0], { message: 'yaw turned by 40 px × 0.4°' }).toBeCloseTo(16, 6);
+});

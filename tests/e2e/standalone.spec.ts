@@ -21,3 +21,26 @@ test('the standalone bundle defines the element, which renders', async ({ page }
   note(`standalone: ${countUnlike(image, [26, 26, 26], 3)} px unlike the background`);
   expect(countUnlike(image, [26, 26, 26], 3), 'measured 27,657 px').toBeGreaterThanOrEqual(0.9 * 27_657);
 });
+
+// The build minifies the shaders (scripts/glsl-minify.ts) and splits rough glass and the software
+// renderer into chunks: the standalone file must draw what the sources draw, pixel for pixel.
+for (const [name, attrs] of [
+  ['the default scene', { time: 1.25 }],
+  ['rough glass (its chunk)', { time: 1.25, roughness: 0.4 }],
+  ['the software renderer (its chunks)', { time: 1.25, renderer: 'software' }],
+] as const) {
+  test(`the standalone bundle draws ${name} as the sources do, byte for byte`, async ({ page }) => {
+    const frames = [];
+    for (const which of ['standalone', 'element']) {
+      await openPage(page, which);
+      await mount(page, attrs, { width: 160, height: 90 });
+      await page.evaluate(() => new Promise((r) => setTimeout(r, 300)));
+      frames.push(await capture(page));
+    }
+    const [built, sources] = frames;
+    let differ = 0;
+    for (let i = 0; i < built.data.length; i++) if (built.data[i] !== sources.data[i]) differ++;
+    expect(differ, `bytes that differ between the standalone bundle and the sources (${name})`).toBe(0);
+    expect(countUnlike(built, [26, 26, 26], 3), 'not an empty frame').toBeGreaterThan(2000);
+  });
+}

@@ -32,6 +32,10 @@ export interface PointerControlsHost {
   changed(camera: boolean): void;
   /** A gesture ended (pointer up, 150 ms after the wheel, a key): write back and announce if the camera moved. */
   gestureEnd(): void;
+  /** The trackball's rotation of the objects, a unit quaternion [x, y, z, w], turned in place. */
+  readonly objectRotation: quat;
+  /** The trackball's rotation of the first light about the objects' centre, turned in place. */
+  readonly lightRotation: quat;
 }
 
 /** No single input event turns anything by more than this (SPEC §10), degrees. */
@@ -47,10 +51,9 @@ const DEG = Math.PI / 180;
 type Drag = 'rotate' | 'pan' | 'light' | 'pinch' | null;
 
 export class PointerControls implements Controller {
-  /** The trackball's rotation of the objects, a unit quaternion [x, y, z, w]. */
-  readonly objectRotation = (new Float64Array([0, 0, 0, 1]) as unknown as quat);
-  /** The trackball's rotation of the first light about the objects' centre. */
-  readonly lightRotation = (new Float64Array([0, 0, 0, 1]) as unknown as quat);
+  /** The host's rotations (PointerControlsHost), which this class turns. */
+  private readonly objectRotation: quat;
+  private readonly lightRotation: quat;
 
   private readonly orbit = new OrbitCamera();
   private readonly pointers = new Map<number, { x: number; y: number }>();
@@ -81,6 +84,8 @@ export class PointerControls implements Controller {
   constructor(private readonly host: PointerControlsHost) {
     this.element = host.element;
     this.canvas = host.canvas;
+    this.objectRotation = host.objectRotation;
+    this.lightRotation = host.lightRotation;
   }
 
   hostConnected(): void {
