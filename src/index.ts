@@ -1,11 +1,17 @@
 // Public entry: defines <glass-plane-scene> and exports its class and types.
 import { GlassPlaneScene } from './element/glass-plane-scene';
-import { GlassObject, OBJECT_TAG } from './element/children/glass-object';
-import { GlassLight, LIGHT_TAG } from './element/children/glass-light';
+import type { GlassObject } from './element/children/glass-object';
+import type { GlassLight } from './element/children/glass-light';
 
-export { GlassPlaneScene, GlassObject, GlassLight };
-export { OBJECT_ATTRIBUTES, type ObjectAttributes, type Shape } from './element/children/object-attributes';
-export { LIGHT_ATTRIBUTES, type LightAttributes } from './element/children/light-attributes';
+export { GlassPlaneScene };
+/**
+ * <glass-object> and <glass-light> are defined when a scene first finds one among its children
+ * (their code is a chunk of its own); defineChildren() loads and defines them now.
+ */
+export type { GlassObject, GlassLight };
+export { defineChildren } from './element/children-loader';
+export type { ObjectAttributes, Shape } from './element/children/object-attributes';
+export type { LightAttributes } from './element/children/light-attributes';
 export type { Progress as ModelProgress } from './element/children/model-fetch';
 export type { LoadErrorDetail } from './loaders/load-error';
 export type { Scene, SceneObject, Light, Glass, Material, Geometry, Transform, Bounds, Mapping, TextureSource, Vec3 } from './scene/scene';
@@ -18,13 +24,8 @@ export type {
 
 export const TAG_NAME = 'glass-plane-scene';
 
-// Children first: already in the page, they upgrade (and start loading) before their parent
-// looks at them.
-if (typeof customElements !== 'undefined') {
-  if (!customElements.get(OBJECT_TAG)) customElements.define(OBJECT_TAG, GlassObject);
-  if (!customElements.get(LIGHT_TAG)) customElements.define(LIGHT_TAG, GlassLight);
-  if (!customElements.get(TAG_NAME)) customElements.define(TAG_NAME, GlassPlaneScene);
-}
+// The children are defined by the first scene that finds one (element/children-loader.ts).
+if (typeof customElements !== 'undefined' && !customElements.get(TAG_NAME)) customElements.define(TAG_NAME, GlassPlaneScene);
 
 declare global {
   interface HTMLElementTagNameMap {

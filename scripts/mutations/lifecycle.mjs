@@ -86,4 +86,19 @@ export default [
     edits: [{ file: 'src/software/protocol.ts', find: '    if (scene === this.lastScene) return { scene: null', replace: '    if (this.lastScene) return { scene: null' }],
     tests: [REBUILDS],
   },
+  {
+    name: 'L15 frames not held while the children\'s chunk loads (the default scene shown first)',
+    edits: [{ file: ELEMENT, find: '    if (this.source.defining) return; // and the frame waits for them\n', replace: '' }],
+    tests: ['tests/e2e/children-chunk.spec.ts'],
+  },
+  {
+    name: 'L16 the scene element never loads its children (they stay undefined)',
+    edits: [{ file: 'src/element/scene-source.ts', find: '    if (!this.defining) {\n      this.defining = true;', replace: '    if (this.defining) {\n      this.defining = true;' }],
+    tests: ['tests/e2e/children-chunk.spec.ts'],
+  },
+  {
+    name: 'L17 a children\'s chunk that failed leaves the frames held (nothing asks for a frame)',
+    edits: [{ file: 'src/element/scene-source.ts', find: '        this.defining = false;\n        this.invalidate();', replace: '        this.defining = false;' }],
+    tests: ['tests/e2e/children-chunk.spec.ts'],
+  },
 ];

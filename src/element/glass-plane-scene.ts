@@ -255,11 +255,13 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
   private drawFrame(now: number): void {
     this.rig.step();
     const backend = this.backend.current!;
-    // Dirty stays set: drawn when the last frame is back, or the controls' chunk is in.
+    // Dirty stays set: drawn when the last frame is back, or a chunk (controls, children) is in.
     if (backend.busy || this.rig.controlsLoading) return;
+    const scene = this.scenes.current; // finding children not yet defined starts loading them
+    if (this.source.defining) return; // and the frame waits for them
     this.loop.dirty = false;
     if (this.clientWidth === 0 || this.clientHeight === 0) return; // nothing to show
-    const state = this.frameState(now), scene = this.scenes.current;
+    const state = this.frameState(now);
     this.images.sync(scene);
     backend.draw(state, scene);
   }

@@ -1,11 +1,13 @@
 // Watches the scene element's light-DOM children and gathers their parts of the scene:
 // a MutationObserver for children added, removed or reordered, the children's own change
-// notices for their attributes and loads, and whenDefined for children upgraded later.
+// notices for their attributes and loads, and whenDefined for children upgraded later. The
+// children's own chunk (children/child-elements.ts) is fetched when the first of them is found.
 import { MAX_LIGHTS, type Light, type SceneObject } from '../scene/scene';
 import type { ChildParts } from './compose-scene';
-import { CHILD_CHANGE } from './children/child-element';
-import { LIGHT_TAG, type GlassLight } from './children/glass-light';
-import { OBJECT_TAG, type GlassObject } from './children/glass-object';
+import { CHILD_CHANGE, LIGHT_TAG, OBJECT_TAG } from './children/tags';
+import type { GlassLight } from './children/glass-light';
+import type { GlassObject } from './children/glass-object';
+import { defineChildren } from './children-loader';
 import { warn } from './warnings';
 import type { MtlValues } from './children/object-material';
 import type { Controller } from './controller';
@@ -23,6 +25,8 @@ export class SceneSource implements Controller {
   private parts: ChildParts | null = null;
   private warnedLights = false;
   private readonly awaiting = new Set<string>();
+  /** The children's chunk is on its way: frames wait for it (the scene is not drawn without them). */
+  defining = false;
   private readonly element: HTMLElement;
 
   constructor(private readonly host: SceneSourceHost) {
@@ -96,6 +100,15 @@ export class SceneSource implements Controller {
   private awaitDefinition(name: string): void {
     if (this.awaiting.has(name) || typeof customElements === 'undefined' || customElements.get(name)) return;
     this.awaiting.add(name);
+    if (!this.defining) {
+      this.defining = true;
+      defineChildren().catch((e: unknown) => {
+        warn(`<${name}> could not load (${String(e).slice(0, 200)}); the scene is drawn without its children`);
+      }).finally(() => {
+        this.defining = false;
+        this.invalidate();
+      });
+    }
     customElements.whenDefined(name).then(() => {
       this.awaiting.delete(name);
       this.invalidate();

@@ -135,7 +135,10 @@ test('glass and background come from the attributes; "0 0" removes the glass', a
   expect(w).toEqual([expect.stringMatching(/^glass-plane-scene: glass-normal="0 0 0": /)]);
 });
 
-test('children defined after the scene element join the scene when they upgrade', async ({ page }) => {
+// The scene element loads the children's chunk itself (children-loader.ts); here that load is
+// blocked, as for a page whose children come from elsewhere (another copy of the package).
+test('children defined after the scene element join the scene when they upgrade', async ({ page, consoleLog }) => {
+  await page.route('**/child-elements*', (route) => route.abort());
   await openPage(page, 'parent-only');
   await mountHtml(page, `<glass-plane-scene time="1">
     <glass-object shape="sphere" position="1 2 3"></glass-object><glass-light position="0 5 0"></glass-light>
@@ -153,12 +156,17 @@ test('children defined after the scene element join the scene when they upgrade'
   });
   await expect.poll(async () => (await summary(page)).objects.map((o) => [o.kind, ...o.position])).toEqual([['sphere', 1, 2, 3]]);
   expect((await summary(page)).lights.map((l) => l.kind)).toEqual(['point']);
+  expect(consoleLog.take('warning').filter((w) => w.includes('could not load'))).toHaveLength(1);
+  consoleLog.take('error'); // the browser's report of the blocked fetch
 });
 
-test('children never upgraded: the scene element renders its default scene', async ({ page }) => {
+test('children never upgraded (their chunk blocked): the scene element renders its default scene', async ({ page, consoleLog }) => {
+  await page.route('**/child-elements*', (route) => route.abort());
   await openPage(page, 'parent-only');
   await mountHtml(page, '<glass-plane-scene time="1"><glass-object src="models/tetra.obj"></glass-object><glass-light></glass-light></glass-plane-scene>');
   const f = await nextFrame(page, 'glass-plane-scene');
   expect(f.passes.scene.ran).toBe(true);
   expect((await summary(page)).objects.map((o) => o.kind)).toEqual(['box', 'sphere']);
+  expect(consoleLog.take('warning').filter((w) => w.includes('could not load'))).toHaveLength(1);
+  consoleLog.take('error');
 });

@@ -1,5 +1,5 @@
 // Consumer test (scripts/check-package.mjs): the package's two entries as a user imports them.
-import { GlassPlaneScene, GlassObject, GlassLight, ATTRIBUTES, type FrameReport, type RenderStats } from 'glass-plane-scene';
+import { GlassPlaneScene, defineChildren, ATTRIBUTES, type GlassObject, type GlassLight, type FrameReport, type RenderStats } from 'glass-plane-scene';
 import * as standalone from 'glass-plane-scene/standalone';
 
 const scene = document.createElement('glass-plane-scene');
@@ -21,6 +21,7 @@ object.shape = 'sphere';
 const light: GlassLight = document.createElement('glass-light');
 light.position = [1, 2, 3];
 scene.append(object, light);
+void defineChildren().then(() => console.log(customElements.get('glass-object') !== undefined));
 
 const fromStandalone: typeof standalone.GlassPlaneScene = standalone.GlassPlaneScene;
 console.log(fromStandalone.observedAttributes.length, ATTRIBUTES.length, standalone.TAG_NAME);

@@ -5,7 +5,8 @@ import { AttributeWarnings } from '../warnings';
 import { propertyToRaw, type ChildAttributeSpec } from './child-attribute-spec';
 
 /** Fired (bubbling, not composed) by a child whenever its part of the scene may have changed. */
-export const CHILD_CHANGE = 'glass-plane-scene-child-change';
+export { CHILD_CHANGE } from './tags';
+import { CHILD_CHANGE } from './tags';
 
 // Lets the module load where HTMLElement does not exist (server-side rendering, Node tests).
 const Base = (typeof HTMLElement === 'undefined' ? class {} : HTMLElement) as typeof HTMLElement;

@@ -13,7 +13,8 @@ import { defaultLightAttributes, LIGHT_ATTRIBUTES, type LightAttributes } from '
 import { absoluteUrl } from '../absolute-url';
 import type { MtlValues } from './object-material';
 
-export const LIGHT_TAG = 'glass-light';
+export { LIGHT_TAG } from './tags';
+import { LIGHT_TAG } from './tags';
 const conflicts = new AttributeWarnings();
 
 export interface GlassLight extends LightAttributes {}

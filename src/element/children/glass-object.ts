@@ -14,7 +14,8 @@ import { absoluteUrl } from '../absolute-url';
 import { resolveMaterial, type MtlValues } from './object-material';
 import { decodeImage } from '../texture-images';
 
-export const OBJECT_TAG = 'glass-object';
+export { OBJECT_TAG } from './tags';
+import { OBJECT_TAG } from './tags';
 
 /**
  * Parts per loaded model, raw and normalised, by Bézier resolution ('' for the model as
