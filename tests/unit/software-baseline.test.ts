@@ -1,0 +1,77 @@
+// The software renderer's pixels held to the bit (issue 22): its speed-ups must not move a pixel.
+// Each frame's RGBA8 digest against tests/unit/software-baseline.json, recorded from the renderer
+// as it stood before them: software-reference.test.ts's scenes at 160×90 with 1 and 2×2 samples
+// in both colour spaces, the default scene in each debug view, Fresnel model, shading mode,
+// supersampled, rough, and at 640×360 as the cube turns. A change that is meant to move pixels
+// rewrites the file (UPDATE_BASELINE=1 npx vitest run tests/unit/software-baseline.test.ts) and
+// says why in its commit. Digests are of V8's arithmetic (Math.pow, Math.log2): a new Node may
+// move a last bit, which the reference comparisons tell apart from a defect.
+import { createHash } from 'node:crypto';
+import { readFileSync, writeFileSync } from 'node:fs';
+import { describe, expect, it } from 'vitest';
+import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
+import type { FrameState } from '../../src/frame/types';
+import { defaultScene } from '../../src/scene/default-scene';
+import type { Scene } from '../../src/scene/scene';
+import { SoftwareRenderer } from '../../src/software';
+import { CASES, IMAGES, STATE } from './software-cases';
+
+const FILE = new URL('./software-baseline.json', import.meta.url);
+const UPDATE = process.env.UPDATE_BASELINE === '1';
+const stored: Record<string, string> = UPDATE ? {} : JSON.parse(readFileSync(FILE, 'utf8'));
+const recorded: Record<string, string> = {};
+
+interface Frame { name: string; scene: Scene; state: FrameState; samplesPerAxis?: number }
+
+const frames: Frame[] = [];
+for (const c of CASES) {
+  for (const colorSpace of ['none', 'srgb'] as const) {
+    for (const samples of [0, 4]) {
+      frames.push({ name: `${c.name}, ${colorSpace}, samples ${samples}`, scene: c.scene, state: { ...STATE, ...c.state, colorSpace, samples } });
+    }
+  }
+}
+const scene = defaultScene(0.75, 0.8);
+const variants: [string, Partial<FrameState>, number?][] = [
+  ['view scene', { view: 'scene' }], ['view reflection', { view: 'reflection' }], ['view fresnel', { view: 'fresnel' }],
+  ['view passes', { view: 'passes', width: 161, height: 91 }],
+  ['schlick, T 0.2', { fresnel: 'schlick', transparency: 0.2 }], ['classic, T 0.9', { fresnel: 'classic', transparency: 0.9 }],
+  ['gouraud', { shading: 'gouraud' }], ['flat', { shading: 'flat' }], ['flat, samples 4', { shading: 'flat', samples: 4 }],
+  ['supersampled 2×2', {}, 2], ['rough 0.3', { roughness: 0.3, samples: 4 }], ['rough 0.3, samples 0', { roughness: 0.3 }],
+];
+for (const [name, over, n] of variants) {
+  for (const colorSpace of ['none', 'srgb'] as const) {
+    frames.push({ name: `default scene, ${name}, ${colorSpace}`, scene, state: { ...STATE, ...over, colorSpace }, samplesPerAxis: n });
+  }
+}
+// The bench's frame (bench/software-node.ts): 640×360, the cube turning.
+const big = defaultScene(DEFAULT_CUBE_DISTANCE, 0.8);
+for (const time of [0.4, 2.9]) {
+  for (const [samples, colorSpace] of [[0, 'srgb'], [4, 'srgb'], [0, 'none'], [4, 'none']] as const) {
+    frames.push({
+      name: `default scene 640×360, t ${time}, samples ${samples}, ${colorSpace}`, scene: big,
+      state: {
+        ...STATE, width: 640, height: 360, time, cubeDistance: DEFAULT_CUBE_DISTANCE, cameraPosition: [...DEFAULT_CAMERA_POSITION],
+        yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace, samples,
+      },
+    });
+  }
+}
+
+describe('software renderer: pixels bit for bit as recorded (software-baseline.json)', () => {
+  const renderers = new Map<number, SoftwareRenderer>();
+  for (const f of frames) {
+    it(f.name, () => {
+      const n = f.samplesPerAxis ?? 1;
+      if (!renderers.has(n)) renderers.set(n, new SoftwareRenderer({ samplesPerAxis: n }));
+      const pixels = renderers.get(n)!.render(f.state, f.scene, IMAGES);
+      const digest = createHash('sha256').update(pixels).digest('hex').slice(0, 24);
+      recorded[f.name] = digest;
+      if (!UPDATE) expect(digest, `${f.name}: not recorded, or its pixels moved`).toBe(stored[f.name]);
+    });
+  }
+  it('records the digests (UPDATE_BASELINE=1) or holds every one that is stored', () => {
+    if (UPDATE) writeFileSync(FILE, `${JSON.stringify(recorded, null, 2)}\n`);
+    else expect(Object.keys(stored).sort()).toEqual(frames.map((f) => f.name).sort());
+  });
+});
