@@ -3,7 +3,8 @@
 // none, as bench/software.spec.ts's Node rows (same state, same medians), without Playwright, so
 // `node --cpu-prof` can profile it. Not a test: nothing is asserted. Beside the wall-clock median
 // it gives the process's CPU time per frame (all threads), which a shared machine's load
-// disturbs less: on 2 cores under a load of 2 a frame waits for a core as well. Bundle and run:
+// disturbs less: on 2 cores under a load of 2 a frame waits for a core as well; and the fastest
+// frame, the least disturbed. Bundle and run:
 //   npx rolldown bench/software-node.ts --platform node --format esm --file /tmp/sw-node.mjs \
 //     && node /tmp/sw-node.mjs [reps] [frames]
 // `ROW=0 node --cpu-prof --cpu-prof-dir=/tmp/prof /tmp/sw-node.mjs 3 20` profiles samples 0, srgb alone. With
@@ -59,7 +60,8 @@ function timing(reps: number, frames: number): void {
   console.log(`Node ${process.version}, ${SIZE.width}×${SIZE.height}, ${reps} reps × ${frames} frames; load ${before.toFixed(2)} → ${loadavg()[0].toFixed(2)}`);
   for (const row of ROWS) {
     const s = summary(times.get(key(row))!), c = summary(cpu.get(key(row))!);
-    console.log(`${key(row).padEnd(18)} ${s.median.toFixed(2)} ms [IQR ${s.iqr.toFixed(2)}]   CPU ${c.median.toFixed(2)} ms [IQR ${c.iqr.toFixed(2)}]`);
+    const min = Math.min(...times.get(key(row))!);
+    console.log(`${key(row).padEnd(18)} ${s.median.toFixed(2)} ms [IQR ${s.iqr.toFixed(2)}], min ${min.toFixed(2)}   CPU ${c.median.toFixed(2)} ms [IQR ${c.iqr.toFixed(2)}]`);
   }
 }
 

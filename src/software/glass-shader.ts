@@ -76,6 +76,7 @@ export class GlassShader implements FragmentShader {
     r.userClip = false;
     r.cull = 'none';
     r.derivatives = this.mode === 'compose';
+    r.barycentrics = this.mode !== 'mask';
     r.depthTest = true;
     r.depthWrite = false;
     // Pushed back a hair (glass-pass.ts's polygonOffset): a face of an object on the viewer's side
@@ -87,6 +88,7 @@ export class GlassShader implements FragmentShader {
       r.drawTriangles(this.vertices, indices, indices.length, this);
     } finally {
       r.depthBias = 0;
+      r.barycentrics = true;
     }
   }
 

@@ -44,6 +44,11 @@ export class Rasterizer {
   mask: Uint8Array | null = null;
   /** Compute dbdx/dbdy per fragment (texture LOD needs them). */
   derivatives = true;
+  /**
+   * Compute b0..b2 and z per fragment; false: the shader reads the pixel alone (the glass's
+   * footprint), and a fragment costs no division.
+   */
+  barycentrics = true;
   /** Floats per vertex in the buffers drawn (≥ VARYINGS). */
   stride = VARYINGS;
   /**
@@ -285,7 +290,7 @@ export class Rasterizer {
     const inv = 1 / area;
     const z0 = this.nz[i], z1 = this.nz[j], z2 = this.nz[k];
     this.interpolate(i, j, k, inv, stepX0, stepX1, stepX2, stepY0, stepY1, stepY2);
-    const { depth, mask, depthTest, depthWrite, depthBias } = this;
+    const { depth, mask, depthTest, depthWrite, depthBias, barycentrics } = this;
     const width = this.width;
 
     const span = px1 - px0;
@@ -308,7 +313,8 @@ export class Rasterizer {
             const z = Math.fround(l0 * z0 + l1 * z1 + l2 * z2 + depthBias);
             if (!depthTest || z < depth[pixel]) {
               if (depthWrite) depth[pixel] = z;
-              this.shade(l0, l1, z, pixel, shader);
+              if (barycentrics) this.shade(l0, l1, z, pixel, shader);
+              else shader.fragment(pixel, this);
             }
           }
         }
@@ -336,7 +342,7 @@ export class Rasterizer {
     const z0 = this.nz[i], z1 = this.nz[j], z2 = this.nz[k];
     // Derivatives per pixel: n samples per step.
     this.interpolate(i, j, k, inv, n * stepX0, n * stepX1, n * stepX2, n * stepY0, n * stepY1, n * stepY2);
-    const { depth, mask, depthTest, depthWrite, depthBias } = this;
+    const { depth, mask, depthTest, depthWrite, depthBias, barycentrics } = this;
     const width = this.width, height = this.height;
     const repeat = shader.repeat !== undefined;
     const span = qx1 - qx0;
@@ -376,10 +382,14 @@ export class Rasterizer {
               shader.repeat!(sample);
               continue;
             }
+            shaded = true;
+            if (!barycentrics) {
+              shader.fragment(sample, this);
+              continue;
+            }
             // Shaded at the pixel's centre, as a GPU interpolates without `centroid` (off the
             // triangle at its edges): a sample's offset would shift textures by a part of a pixel.
             this.shade((row0 + dx * stepX0 + centre0) * inv, (row1 + dx * stepX1 + centre1) * inv, z, sample, shader);
-            shaded = true;
           }
         }
       }
