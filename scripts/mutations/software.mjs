@@ -7,6 +7,7 @@ const VS_REFERENCE = 'tests/unit/software-reference.test.ts';
 const SRGB = 'tests/unit/software-srgb.test.ts';
 const ANISO = 'tests/unit/software-anisotropic.test.ts';
 const MSAA = 'tests/unit/software-msaa.test.ts';
+const BASELINE = 'tests/unit/software-baseline.test.ts';
 
 export default [
   {
@@ -218,6 +219,51 @@ export default [
   {
     name: 'S33 orthographic: highlights seen from the eye point (the view vector ignored)',
     edits: [{ file: 'src/software/object-shader.ts', find: "if (ov[3] === 0) { g[6] = ov[0]; g[7] = ov[1]; g[8] = ov[2]; } else {", replace: "if (ov[3] === 2) { g[6] = ov[0]; g[7] = ov[1]; g[8] = ov[2]; } else {" }],
+    tests: [VS_REFERENCE],
+  },
+  {
+    name: 'S34 glass cache: entries kept when the camera moves (the vertices not in the key)',
+    edits: [{ file: 'src/software/glass-shader.ts', find: '    k.set(this.vertices);\n', replace: '' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S35 glass cache: entries kept when ior changes',
+    edits: [{ file: 'src/software/glass-shader.ts', find: 'k[i++] = this.ior;', replace: 'k[i++] = 1.5;' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S36 glass cache: entries kept when the Fresnel model changes',
+    edits: [{ file: 'src/software/glass-shader.ts', find: 'o.push(this.model, this.texture, this.mode);', replace: 'o.push(this.texture, this.mode);' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S37 glass cache: a new key starts no new generation (every entry still read)',
+    edits: [{ file: 'src/software/glass-cache.ts', find: '    this.generation++;\n', replace: '' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S38 glass cache: an entry read whichever sample of its pixel wrote it (multisampled diagonal)',
+    edits: [{ file: 'src/software/glass-cache.ts', find: 'return this.stamp[i] === this.generation && this.slot[i] === slot;', replace: 'return this.stamp[i] === this.generation;' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S39 glass composed without barycentrics (the mask pass\'s setting everywhere)',
+    edits: [{ file: 'src/software/glass-shader.ts', find: "r.barycentrics = this.mode !== 'mask';", replace: 'r.barycentrics = false;' }],
+    tests: [GLASS],
+  },
+  {
+    name: 'S40 packed sRGB resolve: red and blue swapped',
+    edits: [{ file: 'src/software/encode.ts', find: 'packed[i] = encodeByte(source[o]) | (encodeByte(source[o + 1]) << 8) | (encodeByte(source[o + 2]) << 16) | OPAQUE;', replace: 'packed[i] = encodeByte(source[o + 2]) | (encodeByte(source[o + 1]) << 8) | (encodeByte(source[o]) << 16) | OPAQUE;' }],
+    tests: [SRGB, BASELINE],
+  },
+  {
+    name: 'S41 packed sRGB resolve: alpha 0',
+    edits: [{ file: 'src/software/encode.ts', find: 'const OPAQUE = 0xff000000 | 0;', replace: 'const OPAQUE = 0;' }],
+    tests: [SRGB, BASELINE],
+  },
+  {
+    name: 'S42 RGB texture: green read as red (the taps\' sums mixed up)',
+    edits: [{ file: 'src/software/mip-texture.ts', find: 'out[1] = grey ? r : g;', replace: 'out[1] = r;' }],
     tests: [VS_REFERENCE],
   },
 ];

@@ -3,6 +3,7 @@
 // barycentrics (and their screen derivatives, for texture LOD). Knows nothing of shading.
 
 import { ALL, copyVertex, inside, planeDistance, PLANES, USER, CLIP_W, CLIP_DISTANCE, VARYINGS } from './clip';
+import { runEnd, runStart } from './runs';
 
 export { CLIP_W, CLIP_DISTANCE, VARYINGS };
 
@@ -395,16 +396,4 @@ export class Rasterizer {
       }
     }
   }
-}
-
-/** First k ≥ 0 (one early) where e + k·step ≥ 0 can hold; a value past any span when it never can. */
-function runStart(e: number, step: number): number {
-  if (step > 0) return e >= 0 ? 0 : Math.ceil(-e / step) - 1;
-  return e >= 0 ? 0 : 1 << 30;
-}
-
-/** Last k (one late) where e + k·step ≥ 0 can hold, capped at `span`; −1 when it never can. */
-function runEnd(e: number, step: number, span: number): number {
-  if (step < 0) return e < 0 ? -1 : Math.min(span, Math.floor(e / -step) + 1);
-  return e >= 0 || step > 0 ? span : -1;
 }

@@ -2,7 +2,9 @@
 // Each frame's RGBA8 digest against tests/unit/software-baseline.json, recorded from the renderer
 // as it stood before them: software-reference.test.ts's scenes at 160×90 with 1 and 2×2 samples
 // in both colour spaces, the default scene in each debug view, Fresnel model, shading mode,
-// supersampled, rough, and at 640×360 as the cube turns. A change that is meant to move pixels
+// supersampled, rough, and at 640×360 as the cube turns. And a renderer that draws a run of
+// frames, keeping what it may from one to the next (glass-cache.ts), gives each the pixels a fresh
+// renderer gives it, whatever changes between them. A change that is meant to move pixels
 // rewrites the file (UPDATE_BASELINE=1 npx vitest run tests/unit/software-baseline.test.ts) and
 // says why in its commit. Digests are of V8's arithmetic (Math.pow, Math.log2): a new Node may
 // move a last bit, which the reference comparisons tell apart from a defect.
@@ -15,6 +17,7 @@ import { defaultScene } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
 import { SoftwareRenderer } from '../../src/software';
 import { CASES, IMAGES, STATE } from './software-cases';
+import { DEFAULT_GLASS } from '../../src/scene/default-scene';
 
 const FILE = new URL('./software-baseline.json', import.meta.url);
 const UPDATE = process.env.UPDATE_BASELINE === '1';
@@ -73,5 +76,38 @@ describe('software renderer: pixels bit for bit as recorded (software-baseline.j
   it('records the digests (UPDATE_BASELINE=1) or holds every one that is stored', () => {
     if (UPDATE) writeFileSync(FILE, `${JSON.stringify(recorded, null, 2)}\n`);
     else expect(Object.keys(stored).sort()).toEqual(frames.map((f) => f.name).sort());
+  });
+});
+
+/**
+ * Frames drawn one after another by one renderer: the cube turning with all else still (what the
+ * glass cache keeps), then one change at a time, each kept by the frames after it — each of what
+ * the glass's F and texel depend on, and what they do not. Each frame must be what a fresh
+ * renderer draws.
+ */
+describe('software renderer: a run of frames, each as a fresh renderer draws it', () => {
+  const moved: Scene = { ...scene, glass: { ...DEFAULT_GLASS, center: [DEFAULT_GLASS.center[0] + 0.25, DEFAULT_GLASS.center[1], 0] } };
+  const turned: Scene = { ...scene, glass: { ...DEFAULT_GLASS, normal: [0.1, 1, 0.05] } };
+  const steps: [string, Partial<FrameState>, Scene?][] = [
+    ['t 0.5', { time: 0.5 }], ['t 0.6', { time: 0.6 }], ['t 0.7', { time: 0.7 }],
+    ['camera turned', { yaw: STATE.yaw + 0.5 }], ['camera moved', { cameraPosition: [STATE.cameraPosition[0], STATE.cameraPosition[1] + 0.01, STATE.cameraPosition[2]] }],
+    ['fov', { fov: 61 }], ['ior 1.33', { ior: 1.33 }], ['schlick', { fresnel: 'schlick' }], ['classic', { fresnel: 'classic' }],
+    ['transparency 0.2', { transparency: 0.2 }], ['srgb', { colorSpace: 'srgb' }], ['samples 4', { samples: 4 }], ['t 0.9', { time: 0.9 }],
+    ['view fresnel', { view: 'fresnel' }], ['view final again', { view: 'final' }],
+    ['161×91', { width: 161, height: 91 }], ['glass moved', {}, moved], ['glass turned', {}, turned], ['default glass', {}, scene],
+    ['orthographic', { projection: 'orthographic' }], ['rough 0.3', { roughness: 0.3 }], ['polished again', { roughness: 0 }],
+    ['samples 0', { samples: 0 }], ['t 1.1', { time: 1.1 }],
+  ];
+  it(`${steps.length} frames, each as a fresh renderer draws it`, () => {
+    const one = new SoftwareRenderer();
+    let state: FrameState = STATE;
+    for (const [name, over, sc] of steps) {
+      state = { ...state, ...over };
+      const got = one.render(state, sc ?? scene, IMAGES).slice();
+      const want = new SoftwareRenderer().render(state, sc ?? scene, IMAGES);
+      let differing = 0;
+      for (let i = 0; i < want.length; i++) if (got[i] !== want[i]) differing++;
+      expect(differing, `${name}: bytes that differ from a fresh renderer's`).toBe(0);
+    }
   });
 });
