@@ -8,6 +8,7 @@ const SRGB = 'tests/unit/software-srgb.test.ts';
 const ANISO = 'tests/unit/software-anisotropic.test.ts';
 const MSAA = 'tests/unit/software-msaa.test.ts';
 const BASELINE = 'tests/unit/software-baseline.test.ts';
+const GLASS_CACHE = 'tests/unit/software-glass-cache.test.ts';
 
 export default [
   {
@@ -239,12 +240,17 @@ export default [
   {
     name: 'S37 glass cache: a new key starts no new generation (every entry still read)',
     edits: [{ file: 'src/software/glass-cache.ts', find: '    this.generation++;\n', replace: '' }],
-    tests: [BASELINE],
+    tests: [BASELINE, GLASS_CACHE],
   },
   {
     name: 'S38 glass cache: an entry read whichever sample of its pixel wrote it (multisampled diagonal)',
     edits: [{ file: 'src/software/glass-cache.ts', find: 'return this.stamp[i] === this.generation && this.slot[i] === slot;', replace: 'return this.stamp[i] === this.generation;' }],
-    tests: [BASELINE],
+    tests: [BASELINE, GLASS_CACHE],
+  },
+  {
+    name: 'S43 glass cache: −0 and 0 taken for the same key value',
+    edits: [{ file: 'src/software/glass-cache.ts', find: 'a === b && (a !== 0 || 1 / a === 1 / b)', replace: 'a === b' }],
+    tests: [GLASS_CACHE],
   },
   {
     name: 'S39 glass composed without barycentrics (the mask pass\'s setting everywhere)',
