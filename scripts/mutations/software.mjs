@@ -14,9 +14,9 @@ export default [
   {
     name: 'S0 software rasterizer without the top-left rule',
     edits: [{
-      file: 'src/software/raster.ts',
-      find: "    e[9] = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;\n    e[10] = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;\n    e[11] = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;",
-      replace: '    e[9] = 0;\n    e[10] = 0;\n    e[11] = 0;',
+      file: 'src/software/edges.ts',
+      find: "  e[9] = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;\n  e[10] = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;\n  e[11] = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;",
+      replace: '  e[9] = 0;\n  e[10] = 0;\n  e[11] = 0;',
     }],
     tests: [RASTER],
   },

@@ -3,14 +3,11 @@
 // barycentrics (and their screen derivatives, for texture LOD). Knows nothing of shading.
 
 import { ALL, copyVertex, inside, planeDistance, PLANES, USER, CLIP_W, CLIP_DISTANCE, VARYINGS } from './clip';
-import { runEnd, runStart } from './runs';
+import { edgeFunctions, HALF, runEnd, runStart, SUB } from './edges';
 
 export { CLIP_W, CLIP_DISTANCE, VARYINGS };
 
-/** Sub-pixel precision of the snapped vertices: 1/256 px, as GPUs commonly use (8 bits). */
-export const SUBPIXEL_BITS = 8;
-const SUB = 1 << SUBPIXEL_BITS;
-const HALF = SUB >> 1;
+export { SUBPIXEL_BITS } from './edges';
 /** A clipped triangle has at most 3 + one vertex per plane (near, far, 4 guard, user). */
 const MAX_POLY = 10;
 
@@ -252,38 +249,12 @@ export class Rasterizer {
   }
 
   /**
-   * Triangle (i, j, k)'s edge functions at the centre of pixel (px, py) and their steps per
-   * pixel (exact integers), with the top-left rule's biases, into `this.edge`: row0..2,
-   * stepX0..2, stepY0..2, bias0..2. Edge e_v is opposite vertex v: e0 = E(1→2), e1 = E(2→0),
-   * e2 = E(0→1); E(a→b)(p) = (bx − ax)(py − ay) − (by − ay)(px − ax), positive inside (area > 0).
-   */
-  private edges(i: number, j: number, k: number, px: number, py: number): Float64Array {
-    const { fx, fy } = this, e = this.edge;
-    const x0 = fx[i], y0 = fy[i], x1 = fx[j], y1 = fy[j], x2 = fx[k], y2 = fy[k];
-    const ax0 = x2 - x1, ay0 = y2 - y1; // edge 1→2
-    const ax1 = x0 - x2, ay1 = y0 - y2; // edge 2→0
-    const ax2 = x1 - x0, ay2 = y1 - y0; // edge 0→1
-    const cx = px * SUB + HALF, cy = py * SUB + HALF;
-    e[0] = ax0 * (cy - y1) - ay0 * (cx - x1);
-    e[1] = ax1 * (cy - y2) - ay1 * (cx - x2);
-    e[2] = ax2 * (cy - y0) - ay2 * (cx - x0);
-    e[3] = -ay0 * SUB; e[4] = -ay1 * SUB; e[5] = -ay2 * SUB;
-    e[6] = ax0 * SUB; e[7] = ax1 * SUB; e[8] = ax2 * SUB;
-    // Top-left rule (y down, interior on the right of each edge as walked): a top edge runs
-    // exactly horizontally rightwards, a left edge upwards. Pixels on other edges are left out.
-    e[9] = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;
-    e[10] = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;
-    e[11] = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;
-    return e;
-  }
-
-  /**
    * The pixels of triangle (i, j, k), ordered so that its edge functions' `area` is positive,
    * whose centres lie in it (top-left rule) within the box px0..px1 × py0..py1: depth-tested,
    * their barycentrics (and derivatives) set, and shaded.
    */
   private scan(i: number, j: number, k: number, area: number, px0: number, px1: number, py0: number, py1: number, shader: FragmentShader): void {
-    const e = this.edges(i, j, k, px0, py0);
+    const e = edgeFunctions(this.edge, this.fx, this.fy, i, j, k, px0, py0);
     let row0 = e[0], row1 = e[1], row2 = e[2];
     const stepX0 = e[3], stepX1 = e[4], stepX2 = e[5], stepY0 = e[6], stepY1 = e[7], stepY2 = e[8];
     const bias0 = e[9], bias1 = e[10], bias2 = e[11];
@@ -334,7 +305,7 @@ export class Rasterizer {
     // The box in whole pixels; samples outside the triangle's box fail the edge test anyway.
     const qx0 = Math.floor(px0 / n) * n, qy0 = Math.floor(py0 / n) * n;
     const qx1 = Math.floor(px1 / n) * n + n - 1, qy1 = Math.floor(py1 / n) * n + n - 1;
-    const e = this.edges(i, j, k, qx0, qy0);
+    const e = edgeFunctions(this.edge, this.fx, this.fy, i, j, k, qx0, qy0);
     let row0 = e[0], row1 = e[1], row2 = e[2];
     const stepX0 = e[3], stepX1 = e[4], stepX2 = e[5], stepY0 = e[6], stepY1 = e[7], stepY2 = e[8];
     const bias0 = e[9], bias1 = e[10], bias2 = e[11];
