@@ -8,7 +8,7 @@ const SRGB = 'tests/unit/software-srgb.test.ts';
 const ANISO = 'tests/unit/software-anisotropic.test.ts';
 const MSAA = 'tests/unit/software-msaa.test.ts';
 const BASELINE = 'tests/unit/software-baseline.test.ts';
-const GLASS_CACHE = 'tests/unit/software-glass-cache.test.ts';
+const CACHES = 'tests/unit/software-caches.test.ts';
 
 export default [
   {
@@ -240,17 +240,17 @@ export default [
   {
     name: 'S37 glass cache: a new key starts no new generation (every entry still read)',
     edits: [{ file: 'src/software/glass-cache.ts', find: '    this.generation++;\n', replace: '' }],
-    tests: [BASELINE, GLASS_CACHE],
+    tests: [BASELINE, CACHES],
   },
   {
     name: 'S38 glass cache: an entry read whichever sample of its pixel wrote it (multisampled diagonal)',
     edits: [{ file: 'src/software/glass-cache.ts', find: 'return this.stamp[i] === this.generation && this.slot[i] === slot;', replace: 'return this.stamp[i] === this.generation;' }],
-    tests: [BASELINE, GLASS_CACHE],
+    tests: [BASELINE, CACHES],
   },
   {
     name: 'S43 glass cache: −0 and 0 taken for the same key value',
     edits: [{ file: 'src/software/glass-cache.ts', find: 'a === b && (a !== 0 || 1 / a === 1 / b)', replace: 'a === b' }],
-    tests: [GLASS_CACHE],
+    tests: [CACHES],
   },
   {
     name: 'S39 glass composed without barycentrics (the mask pass\'s setting everywhere)',
@@ -271,5 +271,45 @@ export default [
     name: 'S42 RGB texture: green read as red (the taps\' sums mixed up)',
     edits: [{ file: 'src/software/mip-texture.ts', find: 'out[1] = grey ? r : g;', replace: 'out[1] = r;' }],
     tests: [VS_REFERENCE],
+  },
+  {
+    name: 'S44 object cache: entries kept when the object moves (the model matrix not in the key)',
+    edits: [{ file: 'src/software/object-shader.ts', find: 'let i = put(k, 0, d.model, 16);', replace: 'let i = 16;' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S45 object cache: entries kept when the lights change',
+    edits: [{ file: 'src/software/object-shader.ts', find: '    for (let j = 0; j < l.count; j++) {\n      i = put(k, i, l.vector.subarray(3 * j), 3);', replace: '    for (let j = 0; j < 0; j++) {\n      i = put(k, i, l.vector.subarray(3 * j), 3);' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S46 object cache: entries kept when the material\'s diffuse colour changes',
+    edits: [{ file: 'src/software/object-shader.ts', find: 'i = put(k, i, m.diffuse, 3);', replace: 'i += 3;' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S47 object cache: entries kept when the mapping\'s bounds change',
+    edits: [{ file: 'src/software/object-shader.ts', find: 'k[i++] = c[0]; k[i++] = c[1]; k[i++] = c[2]; k[i++] = d.bounds.radius;', replace: 'k[i++] = c[0]; k[i++] = c[1]; k[i++] = c[2]; k[i++] = 0;' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S48 object cache: an entry read by any triangle of its draw',
+    edits: [{ file: 'src/software/object-cache.ts', find: 'return this.current !== 0 && this.version[i] === this.current && this.face[i] === face;', replace: 'return this.current !== 0 && this.version[i] === this.current;' }],
+    tests: [BASELINE, CACHES],
+  },
+  {
+    name: 'S49 object cache: a multisampled pixel\'s entry shared by its whole column (the row left out)',
+    edits: [{ file: 'src/software/raster.ts', find: 'return ((y / n) | 0) * (W / n) + ((x / n) | 0);', replace: 'return (x / n) | 0;' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S50 object cache: a changed draw read and kept at once (its version not new)',
+    edits: [{ file: 'src/software/object-cache.ts', find: '      this.versions[index] = this.nextVersion++;\n      return;\n', replace: '' }],
+    tests: [BASELINE, CACHES],
+  },
+  {
+    name: 'S51 glass cache: read and kept in the frame its key changes (the frame before wrote under another key)',
+    edits: [{ file: 'src/software/glass-cache.ts', find: '    this.active = same;\n', replace: '    this.active = true;\n' }],
+    tests: [BASELINE, CACHES],
   },
 ];

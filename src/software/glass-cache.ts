@@ -3,7 +3,8 @@
 // two doubles as in the frame before, bit for bit (the same vertices, snapped the same way, give
 // the same barycentrics), so they are read back instead of computed again: Fresnel and the
 // anisotropic texture read were about half of a 1-sample frame. When anything they depend on
-// differs from the last frame's, a new generation starts and every entry is stale.
+// differs from the last frame's, a new generation starts and every entry is stale; that frame
+// neither reads nor keeps any (a camera in motion pays nothing), the next still one keeps them.
 
 /** Doubles that decide a glass pixel's F and texel, besides the shader's objects (model, texture, mode). */
 export const GLASS_KEY_LENGTH = 64;
@@ -19,6 +20,8 @@ export class GlassCache {
   /** The last frame's key: `values` (GLASS_KEY_LENGTH, unused slots 0) and the objects. */
   private readonly values = new Float64Array(GLASS_KEY_LENGTH);
   private readonly objects: unknown[] = [];
+  /** Whether this frame's key is the last frame's: entries are read and kept only then. */
+  active = false;
 
   /**
    * Sizes the cache for `pixels` and keeps its entries only when `values` and `objects` are
@@ -28,6 +31,7 @@ export class GlassCache {
     let same = this.f.length >= pixels && objects.length === this.objects.length;
     for (let i = 0; same && i < objects.length; i++) same = objects[i] === this.objects[i];
     for (let i = 0; same && i < GLASS_KEY_LENGTH; i++) same = sameNumber(values[i], this.values[i]);
+    this.active = same;
     if (same) return;
     this.values.set(values);
     this.objects.length = 0;
@@ -63,4 +67,5 @@ export class GlassCache {
   }
 }
 
-const sameNumber = (a: number, b: number): boolean => a === b && (a !== 0 || 1 / a === 1 / b);
+/** Object.is for numbers: −0 is not 0, NaN is never kept (a key with one never matches). */
+export const sameNumber = (a: number, b: number): boolean => a === b && (a !== 0 || 1 / a === 1 / b);

@@ -141,7 +141,8 @@ export class GlassShader implements FragmentShader {
       entry = ((y / n) | 0) * (W / n) + ((x / n) | 0);
       slot = (y % n) * n + (x % n);
     }
-    if (rough === null && cache.has(entry, slot)) {
+    const cached = rough === null && cache.active;
+    if (cached && cache.has(entry, slot)) {
       this.f = cache.f[entry];
       this.tex[0] = cache.texel[entry];
       this.repeat(pixel);
@@ -173,7 +174,7 @@ export class GlassShader implements FragmentShader {
         this.hasB = this.roughTransmission && rough.gather(this.rb, rel, 1);
       }
     }
-    if (rough === null) cache.set(entry, slot, this.f, this.tex[0]);
+    if (cached) cache.set(entry, slot, this.f, this.tex[0]);
     this.repeat(pixel);
   }
 

@@ -75,6 +75,11 @@ export class Rasterizer {
   dbdy2 = 0;
   /** NDC depth of the fragment (bias included). */
   z = 0;
+  /**
+   * Which triangle the fragment is of: its index in the draw × MAX_POLY + its place in the
+   * clipped polygon's fan (the same in every frame that draws the same vertices).
+   */
+  face = 0;
 
   private scratch: Float64Array;
   private readonly dist = new Float64Array(MAX_POLY);
@@ -105,6 +110,14 @@ export class Rasterizer {
     if (maxWidth > 0) this.resize(maxWidth, maxHeight);
   }
 
+  /** The pixel `sample` lies in, numbered on the grid of pixels (itself unless multisampled). */
+  pixelOf(sample: number): number {
+    const n = this.shadeEvery, W = this.width;
+    if (n === 1) return sample;
+    const y = (sample / W) | 0, x = sample - y * W;
+    return ((y / n) | 0) * (W / n) + ((x / n) | 0);
+  }
+
   /** Sets the target size; the depth buffer grows as needed (never per frame once large enough). */
   resize(width: number, height: number): void {
     this.width = width;
@@ -128,6 +141,7 @@ export class Rasterizer {
     }
     const user = this.userClip;
     for (let t = 0; t + 2 < count; t += 3) {
+      this.face = (t / 3) * MAX_POLY;
       const a = indices[t] * s, b = indices[t + 1] * s, c = indices[t + 2] * s;
       // Trivial accept: every vertex inside every plane; trivial reject: all outside one.
       const inA = inside(vertices, a, user), inB = inside(vertices, b, user), inC = inside(vertices, c, user);
@@ -192,7 +206,7 @@ export class Rasterizer {
       this.fy[i] = Math.round((1 - p[o + 1] * iw) * sy);
       this.nz[i] = p[o + 2] * iw;
     }
-    for (let i = 1; i + 1 < n; i++) this.triangle(0, i, i + 1, shader);
+    for (let i = 1; i + 1 < n; i++, this.face++) this.triangle(0, i, i + 1, shader);
   }
 
   /** One triangle of the polygon (vertex numbers i, j, k): culled, ordered to a positive area, boxed, scanned. */

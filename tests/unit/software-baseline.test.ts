@@ -17,7 +17,7 @@ import { defaultScene } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
 import { SoftwareRenderer } from '../../src/software';
 import { CASES, IMAGES, STATE } from './software-cases';
-import { DEFAULT_GLASS } from '../../src/scene/default-scene';
+import { DEFAULT_GLASS, DEFAULT_LIGHT } from '../../src/scene/default-scene';
 
 const FILE = new URL('./software-baseline.json', import.meta.url);
 const UPDATE = process.env.UPDATE_BASELINE === '1';
@@ -81,13 +81,19 @@ describe('software renderer: pixels bit for bit as recorded (software-baseline.j
 
 /**
  * Frames drawn one after another by one renderer: the cube turning with all else still (what the
- * glass cache keeps), then one change at a time, each kept by the frames after it — each of what
- * the glass's F and texel depend on, and what they do not. Each frame must be what a fresh
- * renderer draws.
+ * caches keep: the glass's F and texel, the sphere's colours), then one change at a time, each
+ * drawn twice (a cache keeps entries from a key's second frame) and kept by the frames after it —
+ * each of what the glass and the objects depend on, and what they do not. Each frame must be what
+ * a fresh renderer draws.
  */
 describe('software renderer: a run of frames, each as a fresh renderer draws it', () => {
   const moved: Scene = { ...scene, glass: { ...DEFAULT_GLASS, center: [DEFAULT_GLASS.center[0] + 0.25, DEFAULT_GLASS.center[1], 0] } };
   const turned: Scene = { ...scene, glass: { ...DEFAULT_GLASS, normal: [0.1, 1, 0.05] } };
+  const [cube, sphere] = scene.objects;
+  const withSphere = (over: Partial<typeof sphere>): Scene => ({ ...scene, objects: [cube, { ...sphere, ...over }] });
+  const lit: Scene = { ...scene, lights: [{ ...DEFAULT_LIGHT, diffuse: [0.6, 0.5, 0.4] }] };
+  const twoLights: Scene = { ...scene, lights: [DEFAULT_LIGHT, { kind: 'point', vector: [1, 2.5, 2], ambient: [0, 0, 0], diffuse: [0.5, 0.4, 0.3], specular: [0.6, 0.6, 0.6] }] };
+  const p = sphere.transform.position;
   const steps: [string, Partial<FrameState>, Scene?][] = [
     ['t 0.5', { time: 0.5 }], ['t 0.6', { time: 0.6 }], ['t 0.7', { time: 0.7 }],
     ['camera turned', { yaw: STATE.yaw + 0.5 }], ['camera moved', { cameraPosition: [STATE.cameraPosition[0], STATE.cameraPosition[1] + 0.01, STATE.cameraPosition[2]] }],
@@ -97,17 +103,28 @@ describe('software renderer: a run of frames, each as a fresh renderer draws it'
     ['161×91', { width: 161, height: 91 }], ['glass moved', {}, moved], ['glass turned', {}, turned], ['default glass', {}, scene],
     ['orthographic', { projection: 'orthographic' }], ['rough 0.3', { roughness: 0.3 }], ['polished again', { roughness: 0 }],
     ['samples 0', { samples: 0 }], ['t 1.1', { time: 1.1 }],
+    ['light', {}, lit], ['two lights', {}, twoLights], ['default light', {}, scene],
+    ['sphere diffuse', {}, withSphere({ material: { ...sphere.material, diffuse: [0.3, 0.6, 0.9] } })],
+    ['sphere shininess', {}, withSphere({ material: { ...sphere.material, shininess: 8 } })],
+    ['sphere moved', {}, withSphere({ transform: { ...sphere.transform, position: [p[0] + 0.05, p[1], p[2]] } })],
+    ['sphere triplanar', {}, withSphere({ material: { ...sphere.material, mapping: 'triplanar' } })],
+    ['sphere bounds', {}, withSphere({ material: { ...sphere.material, mapping: 'triplanar' }, bounds: { ...sphere.bounds, radius: sphere.bounds.radius * 2 } })],
+    ['sphere image', {}, withSphere({ material: { ...sphere.material, texture: { kind: 'image', url: 'checker.png' } } })],
+    ['default sphere', {}, scene], ['gouraud', { shading: 'gouraud' }], ['flat', { shading: 'flat' }], ['phong', { shading: 'phong' }],
+    ['tessellation', { tessellation: 8 }], ['samples 4 again', { samples: 4 }], ['orthographic off', { projection: 'perspective' }],
   ];
   it(`${steps.length} frames, each as a fresh renderer draws it`, () => {
     const one = new SoftwareRenderer();
     let state: FrameState = STATE;
     for (const [name, over, sc] of steps) {
-      state = { ...state, ...over };
-      const got = one.render(state, sc ?? scene, IMAGES).slice();
-      const want = new SoftwareRenderer().render(state, sc ?? scene, IMAGES);
-      let differing = 0;
-      for (let i = 0; i < want.length; i++) if (got[i] !== want[i]) differing++;
-      expect(differing, `${name}: bytes that differ from a fresh renderer's`).toBe(0);
+      for (const frame of ['first', 'second']) {
+        state = { ...state, ...over, time: state.time + 0.05 };
+        const got = one.render(state, sc ?? scene, IMAGES).slice();
+        const want = new SoftwareRenderer().render(state, sc ?? scene, IMAGES);
+        let differing = 0;
+        for (let i = 0; i < want.length; i++) if (got[i] !== want[i]) differing++;
+        expect(differing, `${name}, ${frame} frame: bytes that differ from a fresh renderer's`).toBe(0);
+      }
     }
   });
 });
