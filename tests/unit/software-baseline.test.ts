@@ -90,10 +90,23 @@ describe('software renderer: a run of frames, each as a fresh renderer draws it'
   const moved: Scene = { ...scene, glass: { ...DEFAULT_GLASS, center: [DEFAULT_GLASS.center[0] + 0.25, DEFAULT_GLASS.center[1], 0] } };
   const turned: Scene = { ...scene, glass: { ...DEFAULT_GLASS, normal: [0.1, 1, 0.05] } };
   const [cube, sphere] = scene.objects;
-  const withSphere = (over: Partial<typeof sphere>): Scene => ({ ...scene, objects: [cube, { ...sphere, ...over }] });
+  // The sphere changed one thing at a time, each change kept by the next.
+  const sphereSteps: [string, Scene][] = [];
+  let changed = sphere;
+  const change = (name: string, over: Partial<typeof sphere>) => {
+    changed = { ...changed, ...over };
+    sphereSteps.push([name, { ...scene, objects: [cube, changed] }]);
+  };
   const lit: Scene = { ...scene, lights: [{ ...DEFAULT_LIGHT, diffuse: [0.6, 0.5, 0.4] }] };
   const twoLights: Scene = { ...scene, lights: [DEFAULT_LIGHT, { kind: 'point', vector: [1, 2.5, 2], ambient: [0, 0, 0], diffuse: [0.5, 0.4, 0.3], specular: [0.6, 0.6, 0.6] }] };
   const p = sphere.transform.position;
+  change('sphere diffuse', { material: { ...sphere.material, diffuse: [0.3, 0.6, 0.9] } });
+  change('sphere shininess', { material: { ...changed.material, shininess: 8 } });
+  change('sphere moved', { transform: { ...sphere.transform, position: [p[0] + 0.05, p[1], p[2]] } });
+  change('sphere turned', { transform: { ...changed.transform, rotation: [0, 10, 0] } });
+  change('sphere triplanar', { material: { ...changed.material, mapping: 'triplanar' } });
+  change('sphere bounds', { bounds: { ...sphere.bounds, radius: sphere.bounds.radius * 2 } });
+  change('sphere image', { material: { ...changed.material, texture: { kind: 'image', url: 'checker.png' } } });
   const steps: [string, Partial<FrameState>, Scene?][] = [
     ['t 0.5', { time: 0.5 }], ['t 0.6', { time: 0.6 }], ['t 0.7', { time: 0.7 }],
     ['camera turned', { yaw: STATE.yaw + 0.5 }], ['camera moved', { cameraPosition: [STATE.cameraPosition[0], STATE.cameraPosition[1] + 0.01, STATE.cameraPosition[2]] }],
@@ -104,14 +117,11 @@ describe('software renderer: a run of frames, each as a fresh renderer draws it'
     ['orthographic', { projection: 'orthographic' }], ['rough 0.3', { roughness: 0.3 }], ['polished again', { roughness: 0 }],
     ['samples 0', { samples: 0 }], ['t 1.1', { time: 1.1 }],
     ['light', {}, lit], ['two lights', {}, twoLights], ['default light', {}, scene],
-    ['sphere diffuse', {}, withSphere({ material: { ...sphere.material, diffuse: [0.3, 0.6, 0.9] } })],
-    ['sphere shininess', {}, withSphere({ material: { ...sphere.material, shininess: 8 } })],
-    ['sphere moved', {}, withSphere({ transform: { ...sphere.transform, position: [p[0] + 0.05, p[1], p[2]] } })],
-    ['sphere triplanar', {}, withSphere({ material: { ...sphere.material, mapping: 'triplanar' } })],
-    ['sphere bounds', {}, withSphere({ material: { ...sphere.material, mapping: 'triplanar' }, bounds: { ...sphere.bounds, radius: sphere.bounds.radius * 2 } })],
-    ['sphere image', {}, withSphere({ material: { ...sphere.material, texture: { kind: 'image', url: 'checker.png' } } })],
+    // Fixed tessellation: with 'auto' the sphere's mesh follows its bounds and position.
+    ['tessellation', { tessellation: 24 }],
+    ...sphereSteps.map(([name, sc]): [string, Partial<FrameState>, Scene] => [name, {}, sc]),
     ['default sphere', {}, scene], ['gouraud', { shading: 'gouraud' }], ['flat', { shading: 'flat' }], ['phong', { shading: 'phong' }],
-    ['tessellation', { tessellation: 8 }], ['samples 4 again', { samples: 4 }], ['orthographic off', { projection: 'perspective' }],
+    ['tessellation 8', { tessellation: 8 }], ['samples 4 again', { samples: 4 }], ['orthographic off', { projection: 'perspective' }],
   ];
   it(`${steps.length} frames, each as a fresh renderer draws it`, () => {
     const one = new SoftwareRenderer();
