@@ -253,9 +253,9 @@ export default [
     tests: [CACHES],
   },
   {
-    name: 'S39 glass composed without barycentrics (the mask pass\'s setting everywhere)',
-    edits: [{ file: 'src/software/glass-shader.ts', find: "r.barycentrics = this.mode !== 'mask';", replace: 'r.barycentrics = false;' }],
-    tests: [GLASS],
+    name: 'S39 glass: a pixel the cache lacks shaded with the last computed barycentrics (perspective() not called)',
+    edits: [{ file: 'src/software/glass-shader.ts', find: '    if (!r.barycentrics) r.perspective();\n', replace: '' }],
+    tests: [BASELINE],
   },
   {
     name: 'S40 packed sRGB resolve: red and blue swapped',
@@ -306,6 +306,11 @@ export default [
     name: 'S50 object cache: a changed draw read and kept at once (its version not new)',
     edits: [{ file: 'src/software/object-cache.ts', find: '      this.versions[index] = this.nextVersion++;\n      return;\n', replace: '' }],
     tests: [BASELINE, CACHES],
+  },
+  {
+    name: 'S52 rasterizer: a fragment without barycentrics keeps the last one\'s screen barycentrics (perspective() then reads them)',
+    edits: [{ file: 'src/software/raster.ts', find: 'this.l0 = l0; this.l1 = l1; this.z = z;', replace: 'this.z = z;' }],
+    tests: [BASELINE],
   },
   {
     name: 'S51 glass cache: read and kept in the frame its key changes (the frame before wrote under another key)',

@@ -52,6 +52,7 @@ export class GlassCache {
   /** Forgets every entry (a frame whose key cannot be told, as the rough glass's). */
   clear(): void {
     this.values[0] = NaN;
+    this.active = false;
   }
 
   /** Whether pixel `i` holds this generation's values, written at sample `slot`. */

@@ -90,6 +90,8 @@ export class GlassShader implements FragmentShader {
     // the glass covers their faces there.
     r.depthBias = GLASS_TIE_BIAS;
     if (this.mode !== 'mask') this.beginCache(r);
+    // With the cache in use, a pixel's barycentrics are computed only when it is not cached.
+    if (this.cache.active && this.rough === null) r.barycentrics = false;
     try {
       r.drawTriangles(this.vertices, indices, indices.length, this);
     } finally {
@@ -148,6 +150,7 @@ export class GlassShader implements FragmentShader {
       this.repeat(pixel);
       return;
     }
+    if (!r.barycentrics) r.perspective();
     const p = r.poly, b0 = r.b0, b1 = r.b1, b2 = r.b2, i0 = r.o0, i1 = r.o1, i2 = r.o2;
     const rx = b0 * p[i0 + REL] + b1 * p[i1 + REL] + b2 * p[i2 + REL];
     const ry = b0 * p[i0 + REL + 1] + b1 * p[i1 + REL + 1] + b2 * p[i2 + REL + 1];

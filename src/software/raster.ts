@@ -43,8 +43,9 @@ export class Rasterizer {
   /** Compute dbdx/dbdy per fragment (texture LOD needs them). */
   derivatives = true;
   /**
-   * Compute b0..b2 and z per fragment; false: the shader reads the pixel alone (the glass's
-   * footprint), and a fragment costs no division.
+   * Compute b0..b2 (and derivatives) before each fragment; false: only l0, l1 and z are set, and
+   * a shader that needs them after all calls perspective() (the glass's footprint never does, a
+   * cached glass pixel need not): no division for such a fragment.
    */
   barycentrics = true;
   /** Floats per vertex in the buffers drawn (≥ VARYINGS). */
@@ -73,8 +74,10 @@ export class Rasterizer {
   dbdy0 = 0;
   dbdy1 = 0;
   dbdy2 = 0;
-  /** NDC depth of the fragment (bias included). */
+  /** NDC depth of the fragment (bias included), and its screen barycentrics of vertices 0 and 1. */
   z = 0;
+  l0 = 0;
+  l1 = 0;
   /**
    * Which triangle the fragment is of: its index in the draw × MAX_POLY + its place in the
    * clipped polygon's fan (the same in every frame that draws the same vertices).
@@ -247,19 +250,25 @@ export class Rasterizer {
     this.sumY = this.ay + this.by + this.cy;
   }
 
-  /** Perspective-corrects screen barycentrics (l0, l1) into b0..b2 (and derivatives) and shades. */
+  /** Sets the fragment's screen barycentrics (l0, l1) and depth, perspective-corrects them (barycentrics), shades. */
   private shade(l0: number, l1: number, z: number, pixel: number, shader: FragmentShader): void {
+    this.l0 = l0; this.l1 = l1; this.z = z;
+    if (this.barycentrics) this.perspective();
+    shader.fragment(pixel, this);
+  }
+
+  /** b0..b2 (and, with `derivatives`, their derivatives per pixel) from l0 and l1. */
+  perspective(): void {
+    const l0 = this.l0, l1 = this.l1;
     const a0 = l0 * this.w0, a1 = l1 * this.w1, a2 = (1 - l0 - l1) * this.w2;
     const q = 1 / (a0 + a1 + a2);
     const b0 = a0 * q, b1 = a1 * q, b2 = a2 * q;
     this.b0 = b0; this.b1 = b1; this.b2 = b2;
-    this.z = z;
     if (this.derivatives) {
       const sumX = this.sumX, sumY = this.sumY;
       this.dbdx0 = (this.ax - b0 * sumX) * q; this.dbdx1 = (this.bx - b1 * sumX) * q; this.dbdx2 = (this.cx - b2 * sumX) * q;
       this.dbdy0 = (this.ay - b0 * sumY) * q; this.dbdy1 = (this.by - b1 * sumY) * q; this.dbdy2 = (this.cy - b2 * sumY) * q;
     }
-    shader.fragment(pixel, this);
   }
 
   /**
@@ -276,7 +285,7 @@ export class Rasterizer {
     const inv = 1 / area;
     const z0 = this.nz[i], z1 = this.nz[j], z2 = this.nz[k];
     this.interpolate(i, j, k, inv, stepX0, stepX1, stepX2, stepY0, stepY1, stepY2);
-    const { depth, mask, depthTest, depthWrite, depthBias, barycentrics } = this;
+    const { depth, mask, depthTest, depthWrite, depthBias } = this;
     const width = this.width;
 
     const span = px1 - px0;
@@ -299,8 +308,7 @@ export class Rasterizer {
             const z = Math.fround(l0 * z0 + l1 * z1 + l2 * z2 + depthBias);
             if (!depthTest || z < depth[pixel]) {
               if (depthWrite) depth[pixel] = z;
-              if (barycentrics) this.shade(l0, l1, z, pixel, shader);
-              else shader.fragment(pixel, this);
+              this.shade(l0, l1, z, pixel, shader);
             }
           }
         }
@@ -328,7 +336,7 @@ export class Rasterizer {
     const z0 = this.nz[i], z1 = this.nz[j], z2 = this.nz[k];
     // Derivatives per pixel: n samples per step.
     this.interpolate(i, j, k, inv, n * stepX0, n * stepX1, n * stepX2, n * stepY0, n * stepY1, n * stepY2);
-    const { depth, mask, depthTest, depthWrite, depthBias, barycentrics } = this;
+    const { depth, mask, depthTest, depthWrite, depthBias } = this;
     const width = this.width, height = this.height;
     const repeat = shader.repeat !== undefined;
     const span = qx1 - qx0;
@@ -369,10 +377,6 @@ export class Rasterizer {
               continue;
             }
             shaded = true;
-            if (!barycentrics) {
-              shader.fragment(sample, this);
-              continue;
-            }
             // Shaded at the pixel's centre, as a GPU interpolates without `centroid` (off the
             // triangle at its edges): a sample's offset would shift textures by a part of a pixel.
             this.shade((row0 + dx * stepX0 + centre0) * inv, (row1 + dx * stepX1 + centre1) * inv, z, sample, shader);
