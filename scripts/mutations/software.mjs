@@ -308,8 +308,8 @@ export default [
     tests: [BASELINE, CACHES],
   },
   {
-    name: 'S52 rasterizer: a fragment without barycentrics keeps the last one\'s screen barycentrics (perspective() then reads them)',
-    edits: [{ file: 'src/software/raster.ts', find: 'this.l0 = l0; this.l1 = l1; this.z = z;', replace: 'this.z = z;' }],
+    name: 'S52 rasterizer: a 1-sample fragment keeps the last one\'s screen barycentrics (perspective() reads them)',
+    edits: [{ file: 'src/software/raster.ts', find: '              this.l0 = l0; this.l1 = l1; this.z = z;', replace: '              this.z = z;' }],
     tests: [BASELINE],
   },
   {

@@ -250,9 +250,12 @@ export class Rasterizer {
     this.sumY = this.ay + this.by + this.cy;
   }
 
-  /** Sets the fragment's screen barycentrics (l0, l1) and depth, perspective-corrects them (barycentrics), shades. */
-  private shade(l0: number, l1: number, z: number, pixel: number, shader: FragmentShader): void {
-    this.l0 = l0; this.l1 = l1; this.z = z;
+  /**
+   * Shades the fragment whose l0, l1 and z the caller set (fields, not arguments: doubles passed
+   * to a call that is not inlined are boxed, one allocation per fragment), perspective-correcting
+   * them first unless `barycentrics` is off.
+   */
+  private shade(pixel: number, shader: FragmentShader): void {
     if (this.barycentrics) this.perspective();
     shader.fragment(pixel, this);
   }
@@ -308,7 +311,8 @@ export class Rasterizer {
             const z = Math.fround(l0 * z0 + l1 * z1 + l2 * z2 + depthBias);
             if (!depthTest || z < depth[pixel]) {
               if (depthWrite) depth[pixel] = z;
-              this.shade(l0, l1, z, pixel, shader);
+              this.l0 = l0; this.l1 = l1; this.z = z;
+              this.shade(pixel, shader);
             }
           }
         }
@@ -379,7 +383,8 @@ export class Rasterizer {
             shaded = true;
             // Shaded at the pixel's centre, as a GPU interpolates without `centroid` (off the
             // triangle at its edges): a sample's offset would shift textures by a part of a pixel.
-            this.shade((row0 + dx * stepX0 + centre0) * inv, (row1 + dx * stepX1 + centre1) * inv, z, sample, shader);
+            this.l0 = (row0 + dx * stepX0 + centre0) * inv; this.l1 = (row1 + dx * stepX1 + centre1) * inv; this.z = z;
+            this.shade(sample, shader);
           }
         }
       }
