@@ -7,14 +7,16 @@ const VS_REFERENCE = 'tests/unit/software-reference.test.ts';
 const SRGB = 'tests/unit/software-srgb.test.ts';
 const ANISO = 'tests/unit/software-anisotropic.test.ts';
 const MSAA = 'tests/unit/software-msaa.test.ts';
+const BASELINE = 'tests/unit/software-baseline.test.ts';
+const CACHES = 'tests/unit/software-caches.test.ts';
 
 export default [
   {
     name: 'S0 software rasterizer without the top-left rule',
     edits: [{
-      file: 'src/software/raster.ts',
-      find: "    e[9] = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;\n    e[10] = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;\n    e[11] = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;",
-      replace: '    e[9] = 0;\n    e[10] = 0;\n    e[11] = 0;',
+      file: 'src/software/edges.ts',
+      find: "  e[9] = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;\n  e[10] = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;\n  e[11] = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;",
+      replace: '  e[9] = 0;\n  e[10] = 0;\n  e[11] = 0;',
     }],
     tests: [RASTER],
   },
@@ -219,5 +221,100 @@ export default [
     name: 'S33 orthographic: highlights seen from the eye point (the view vector ignored)',
     edits: [{ file: 'src/software/object-shader.ts', find: "if (ov[3] === 0) { g[6] = ov[0]; g[7] = ov[1]; g[8] = ov[2]; } else {", replace: "if (ov[3] === 2) { g[6] = ov[0]; g[7] = ov[1]; g[8] = ov[2]; } else {" }],
     tests: [VS_REFERENCE],
+  },
+  {
+    name: 'S34 glass cache: entries kept when the camera moves (the vertices not in the key)',
+    edits: [{ file: 'src/software/glass-shader.ts', find: '    k.set(this.vertices);\n', replace: '' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S35 glass cache: entries kept when ior changes',
+    edits: [{ file: 'src/software/glass-shader.ts', find: 'k[i++] = this.ior;', replace: 'k[i++] = 1.5;' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S36 glass cache: entries kept when the Fresnel model changes',
+    edits: [{ file: 'src/software/glass-shader.ts', find: 'o.push(this.model, this.texture, this.mode);', replace: 'o.push(this.texture, this.mode);' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S37 glass cache: a new key starts no new generation (every entry still read)',
+    edits: [{ file: 'src/software/glass-cache.ts', find: '    this.generation++;\n', replace: '' }],
+    tests: [BASELINE, CACHES],
+  },
+  {
+    name: 'S38 glass cache: an entry read whichever sample of its pixel wrote it (multisampled diagonal)',
+    edits: [{ file: 'src/software/glass-cache.ts', find: 'return this.stamp[i] === this.generation && this.slot[i] === slot;', replace: 'return this.stamp[i] === this.generation;' }],
+    tests: [BASELINE, CACHES],
+  },
+  {
+    name: 'S43 glass cache: −0 and 0 taken for the same key value',
+    edits: [{ file: 'src/software/glass-cache.ts', find: 'a === b && (a !== 0 || 1 / a === 1 / b)', replace: 'a === b' }],
+    tests: [CACHES],
+  },
+  {
+    name: 'S39 glass: a pixel the cache lacks shaded with the last computed barycentrics (perspective() not called)',
+    edits: [{ file: 'src/software/glass-shader.ts', find: '    if (!r.barycentrics) r.perspective();\n', replace: '' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S40 packed sRGB resolve: red and blue swapped',
+    edits: [{ file: 'src/software/encode.ts', find: 'packed[i] = encodeByte(source[o]) | (encodeByte(source[o + 1]) << 8) | (encodeByte(source[o + 2]) << 16) | OPAQUE;', replace: 'packed[i] = encodeByte(source[o + 2]) | (encodeByte(source[o + 1]) << 8) | (encodeByte(source[o]) << 16) | OPAQUE;' }],
+    tests: [SRGB, BASELINE],
+  },
+  {
+    name: 'S41 packed sRGB resolve: alpha 0',
+    edits: [{ file: 'src/software/encode.ts', find: 'const OPAQUE = 0xff000000 | 0;', replace: 'const OPAQUE = 0;' }],
+    tests: [SRGB, BASELINE],
+  },
+  {
+    name: 'S42 RGB texture: green read as red (the taps\' sums mixed up)',
+    edits: [{ file: 'src/software/mip-texture.ts', find: 'out[1] = grey ? r : g;', replace: 'out[1] = r;' }],
+    tests: [VS_REFERENCE],
+  },
+  {
+    name: 'S44 object cache: entries kept when the object moves (the model matrix not in the key)',
+    edits: [{ file: 'src/software/object-shader.ts', find: 'let i = put(k, 0, d.model, 16);', replace: 'let i = 16;' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S45 object cache: entries kept when the lights change',
+    edits: [{ file: 'src/software/object-shader.ts', find: '    for (let j = 0; j < l.count; j++) {\n      i = put(k, i, l.vector.subarray(3 * j), 3);', replace: '    for (let j = 0; j < 0; j++) {\n      i = put(k, i, l.vector.subarray(3 * j), 3);' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S46 object cache: entries kept when the material\'s diffuse colour changes',
+    edits: [{ file: 'src/software/object-shader.ts', find: 'i = put(k, i, m.diffuse, 3);', replace: 'i += 3;' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S47 object cache: entries kept when the mapping\'s bounds change',
+    edits: [{ file: 'src/software/object-shader.ts', find: 'k[i++] = c[0]; k[i++] = c[1]; k[i++] = c[2]; k[i++] = d.bounds.radius;', replace: 'k[i++] = c[0]; k[i++] = c[1]; k[i++] = c[2]; k[i++] = 0;' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S48 object cache: an entry read by any triangle of its draw',
+    edits: [{ file: 'src/software/object-cache.ts', find: 'return this.current !== 0 && this.version[i] === this.current && this.face[i] === face;', replace: 'return this.current !== 0 && this.version[i] === this.current;' }],
+    tests: [BASELINE, CACHES],
+  },
+  {
+    name: 'S49 object cache: a multisampled pixel\'s entry shared by its whole column (the row left out)',
+    edits: [{ file: 'src/software/raster.ts', find: 'return ((y / n) | 0) * (W / n) + ((x / n) | 0);', replace: 'return (x / n) | 0;' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S50 object cache: a changed draw read and kept at once (its version not new)',
+    edits: [{ file: 'src/software/object-cache.ts', find: '      this.versions[index] = this.nextVersion++;\n      return;\n', replace: '' }],
+    tests: [BASELINE, CACHES],
+  },
+  {
+    name: 'S52 rasterizer: a 1-sample fragment keeps the last one\'s screen barycentrics (perspective() reads them)',
+    edits: [{ file: 'src/software/raster.ts', find: '              this.l0 = l0; this.l1 = l1; this.z = z;', replace: '              this.z = z;' }],
+    tests: [BASELINE],
+  },
+  {
+    name: 'S51 glass cache: read and kept in the frame its key changes (the frame before wrote under another key)',
+    edits: [{ file: 'src/software/glass-cache.ts', find: '    this.active = same;\n', replace: '    this.active = true;\n' }],
+    tests: [BASELINE, CACHES],
   },
 ];

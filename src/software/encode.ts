@@ -34,6 +34,10 @@ export function encodeByte(l: number): number {
   return l >= NEXT[b] ? b + 1 : b;
 }
 
+const LITTLE_ENDIAN = new Uint8Array(new Uint32Array([1]).buffer)[0] === 1;
+/** Alpha 255 in a packed pixel's high byte. */
+const OPAQUE = 0xff000000 | 0;
+
 /**
  * Box filter of n×n samples per pixel, rounded to RGBA8. With `encode` the mean (linear light)
  * is encoded to sRGB after the average, as an MSAA resolve into an sRGB target does, by a
@@ -43,6 +47,14 @@ export function resolveSamples(
   out: Uint8ClampedArray, source: Float32Array, width: number, height: number, n: number, encode: boolean,
 ): void {
   const W = width * n, k = 255 / (n * n), mean = 1 / (n * n);
+  if (n === 1 && encode && LITTLE_ENDIAN && out.byteOffset % 4 === 0) {
+    // One store per pixel (R in the low byte, as RGBA8 lies in memory on a little-endian host).
+    const packed = new Uint32Array(out.buffer, out.byteOffset, width * height);
+    for (let i = 0, o = 0; i < width * height; i++, o += 3) {
+      packed[i] = encodeByte(source[o]) | (encodeByte(source[o + 1]) << 8) | (encodeByte(source[o + 2]) << 16) | OPAQUE;
+    }
+    return;
+  }
   if (n === 1 && encode) {
     for (let i = 0, o = 0, p = 0; i < width * height; i++, o += 3, p += 4) {
       out[p] = encodeByte(source[o]);

@@ -5,6 +5,7 @@ import { GLASS_BODY as BODY } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
 import type { MipTexture } from './mip-texture';
 import type { RoughGather } from './rough-gather';
+import { GlassCache, GLASS_KEY_LENGTH } from './glass-cache';
 import { CLIP_DISTANCE, VARYINGS, type FragmentShader, type Rasterizer } from './raster';
 
 // Varyings: eye-relative position, UV.
@@ -47,6 +48,10 @@ export class GlassShader implements FragmentShader {
   private cos = 1;
   private f = 0;
   private readonly lookup = new Float64Array(6);
+  /** F and the texel per pixel from the frames before (the camera and glass still); this frame's key. */
+  private readonly cache = new GlassCache();
+  private readonly key = new Float64Array(GLASS_KEY_LENGTH);
+  private readonly keyObjects: unknown[] = [];
 
   /**
    * Vertex stage of the glass rectangle (its float64 corners, u along its width, v along its
@@ -76,6 +81,7 @@ export class GlassShader implements FragmentShader {
     r.userClip = false;
     r.cull = 'none';
     r.derivatives = this.mode === 'compose';
+    r.barycentrics = this.mode !== 'mask';
     r.depthTest = true;
     r.depthWrite = false;
     // Pushed back a hair (glass-pass.ts's polygonOffset): a face of an object on the viewer's side
@@ -83,11 +89,37 @@ export class GlassShader implements FragmentShader {
     // objects on the plane or beyond it are pushed back twice as far (software-renderer.ts), so
     // the glass covers their faces there.
     r.depthBias = GLASS_TIE_BIAS;
+    if (this.mode !== 'mask') this.beginCache(r);
+    // With the cache in use, a pixel's barycentrics are computed only when it is not cached.
+    if (this.cache.active && this.rough === null) r.barycentrics = false;
     try {
       r.drawTriangles(this.vertices, indices, indices.length, this);
     } finally {
       r.depthBias = 0;
+      r.barycentrics = true;
     }
+  }
+
+  /**
+   * Keeps the cache's entries when everything a pixel's F and texel depend on is as in the last
+   * frame: the vertices (clip position, eye-relative point, UV), the view vector, the normal,
+   * ior, the grid, and the model, texture and mode. The rough glass gathers per frame: no cache.
+   */
+  private beginCache(r: Rasterizer): void {
+    const k = this.key, v = this.view, n = r.shadeEvery;
+    if (this.rough !== null) {
+      this.cache.clear();
+      return;
+    }
+    k.set(this.vertices);
+    let i = this.vertices.length;
+    for (let c = 0; c < 4; c++) k[i++] = v[c];
+    k[i++] = this.nx; k[i++] = this.ny; k[i++] = this.nz;
+    k[i++] = this.ior; k[i++] = r.width; k[i++] = r.height; k[i++] = n;
+    const o = this.keyObjects;
+    o.length = 0;
+    o.push(this.model, this.texture, this.mode);
+    this.cache.begin(k, o, (r.width / n) * (r.height / n));
   }
 
   /**
@@ -103,6 +135,22 @@ export class GlassShader implements FragmentShader {
       this.mask[pixel] = 1;
       return;
     }
+    // The cache's entry: the pixel (of a multisampled grid: its n×n samples) and which sample.
+    const cache = this.cache, n = r.shadeEvery, rough = this.rough;
+    let entry = pixel, slot = 0;
+    if (n > 1) {
+      const W = r.width, y = (pixel / W) | 0, x = pixel - y * W;
+      entry = ((y / n) | 0) * (W / n) + ((x / n) | 0);
+      slot = (y % n) * n + (x % n);
+    }
+    const cached = rough === null && cache.active;
+    if (cached && cache.has(entry, slot)) {
+      this.f = cache.f[entry];
+      this.tex[0] = cache.texel[entry];
+      this.repeat(pixel);
+      return;
+    }
+    if (!r.barycentrics) r.perspective();
     const p = r.poly, b0 = r.b0, b1 = r.b1, b2 = r.b2, i0 = r.o0, i1 = r.o1, i2 = r.o2;
     const rx = b0 * p[i0 + REL] + b1 * p[i1 + REL] + b2 * p[i2 + REL];
     const ry = b0 * p[i0 + REL + 1] + b1 * p[i1 + REL + 1] + b2 * p[i2 + REL + 1];
@@ -122,7 +170,6 @@ export class GlassShader implements FragmentShader {
       l[4] = r.dbdy0 * p[ua] + r.dbdy1 * p[ub] + r.dbdy2 * p[uc];
       l[5] = r.dbdy0 * p[ua + 1] + r.dbdy1 * p[ub + 1] + r.dbdy2 * p[uc + 1];
       this.texture.sample(l, this.tex);
-      const rough = this.rough;
       if (rough !== null) {
         const rel = this.rel;
         rel[0] = rx; rel[1] = ry; rel[2] = rz;
@@ -130,6 +177,7 @@ export class GlassShader implements FragmentShader {
         this.hasB = this.roughTransmission && rough.gather(this.rb, rel, 1);
       }
     }
+    if (cached) cache.set(entry, slot, this.f, this.tex[0]);
     this.repeat(pixel);
   }
 

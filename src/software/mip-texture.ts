@@ -80,7 +80,8 @@ export class MipTexture {
     let first = 0, f = 0;
     if (lambda >= top) first = top;
     else if (lambda > 0) { first = Math.floor(lambda) | 0; f = lambda - first; }
-    out[0] = out[1] = out[2] = 0;
+    // Sums in locals (one add per tap for grey, not three stores), in the order the taps come.
+    let r = 0, g = 0, b = 0;
     const u = a[0], v = a[1], grey = this.channels === 1, share = 1 / n;
     for (let l = first, levelWeight = 1 - f; l <= first + 1 && levelWeight > 0; l++, levelWeight = f) {
       const level = levels[l], W = level.width, H = level.height, data = level.data;
@@ -98,14 +99,18 @@ export class MipTexture {
         const i1 = i0 + 1 === W ? 0 : i0 + 1, j1 = j0 + 1 === H ? 0 : j0 + 1;
         const w00 = (1 - x) * (1 - y) * weight, w10 = x * (1 - y) * weight, w01 = (1 - x) * y * weight, w11 = x * y * weight;
         if (grey) {
-          const g = w00 * data[j0 * W + i0] + w10 * data[j0 * W + i1] + w01 * data[j1 * W + i0] + w11 * data[j1 * W + i1];
-          out[0] += g; out[1] += g; out[2] += g;
+          r += w00 * data[j0 * W + i0] + w10 * data[j0 * W + i1] + w01 * data[j1 * W + i0] + w11 * data[j1 * W + i1];
         } else {
           const p00 = 3 * (j0 * W + i0), p10 = 3 * (j0 * W + i1), p01 = 3 * (j1 * W + i0), p11 = 3 * (j1 * W + i1);
-          for (let c = 0; c < 3; c++) out[c] += w00 * data[p00 + c] + w10 * data[p10 + c] + w01 * data[p01 + c] + w11 * data[p11 + c];
+          r += w00 * data[p00] + w10 * data[p10] + w01 * data[p01] + w11 * data[p11];
+          g += w00 * data[p00 + 1] + w10 * data[p10 + 1] + w01 * data[p01 + 1] + w11 * data[p11 + 1];
+          b += w00 * data[p00 + 2] + w10 * data[p10 + 2] + w01 * data[p01 + 2] + w11 * data[p11 + 2];
         }
       }
     }
+    out[0] = r;
+    out[1] = grey ? r : g;
+    out[2] = grey ? r : b;
   }
 }
 

@@ -9,6 +9,7 @@ import type { Shading } from '../frame/types';
 import { blinnPhong, type Lights } from './lighting';
 import type { MipTexture } from './mip-texture';
 import { CLIP_DISTANCE, VARYINGS, type FragmentShader, type Rasterizer } from './raster';
+import { OBJECT_KEY_LENGTH, type ObjectCache } from './object-cache';
 
 // Varyings, after the clip-space slots: phong carries the eye-relative position and normal,
 // gouraud and flat the two light sums in the same slots; then UV, object position and normal.
@@ -34,6 +35,9 @@ export interface ObjectDraw {
   twoSided: boolean;
   shading: Shading;
   lights: Lights;
+  /** The target's cache of opaque objects' colours (null: none), and the object's index in the scene. */
+  cache: ObjectCache | null;
+  index: number;
 }
 
 /**
@@ -97,6 +101,10 @@ export class ObjectShader implements FragmentShader {
   private readonly n = new Float64Array(3);
   private readonly weights = new Float64Array(3);
   private readonly uvs = new Float64Array(6);
+  /** The draw's cache while its fragments are read and kept (null: shaded every frame), and its key. */
+  private cache: ObjectCache | null = null;
+  private readonly key = new Float64Array(OBJECT_KEY_LENGTH);
+  private readonly keyObjects: unknown[] = [];
 
   /** Runs the vertex stage of `d` and rasterizes its triangles with `r`. */
   render(d: ObjectDraw, r: Rasterizer): void {
@@ -109,6 +117,13 @@ export class ObjectShader implements FragmentShader {
     r.stride = OBJECT_STRIDE;
     r.userClip = d.clipPlane !== null;
     r.derivatives = true;
+    this.cache = null;
+    // Opaque draws only: their colour goes to the Float32 target as it is (no blend, no codes).
+    if (d.cache !== null && this.codes === null && d.material.opacity >= 1 && !timing?.constantFragments) {
+      const n = r.shadeEvery;
+      d.cache.begin(d.index, this.cacheKey(d, r), this.keyObjects, (r.width / n) * (r.height / n));
+      if (d.cache.current !== 0) this.cache = d.cache;
+    }
     if (!timing) {
       r.drawTriangles(this.vertices, d.mesh.indices, d.mesh.indices.length, this);
       return;
@@ -122,6 +137,42 @@ export class ObjectShader implements FragmentShader {
     r.drawTriangles(this.vertices, d.mesh.indices, d.mesh.indices.length, shader);
     timing.vertex += t1 - t0;
     timing.triangles += performance.now() - t1;
+  }
+
+  /**
+   * Everything a fragment's colour depends on besides the pixel and the triangle: the vertex
+   * stage's inputs, lights, material, mapping bounds and the grid (values into this.key, objects
+   * into this.keyObjects). Meshes and textures are compared by identity: scene values are never
+   * written in place.
+   */
+  private cacheKey(d: ObjectDraw, r: Rasterizer): Float64Array {
+    const k = this.key, m = d.material, l = d.lights, cp = d.clipPlane, mesh = d.mesh, c = d.bounds.center;
+    k.fill(0);
+    let i = put(k, 0, d.model, 16);
+    i = put(k, i, d.normal, 9);
+    i = put(k, i, d.viewProjection, 16);
+    i = put(k, i, d.eye, 3);
+    i = put(k, i, d.view, 4);
+    k[i++] = cp === null ? 0 : 1;
+    if (cp !== null) i = put(k, i, cp, 4); else i += 4;
+    k[i++] = c[0]; k[i++] = c[1]; k[i++] = c[2]; k[i++] = d.bounds.radius;
+    i = put(k, i, m.ambient, 3);
+    i = put(k, i, m.diffuse, 3);
+    i = put(k, i, m.specular, 3);
+    k[i++] = m.shininess; k[i++] = m.opacity; k[i++] = d.twoSided ? 1 : 0;
+    k[i++] = r.width; k[i++] = r.height; k[i++] = r.shadeEvery; k[i++] = r.frontCCW ? 1 : 0; k[i++] = r.cull === 'back' ? 1 : 0;
+    k[i++] = l.count;
+    for (let j = 0; j < l.count; j++) {
+      i = put(k, i, l.vector.subarray(3 * j), 3);
+      k[i++] = l.point[j];
+      i = put(k, i, l.ambient.subarray(3 * j), 3);
+      i = put(k, i, l.diffuse.subarray(3 * j), 3);
+      i = put(k, i, l.specular.subarray(3 * j), 3);
+    }
+    const o = this.keyObjects;
+    o.length = 0;
+    o.push(mesh, mesh.positions, mesh.normals, mesh.uvs, mesh.indices, mesh.centroids, d.texture, d.shading, m.mapping);
+    return k;
   }
 
   private vertexStage(d: ObjectDraw, count: number): void {
@@ -174,6 +225,13 @@ export class ObjectShader implements FragmentShader {
   }
 
   fragment(pixel: number, r: Rasterizer): void {
+    const cache = this.cache, entry = cache === null ? 0 : r.pixelOf(pixel);
+    if (cache !== null && cache.has(entry, r.face)) {
+      const c = cache.rgb, o = 3 * entry;
+      this.cr = c[o]; this.cg = c[o + 1]; this.cb = c[o + 2];
+      this.repeat(pixel);
+      return;
+    }
     const d = this.draw, p = r.poly, b0 = r.b0, b1 = r.b1, b2 = r.b2;
     const i0 = r.o0, i1 = r.o1, i2 = r.o2;
     const sums = this.sums;
@@ -201,6 +259,7 @@ export class ObjectShader implements FragmentShader {
     this.cr = cr < 0 ? 0 : cr > 1 ? 1 : cr;
     this.cg = cg < 0 ? 0 : cg > 1 ? 1 : cg;
     this.cb = cb < 0 ? 0 : cb > 1 ? 1 : cb;
+    if (cache !== null) cache.set(entry, r.face, this.cr, this.cg, this.cb);
     if (this.codes !== null) {
       // The fragment's world point (the model matrix over its object-space position) and its
       // distance from the plane, coded as distanceCode() does (inline: its double would be boxed).
@@ -288,6 +347,12 @@ export class ObjectShader implements FragmentShader {
     t.sample(this.lookup, tex);
     return tex;
   }
+}
+
+/** Copies n values of `xs` into k from i; the next free index. */
+function put(k: Float64Array, i: number, xs: ArrayLike<number>, n: number): number {
+  for (let j = 0; j < n; j++) k[i + j] = xs[j];
+  return i + n;
 }
 
 /** A difference of u (period 1) taken the short way round. */

@@ -3,13 +3,11 @@
 // barycentrics (and their screen derivatives, for texture LOD). Knows nothing of shading.
 
 import { ALL, copyVertex, inside, planeDistance, PLANES, USER, CLIP_W, CLIP_DISTANCE, VARYINGS } from './clip';
+import { edgeFunctions, HALF, runEnd, runStart, SUB } from './edges';
 
 export { CLIP_W, CLIP_DISTANCE, VARYINGS };
 
-/** Sub-pixel precision of the snapped vertices: 1/256 px, as GPUs commonly use (8 bits). */
-export const SUBPIXEL_BITS = 8;
-const SUB = 1 << SUBPIXEL_BITS;
-const HALF = SUB >> 1;
+export { SUBPIXEL_BITS } from './edges';
 /** A clipped triangle has at most 3 + one vertex per plane (near, far, 4 guard, user). */
 const MAX_POLY = 10;
 
@@ -44,6 +42,12 @@ export class Rasterizer {
   mask: Uint8Array | null = null;
   /** Compute dbdx/dbdy per fragment (texture LOD needs them). */
   derivatives = true;
+  /**
+   * Compute b0..b2 (and derivatives) before each fragment; false: only l0, l1 and z are set, and
+   * a shader that needs them after all calls perspective() (the glass's footprint never does, a
+   * cached glass pixel need not): no division for such a fragment.
+   */
+  barycentrics = true;
   /** Floats per vertex in the buffers drawn (≥ VARYINGS). */
   stride = VARYINGS;
   /**
@@ -70,8 +74,15 @@ export class Rasterizer {
   dbdy0 = 0;
   dbdy1 = 0;
   dbdy2 = 0;
-  /** NDC depth of the fragment (bias included). */
+  /** NDC depth of the fragment (bias included), and its screen barycentrics of vertices 0 and 1. */
   z = 0;
+  l0 = 0;
+  l1 = 0;
+  /**
+   * Which triangle the fragment is of: its index in the draw × MAX_POLY + its place in the
+   * clipped polygon's fan (the same in every frame that draws the same vertices).
+   */
+  face = 0;
 
   private scratch: Float64Array;
   private readonly dist = new Float64Array(MAX_POLY);
@@ -102,6 +113,14 @@ export class Rasterizer {
     if (maxWidth > 0) this.resize(maxWidth, maxHeight);
   }
 
+  /** The pixel `sample` lies in, numbered on the grid of pixels (itself unless multisampled). */
+  pixelOf(sample: number): number {
+    const n = this.shadeEvery, W = this.width;
+    if (n === 1) return sample;
+    const y = (sample / W) | 0, x = sample - y * W;
+    return ((y / n) | 0) * (W / n) + ((x / n) | 0);
+  }
+
   /** Sets the target size; the depth buffer grows as needed (never per frame once large enough). */
   resize(width: number, height: number): void {
     this.width = width;
@@ -125,6 +144,7 @@ export class Rasterizer {
     }
     const user = this.userClip;
     for (let t = 0; t + 2 < count; t += 3) {
+      this.face = (t / 3) * MAX_POLY;
       const a = indices[t] * s, b = indices[t + 1] * s, c = indices[t + 2] * s;
       // Trivial accept: every vertex inside every plane; trivial reject: all outside one.
       const inA = inside(vertices, a, user), inB = inside(vertices, b, user), inC = inside(vertices, c, user);
@@ -189,7 +209,7 @@ export class Rasterizer {
       this.fy[i] = Math.round((1 - p[o + 1] * iw) * sy);
       this.nz[i] = p[o + 2] * iw;
     }
-    for (let i = 1; i + 1 < n; i++) this.triangle(0, i, i + 1, shader);
+    for (let i = 1; i + 1 < n; i++, this.face++) this.triangle(0, i, i + 1, shader);
   }
 
   /** One triangle of the polygon (vertex numbers i, j, k): culled, ordered to a positive area, boxed, scanned. */
@@ -230,45 +250,28 @@ export class Rasterizer {
     this.sumY = this.ay + this.by + this.cy;
   }
 
-  /** Perspective-corrects screen barycentrics (l0, l1) into b0..b2 (and derivatives) and shades. */
-  private shade(l0: number, l1: number, z: number, pixel: number, shader: FragmentShader): void {
+  /**
+   * Shades the fragment whose l0, l1 and z the caller set (fields, not arguments: doubles passed
+   * to a call that is not inlined are boxed, one allocation per fragment), perspective-correcting
+   * them first unless `barycentrics` is off.
+   */
+  private shade(pixel: number, shader: FragmentShader): void {
+    if (this.barycentrics) this.perspective();
+    shader.fragment(pixel, this);
+  }
+
+  /** b0..b2 (and, with `derivatives`, their derivatives per pixel) from l0 and l1. */
+  perspective(): void {
+    const l0 = this.l0, l1 = this.l1;
     const a0 = l0 * this.w0, a1 = l1 * this.w1, a2 = (1 - l0 - l1) * this.w2;
     const q = 1 / (a0 + a1 + a2);
     const b0 = a0 * q, b1 = a1 * q, b2 = a2 * q;
     this.b0 = b0; this.b1 = b1; this.b2 = b2;
-    this.z = z;
     if (this.derivatives) {
       const sumX = this.sumX, sumY = this.sumY;
       this.dbdx0 = (this.ax - b0 * sumX) * q; this.dbdx1 = (this.bx - b1 * sumX) * q; this.dbdx2 = (this.cx - b2 * sumX) * q;
       this.dbdy0 = (this.ay - b0 * sumY) * q; this.dbdy1 = (this.by - b1 * sumY) * q; this.dbdy2 = (this.cy - b2 * sumY) * q;
     }
-    shader.fragment(pixel, this);
-  }
-
-  /**
-   * Triangle (i, j, k)'s edge functions at the centre of pixel (px, py) and their steps per
-   * pixel (exact integers), with the top-left rule's biases, into `this.edge`: row0..2,
-   * stepX0..2, stepY0..2, bias0..2. Edge e_v is opposite vertex v: e0 = E(1→2), e1 = E(2→0),
-   * e2 = E(0→1); E(a→b)(p) = (bx − ax)(py − ay) − (by − ay)(px − ax), positive inside (area > 0).
-   */
-  private edges(i: number, j: number, k: number, px: number, py: number): Float64Array {
-    const { fx, fy } = this, e = this.edge;
-    const x0 = fx[i], y0 = fy[i], x1 = fx[j], y1 = fy[j], x2 = fx[k], y2 = fy[k];
-    const ax0 = x2 - x1, ay0 = y2 - y1; // edge 1→2
-    const ax1 = x0 - x2, ay1 = y0 - y2; // edge 2→0
-    const ax2 = x1 - x0, ay2 = y1 - y0; // edge 0→1
-    const cx = px * SUB + HALF, cy = py * SUB + HALF;
-    e[0] = ax0 * (cy - y1) - ay0 * (cx - x1);
-    e[1] = ax1 * (cy - y2) - ay1 * (cx - x2);
-    e[2] = ax2 * (cy - y0) - ay2 * (cx - x0);
-    e[3] = -ay0 * SUB; e[4] = -ay1 * SUB; e[5] = -ay2 * SUB;
-    e[6] = ax0 * SUB; e[7] = ax1 * SUB; e[8] = ax2 * SUB;
-    // Top-left rule (y down, interior on the right of each edge as walked): a top edge runs
-    // exactly horizontally rightwards, a left edge upwards. Pixels on other edges are left out.
-    e[9] = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;
-    e[10] = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;
-    e[11] = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;
-    return e;
   }
 
   /**
@@ -277,7 +280,7 @@ export class Rasterizer {
    * their barycentrics (and derivatives) set, and shaded.
    */
   private scan(i: number, j: number, k: number, area: number, px0: number, px1: number, py0: number, py1: number, shader: FragmentShader): void {
-    const e = this.edges(i, j, k, px0, py0);
+    const e = edgeFunctions(this.edge, this.fx, this.fy, i, j, k, px0, py0);
     let row0 = e[0], row1 = e[1], row2 = e[2];
     const stepX0 = e[3], stepX1 = e[4], stepX2 = e[5], stepY0 = e[6], stepY1 = e[7], stepY2 = e[8];
     const bias0 = e[9], bias1 = e[10], bias2 = e[11];
@@ -308,7 +311,8 @@ export class Rasterizer {
             const z = Math.fround(l0 * z0 + l1 * z1 + l2 * z2 + depthBias);
             if (!depthTest || z < depth[pixel]) {
               if (depthWrite) depth[pixel] = z;
-              this.shade(l0, l1, z, pixel, shader);
+              this.l0 = l0; this.l1 = l1; this.z = z;
+              this.shade(pixel, shader);
             }
           }
         }
@@ -327,7 +331,7 @@ export class Rasterizer {
     // The box in whole pixels; samples outside the triangle's box fail the edge test anyway.
     const qx0 = Math.floor(px0 / n) * n, qy0 = Math.floor(py0 / n) * n;
     const qx1 = Math.floor(px1 / n) * n + n - 1, qy1 = Math.floor(py1 / n) * n + n - 1;
-    const e = this.edges(i, j, k, qx0, qy0);
+    const e = edgeFunctions(this.edge, this.fx, this.fy, i, j, k, qx0, qy0);
     let row0 = e[0], row1 = e[1], row2 = e[2];
     const stepX0 = e[3], stepX1 = e[4], stepX2 = e[5], stepY0 = e[6], stepY1 = e[7], stepY2 = e[8];
     const bias0 = e[9], bias1 = e[10], bias2 = e[11];
@@ -376,25 +380,14 @@ export class Rasterizer {
               shader.repeat!(sample);
               continue;
             }
+            shaded = true;
             // Shaded at the pixel's centre, as a GPU interpolates without `centroid` (off the
             // triangle at its edges): a sample's offset would shift textures by a part of a pixel.
-            this.shade((row0 + dx * stepX0 + centre0) * inv, (row1 + dx * stepX1 + centre1) * inv, z, sample, shader);
-            shaded = true;
+            this.l0 = (row0 + dx * stepX0 + centre0) * inv; this.l1 = (row1 + dx * stepX1 + centre1) * inv; this.z = z;
+            this.shade(sample, shader);
           }
         }
       }
     }
   }
-}
-
-/** First k ≥ 0 (one early) where e + k·step ≥ 0 can hold; a value past any span when it never can. */
-function runStart(e: number, step: number): number {
-  if (step > 0) return e >= 0 ? 0 : Math.ceil(-e / step) - 1;
-  return e >= 0 ? 0 : 1 << 30;
-}
-
-/** Last k (one late) where e + k·step ≥ 0 can hold, capped at `span`; −1 when it never can. */
-function runEnd(e: number, step: number, span: number): number {
-  if (step < 0) return e < 0 ? -1 : Math.min(span, Math.floor(e / -step) + 1);
-  return e >= 0 || step > 0 ? span : -1;
 }

@@ -18,6 +18,7 @@ import { isTwoSided } from '../frame/mesh-choice';
 import { SoftwareMeshes } from './meshes';
 import { imageMipTexture, proceduralMipTexture, type MipTexture } from './mip-texture';
 import { ObjectShader, type ObjectDraw, type SoftwareTiming } from './object-shader';
+import { ObjectCache } from './object-cache';
 import { Rasterizer } from './raster';
 import { RoughBuffers, RoughGather } from './rough-gather';
 import { ROUGH_GATHER } from '../frame/rough-glass';
@@ -50,6 +51,9 @@ export class SoftwareRenderer {
   private readonly main = new Rasterizer();
   private readonly mirror = new Rasterizer();
   private readonly objectShader = new ObjectShader();
+  /** Opaque objects' colours from the frames before, on the scene's grid and the reflection's. */
+  private readonly mainCache = new ObjectCache();
+  private readonly mirrorCache = new ObjectCache();
   private readonly glassShader = new GlassShader();
   private readonly lightsMain = new Lights();
   private readonly lightsMirrored = new Lights();
@@ -85,7 +89,7 @@ export class SoftwareRenderer {
       mesh: { positions: new Float32Array(0), normals: new Float32Array(0), uvs: new Float32Array(0), indices: new Uint16Array(0) },
       model: new Float64Array(16), normal: new Float64Array(9), eye: [0, 0, 0], view: [0, 0, 0, 1], viewProjection: new Float64Array(16),
       clipPlane: null, material: undefined as unknown as ObjectDraw['material'], bounds: { center: [0, 0, 0], radius: 1 },
-      texture: procedural, twoSided: false, shading: 'phong', lights: this.lightsMain,
+      texture: procedural, twoSided: false, shading: 'phong', lights: this.lightsMain, cache: null, index: 0,
     };
   }
 
@@ -361,6 +365,8 @@ export class SoftwareRenderer {
       d.twoSided = isTwoSided(o.geometry);
       d.shading = state.shading;
       d.lights = mirrored ? this.lightsMirrored : this.lightsMain;
+      d.cache = selection === 'opaque' ? (mirrored ? this.mirrorCache : this.mainCache) : null;
+      d.index = i;
       r.cull = d.twoSided ? 'none' : 'back';
       // A depth tie with the glass: an object on the viewer's side wins, one on the plane or
       // beyond it loses (pushed back twice as far as the glass).
