@@ -2,6 +2,7 @@
 // faults turned into warnings. Building the drawable mesh is build-mesh.ts's job.
 import { F64List, I32List } from './growable';
 import { addUnique, splitGroups, splitMtllib } from './names';
+import { ByteScanner } from './byte-scanner';
 import { Scanner } from './scanner';
 import { dropZeroArea, MAX_FACE_CORNERS, triangulate } from './triangulate';
 import { shown, Warnings } from '../warnings';
@@ -38,13 +39,20 @@ export interface ObjRaw {
   firstDroppedLine: number;
 }
 
+/** The cursor the reader walks: over text (scanner.ts) or UTF-8 bytes (byte-scanner.ts), the same statements either way. */
+export type ObjScanner = Scanner | ByteScanner;
+
 export function readObj(text: string): ObjRaw {
-  return new ObjReader(text).read();
+  return new ObjReader(new Scanner(text)).read();
+}
+
+/** UTF-8 bytes from `start` (past a byte-order mark). */
+export function readObjBytes(bytes: Uint8Array, start: number): ObjRaw {
+  return new ObjReader(new ByteScanner(bytes, start)).read();
 }
 
 /** The reader's state across statements: the lists being filled and the current material and smoothing. */
 class ObjReader {
-  private readonly sc: Scanner;
   private readonly positions = new F64List();
   private colors: F64List | null = null;
   private readonly uvs = new F64List();
@@ -76,12 +84,10 @@ class ObjReader {
   private fault = '';
   private cornerCount = 0;
 
-  constructor(private readonly text: string) {
-    this.sc = new Scanner(text);
-  }
+  constructor(private readonly sc: ObjScanner) {}
 
   read(): ObjRaw {
-    const { sc, text } = this;
+    const sc = this.sc;
     while (!sc.atEnd()) {
       sc.skipBlank();
       const line = sc.line;
@@ -89,9 +95,9 @@ class ObjReader {
         sc.nextLine();
         continue;
       }
-      const c0 = text.charCodeAt(sc.pos);
-      const c1 = text.charCodeAt(sc.pos + 1);
-      const c2End = endsKeyword(text.charCodeAt(sc.pos + 2));
+      const c0 = sc.code(sc.pos);
+      const c1 = sc.code(sc.pos + 1);
+      const c2End = endsKeyword(sc.code(sc.pos + 2));
       if (c0 === 118 /* v */ && endsKeyword(c1)) this.vertex(line);
       else if (c0 === 118 && c1 === 116 /* vt */ && c2End) this.textureCoordinate(line);
       else if (c0 === 118 && c1 === 110 /* vn */ && c2End) this.normal(line);
@@ -136,7 +142,7 @@ class ObjReader {
     const index = positions.length / 3;
     if (n < 3) {
       this.badLine[0].set(index, line);
-      warnings.add(line, n < 0 ? `vertex with a coordinate that is not a number (${shownLine(this.text, sc)}); faces using it are dropped`
+      warnings.add(line, n < 0 ? `vertex with a coordinate that is not a number (${shownLine(sc)}); faces using it are dropped`
         : `vertex with ${n} of its 3 coordinates; faces using it are dropped`);
       positions.push3(NaN, NaN, NaN);
     } else {
@@ -160,7 +166,7 @@ class ObjReader {
     const n = this.readValues();
     if (n < 1) {
       this.badLine[1].set(uvs.length / 2, line);
-      this.warnings.add(line, `texture coordinate that is not a number (${shownLine(this.text, sc)}); faces using it are dropped`);
+      this.warnings.add(line, `texture coordinate that is not a number (${shownLine(sc)}); faces using it are dropped`);
       uvs.push(NaN);
       uvs.push(NaN);
     } else {
@@ -200,7 +206,7 @@ class ObjReader {
    * rest of the statement is still read, to count its corners. Sets `fault` and `cornerCount`.
    */
   private readCorners(): void {
-    const { sc, text, face, badLine } = this;
+    const { sc, face, badLine } = this;
     face.clear();
     let fault = '';
     let cornerCount = 0;
@@ -217,13 +223,13 @@ class ObjReader {
       }
       if (sc.pos === tokenStart) {
         sc.pos++; // never stall on a character no reader consumes
-        if (fault === '') fault = `${shown(text.charAt(tokenStart))} is not a face corner`;
+        if (fault === '') fault = `${shown(sc.charAt(tokenStart))} is not a face corner`;
       }
       // Past the cap the line is still read to its end (to count it), but nothing is kept.
       if (++cornerCount > MAX_FACE_CORNERS && fault === '') fault = 'too many';
       if (fault !== '') continue;
       const vi = resolve(v, vCount), ti = t === 0 ? -1 : resolve(t, tCount), ni = nn === 0 ? -1 : resolve(nn, nCount);
-      if (v !== v || t !== t || nn !== nn) fault = `${shown(text.slice(tokenStart, sc.tokenEnd()))} is not a face corner`;
+      if (v !== v || t !== t || nn !== nn) fault = `${shown(sc.shownSpan(tokenStart, sc.tokenEnd()))} is not a face corner`;
       else if (vi < 0) fault = `vertex index ${v} is outside the ${vCount} vertices read so far`;
       else if (t !== 0 && ti < 0) fault = `texture coordinate index ${t} is outside the ${tCount} read so far`;
       else if (nn !== 0 && ni < 0) fault = `normal index ${nn} is outside the ${nCount} read so far`;
@@ -307,8 +313,6 @@ function resolve(index: number, count: number): number {
 }
 
 /** The statement just read, shortened, for a message. */
-function shownLine(text: string, sc: Scanner): string {
-  let start = sc.pos;
-  while (start > 0 && start > sc.pos - 60 && text.charCodeAt(start - 1) !== 10) start--;
-  return shown(text.slice(start, sc.pos).trim());
+function shownLine(sc: ObjScanner): string {
+  return shown(sc.lineBefore().trim());
 }
