@@ -3,6 +3,7 @@
 import { asUint8, bomOf, decodeText, type Bytes } from './decode-text';
 import { LoadError } from './load-error';
 import { buildMesh } from './obj/build-mesh';
+import { estimateCapacities } from './obj/estimate';
 import { readObj, readObjBytes, type ObjRaw } from './obj/reader';
 import type { ObjResult } from './obj/types';
 import { SAMPLE, sniffModel, type ModelFormat } from './sniff';
@@ -42,7 +43,7 @@ export function parseObjBytes(bytes: Bytes, options: ObjOptions = {}): ObjResult
     const start = decodeText(b, SAMPLE);
     return /\S/.test(start) ? start : decodeText(b);
   });
-  return objResult(readObjBytes(b, skip), url);
+  return objResult(readObjBytes(b, skip, estimateCapacities(b)), url);
 }
 
 export { normalizeObj } from './obj-normalize';

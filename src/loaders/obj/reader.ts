@@ -1,6 +1,7 @@
 // The statement loop: OBJ text → flat lists of vertices, face corners and triangles, with
 // faults turned into warnings. Building the drawable mesh is build-mesh.ts's job.
 import { F64List, I32List } from './growable';
+import type { Capacities } from './estimate';
 import { addUnique, splitGroups, splitMtllib } from './names';
 import { ByteScanner } from './byte-scanner';
 import { Scanner } from './scanner';
@@ -46,22 +47,20 @@ export function readObj(text: string): ObjRaw {
   return new ObjReader(new Scanner(text)).read();
 }
 
-/** UTF-8 bytes from `start` (past a byte-order mark). */
-export function readObjBytes(bytes: Uint8Array, start: number): ObjRaw {
-  return new ObjReader(new ByteScanner(bytes, start)).read();
+/** UTF-8 bytes from `start` (past a byte-order mark); `capacities`: the lists' expected lengths. */
+export function readObjBytes(bytes: Uint8Array, start: number, capacities: Capacities | null = null): ObjRaw {
+  return new ObjReader(new ByteScanner(bytes, start), capacities).read();
 }
 
 /** The reader's state across statements: the lists being filled and the current material and smoothing. */
 class ObjReader {
-  private readonly positions = new F64List();
+  private readonly positions: F64List;
   private colors: F64List | null = null;
-  private readonly uvs = new F64List();
-  private readonly normals = new F64List();
-  private readonly corners = new I32List();
-  private readonly triangles = new I32List();
-  private readonly faces = new I32List();
-  /** The face being read: position, uv, normal index per corner. */
-  private readonly face = new I32List(64);
+  private readonly uvs: F64List;
+  private readonly normals: F64List;
+  private readonly corners: I32List;
+  private readonly triangles: I32List;
+  private readonly faces: I32List;
   private readonly warnings = new Warnings();
   // A bad v/vt/vn keeps its slot (so later indices still mean the same element), flagged here.
   private readonly badLine = [new Map<number, number>(), new Map<number, number>(), new Map<number, number>()];
@@ -84,7 +83,15 @@ class ObjReader {
   private fault = '';
   private cornerCount = 0;
 
-  constructor(private readonly sc: ObjScanner) {}
+  constructor(private readonly sc: ObjScanner, capacities: Capacities | null = null) {
+    const c = capacities;
+    this.positions = new F64List(Math.max(1024, c?.positions ?? 0));
+    this.uvs = new F64List(Math.max(1024, c?.uvs ?? 0));
+    this.normals = new F64List(Math.max(1024, c?.normals ?? 0));
+    this.corners = new I32List(Math.max(1024, c?.corners ?? 0));
+    this.triangles = new I32List(Math.max(1024, c?.triangles ?? 0));
+    this.faces = new I32List(Math.max(1024, FACE_INTS * (c?.faces ?? 0)));
+  }
 
   read(): ObjRaw {
     const sc = this.sc;
@@ -192,22 +199,23 @@ class ObjReader {
   /** `f v/t/n …`: its corners read, then the face kept (triangulated) or dropped with the reason. */
   private faceStatement(line: number): void {
     this.sc.pos += 1;
+    const start = this.corners.length / 3;
     this.readCorners();
     const { fault, cornerCount } = this;
-    const count = this.face.length / 3;
+    const count = this.corners.length / 3 - start;
+    if (count < 3 || fault !== '') this.corners.length = 3 * start; // nothing of a dropped face kept
     if (cornerCount > MAX_FACE_CORNERS) this.dropFace(line, `face of ${cornerCount} vertices, more than the ${MAX_FACE_CORNERS} a face may have; face dropped`);
     else if (fault !== '') this.dropFace(line, `${fault}; face dropped`);
     else if (count < 3) this.dropFace(line, `face with ${count} ${count === 1 ? 'vertex' : 'vertices'} (a face needs 3); face dropped`);
-    else this.keepFace(line, count);
+    else this.keepFace(line, start, count);
   }
 
   /**
-   * The face's corners into `face` (0-based indices, −1 for none), up to the first fault; the
+   * The face's corners onto `corners` (0-based indices, −1 for none), up to the first fault; the
    * rest of the statement is still read, to count its corners. Sets `fault` and `cornerCount`.
    */
   private readCorners(): void {
-    const { sc, face, badLine } = this;
-    face.clear();
+    const { sc, corners, badLine } = this;
     let fault = '';
     let cornerCount = 0;
     const vCount = this.positions.length / 3, tCount = this.uvs.length / 2, nCount = this.normals.length / 3;
@@ -236,17 +244,15 @@ class ObjReader {
       else if (badLine[0].size > 0 && badLine[0].has(vi)) fault = `vertex ${vi + 1} (line ${badLine[0].get(vi)}) is not usable`;
       else if (ti >= 0 && badLine[1].size > 0 && badLine[1].has(ti)) fault = `texture coordinate ${ti + 1} (line ${badLine[1].get(ti)}) is not usable`;
       else if (ni >= 0 && badLine[2].size > 0 && badLine[2].has(ni)) fault = `normal ${ni + 1} (line ${badLine[2].get(ni)}) is not usable`;
-      else face.push3(vi, ti, ni);
+      else corners.push3(vi, ti, ni);
     }
     this.fault = fault;
     this.cornerCount = cornerCount;
   }
 
-  /** The face's `count` corners and triangles kept, unless triangulating leaves no area. */
-  private keepFace(line: number, count: number): void {
-    const { corners, triangles, positions, face } = this;
-    const start = corners.length / 3;
-    for (let k = 0; k < face.length; k++) corners.push(face.data[k]);
+  /** The face's `count` corners (read from `start`) and triangles kept, unless triangulating leaves no area. */
+  private keepFace(line: number, start: number, count: number): void {
+    const { corners, triangles, positions } = this;
     const firstTriangle = triangles.length / 3;
     const clipped = triangulate(positions.data, corners.data, start, count, triangles);
     // A triangle as written is kept as written; what triangulating a polygon makes of zero area is not.
