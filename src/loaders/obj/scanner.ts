@@ -195,6 +195,15 @@ export class Scanner {
     return negative ? -value : value;
   }
 
+  /** byte-scanner.ts reads plain statements on a fast path first; text always goes the general way. */
+  readPlainNumbers(_values: Float64Array): number {
+    return -1;
+  }
+
+  readPlainCorners(_raw: Int32Array): number {
+    return -1;
+  }
+
   /** If the cursor is on a `/`, steps over it. */
   skipSlash(): boolean {
     if (this.text.charCodeAt(this.pos) !== SLASH) return false;
