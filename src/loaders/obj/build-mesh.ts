@@ -1,6 +1,5 @@
 // Raw OBJ lists → indexed triangle mesh: one vertex per distinct (position, uv, normal source)
 // corner, generated normals per smoothing group, the index buffer sorted by material.
-import { F64List, I32List } from './growable';
 import { FACE_INTS, type ObjRaw } from './reader';
 import type { Bounds, DrawGroup, ObjResult } from './types';
 
@@ -25,13 +24,51 @@ interface Welded {
   /** Per corner of the file: its output vertex. */
   cornerOut: Int32Array;
   /** Per output vertex: position, uv and normal index (a negative normal: generated, SMOOTH or FLAT_FACE). */
-  v: I32List;
-  t: I32List;
-  n: I32List;
+  v: Int32Array;
+  t: Int32Array;
+  n: Int32Array;
   /** Per output vertex: the vertex whose entry of `acc` holds its generated normal. */
-  rep: I32List;
+  rep: Int32Array;
   /** Generated normals, summed area-weighted over the faces that share them (xyz per vertex). */
-  acc: F64List;
+  acc: Float64Array;
+}
+
+/** Welded's per-vertex arrays while they fill, plus each vertex's key and position chain; they double when full. */
+class VertexTable {
+  v: Int32Array;
+  t: Int32Array;
+  n: Int32Array;
+  k: Int32Array;
+  chain: Int32Array;
+  rep: Int32Array;
+  acc: Float64Array;
+
+  constructor(capacity: number) {
+    this.v = new Int32Array(capacity);
+    this.t = new Int32Array(capacity);
+    this.n = new Int32Array(capacity);
+    this.k = new Int32Array(capacity);
+    this.chain = new Int32Array(capacity);
+    this.rep = new Int32Array(capacity);
+    this.acc = new Float64Array(3 * capacity);
+  }
+
+  grow(): void {
+    const more = (a: Int32Array): Int32Array => {
+      const b = new Int32Array(2 * a.length);
+      b.set(a);
+      return b;
+    };
+    this.v = more(this.v);
+    this.t = more(this.t);
+    this.n = more(this.n);
+    this.k = more(this.k);
+    this.chain = more(this.chain);
+    this.rep = more(this.rep);
+    const acc = new Float64Array(2 * this.acc.length);
+    acc.set(this.acc);
+    this.acc = acc;
+  }
 }
 
 /**
@@ -46,9 +83,9 @@ function weldCorners(raw: ObjRaw): Welded {
   const cornerOut = new Int32Array(raw.corners.length / 3);
   // Vertices sharing a position are chained from head[position]; chains are a few long.
   const head = new Int32Array(raw.positions.length / 3).fill(-1);
-  const outV = new I32List(), outT = new I32List(), outN = new I32List(), outK = new I32List();
-  const chain = new I32List(), rep = new I32List();
-  const acc = new F64List();
+  // Most models have about one output vertex per position: room for that, doubled if need be.
+  const table = new VertexTable(Math.max(64, raw.positions.length / 3));
+  let { v: outV, t: outT, n: outN, k: outK, chain, rep, acc } = table;
   const normal = new Float64Array(3);
   let outCount = 0;
 
@@ -67,29 +104,32 @@ function weldCorners(raw: ObjRaw): Welded {
       let o = head[v];
       let shared = -1; // a vertex of the same position and smoothing group, maybe another uv
       while (o >= 0) {
-        if (outN.data[o] === n && outK.data[o] === key) {
-          if (outT.data[o] === t) break;
-          if (shared < 0) shared = rep.data[o];
+        if (outN[o] === n && outK[o] === key) {
+          if (outT[o] === t) break;
+          if (shared < 0) shared = rep[o];
         }
-        o = chain.data[o];
+        o = chain[o];
       }
       if (o < 0) {
+        if (outCount === outV.length) {
+          table.grow();
+          ({ v: outV, t: outT, n: outN, k: outK, chain, rep, acc } = table);
+        }
         o = outCount++;
-        outV.push(v);
-        outT.push(t);
-        outN.push(n);
-        outK.push(key);
-        chain.push(head[v]);
+        outV[o] = v;
+        outT[o] = t;
+        outN[o] = n;
+        outK[o] = key;
+        chain[o] = head[v];
         head[v] = o;
-        rep.push(shared >= 0 ? shared : o);
-        acc.push3(0, 0, 0);
+        rep[o] = shared >= 0 ? shared : o;
       }
       cornerOut[c] = o;
       if (n < 0) {
-        const r = 3 * rep.data[o];
-        acc.data[r] += normal[0];
-        acc.data[r + 1] += normal[1];
-        acc.data[r + 2] += normal[2];
+        const r = 3 * rep[o];
+        acc[r] += normal[0];
+        acc[r + 1] += normal[1];
+        acc[r + 2] += normal[2];
       }
     }
   }
@@ -116,24 +156,24 @@ function vertexArrays(raw: ObjRaw, w: Welded): Pick<ObjResult, 'positions' | 'no
   const outCount = w.count;
   const positions = new Float32Array(outCount * 3);
   const normals = new Float32Array(outCount * 3);
-  const hasUv = w.t.data.subarray(0, outCount).some((t) => t >= 0);
+  const hasUv = w.t.subarray(0, outCount).some((t) => t >= 0);
   const uvs = hasUv ? new Float32Array(outCount * 2) : null;
   const colors = raw.colors ? new Float32Array(outCount * 3) : null;
   const min: [number, number, number] = [Infinity, Infinity, Infinity];
   const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
   for (let o = 0; o < outCount; o++) {
-    const p = 3 * w.v.data[o];
+    const p = 3 * w.v[o];
     for (let a = 0; a < 3; a++) {
       const x = pos[p + a];
       positions[3 * o + a] = x;
       if (x < min[a]) min[a] = x;
       if (x > max[a]) max[a] = x;
     }
-    const n = w.n.data[o];
+    const n = w.n[o];
     if (n >= 0) writeUnit(normals, o, raw.normals.data, 3 * n);
-    else writeUnit(normals, o, w.acc.data, 3 * w.rep.data[o]);
+    else writeUnit(normals, o, w.acc, 3 * w.rep[o]);
     if (uvs) {
-      const t = w.t.data[o];
+      const t = w.t[o];
       if (t >= 0) {
         uvs[2 * o] = raw.uvs.data[2 * t];
         uvs[2 * o + 1] = raw.uvs.data[2 * t + 1];
