@@ -220,7 +220,7 @@ class ObjReader {
    */
   private readCorners(): void {
     if (this.readPlainCorners()) return;
-    const { sc, corners, badLine } = this;
+    const sc = this.sc;
     let fault = '';
     let cornerCount = 0;
     const vCount = this.positions.length / 3, tCount = this.uvs.length / 2, nCount = this.normals.length / 3;
@@ -241,41 +241,44 @@ class ObjReader {
       // Past the cap the line is still read to its end (to count it), but nothing is kept.
       if (++cornerCount > MAX_FACE_CORNERS && fault === '') fault = 'too many';
       if (fault !== '') continue;
-      const vi = resolve(v, vCount), ti = t === 0 ? -1 : resolve(t, tCount), ni = nn === 0 ? -1 : resolve(nn, nCount);
       if (v !== v || t !== t || nn !== nn) fault = `${shown(sc.shownSpan(tokenStart, sc.tokenEnd()))} is not a face corner`;
-      else if (vi < 0) fault = `vertex index ${v} is outside the ${vCount} vertices read so far`;
-      else if (t !== 0 && ti < 0) fault = `texture coordinate index ${t} is outside the ${tCount} read so far`;
-      else if (nn !== 0 && ni < 0) fault = `normal index ${nn} is outside the ${nCount} read so far`;
-      else if (badLine[0].size > 0 && badLine[0].has(vi)) fault = `vertex ${vi + 1} (line ${badLine[0].get(vi)}) is not usable`;
-      else if (ti >= 0 && badLine[1].size > 0 && badLine[1].has(ti)) fault = `texture coordinate ${ti + 1} (line ${badLine[1].get(ti)}) is not usable`;
-      else if (ni >= 0 && badLine[2].size > 0 && badLine[2].has(ni)) fault = `normal ${ni + 1} (line ${badLine[2].get(ni)}) is not usable`;
-      else corners.push3(vi, ti, ni);
+      else fault = this.addCorner(v, t, nn, vCount, tCount, nCount);
     }
     this.fault = fault;
     this.cornerCount = cornerCount;
   }
 
+  /** One corner's OBJ indices resolved onto `corners`; else the fault ('' for none). */
+  private addCorner(v: number, t: number, nn: number, vCount: number, tCount: number, nCount: number): string {
+    const badLine = this.badLine;
+    const vi = resolve(v, vCount), ti = t === 0 ? -1 : resolve(t, tCount), ni = nn === 0 ? -1 : resolve(nn, nCount);
+    if (vi < 0) return `vertex index ${v} is outside the ${vCount} vertices read so far`;
+    if (t !== 0 && ti < 0) return `texture coordinate index ${t} is outside the ${tCount} read so far`;
+    if (nn !== 0 && ni < 0) return `normal index ${nn} is outside the ${nCount} read so far`;
+    if (badLine[0].size > 0 && badLine[0].has(vi)) return `vertex ${vi + 1} (line ${badLine[0].get(vi)}) is not usable`;
+    if (ti >= 0 && badLine[1].size > 0 && badLine[1].has(ti)) return `texture coordinate ${ti + 1} (line ${badLine[1].get(ti)}) is not usable`;
+    if (ni >= 0 && badLine[2].size > 0 && badLine[2].has(ni)) return `normal ${ni + 1} (line ${badLine[2].get(ni)}) is not usable`;
+    this.corners.push3(vi, ti, ni);
+    return '';
+  }
+
   /**
-   * readCorners for a plain face whose corners are all usable (the scanner's fast path), as the
-   * general way would read it; false, with nothing read, for any other face.
+   * readCorners for a plain face (the scanner's fast path) whose corners are all usable, as
+   * the general way reads it; false, with nothing read, for any other face.
    */
   private readPlainCorners(): boolean {
-    const { sc, corners, badLine, raw } = this;
-    if (badLine[0].size > 0 || badLine[1].size > 0 || badLine[2].size > 0) return false;
+    const { sc, corners, raw } = this;
     const from = sc.pos;
     const count = sc.readPlainCorners(raw);
     if (count < 0) return false;
     const first = corners.length;
     const vCount = this.positions.length / 3, tCount = this.uvs.length / 2, nCount = this.normals.length / 3;
     for (let k = 0; k < 3 * count; k += 3) {
-      const v = raw[k], t = raw[k + 1], nn = raw[k + 2];
-      const vi = resolve(v, vCount), ti = t === 0 ? -1 : resolve(t, tCount), ni = nn === 0 ? -1 : resolve(nn, nCount);
-      if (vi < 0 || ti < -1 || ni < -1) {
+      if (this.addCorner(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) !== '') {
         corners.length = first;
-        sc.pos = from;
+        sc.pos = from; // the general way says what is wrong
         return false;
       }
-      corners.push3(vi, ti, ni);
     }
     this.fault = '';
     this.cornerCount = count;
