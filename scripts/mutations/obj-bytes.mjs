@@ -32,8 +32,8 @@ export default [
     tests: [EQUAL],
   },
   {
-    name: 'B6 a backslash before LF not a continuation',
-    edits: [{ file: BYTES, find: 'if (b[q] === LF) this.pos += 2;', replace: 'if (b[q] === -1) this.pos += 2;' }],
+    name: 'B6 a continuation between two numbers not followed',
+    edits: [{ file: BYTES, find: 'else if (c === BACKSLASH && this.continuation()) continue;', replace: 'else if (c === -2 && this.continuation()) continue;' }],
     tests: [EQUAL],
   },
   {

@@ -58,7 +58,7 @@ const MESSY: [string, string][] = [
   ['only comments', '# nothing\n'],
   ['empty', ''],
   ['every face dropped', `${TRI}f 1 2 9\nf 1 2\n`],
-  ['non-ASCII in faults', `${TRI}f 1 2 ñ\nv é 1 2\nvt ∞\nf 1 2 3 ${'é'.repeat(50)}\nf 1 2 ${'中'.repeat(100)}\nvx\u00a0 1\n\u00a0v 1 2 3\nf 1 2 3\n`],
+  ['non-ASCII in faults', `${TRI}f 1 2 ñ\nv é 1 2\nvt ∞\nv 1 2 ${'é'.repeat(30)}\nvt ${'🙂'.repeat(12)}\nf 1 2 3 ${'é'.repeat(50)}\nf 1 2 ${'中'.repeat(100)}\nvx\u00a0 1\n\u00a0v 1 2 3\nf 1 2 3\n`],
   ['a long bad line', `v 1 2 ${'é'.repeat(100)}x\nv ${'9'.repeat(500)} 1 2\n${TRI}f 1 2 3\nf 1 2 ${'1'.repeat(300)}é\n`],
   ['a BOM inside', `${TRI}\uFEFFv 1 1 1\no \uFEFFa\uFEFF\nf 1 2 3\n`],
 ];

@@ -359,7 +359,7 @@ export class ByteScanner {
 }
 
 /** End of the token at `p`: whitespace, line end, comment, continuation or the end. */
-export function tokenEndAt(b: Uint8Array, p: number, n: number): number {
+function tokenEndAt(b: Uint8Array, p: number, n: number): number {
   for (; p < n; p++) {
     const c = b[p];
     if (c === SPACE || c === TAB || c === LF || c === CR || c === HASH || c === VT || c === FF) return p;
@@ -377,7 +377,7 @@ function isBlank(c: number): boolean {
 }
 
 /** What may follow a number or index at `p`: whitespace, a line end, a comment, a continuation, the end. */
-export function isDelimiterAt(b: Uint8Array, p: number, n: number): boolean {
+function isDelimiterAt(b: Uint8Array, p: number, n: number): boolean {
   if (p >= n) return true;
   const c = b[p];
   return c === SPACE || c === TAB || c === LF || c === CR || c === HASH || c === VT || c === FF
