@@ -18,57 +18,24 @@ export function buildMesh(raw: ObjRaw): Omit<ObjResult, 'warnings'> {
   };
 }
 
+/**
+ * Ints per output vertex record while welding: position, uv and normal index (a negative
+ * normal: generated, SMOOTH or FLAT_FACE), key, the next vertex of the same position, and the
+ * vertex whose entry of `acc` holds its generated normal. One record, not six arrays: a corner
+ * looks at all of a vertex's fields, and they share a cache line.
+ */
+const REC = 6;
+const V = 0, T = 1, N = 2, K = 3, CHAIN = 4, REP = 5;
+
 /** The output vertices: one per distinct corner, with where each comes from. */
 interface Welded {
   count: number;
   /** Per corner of the file: its output vertex. */
   cornerOut: Int32Array;
-  /** Per output vertex: position, uv and normal index (a negative normal: generated, SMOOTH or FLAT_FACE). */
-  v: Int32Array;
-  t: Int32Array;
-  n: Int32Array;
-  /** Per output vertex: the vertex whose entry of `acc` holds its generated normal. */
-  rep: Int32Array;
+  /** REC ints per output vertex. */
+  rec: Int32Array;
   /** Generated normals, summed area-weighted over the faces that share them (xyz per vertex). */
   acc: Float64Array;
-}
-
-/** Welded's per-vertex arrays while they fill, plus each vertex's key and position chain; they double when full. */
-class VertexTable {
-  v: Int32Array;
-  t: Int32Array;
-  n: Int32Array;
-  k: Int32Array;
-  chain: Int32Array;
-  rep: Int32Array;
-  acc: Float64Array;
-
-  constructor(capacity: number) {
-    this.v = new Int32Array(capacity);
-    this.t = new Int32Array(capacity);
-    this.n = new Int32Array(capacity);
-    this.k = new Int32Array(capacity);
-    this.chain = new Int32Array(capacity);
-    this.rep = new Int32Array(capacity);
-    this.acc = new Float64Array(3 * capacity);
-  }
-
-  grow(): void {
-    const more = (a: Int32Array): Int32Array => {
-      const b = new Int32Array(2 * a.length);
-      b.set(a);
-      return b;
-    };
-    this.v = more(this.v);
-    this.t = more(this.t);
-    this.n = more(this.n);
-    this.k = more(this.k);
-    this.chain = more(this.chain);
-    this.rep = more(this.rep);
-    const acc = new Float64Array(2 * this.acc.length);
-    acc.set(this.acc);
-    this.acc = acc;
-  }
 }
 
 /**
@@ -84,8 +51,8 @@ function weldCorners(raw: ObjRaw): Welded {
   // Vertices sharing a position are chained from head[position]; chains are a few long.
   const head = new Int32Array(raw.positions.length / 3).fill(-1);
   // Most models have about one output vertex per position: room for that, doubled if need be.
-  const table = new VertexTable(Math.max(64, raw.positions.length / 3));
-  let { v: outV, t: outT, n: outN, k: outK, chain, rep, acc } = table;
+  let rec = new Int32Array(REC * Math.max(64, raw.positions.length / 3));
+  let acc = new Float64Array(rec.length / 2);
   const normal = new Float64Array(3);
   let outCount = 0;
 
@@ -104,36 +71,46 @@ function weldCorners(raw: ObjRaw): Welded {
       let o = head[v];
       let shared = -1; // a vertex of the same position and smoothing group, maybe another uv
       while (o >= 0) {
-        if (outN[o] === n && outK[o] === key) {
-          if (outT[o] === t) break;
-          if (shared < 0) shared = rep[o];
+        const r = REC * o;
+        if (rec[r + N] === n && rec[r + K] === key) {
+          if (rec[r + T] === t) break;
+          if (shared < 0) shared = rec[r + REP];
         }
-        o = chain[o];
+        o = rec[r + CHAIN];
       }
       if (o < 0) {
-        if (outCount === outV.length) {
-          table.grow();
-          ({ v: outV, t: outT, n: outN, k: outK, chain, rep, acc } = table);
+        if (REC * outCount === rec.length) {
+          rec = doubled(rec);
+          const more = new Float64Array(2 * acc.length);
+          more.set(acc);
+          acc = more;
         }
         o = outCount++;
-        outV[o] = v;
-        outT[o] = t;
-        outN[o] = n;
-        outK[o] = key;
-        chain[o] = head[v];
+        const r = REC * o;
+        rec[r + V] = v;
+        rec[r + T] = t;
+        rec[r + N] = n;
+        rec[r + K] = key;
+        rec[r + CHAIN] = head[v];
+        rec[r + REP] = shared >= 0 ? shared : o;
         head[v] = o;
-        rep[o] = shared >= 0 ? shared : o;
       }
       cornerOut[c] = o;
       if (n < 0) {
-        const r = 3 * rep[o];
-        acc[r] += normal[0];
-        acc[r + 1] += normal[1];
-        acc[r + 2] += normal[2];
+        const a = 3 * rec[REC * o + REP];
+        acc[a] += normal[0];
+        acc[a + 1] += normal[1];
+        acc[a + 2] += normal[2];
       }
     }
   }
-  return { count: outCount, cornerOut, v: outV, t: outT, n: outN, rep, acc };
+  return { count: outCount, cornerOut, rec, acc };
+}
+
+function doubled(a: Int32Array<ArrayBuffer>): Int32Array<ArrayBuffer> {
+  const b = new Int32Array(2 * a.length);
+  b.set(a);
+  return b;
 }
 
 /** Newell normal of the face of `count` corners from `first`, length twice its area: summing it weights faces by area. */
@@ -156,24 +133,25 @@ function vertexArrays(raw: ObjRaw, w: Welded): Pick<ObjResult, 'positions' | 'no
   const outCount = w.count;
   const positions = new Float32Array(outCount * 3);
   const normals = new Float32Array(outCount * 3);
-  const hasUv = w.t.subarray(0, outCount).some((t) => t >= 0);
+  let hasUv = false;
+  for (let o = 0; o < outCount && !hasUv; o++) hasUv = w.rec[REC * o + T] >= 0;
   const uvs = hasUv ? new Float32Array(outCount * 2) : null;
   const colors = raw.colors ? new Float32Array(outCount * 3) : null;
   const min: [number, number, number] = [Infinity, Infinity, Infinity];
   const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
   for (let o = 0; o < outCount; o++) {
-    const p = 3 * w.v[o];
+    const p = 3 * w.rec[REC * o + V];
     for (let a = 0; a < 3; a++) {
       const x = pos[p + a];
       positions[3 * o + a] = x;
       if (x < min[a]) min[a] = x;
       if (x > max[a]) max[a] = x;
     }
-    const n = w.n[o];
+    const n = w.rec[REC * o + N];
     if (n >= 0) writeUnit(normals, o, raw.normals.data, 3 * n);
-    else writeUnit(normals, o, w.acc, 3 * w.rep[o]);
+    else writeUnit(normals, o, w.acc, 3 * w.rec[REC * o + REP]);
     if (uvs) {
-      const t = w.t[o];
+      const t = w.rec[REC * o + T];
       if (t >= 0) {
         uvs[2 * o] = raw.uvs.data[2 * t];
         uvs[2 * o + 1] = raw.uvs.data[2 * t + 1];

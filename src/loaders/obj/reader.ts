@@ -64,6 +64,7 @@ class ObjReader {
   private readonly warnings = new Warnings();
   // A bad v/vt/vn keeps its slot (so later indices still mean the same element), flagged here.
   private readonly badLine = [new Map<number, number>(), new Map<number, number>(), new Map<number, number>()];
+  private anyBad = false;
   private readonly materials: (string | null)[] = [null];
   private readonly materialSlot = new Map<string, number>();
   private readonly smoothSlot = new Map<string, number>();
@@ -140,6 +141,12 @@ class ObjReader {
     }
   }
 
+  /** Element `index` of list `kind` (v, vt, vn) is unusable, from a bad `line`. */
+  private markBad(kind: number, index: number, line: number): void {
+    this.badLine[kind].set(index, line);
+    this.anyBad = true;
+  }
+
   private dropFace(line: number, message: string): void {
     this.warnings.add(line, message);
     if (this.droppedFaces++ === 0) this.firstDroppedLine = line;
@@ -152,7 +159,7 @@ class ObjReader {
     const n = this.readValues();
     const index = positions.length / 3;
     if (n < 3) {
-      this.badLine[0].set(index, line);
+      this.markBad(0, index, line);
       warnings.add(line, n < 0 ? `vertex with a coordinate that is not a number (${shownLine(sc)}); faces using it are dropped`
         : `vertex with ${n} of its 3 coordinates; faces using it are dropped`);
       positions.push3(NaN, NaN, NaN);
@@ -176,7 +183,7 @@ class ObjReader {
     sc.pos += 2;
     const n = this.readValues();
     if (n < 1) {
-      this.badLine[1].set(uvs.length / 2, line);
+      this.markBad(1, uvs.length / 2, line);
       this.warnings.add(line, `texture coordinate that is not a number (${shownLine(sc)}); faces using it are dropped`);
       uvs.push(NaN);
       uvs.push(NaN);
@@ -192,7 +199,7 @@ class ObjReader {
     this.sc.pos += 2;
     const n = this.readValues();
     if (n < 3) {
-      this.badLine[2].set(normals.length / 3, line);
+      this.markBad(2, normals.length / 3, line);
       this.warnings.add(line, `normal with ${n < 0 ? 'a value that is not a number' : `${n} of its 3 values`}; faces using it are dropped`);
       normals.push3(NaN, NaN, NaN);
     } else {
@@ -250,15 +257,24 @@ class ObjReader {
 
   /** One corner's OBJ indices resolved onto `corners`; else the fault ('' for none). */
   private addCorner(v: number, t: number, nn: number, vCount: number, tCount: number, nCount: number): string {
-    const badLine = this.badLine;
     const vi = resolve(v, vCount), ti = t === 0 ? -1 : resolve(t, tCount), ni = nn === 0 ? -1 : resolve(nn, nCount);
     if (vi < 0) return `vertex index ${v} is outside the ${vCount} vertices read so far`;
     if (t !== 0 && ti < 0) return `texture coordinate index ${t} is outside the ${tCount} read so far`;
     if (nn !== 0 && ni < 0) return `normal index ${nn} is outside the ${nCount} read so far`;
-    if (badLine[0].size > 0 && badLine[0].has(vi)) return `vertex ${vi + 1} (line ${badLine[0].get(vi)}) is not usable`;
-    if (ti >= 0 && badLine[1].size > 0 && badLine[1].has(ti)) return `texture coordinate ${ti + 1} (line ${badLine[1].get(ti)}) is not usable`;
-    if (ni >= 0 && badLine[2].size > 0 && badLine[2].has(ni)) return `normal ${ni + 1} (line ${badLine[2].get(ni)}) is not usable`;
+    if (this.anyBad) {
+      const unusable = this.unusable(vi, ti, ni);
+      if (unusable !== '') return unusable;
+    }
     this.corners.push3(vi, ti, ni);
+    return '';
+  }
+
+  /** Which element of the corner a bad line left unusable ('' for none). */
+  private unusable(vi: number, ti: number, ni: number): string {
+    const badLine = this.badLine;
+    if (badLine[0].has(vi)) return `vertex ${vi + 1} (line ${badLine[0].get(vi)}) is not usable`;
+    if (ti >= 0 && badLine[1].has(ti)) return `texture coordinate ${ti + 1} (line ${badLine[1].get(ti)}) is not usable`;
+    if (ni >= 0 && badLine[2].has(ni)) return `normal ${ni + 1} (line ${badLine[2].get(ni)}) is not usable`;
     return '';
   }
 
