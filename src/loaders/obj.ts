@@ -29,21 +29,22 @@ export function parseObj(text: string, options: ObjOptions = {}): ObjResult {
 
 /**
  * Parses OBJ bytes: UTF-8 with or without a BOM, read as bytes (no decoding but of names and
- * messages), the same result as parseObj on their text; UTF-16 LE/BE with a BOM, decoded.
+ * messages), the same result as parseObj on their text; UTF-16 LE/BE with a BOM, transcoded.
  */
 export function parseObjBytes(bytes: Bytes, options: ObjOptions = {}): ObjResult {
   const url = options.url ?? '';
   const b = asUint8(bytes);
   const sniffed = options.sniffed ?? sniffModel(b);
   if (sniffed === 'binary') throw new LoadError(url, 'binary content, not an OBJ file');
-  const { encoding, skip } = bomOf(b);
-  if (encoding !== 'utf-8') return parseObj(decodeText(b), { ...options, sniffed });
   // Where the content is rejected, its first SAMPLE bytes (what the sniffer read) name the line.
   rejectNonObj(url, sniffed, () => {
     const start = decodeText(b, SAMPLE);
     return /\S/.test(start) ? start : decodeText(b);
   });
-  return objResult(readObjBytes(b, skip, estimateCapacities(b)), url);
+  const { encoding, skip } = bomOf(b);
+  // UTF-16 (rare) is transcoded, so that one reader, over bytes, reads every file.
+  const utf8 = encoding === 'utf-8' ? b : new TextEncoder().encode(decodeText(b));
+  return objResult(readObjBytes(utf8, encoding === 'utf-8' ? skip : 0, estimateCapacities(utf8)), url);
 }
 
 export { normalizeObj } from './obj-normalize';
