@@ -45,9 +45,10 @@ interface Welded {
  */
 function weldCorners(raw: ObjRaw): Welded {
   const corners = raw.corners.data;
+  const uvOf = raw.cornerUvs?.data ?? null, normalOf = raw.cornerNormals?.data ?? null;
   const faces = raw.faces.data;
   const faceCount = raw.faces.length / FACE_INTS;
-  const cornerOut = new Int32Array(raw.corners.length / 3);
+  const cornerOut = new Int32Array(raw.corners.length);
   // Vertices sharing a position are chained from head[position]; chains are a few long.
   const head = new Int32Array(raw.positions.length / 3).fill(-1);
   // Most models have about one output vertex per position: room for that, doubled if need be.
@@ -61,8 +62,8 @@ function weldCorners(raw: ObjRaw): Welded {
     newellNormal(raw.positions.data, corners, first, count, normal);
     for (let k = 0; k < count; k++) {
       const c = first + k;
-      const v = corners[3 * c], t = corners[3 * c + 1];
-      let n = corners[3 * c + 2];
+      const v = corners[c], t = uvOf ? uvOf[c] : -1;
+      let n = normalOf ? normalOf[c] : -1;
       let key = 0;
       if (n < 0) {
         key = smooth >= 0 ? smooth : f;
@@ -116,9 +117,9 @@ function doubled(a: Int32Array<ArrayBuffer>): Int32Array<ArrayBuffer> {
 /** Newell normal of the face of `count` corners from `first`, length twice its area: summing it weights faces by area. */
 function newellNormal(pos: Float64Array, corners: Int32Array, first: number, count: number, out: Float64Array): void {
   let nx = 0, ny = 0, nz = 0;
-  let j = 3 * corners[3 * (first + count - 1)];
+  let j = 3 * corners[first + count - 1];
   for (let k = 0; k < count; k++) {
-    const i = 3 * corners[3 * (first + k)];
+    const i = 3 * corners[first + k];
     nx += (pos[j + 1] - pos[i + 1]) * (pos[j + 2] + pos[i + 2]);
     ny += (pos[j + 2] - pos[i + 2]) * (pos[j] + pos[i]);
     nz += (pos[j] - pos[i]) * (pos[j + 1] + pos[i + 1]);

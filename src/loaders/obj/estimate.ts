@@ -15,7 +15,7 @@ export interface Capacities {
   positions: number;
   uvs: number;
   normals: number;
-  /** Ints: 3 per face corner. */
+  /** Face corners. */
   corners: number;
   /** Ints: 3 per triangle. */
   triangles: number;
@@ -36,7 +36,7 @@ export function estimateCapacities(b: Uint8Array): Capacities | null {
     positions: 3 * Math.ceil(count.v * scale),
     uvs: 2 * Math.ceil(count.vt * scale),
     normals: 3 * Math.ceil(count.vn * scale),
-    corners: 3 * corners,
+    corners,
     // A face of n corners is n − 2 triangles.
     triangles: 3 * Math.max(0, corners - 2 * Math.ceil(count.f * scale)),
     faces: Math.ceil(count.f * scale),

@@ -26,8 +26,12 @@ export interface ObjRaw {
   colors: F64List | null;
   uvs: F64List;
   normals: F64List;
-  /** Per kept corner: position, uv, normal indices (0-based; −1 when absent). */
+  /** Per kept corner: its position index (0-based). */
   corners: I32List;
+  /** Per kept corner: its uv index, −1 for none; null while no corner has one (then filled with −1 back to the first). */
+  cornerUvs: I32List | null;
+  /** Per kept corner: its normal index, −1 for none; null while no corner has one. */
+  cornerNormals: I32List | null;
   /** Per kept triangle: three global corner numbers. */
   triangles: I32List;
   faces: I32List;
@@ -59,6 +63,8 @@ class ObjReader {
   private readonly uvs: F64List;
   private readonly normals: F64List;
   private readonly corners: I32List;
+  private cornerUvs: I32List | null = null;
+  private cornerNormals: I32List | null = null;
   private readonly triangles: I32List;
   private readonly faces: I32List;
   private readonly warnings = new Warnings();
@@ -115,9 +121,9 @@ class ObjReader {
       else this.otherStatement(line);
       sc.nextLine();
     }
-    const { positions, colors, uvs, normals, corners, triangles, faces, materials, objects, groupNames, mtllibs } = this;
+    const { positions, colors, uvs, normals, corners, cornerUvs, cornerNormals, triangles, faces, materials, objects, groupNames, mtllibs } = this;
     return {
-      positions, colors, uvs, normals, corners, triangles, faces, materials, objects, groupNames, mtllibs,
+      positions, colors, uvs, normals, corners, cornerUvs, cornerNormals, triangles, faces, materials, objects, groupNames, mtllibs,
       warnings: this.warnings, droppedFaces: this.droppedFaces, firstDroppedLine: this.firstDroppedLine,
     };
   }
@@ -210,11 +216,11 @@ class ObjReader {
   /** `f v/t/n …`: its corners read, then the face kept (triangulated) or dropped with the reason. */
   private faceStatement(line: number): void {
     this.sc.pos += 1;
-    const start = this.corners.length / 3;
+    const start = this.corners.length;
     this.readCorners();
     const { fault, cornerCount } = this;
-    const count = this.corners.length / 3 - start;
-    if (count < 3 || fault !== '') this.corners.length = 3 * start; // nothing of a dropped face kept
+    const count = this.corners.length - start;
+    if (count < 3 || fault !== '') this.truncateCorners(start); // nothing of a dropped face kept
     if (cornerCount > MAX_FACE_CORNERS) this.dropFace(line, `face of ${cornerCount} vertices, more than the ${MAX_FACE_CORNERS} a face may have; face dropped`);
     else if (fault !== '') this.dropFace(line, `${fault}; face dropped`);
     else if (count < 3) this.dropFace(line, `face with ${count} ${count === 1 ? 'vertex' : 'vertices'} (a face needs 3); face dropped`);
@@ -222,7 +228,7 @@ class ObjReader {
   }
 
   /**
-   * The face's corners onto `corners` (0-based indices, −1 for none), up to the first fault; the
+   * The face's corners onto `corners` (and `cornerUvs`, `cornerNormals`), up to the first fault; the
    * rest of the statement is still read, to count its corners. Sets `fault` and `cornerCount`.
    */
   private readCorners(): void {
@@ -255,7 +261,7 @@ class ObjReader {
     this.cornerCount = cornerCount;
   }
 
-  /** One corner's OBJ indices resolved onto `corners`; else the fault ('' for none). */
+  /** One corner's OBJ indices resolved onto the corner lists; else the fault ('' for none). */
   private addCorner(v: number, t: number, nn: number, vCount: number, tCount: number, nCount: number): string {
     const vi = resolve(v, vCount), ti = t === 0 ? -1 : resolve(t, tCount), ni = nn === 0 ? -1 : resolve(nn, nCount);
     if (vi < 0) return `vertex index ${v} is outside the ${vCount} vertices read so far`;
@@ -265,8 +271,25 @@ class ObjReader {
       const unusable = this.unusable(vi, ti, ni);
       if (unusable !== '') return unusable;
     }
-    this.corners.push3(vi, ti, ni);
+    this.corners.push(vi);
+    if (ti >= 0 || this.cornerUvs !== null) (this.cornerUvs ??= this.absentSoFar()).push(ti);
+    if (ni >= 0 || this.cornerNormals !== null) (this.cornerNormals ??= this.absentSoFar()).push(ni);
     return '';
+  }
+
+  /** A list of −1 for each corner before the one just pushed: the first uv or normal of the file. */
+  private absentSoFar(): I32List {
+    const list = new I32List(this.corners.data.length);
+    list.data.fill(-1, 0, this.corners.length - 1);
+    list.length = this.corners.length - 1;
+    return list;
+  }
+
+  /** Forgets the corners from `start` on. */
+  private truncateCorners(start: number): void {
+    this.corners.length = start;
+    if (this.cornerUvs) this.cornerUvs.length = start;
+    if (this.cornerNormals) this.cornerNormals.length = start;
   }
 
   /** Which element of the corner a bad line left unusable ('' for none). */
@@ -291,7 +314,7 @@ class ObjReader {
     const vCount = this.positions.length / 3, tCount = this.uvs.length / 2, nCount = this.normals.length / 3;
     for (let k = 0; k < 3 * count; k += 3) {
       if (this.addCorner(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) !== '') {
-        corners.length = first;
+        this.truncateCorners(first);
         sc.pos = from; // the general way says what is wrong
         return false;
       }
@@ -309,7 +332,7 @@ class ObjReader {
     // A triangle as written is kept as written; what triangulating a polygon makes of zero area is not.
     const kept = count === 3 ? 1 : dropZeroArea(positions.data, corners.data, triangles, firstTriangle);
     if (kept === 0) {
-      corners.length = 3 * start;
+      this.truncateCorners(start);
       this.dropFace(line, `face of ${count} vertices with no area (its corners are repeated or on one line); face dropped`);
       return;
     }
