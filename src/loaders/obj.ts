@@ -50,7 +50,7 @@ export function parseObjBytes(bytes: Bytes, options: ObjOptions = {}): ObjResult
 export { normalizeObj } from './obj-normalize';
 
 function objResult(raw: ObjRaw, url: string): ObjResult {
-  if (raw.triangles.length === 0) {
+  if (raw.faces.length === 0) { // every kept face has a triangle
     const dropped = raw.droppedFaces;
     if (dropped === 0) throw new LoadError(url, 'no faces to draw');
     const s = dropped === 1 ? '' : 's';

@@ -1,6 +1,6 @@
 // Raw OBJ lists → indexed triangle mesh: one vertex per distinct (position, uv, normal source)
 // corner, generated normals per smoothing group, the index buffer sorted by material.
-import { FACE_INTS, type ObjRaw } from './reader';
+import { FACE_INTS, type ObjRaw } from './raw';
 import type { Bounds, DrawGroup, ObjResult } from './types';
 
 /** Key tag of a corner whose normal is generated smooth (`k` = smoothing slot)… */
@@ -182,7 +182,7 @@ function writeUnit(normals: Float32Array, o: number, src: Float64Array, s: numbe
 function indexByMaterial(raw: ObjRaw, cornerOut: Int32Array, outCount: number): { indices: Uint16Array | Uint32Array; groups: DrawGroup[] } {
   const faces = raw.faces.data;
   const faceCount = raw.faces.length / FACE_INTS;
-  const triangleCount = raw.triangles.length / 3;
+  let triangleCount = 0;
   const materialCount = raw.materials.length;
   const perMaterial = new Int32Array(materialCount);
   const order: number[] = [];
@@ -190,6 +190,7 @@ function indexByMaterial(raw: ObjRaw, cornerOut: Int32Array, outCount: number): 
     const m = faces[f * FACE_INTS + 5];
     if (perMaterial[m] === 0) order.push(m);
     perMaterial[m] += faces[f * FACE_INTS + 3];
+    triangleCount += faces[f * FACE_INTS + 3];
   }
   const offset = new Int32Array(materialCount);
   const groups: DrawGroup[] = [];
@@ -206,7 +207,14 @@ function indexByMaterial(raw: ObjRaw, cornerOut: Int32Array, outCount: number): 
     const firstTriangle = faces[f * FACE_INTS + 2];
     const n = faces[f * FACE_INTS + 3];
     let w = 3 * offset[m];
-    for (let t = 3 * firstTriangle; t < 3 * (firstTriangle + n); t++) indices[w++] = cornerOut[tris[t]];
+    if (firstTriangle < 0) { // a triangle as written: its corners
+      const c = faces[f * FACE_INTS];
+      indices[w] = cornerOut[c];
+      indices[w + 1] = cornerOut[c + 1];
+      indices[w + 2] = cornerOut[c + 2];
+    } else {
+      for (let t = 3 * firstTriangle; t < 3 * (firstTriangle + n); t++) indices[w++] = cornerOut[tris[t]];
+    }
     offset[m] += n;
   }
   return { indices, groups };

@@ -26,7 +26,7 @@ export interface Capacities {
 /** The lists' lengths for the whole file, from the lines of SAMPLES windows; null for a small file. */
 export function estimateCapacities(b: Uint8Array): Capacities | null {
   if (b.length < SMALL) return null;
-  const count = { v: 0, vt: 0, vn: 0, f: 0, corners: 0, sampled: 0 };
+  const count = { v: 0, vt: 0, vn: 0, f: 0, corners: 0, polygons: 0, polygonCorners: 0, sampled: 0 };
   const stride = Math.floor((b.length - SAMPLE_BYTES) / (SAMPLES - 1));
   for (let s = 0; s < SAMPLES; s++) sampleLines(b, s * stride, s * stride + SAMPLE_BYTES, count);
   if (count.sampled === 0) return null;
@@ -37,14 +37,27 @@ export function estimateCapacities(b: Uint8Array): Capacities | null {
     uvs: 2 * Math.ceil(count.vt * scale),
     normals: 3 * Math.ceil(count.vn * scale),
     corners,
-    // A face of n corners is n − 2 triangles.
-    triangles: 3 * Math.max(0, corners - 2 * Math.ceil(count.f * scale)),
+    // A polygon of n corners is n − 2 triangles; a face of 3 is none (raw.ts: FACE_INTS).
+    triangles: 3 * Math.max(0, Math.ceil(count.polygonCorners * scale) - 2 * Math.ceil(count.polygons * scale)),
     faces: Math.ceil(count.f * scale),
   };
 }
 
+interface Counts {
+  v: number;
+  vt: number;
+  vn: number;
+  f: number;
+  corners: number;
+  /** Faces of more than 3 corners, and their corners. */
+  polygons: number;
+  polygonCorners: number;
+  /** Bytes of the lines counted. */
+  sampled: number;
+}
+
 /** Counts the statements of the whole lines that start in `from` .. `to`. */
-function sampleLines(b: Uint8Array, from: number, to: number, count: { v: number; vt: number; vn: number; f: number; corners: number; sampled: number }): void {
+function sampleLines(b: Uint8Array, from: number, to: number, count: Counts): void {
   let p = from;
   if (p > 0) while (p < to && b[p - 1] !== 10) p++; // the first line start in the window
   const first = p;
@@ -59,7 +72,13 @@ function sampleLines(b: Uint8Array, from: number, to: number, count: { v: number
     else if (c0 === 118 && c1 === 110 /* n */) count.vn++;
     else if (c0 === 102 /* f */ && c1 === 32) {
       count.f++;
-      for (let q = p + 1; q < end; q++) if (b[q] === 32 && b[q + 1] > 32) count.corners++;
+      let n = 0;
+      for (let q = p + 1; q < end; q++) if (b[q] === 32 && b[q + 1] > 32) n++;
+      count.corners += n;
+      if (n > 3) {
+        count.polygons++;
+        count.polygonCorners += n;
+      }
     }
     p = end + 1;
   }

@@ -5,44 +5,19 @@ import type { Capacities } from './estimate';
 import { addUnique, splitGroups, splitMtllib } from './names';
 import { ByteScanner } from './byte-scanner';
 import { Scanner } from './scanner';
+import { FACE_INTS, FLAT, type ObjRaw } from './raw';
 import { dropZeroArea, MAX_FACE_CORNERS, triangulate } from './triangulate';
 import { shown, Warnings } from '../warnings';
 
-/** Smoothing slot of faces under `s off` / `s 0`: flat normals. */
-export const FLAT = -1;
+export type { ObjRaw } from './raw';
+
 /** Smoothing slot before any `s`: files that never say `s` (scans) are meant to be smooth. */
 const DEFAULT_SMOOTH = 0;
-/** Ints per face record: first corner, corner count, first triangle, triangle count, smoothing slot, material. */
-export const FACE_INTS = 6;
 
 /** Statements read and deliberately not drawn, reported once each without "unknown". */
 const UNSUPPORTED = new Set(['l', 'p', 'vp', 'curv', 'curv2', 'surf', 'cstype', 'deg', 'bmat', 'step', 'parm',
   'trim', 'hole', 'scrv', 'sp', 'end', 'con', 'mg', 'bevel', 'c_interp', 'd_interp', 'lod', 'usemap', 'maplib',
   'shadow_obj', 'trace_obj', 'ctech', 'stech', 'call', 'csh']);
-
-export interface ObjRaw {
-  positions: F64List;
-  /** rgb per vertex once any vertex had a colour (earlier ones filled with white), else null. */
-  colors: F64List | null;
-  uvs: F64List;
-  normals: F64List;
-  /** Per kept corner: its position index (0-based). */
-  corners: I32List;
-  /** Per kept corner: its uv index, −1 for none; null while no corner has one (then filled with −1 back to the first). */
-  cornerUvs: I32List | null;
-  /** Per kept corner: its normal index, −1 for none; null while no corner has one. */
-  cornerNormals: I32List | null;
-  /** Per kept triangle: three global corner numbers. */
-  triangles: I32List;
-  faces: I32List;
-  materials: (string | null)[];
-  objects: string[];
-  groupNames: string[];
-  mtllibs: string[];
-  warnings: Warnings;
-  droppedFaces: number;
-  firstDroppedLine: number;
-}
 
 /** The cursor the reader walks: over text (scanner.ts) or UTF-8 bytes (byte-scanner.ts), the same statements either way. */
 export type ObjScanner = Scanner | ByteScanner;
@@ -327,10 +302,16 @@ class ObjReader {
   /** The face's `count` corners (read from `start`) and triangles kept, unless triangulating leaves no area. */
   private keepFace(line: number, start: number, count: number): void {
     const { corners, triangles, positions } = this;
+    if (count === 3) {
+      // A triangle as written is kept as written, with no entry in `triangles`.
+      this.faces.push3(start, count, -1);
+      this.faces.push3(1, this.smooth, this.material);
+      return;
+    }
     const firstTriangle = triangles.length / 3;
     const clipped = triangulate(positions.data, corners.data, start, count, triangles);
-    // A triangle as written is kept as written; what triangulating a polygon makes of zero area is not.
-    const kept = count === 3 ? 1 : dropZeroArea(positions.data, corners.data, triangles, firstTriangle);
+    // What triangulating a polygon makes of zero area is not kept.
+    const kept = dropZeroArea(positions.data, corners.data, triangles, firstTriangle);
     if (kept === 0) {
       this.truncateCorners(start);
       this.dropFace(line, `face of ${count} vertices with no area (its corners are repeated or on one line); face dropped`);
