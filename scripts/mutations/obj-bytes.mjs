@@ -43,7 +43,7 @@ export default [
   },
   {
     name: 'B8 a U+FEFF that opens a name dropped by the decoder',
-    edits: [{ file: 'src/loaders/decode-text.ts', find: "const utf8 = new TextDecoder('utf-8', { ignoreBOM: true });", replace: "const utf8 = new TextDecoder('utf-8');" }],
+    edits: [{ file: 'src/loaders/decode-span.ts', find: "const utf8 = new TextDecoder('utf-8', { ignoreBOM: true });", replace: "const utf8 = new TextDecoder('utf-8');" }],
     tests: [EQUAL],
   },
   {

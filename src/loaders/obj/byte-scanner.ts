@@ -3,7 +3,7 @@
 // looks at (digits, signs, blanks, line ends, `#`, `/`, `\`) is ASCII, and UTF-8 never uses
 // an ASCII byte inside a longer character, so bytes and text split alike; only names and
 // message text are decoded, span by span.
-import { decodeSpan } from '../decode-text';
+import { decodeSpan } from '../decode-span';
 
 const SPACE = 32;
 const TAB = 9;
