@@ -238,7 +238,7 @@ export class Scanner {
     return out.trim();
   }
 
-  /** The same, for `shown` (byte-scanner.ts decodes only what it shows). */
+  /** The text from `from` to `to`, for `shown` (byte-scanner.ts decodes only what it shows). */
   shownSpan(from: number, to: number): string {
     return this.text.slice(from, to);
   }
