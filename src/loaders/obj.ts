@@ -1,11 +1,12 @@
 // The OBJ loader (SPEC §9): text or bytes in, typed arrays out. Pure — no DOM, no GL — so the
 // worker, the main thread and the tests all call this same function.
-import { decodeText, type Bytes } from './decode-text';
+import { asUint8, bomOf, decodeText, type Bytes } from './decode-text';
 import { LoadError } from './load-error';
 import { buildMesh } from './obj/build-mesh';
-import { readObj } from './obj/reader';
+import { estimateCapacities } from './obj/estimate';
+import { readObj, readObjBytes, type ObjRaw } from './obj/reader';
 import type { ObjResult } from './obj/types';
-import { sniffModel, type ModelFormat } from './sniff';
+import { SAMPLE, sniffModel, type ModelFormat } from './sniff';
 
 export type { Bounds, DrawGroup, ObjResult } from './obj/types';
 
@@ -22,9 +23,34 @@ export interface ObjOptions {
  */
 export function parseObj(text: string, options: ObjOptions = {}): ObjResult {
   const url = options.url ?? '';
-  rejectNonObj(text, url, options.sniffed ?? sniffModel(text));
-  const raw = readObj(text);
-  if (raw.triangles.length === 0) {
+  rejectNonObj(url, options.sniffed ?? sniffModel(text), () => text);
+  return objResult(readObj(text), url);
+}
+
+/**
+ * Parses OBJ bytes: UTF-8 with or without a BOM, read as bytes (no decoding but of names and
+ * messages), the same result as parseObj on their text; UTF-16 LE/BE with a BOM, transcoded.
+ */
+export function parseObjBytes(bytes: Bytes, options: ObjOptions = {}): ObjResult {
+  const url = options.url ?? '';
+  const b = asUint8(bytes);
+  const sniffed = options.sniffed ?? sniffModel(b);
+  if (sniffed === 'binary') throw new LoadError(url, 'binary content, not an OBJ file');
+  // Where the content is rejected, its first SAMPLE bytes (what the sniffer read) name the line.
+  rejectNonObj(url, sniffed, () => {
+    const start = decodeText(b, SAMPLE);
+    return /\S/.test(start) ? start : decodeText(b);
+  });
+  const { encoding, skip } = bomOf(b);
+  // UTF-16 (rare) is transcoded, so that one reader, over bytes, reads every file.
+  const utf8 = encoding === 'utf-8' ? b : new TextEncoder().encode(decodeText(b));
+  return objResult(readObjBytes(utf8, encoding === 'utf-8' ? skip : 0, estimateCapacities(utf8)), url);
+}
+
+export { normalizeObj } from './obj-normalize';
+
+function objResult(raw: ObjRaw, url: string): ObjResult {
+  if (raw.faces.length === 0) { // every kept face has a triangle
     const dropped = raw.droppedFaces;
     if (dropped === 0) throw new LoadError(url, 'no faces to draw');
     const s = dropped === 1 ? '' : 's';
@@ -33,20 +59,11 @@ export function parseObj(text: string, options: ObjOptions = {}): ObjResult {
   return { ...buildMesh(raw), warnings: raw.warnings.result() };
 }
 
-/** Parses OBJ bytes: UTF-8 with or without a BOM, UTF-16 LE/BE with a BOM. */
-export function parseObjBytes(bytes: Bytes, options: ObjOptions = {}): ObjResult {
-  const url = options.url ?? '';
-  const sniffed = options.sniffed ?? sniffModel(bytes);
-  if (sniffed === 'binary') throw new LoadError(url, 'binary content, not an OBJ file');
-  return parseObj(decodeText(bytes), { ...options, sniffed });
-}
-
-export { normalizeObj } from './obj-normalize';
-
-function rejectNonObj(text: string, url: string, format: ModelFormat): void {
-  if (format === 'html') throw new LoadError(url, 'an HTML page (or other markup), not an OBJ file', lineOfFirstContent(text));
+/** `text()`: the content, or its start holding the first non-blank character (for the error's line). */
+function rejectNonObj(url: string, format: ModelFormat, text: () => string): void {
+  if (format === 'html') throw new LoadError(url, 'an HTML page (or other markup), not an OBJ file', lineOfFirstContent(text()));
   if (format === 'binary') throw new LoadError(url, 'binary content, not an OBJ file');
-  if (format === 'byu-mesh' || format === 'byu-bezier') throw new LoadError(url, 'a .byu model, not an OBJ file', lineOfFirstContent(text));
+  if (format === 'byu-mesh' || format === 'byu-bezier') throw new LoadError(url, 'a .byu model, not an OBJ file', lineOfFirstContent(text()));
 }
 
 function lineOfFirstContent(text: string): number {

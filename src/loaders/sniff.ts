@@ -4,7 +4,7 @@ import { decodeText, type Bytes } from './decode-text';
 
 export type ModelFormat = 'obj' | 'byu-mesh' | 'byu-bezier' | 'html' | 'binary' | 'unknown';
 
-const SAMPLE = 4096;
+export const SAMPLE = 4096;
 
 /** Statements that open an OBJ file in practice (the geometry ones and the common headers). */
 const OBJ_KEYWORDS = new Set([

@@ -1,7 +1,6 @@
 // Raw OBJ lists → indexed triangle mesh: one vertex per distinct (position, uv, normal source)
 // corner, generated normals per smoothing group, the index buffer sorted by material.
-import { F64List, I32List } from './growable';
-import { FACE_INTS, type ObjRaw } from './reader';
+import { FACE_INTS, type ObjRaw } from './raw';
 import type { Bounds, DrawGroup, ObjResult } from './types';
 
 /** Key tag of a corner whose normal is generated smooth (`k` = smoothing slot)… */
@@ -19,19 +18,24 @@ export function buildMesh(raw: ObjRaw): Omit<ObjResult, 'warnings'> {
   };
 }
 
+/**
+ * Ints per output vertex record while welding: position, uv and normal index (a negative
+ * normal: generated, SMOOTH or FLAT_FACE), key, the next vertex of the same position, and the
+ * vertex whose entry of `acc` holds its generated normal. One record, not six arrays: a corner
+ * looks at all of a vertex's fields, and they share a cache line.
+ */
+const REC = 6;
+const V = 0, T = 1, N = 2, K = 3, CHAIN = 4, REP = 5;
+
 /** The output vertices: one per distinct corner, with where each comes from. */
 interface Welded {
   count: number;
   /** Per corner of the file: its output vertex. */
   cornerOut: Int32Array;
-  /** Per output vertex: position, uv and normal index (a negative normal: generated, SMOOTH or FLAT_FACE). */
-  v: I32List;
-  t: I32List;
-  n: I32List;
-  /** Per output vertex: the vertex whose entry of `acc` holds its generated normal. */
-  rep: I32List;
+  /** REC ints per output vertex. */
+  rec: Int32Array;
   /** Generated normals, summed area-weighted over the faces that share them (xyz per vertex). */
-  acc: F64List;
+  acc: Float64Array;
 }
 
 /**
@@ -41,14 +45,15 @@ interface Welded {
  */
 function weldCorners(raw: ObjRaw): Welded {
   const corners = raw.corners.data;
+  const uvOf = raw.cornerUvs?.data ?? null, normalOf = raw.cornerNormals?.data ?? null;
   const faces = raw.faces.data;
   const faceCount = raw.faces.length / FACE_INTS;
-  const cornerOut = new Int32Array(raw.corners.length / 3);
+  const cornerOut = new Int32Array(raw.corners.length);
   // Vertices sharing a position are chained from head[position]; chains are a few long.
   const head = new Int32Array(raw.positions.length / 3).fill(-1);
-  const outV = new I32List(), outT = new I32List(), outN = new I32List(), outK = new I32List();
-  const chain = new I32List(), rep = new I32List();
-  const acc = new F64List();
+  // Most models have about one output vertex per position: room for that, doubled if need be.
+  let rec = new Int32Array(REC * Math.max(64, raw.positions.length / 3));
+  let acc = new Float64Array(rec.length / 2);
   const normal = new Float64Array(3);
   let outCount = 0;
 
@@ -57,8 +62,8 @@ function weldCorners(raw: ObjRaw): Welded {
     newellNormal(raw.positions.data, corners, first, count, normal);
     for (let k = 0; k < count; k++) {
       const c = first + k;
-      const v = corners[3 * c], t = corners[3 * c + 1];
-      let n = corners[3 * c + 2];
+      const v = corners[c], t = uvOf ? uvOf[c] : -1;
+      let n = normalOf ? normalOf[c] : -1;
       let key = 0;
       if (n < 0) {
         key = smooth >= 0 ? smooth : f;
@@ -67,41 +72,54 @@ function weldCorners(raw: ObjRaw): Welded {
       let o = head[v];
       let shared = -1; // a vertex of the same position and smoothing group, maybe another uv
       while (o >= 0) {
-        if (outN.data[o] === n && outK.data[o] === key) {
-          if (outT.data[o] === t) break;
-          if (shared < 0) shared = rep.data[o];
+        const r = REC * o;
+        if (rec[r + N] === n && rec[r + K] === key) {
+          if (rec[r + T] === t) break;
+          if (shared < 0) shared = rec[r + REP];
         }
-        o = chain.data[o];
+        o = rec[r + CHAIN];
       }
       if (o < 0) {
+        if (REC * outCount === rec.length) {
+          rec = doubled(rec);
+          const more = new Float64Array(2 * acc.length);
+          more.set(acc);
+          acc = more;
+        }
         o = outCount++;
-        outV.push(v);
-        outT.push(t);
-        outN.push(n);
-        outK.push(key);
-        chain.push(head[v]);
+        const r = REC * o;
+        rec[r + V] = v;
+        rec[r + T] = t;
+        rec[r + N] = n;
+        rec[r + K] = key;
+        rec[r + CHAIN] = head[v];
+        rec[r + REP] = shared >= 0 ? shared : o;
         head[v] = o;
-        rep.push(shared >= 0 ? shared : o);
-        acc.push3(0, 0, 0);
       }
       cornerOut[c] = o;
       if (n < 0) {
-        const r = 3 * rep.data[o];
-        acc.data[r] += normal[0];
-        acc.data[r + 1] += normal[1];
-        acc.data[r + 2] += normal[2];
+        const a = 3 * rec[REC * o + REP];
+        acc[a] += normal[0];
+        acc[a + 1] += normal[1];
+        acc[a + 2] += normal[2];
       }
     }
   }
-  return { count: outCount, cornerOut, v: outV, t: outT, n: outN, rep, acc };
+  return { count: outCount, cornerOut, rec, acc };
+}
+
+function doubled(a: Int32Array<ArrayBuffer>): Int32Array<ArrayBuffer> {
+  const b = new Int32Array(2 * a.length);
+  b.set(a);
+  return b;
 }
 
 /** Newell normal of the face of `count` corners from `first`, length twice its area: summing it weights faces by area. */
 function newellNormal(pos: Float64Array, corners: Int32Array, first: number, count: number, out: Float64Array): void {
   let nx = 0, ny = 0, nz = 0;
-  let j = 3 * corners[3 * (first + count - 1)];
+  let j = 3 * corners[first + count - 1];
   for (let k = 0; k < count; k++) {
-    const i = 3 * corners[3 * (first + k)];
+    const i = 3 * corners[first + k];
     nx += (pos[j + 1] - pos[i + 1]) * (pos[j + 2] + pos[i + 2]);
     ny += (pos[j + 2] - pos[i + 2]) * (pos[j] + pos[i]);
     nz += (pos[j] - pos[i]) * (pos[j + 1] + pos[i + 1]);
@@ -116,24 +134,25 @@ function vertexArrays(raw: ObjRaw, w: Welded): Pick<ObjResult, 'positions' | 'no
   const outCount = w.count;
   const positions = new Float32Array(outCount * 3);
   const normals = new Float32Array(outCount * 3);
-  const hasUv = w.t.data.subarray(0, outCount).some((t) => t >= 0);
+  let hasUv = false;
+  for (let o = 0; o < outCount && !hasUv; o++) hasUv = w.rec[REC * o + T] >= 0;
   const uvs = hasUv ? new Float32Array(outCount * 2) : null;
   const colors = raw.colors ? new Float32Array(outCount * 3) : null;
   const min: [number, number, number] = [Infinity, Infinity, Infinity];
   const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
   for (let o = 0; o < outCount; o++) {
-    const p = 3 * w.v.data[o];
+    const p = 3 * w.rec[REC * o + V];
     for (let a = 0; a < 3; a++) {
       const x = pos[p + a];
       positions[3 * o + a] = x;
       if (x < min[a]) min[a] = x;
       if (x > max[a]) max[a] = x;
     }
-    const n = w.n.data[o];
+    const n = w.rec[REC * o + N];
     if (n >= 0) writeUnit(normals, o, raw.normals.data, 3 * n);
-    else writeUnit(normals, o, w.acc.data, 3 * w.rep.data[o]);
+    else writeUnit(normals, o, w.acc, 3 * w.rec[REC * o + REP]);
     if (uvs) {
-      const t = w.t.data[o];
+      const t = w.rec[REC * o + T];
       if (t >= 0) {
         uvs[2 * o] = raw.uvs.data[2 * t];
         uvs[2 * o + 1] = raw.uvs.data[2 * t + 1];
@@ -163,7 +182,7 @@ function writeUnit(normals: Float32Array, o: number, src: Float64Array, s: numbe
 function indexByMaterial(raw: ObjRaw, cornerOut: Int32Array, outCount: number): { indices: Uint16Array | Uint32Array; groups: DrawGroup[] } {
   const faces = raw.faces.data;
   const faceCount = raw.faces.length / FACE_INTS;
-  const triangleCount = raw.triangles.length / 3;
+  let triangleCount = 0;
   const materialCount = raw.materials.length;
   const perMaterial = new Int32Array(materialCount);
   const order: number[] = [];
@@ -171,6 +190,7 @@ function indexByMaterial(raw: ObjRaw, cornerOut: Int32Array, outCount: number): 
     const m = faces[f * FACE_INTS + 5];
     if (perMaterial[m] === 0) order.push(m);
     perMaterial[m] += faces[f * FACE_INTS + 3];
+    triangleCount += faces[f * FACE_INTS + 3];
   }
   const offset = new Int32Array(materialCount);
   const groups: DrawGroup[] = [];
@@ -187,7 +207,14 @@ function indexByMaterial(raw: ObjRaw, cornerOut: Int32Array, outCount: number): 
     const firstTriangle = faces[f * FACE_INTS + 2];
     const n = faces[f * FACE_INTS + 3];
     let w = 3 * offset[m];
-    for (let t = 3 * firstTriangle; t < 3 * (firstTriangle + n); t++) indices[w++] = cornerOut[tris[t]];
+    if (firstTriangle < 0) { // a triangle as written: its corners
+      const c = faces[f * FACE_INTS];
+      indices[w] = cornerOut[c];
+      indices[w + 1] = cornerOut[c + 1];
+      indices[w + 2] = cornerOut[c + 2];
+    } else {
+      for (let t = 3 * firstTriangle; t < 3 * (firstTriangle + n); t++) indices[w++] = cornerOut[tris[t]];
+    }
     offset[m] += n;
   }
   return { indices, groups };

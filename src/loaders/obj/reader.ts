@@ -1,62 +1,51 @@
 // The statement loop: OBJ text → flat lists of vertices, face corners and triangles, with
 // faults turned into warnings. Building the drawable mesh is build-mesh.ts's job.
 import { F64List, I32List } from './growable';
+import type { Capacities } from './estimate';
 import { addUnique, splitGroups, splitMtllib } from './names';
+import { ByteScanner } from './byte-scanner';
 import { Scanner } from './scanner';
+import { FACE_INTS, FLAT, type ObjRaw } from './raw';
 import { dropZeroArea, MAX_FACE_CORNERS, triangulate } from './triangulate';
 import { shown, Warnings } from '../warnings';
 
-/** Smoothing slot of faces under `s off` / `s 0`: flat normals. */
-export const FLAT = -1;
+export type { ObjRaw } from './raw';
+
 /** Smoothing slot before any `s`: files that never say `s` (scans) are meant to be smooth. */
 const DEFAULT_SMOOTH = 0;
-/** Ints per face record: first corner, corner count, first triangle, triangle count, smoothing slot, material. */
-export const FACE_INTS = 6;
 
 /** Statements read and deliberately not drawn, reported once each without "unknown". */
 const UNSUPPORTED = new Set(['l', 'p', 'vp', 'curv', 'curv2', 'surf', 'cstype', 'deg', 'bmat', 'step', 'parm',
   'trim', 'hole', 'scrv', 'sp', 'end', 'con', 'mg', 'bevel', 'c_interp', 'd_interp', 'lod', 'usemap', 'maplib',
   'shadow_obj', 'trace_obj', 'ctech', 'stech', 'call', 'csh']);
 
-export interface ObjRaw {
-  positions: F64List;
-  /** rgb per vertex once any vertex had a colour (earlier ones filled with white), else null. */
-  colors: F64List | null;
-  uvs: F64List;
-  normals: F64List;
-  /** Per kept corner: position, uv, normal indices (0-based; −1 when absent). */
-  corners: I32List;
-  /** Per kept triangle: three global corner numbers. */
-  triangles: I32List;
-  faces: I32List;
-  materials: (string | null)[];
-  objects: string[];
-  groupNames: string[];
-  mtllibs: string[];
-  warnings: Warnings;
-  droppedFaces: number;
-  firstDroppedLine: number;
-}
+/** The cursor the reader walks: over text (scanner.ts) or UTF-8 bytes (byte-scanner.ts), the same statements either way. */
+export type ObjScanner = Scanner | ByteScanner;
 
 export function readObj(text: string): ObjRaw {
-  return new ObjReader(text).read();
+  return new ObjReader(new Scanner(text)).read();
+}
+
+/** UTF-8 bytes from `start` (past a byte-order mark); `capacities`: the lists' expected lengths. */
+export function readObjBytes(bytes: Uint8Array, start: number, capacities: Capacities | null = null): ObjRaw {
+  return new ObjReader(new ByteScanner(bytes, start), capacities).read();
 }
 
 /** The reader's state across statements: the lists being filled and the current material and smoothing. */
 class ObjReader {
-  private readonly sc: Scanner;
-  private readonly positions = new F64List();
+  private readonly positions: F64List;
   private colors: F64List | null = null;
-  private readonly uvs = new F64List();
-  private readonly normals = new F64List();
-  private readonly corners = new I32List();
-  private readonly triangles = new I32List();
-  private readonly faces = new I32List();
-  /** The face being read: position, uv, normal index per corner. */
-  private readonly face = new I32List(64);
+  private readonly uvs: F64List;
+  private readonly normals: F64List;
+  private readonly corners: I32List;
+  private cornerUvs: I32List | null = null;
+  private cornerNormals: I32List | null = null;
+  private readonly triangles: I32List;
+  private readonly faces: I32List;
   private readonly warnings = new Warnings();
   // A bad v/vt/vn keeps its slot (so later indices still mean the same element), flagged here.
   private readonly badLine = [new Map<number, number>(), new Map<number, number>(), new Map<number, number>()];
+  private anyBad = false;
   private readonly materials: (string | null)[] = [null];
   private readonly materialSlot = new Map<string, number>();
   private readonly smoothSlot = new Map<string, number>();
@@ -72,16 +61,24 @@ class ObjReader {
   private firstDroppedLine = 0;
   /** The numbers of the statement being read (readValues). */
   private readonly values = new Float64Array(8);
+  /** A plain face's raw indices (readPlainCorners): 3 per corner, up to 64 corners. */
+  private readonly raw = new Int32Array(3 * 64);
   /** What readCorners found: the first fault ('' for none) and how many corners the face has. */
   private fault = '';
   private cornerCount = 0;
 
-  constructor(private readonly text: string) {
-    this.sc = new Scanner(text);
+  constructor(private readonly sc: ObjScanner, capacities: Capacities | null = null) {
+    const c = capacities;
+    this.positions = new F64List(Math.max(1024, c?.positions ?? 0));
+    this.uvs = new F64List(Math.max(1024, c?.uvs ?? 0));
+    this.normals = new F64List(Math.max(1024, c?.normals ?? 0));
+    this.corners = new I32List(Math.max(1024, c?.corners ?? 0));
+    this.triangles = new I32List(Math.max(1024, c?.triangles ?? 0));
+    this.faces = new I32List(Math.max(1024, FACE_INTS * (c?.faces ?? 0)));
   }
 
   read(): ObjRaw {
-    const { sc, text } = this;
+    const sc = this.sc;
     while (!sc.atEnd()) {
       sc.skipBlank();
       const line = sc.line;
@@ -89,9 +86,9 @@ class ObjReader {
         sc.nextLine();
         continue;
       }
-      const c0 = text.charCodeAt(sc.pos);
-      const c1 = text.charCodeAt(sc.pos + 1);
-      const c2End = endsKeyword(text.charCodeAt(sc.pos + 2));
+      const c0 = sc.code(sc.pos);
+      const c1 = sc.code(sc.pos + 1);
+      const c2End = endsKeyword(sc.code(sc.pos + 2));
       if (c0 === 118 /* v */ && endsKeyword(c1)) this.vertex(line);
       else if (c0 === 118 && c1 === 116 /* vt */ && c2End) this.textureCoordinate(line);
       else if (c0 === 118 && c1 === 110 /* vn */ && c2End) this.normal(line);
@@ -99,9 +96,9 @@ class ObjReader {
       else this.otherStatement(line);
       sc.nextLine();
     }
-    const { positions, colors, uvs, normals, corners, triangles, faces, materials, objects, groupNames, mtllibs } = this;
+    const { positions, colors, uvs, normals, corners, cornerUvs, cornerNormals, triangles, faces, materials, objects, groupNames, mtllibs } = this;
     return {
-      positions, colors, uvs, normals, corners, triangles, faces, materials, objects, groupNames, mtllibs,
+      positions, colors, uvs, normals, corners, cornerUvs, cornerNormals, triangles, faces, materials, objects, groupNames, mtllibs,
       warnings: this.warnings, droppedFaces: this.droppedFaces, firstDroppedLine: this.firstDroppedLine,
     };
   }
@@ -109,6 +106,8 @@ class ObjReader {
   /** Reads up to 8 numbers to the end of the statement; returns how many, or −1 if one is bad. */
   private readValues(): number {
     const { sc, values } = this;
+    const plain = sc.readPlainNumbers(values);
+    if (plain >= 0) return plain;
     let n = 0;
     let bad = false;
     for (;;) {
@@ -123,6 +122,12 @@ class ObjReader {
     }
   }
 
+  /** Element `index` of list `kind` (v, vt, vn) is unusable, from a bad `line`. */
+  private markBad(kind: number, index: number, line: number): void {
+    this.badLine[kind].set(index, line);
+    this.anyBad = true;
+  }
+
   private dropFace(line: number, message: string): void {
     this.warnings.add(line, message);
     if (this.droppedFaces++ === 0) this.firstDroppedLine = line;
@@ -135,8 +140,8 @@ class ObjReader {
     const n = this.readValues();
     const index = positions.length / 3;
     if (n < 3) {
-      this.badLine[0].set(index, line);
-      warnings.add(line, n < 0 ? `vertex with a coordinate that is not a number (${shownLine(this.text, sc)}); faces using it are dropped`
+      this.markBad(0, index, line);
+      warnings.add(line, n < 0 ? `vertex with a coordinate that is not a number (${shownLine(sc)}); faces using it are dropped`
         : `vertex with ${n} of its 3 coordinates; faces using it are dropped`);
       positions.push3(NaN, NaN, NaN);
     } else {
@@ -159,8 +164,8 @@ class ObjReader {
     sc.pos += 2;
     const n = this.readValues();
     if (n < 1) {
-      this.badLine[1].set(uvs.length / 2, line);
-      this.warnings.add(line, `texture coordinate that is not a number (${shownLine(this.text, sc)}); faces using it are dropped`);
+      this.markBad(1, uvs.length / 2, line);
+      this.warnings.add(line, `texture coordinate that is not a number (${shownLine(sc)}); faces using it are dropped`);
       uvs.push(NaN);
       uvs.push(NaN);
     } else {
@@ -175,7 +180,7 @@ class ObjReader {
     this.sc.pos += 2;
     const n = this.readValues();
     if (n < 3) {
-      this.badLine[2].set(normals.length / 3, line);
+      this.markBad(2, normals.length / 3, line);
       this.warnings.add(line, `normal with ${n < 0 ? 'a value that is not a number' : `${n} of its 3 values`}; faces using it are dropped`);
       normals.push3(NaN, NaN, NaN);
     } else {
@@ -186,22 +191,24 @@ class ObjReader {
   /** `f v/t/n …`: its corners read, then the face kept (triangulated) or dropped with the reason. */
   private faceStatement(line: number): void {
     this.sc.pos += 1;
+    const start = this.corners.length;
     this.readCorners();
     const { fault, cornerCount } = this;
-    const count = this.face.length / 3;
+    const count = this.corners.length - start;
+    if (count < 3 || fault !== '') this.truncateCorners(start); // nothing of a dropped face kept
     if (cornerCount > MAX_FACE_CORNERS) this.dropFace(line, `face of ${cornerCount} vertices, more than the ${MAX_FACE_CORNERS} a face may have; face dropped`);
     else if (fault !== '') this.dropFace(line, `${fault}; face dropped`);
     else if (count < 3) this.dropFace(line, `face with ${count} ${count === 1 ? 'vertex' : 'vertices'} (a face needs 3); face dropped`);
-    else this.keepFace(line, count);
+    else this.keepFace(line, start, count);
   }
 
   /**
-   * The face's corners into `face` (0-based indices, −1 for none), up to the first fault; the
+   * The face's corners onto `corners` (and `cornerUvs`, `cornerNormals`), up to the first fault; the
    * rest of the statement is still read, to count its corners. Sets `fault` and `cornerCount`.
    */
   private readCorners(): void {
-    const { sc, text, face, badLine } = this;
-    face.clear();
+    if (this.readPlainCorners()) return;
+    const sc = this.sc;
     let fault = '';
     let cornerCount = 0;
     const vCount = this.positions.length / 3, tCount = this.uvs.length / 2, nCount = this.normals.length / 3;
@@ -217,36 +224,96 @@ class ObjReader {
       }
       if (sc.pos === tokenStart) {
         sc.pos++; // never stall on a character no reader consumes
-        if (fault === '') fault = `${shown(text.charAt(tokenStart))} is not a face corner`;
+        if (fault === '') fault = `${shown(sc.charAt(tokenStart))} is not a face corner`;
       }
       // Past the cap the line is still read to its end (to count it), but nothing is kept.
       if (++cornerCount > MAX_FACE_CORNERS && fault === '') fault = 'too many';
       if (fault !== '') continue;
-      const vi = resolve(v, vCount), ti = t === 0 ? -1 : resolve(t, tCount), ni = nn === 0 ? -1 : resolve(nn, nCount);
-      if (v !== v || t !== t || nn !== nn) fault = `${shown(text.slice(tokenStart, sc.tokenEnd()))} is not a face corner`;
-      else if (vi < 0) fault = `vertex index ${v} is outside the ${vCount} vertices read so far`;
-      else if (t !== 0 && ti < 0) fault = `texture coordinate index ${t} is outside the ${tCount} read so far`;
-      else if (nn !== 0 && ni < 0) fault = `normal index ${nn} is outside the ${nCount} read so far`;
-      else if (badLine[0].size > 0 && badLine[0].has(vi)) fault = `vertex ${vi + 1} (line ${badLine[0].get(vi)}) is not usable`;
-      else if (ti >= 0 && badLine[1].size > 0 && badLine[1].has(ti)) fault = `texture coordinate ${ti + 1} (line ${badLine[1].get(ti)}) is not usable`;
-      else if (ni >= 0 && badLine[2].size > 0 && badLine[2].has(ni)) fault = `normal ${ni + 1} (line ${badLine[2].get(ni)}) is not usable`;
-      else face.push3(vi, ti, ni);
+      if (v !== v || t !== t || nn !== nn) fault = `${shown(sc.shownSpan(tokenStart, sc.tokenEnd()))} is not a face corner`;
+      else fault = this.addCorner(v, t, nn, vCount, tCount, nCount);
     }
     this.fault = fault;
     this.cornerCount = cornerCount;
   }
 
-  /** The face's `count` corners and triangles kept, unless triangulating leaves no area. */
-  private keepFace(line: number, count: number): void {
-    const { corners, triangles, positions, face } = this;
-    const start = corners.length / 3;
-    for (let k = 0; k < face.length; k++) corners.push(face.data[k]);
+  /** One corner's OBJ indices resolved onto the corner lists; else the fault ('' for none). */
+  private addCorner(v: number, t: number, nn: number, vCount: number, tCount: number, nCount: number): string {
+    const vi = resolve(v, vCount), ti = t === 0 ? -1 : resolve(t, tCount), ni = nn === 0 ? -1 : resolve(nn, nCount);
+    if (vi < 0) return `vertex index ${v} is outside the ${vCount} vertices read so far`;
+    if (t !== 0 && ti < 0) return `texture coordinate index ${t} is outside the ${tCount} read so far`;
+    if (nn !== 0 && ni < 0) return `normal index ${nn} is outside the ${nCount} read so far`;
+    if (this.anyBad) {
+      const unusable = this.unusable(vi, ti, ni);
+      if (unusable !== '') return unusable;
+    }
+    this.corners.push(vi);
+    if (ti >= 0 || this.cornerUvs !== null) (this.cornerUvs ??= this.absentSoFar()).push(ti);
+    if (ni >= 0 || this.cornerNormals !== null) (this.cornerNormals ??= this.absentSoFar()).push(ni);
+    return '';
+  }
+
+  /** A list of −1 for each corner before the one just pushed: the first uv or normal of the file. */
+  private absentSoFar(): I32List {
+    const list = new I32List(this.corners.data.length);
+    list.data.fill(-1, 0, this.corners.length - 1);
+    list.length = this.corners.length - 1;
+    return list;
+  }
+
+  /** Forgets the corners from `start` on. */
+  private truncateCorners(start: number): void {
+    this.corners.length = start;
+    if (this.cornerUvs) this.cornerUvs.length = start;
+    if (this.cornerNormals) this.cornerNormals.length = start;
+  }
+
+  /** Which element of the corner a bad line left unusable ('' for none). */
+  private unusable(vi: number, ti: number, ni: number): string {
+    const badLine = this.badLine;
+    if (badLine[0].has(vi)) return `vertex ${vi + 1} (line ${badLine[0].get(vi)}) is not usable`;
+    if (ti >= 0 && badLine[1].has(ti)) return `texture coordinate ${ti + 1} (line ${badLine[1].get(ti)}) is not usable`;
+    if (ni >= 0 && badLine[2].has(ni)) return `normal ${ni + 1} (line ${badLine[2].get(ni)}) is not usable`;
+    return '';
+  }
+
+  /**
+   * readCorners for a plain face (the scanner's fast path) whose corners are all usable, as
+   * the general way reads it; false, with nothing read, for any other face.
+   */
+  private readPlainCorners(): boolean {
+    const { sc, corners, raw } = this;
+    const from = sc.pos;
+    const count = sc.readPlainCorners(raw);
+    if (count < 0) return false;
+    const first = corners.length;
+    const vCount = this.positions.length / 3, tCount = this.uvs.length / 2, nCount = this.normals.length / 3;
+    for (let k = 0; k < 3 * count; k += 3) {
+      if (this.addCorner(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) !== '') {
+        this.truncateCorners(first);
+        sc.pos = from; // the general way says what is wrong
+        return false;
+      }
+    }
+    this.fault = '';
+    this.cornerCount = count;
+    return true;
+  }
+
+  /** The face's `count` corners (read from `start`) and triangles kept, unless triangulating leaves no area. */
+  private keepFace(line: number, start: number, count: number): void {
+    const { corners, triangles, positions } = this;
+    if (count === 3) {
+      // A triangle as written is kept as written, with no entry in `triangles`.
+      this.faces.push3(start, count, -1);
+      this.faces.push3(1, this.smooth, this.material);
+      return;
+    }
     const firstTriangle = triangles.length / 3;
     const clipped = triangulate(positions.data, corners.data, start, count, triangles);
-    // A triangle as written is kept as written; what triangulating a polygon makes of zero area is not.
-    const kept = count === 3 ? 1 : dropZeroArea(positions.data, corners.data, triangles, firstTriangle);
+    // What triangulating a polygon makes of zero area is not kept.
+    const kept = dropZeroArea(positions.data, corners.data, triangles, firstTriangle);
     if (kept === 0) {
-      corners.length = 3 * start;
+      this.truncateCorners(start);
       this.dropFace(line, `face of ${count} vertices with no area (its corners are repeated or on one line); face dropped`);
       return;
     }
@@ -307,8 +374,6 @@ function resolve(index: number, count: number): number {
 }
 
 /** The statement just read, shortened, for a message. */
-function shownLine(text: string, sc: Scanner): string {
-  let start = sc.pos;
-  while (start > 0 && start > sc.pos - 60 && text.charCodeAt(start - 1) !== 10) start--;
-  return shown(text.slice(start, sc.pos).trim());
+function shownLine(sc: ObjScanner): string {
+  return shown(sc.lineBefore().trim());
 }

@@ -38,6 +38,11 @@ export class Scanner {
     return this.pos >= this.length;
   }
 
+  /** The character code at `p`, NaN past the end. */
+  code(p: number): number {
+    return this.text.charCodeAt(p);
+  }
+
   /** Skips spaces, tabs and `\`-newline continuations, stopping at a line end or a token. */
   skipBlank(): void {
     const t = this.text;
@@ -190,6 +195,15 @@ export class Scanner {
     return negative ? -value : value;
   }
 
+  /** byte-scanner.ts reads plain statements on a fast path first; text always goes the general way. */
+  readPlainNumbers(_values: Float64Array): number {
+    return -1;
+  }
+
+  readPlainCorners(_raw: Int32Array): number {
+    return -1;
+  }
+
   /** If the cursor is on a `/`, steps over it. */
   skipSlash(): boolean {
     if (this.text.charCodeAt(this.pos) !== SLASH) return false;
@@ -222,6 +236,23 @@ export class Scanner {
     out += t.slice(from, p);
     this.pos = p;
     return out.trim();
+  }
+
+  /** The text from `from` to `to`, for `shown` (byte-scanner.ts decodes only what it shows). */
+  shownSpan(from: number, to: number): string {
+    return this.text.slice(from, to);
+  }
+
+  charAt(p: number): string {
+    return this.text.charAt(p);
+  }
+
+  /** The statement before the cursor, its last 60 characters at most, for a message. */
+  lineBefore(): string {
+    const t = this.text;
+    let start = this.pos;
+    while (start > 0 && start > this.pos - 60 && t.charCodeAt(start - 1) !== LF) start--;
+    return t.slice(start, this.pos);
   }
 
   private skipBadToken(): number {

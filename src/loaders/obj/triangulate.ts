@@ -26,7 +26,7 @@ let reflexList = new Int32Array(64);
 
 /**
  * Appends the triangles of the polygon whose corners are `start .. start + count - 1` (global
- * corner numbers) to `out`; corners hold (position, uv, normal) index triples. Returns false
+ * corner numbers) to `out`; `corners` holds each corner's position index. Returns false
  * when the polygon was too large to ear-clip within the work limit and its rest was fanned.
  */
 export function triangulate(
@@ -38,9 +38,9 @@ export function triangulate(
   }
   // Newell normal: robust for non-planar faces, its length is twice the area.
   let nx = 0, ny = 0, nz = 0;
-  let j = 3 * corners[3 * (start + count - 1)];
+  let j = 3 * corners[start + count - 1];
   for (let k = 0; k < count; k++) {
-    const i = 3 * corners[3 * (start + k)];
+    const i = 3 * corners[start + k];
     const xi = positions[i], yi = positions[i + 1], zi = positions[i + 2];
     const xj = positions[j], yj = positions[j + 1], zj = positions[j + 2];
     nx += (yj - yi) * (zj + zi);
@@ -76,7 +76,7 @@ function quad(p: Float64Array, corners: Int32Array, s: number, nx: number, ny: n
 
 /** (b − a) × (c − b) · n: negative where the polygon turns against its normal at b. */
 function turn(p: Float64Array, corners: Int32Array, s: number, a: number, b: number, c: number, nx: number, ny: number, nz: number): number {
-  const ia = 3 * corners[3 * (s + a)], ib = 3 * corners[3 * (s + b)], ic = 3 * corners[3 * (s + c)];
+  const ia = 3 * corners[s + a], ib = 3 * corners[s + b], ic = 3 * corners[s + c];
   const ux = p[ib] - p[ia], uy = p[ib + 1] - p[ia + 1], uz = p[ib + 2] - p[ia + 2];
   const vx = p[ic] - p[ib], vy = p[ic + 1] - p[ib + 1], vz = p[ic + 2] - p[ib + 2];
   return (uy * vz - uz * vy) * nx + (uz * vx - ux * vz) * ny + (ux * vy - uy * vx) * nz;
@@ -95,7 +95,7 @@ function project(
     u = 2; v = 0; flip = ny < 0; // drop y: (z, x)
   }
   for (let k = 0; k < count; k++) {
-    const i = 3 * corners[3 * (s + k)];
+    const i = 3 * corners[s + k];
     px[k] = flip ? -p[i + u] : p[i + u];
     py[k] = p[i + v];
   }
@@ -179,7 +179,7 @@ export function dropZeroArea(positions: Float64Array, corners: Int32Array, out: 
   const t = out.data;
   let w = 3 * first;
   for (let r = 3 * first; r < out.length; r += 3) {
-    const a = 3 * corners[3 * t[r]], b = 3 * corners[3 * t[r + 1]], c = 3 * corners[3 * t[r + 2]];
+    const a = 3 * corners[t[r]], b = 3 * corners[t[r + 1]], c = 3 * corners[t[r + 2]];
     const ux = positions[b] - positions[a], uy = positions[b + 1] - positions[a + 1], uz = positions[b + 2] - positions[a + 2];
     const vx = positions[c] - positions[a], vy = positions[c + 1] - positions[a + 1], vz = positions[c + 2] - positions[a + 2];
     if (uy * vz - uz * vy === 0 && uz * vx - ux * vz === 0 && ux * vy - uy * vx === 0) continue;
