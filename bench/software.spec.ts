@@ -318,18 +318,19 @@ function views(): string[] {
   return lines;
 }
 
-interface Probe { thread: string; frames: number; longTasks: number; longMs: number; maxLong: number; rafs: number; maxRafGap: number; blockedMs: number; windowMs: number }
+interface Probe { thread: string; frames: number; longTasks: number; longMs: number; maxLong: number; rafs: number; maxRafGap: number; blockedMs: number; windowMs: number; intervals: number[] }
 
 /** A gap between the setTimeout probe's ticks longer than this means the main thread was held (a missed 60 Hz frame). */
 const BLOCKED_GAP_MS = 16;
 
 /** Mounts a spinning renderer="software" element and watches the main thread for `PROBE_MS`. */
-async function probe(page: Page): Promise<Probe> {
+async function probe(page: Page, samples: number | null = null): Promise<Probe> {
   await page.goto('/bench/software-element.html');
-  return page.evaluate(async ({ size, windowMs, blockedGap }) => {
+  return page.evaluate(async ({ size, windowMs, blockedGap, samples }) => {
     await customElements.whenDefined('glass-plane-scene');
     const el = document.createElement('glass-plane-scene') as HTMLElement & { stats: { frames: number; thread?: string } };
     el.setAttribute('renderer', 'software');
+    if (samples !== null) el.setAttribute('samples', String(samples));
     el.style.cssText = `display:block;width:${size.width}px;height:${size.height}px`;
     document.body.append(el);
     const start = performance.now();
@@ -353,10 +354,16 @@ async function probe(page: Page): Promise<Probe> {
       if (running) setTimeout(timer, 1);
     };
     setTimeout(timer, 1);
+    // The time between `frame` events (issue 22: a new frame every ≤ 16 ms).
+    const frameTimes: number[] = [];
+    const onFrame = () => frameTimes.push(performance.now());
+    el.addEventListener('frame', onFrame);
     const frames0 = el.stats.frames, t0 = performance.now();
     await new Promise((r) => setTimeout(r, windowMs));
     const t1 = performance.now();
     running = false;
+    el.removeEventListener('frame', onFrame);
+    const intervals = frameTimes.slice(1).map((t, i) => t - frameTimes[i]);
     const frames = el.stats.frames - frames0;
     await new Promise((r) => setTimeout(r, 50)); // the last long task's entry arrives after it ends
     entries.push(...observer.takeRecords());
@@ -374,13 +381,19 @@ async function probe(page: Page): Promise<Probe> {
     }
     const thread = el.stats.thread ?? '?';
     el.remove();
-    return { thread, frames, longTasks, longMs, maxLong, rafs, maxRafGap, blockedMs, windowMs: t1 - t0 };
-  }, { size: SIZE, windowMs: PROBE_MS, blockedGap: BLOCKED_GAP_MS });
+    return { thread, frames, longTasks, longMs, maxLong, rafs, maxRafGap, blockedMs, windowMs: t1 - t0, intervals };
+  }, { size: SIZE, windowMs: PROBE_MS, blockedGap: BLOCKED_GAP_MS, samples });
 }
 
 const share = (ms: number, p: Probe) => `${((100 * ms) / p.windowMs).toFixed(1)} %`;
 
+const median = (xs: number[]) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return s.length === 0 ? NaN : s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+};
+
 async function responsiveness(page: Page): Promise<string[]> {
+  const oneSample = await probe(page, 0);
   const withWorker = await probe(page);
   const bare = await page.context().newPage();
   // No Worker constructor: SoftwareHost settles for the main thread, as under CSP worker-src 'none'.
@@ -400,6 +413,10 @@ async function responsiveness(page: Page): Promise<string[]> {
     '|---|---|---|---|---|---|---|---|---|---|---|',
     row('worker', withWorker),
     row('no Worker (main thread)', mainThread),
+    '',
+    `**Frame interval** (issue 22's bar: a new frame every ≤ 16 ms at ${SIZE.width}×${SIZE.height}, 1 sample per pixel, while the cube spins): the median time between the element's \`frame\` events in the window — ` +
+      `samples 0 (1 spp), worker: **${median(oneSample.intervals).toFixed(1)} ms** (${oneSample.intervals.length} intervals; ${oneSample.thread}); samples 4 (the default), worker: ${median(withWorker.intervals).toFixed(1)} ms; ` +
+      `samples 4 on the main thread: ${median(mainThread.intervals).toFixed(1)} ms. Frames follow requestAnimationFrame, so at 60 Hz no interval is shorter than ~16.7 ms.`,
     '',
     `With the worker the main thread only posts requests and puts the pixels on the canvas: ${share(withWorker.longMs, withWorker)} in long tasks, ` +
       `${share(withWorker.blockedMs, withWorker)} held over ${BLOCKED_GAP_MS} ms. Without it: ${share(mainThread.longMs, mainThread)} in long tasks and ${share(mainThread.blockedMs, mainThread)} held over ${BLOCKED_GAP_MS} ms` +
