@@ -416,7 +416,7 @@ async function responsiveness(page: Page): Promise<string[]> {
     '',
     `**Frame interval** (issue 22's bar: a new frame every ≤ 16 ms at ${SIZE.width}×${SIZE.height}, 1 sample per pixel, while the cube spins): the median time between the element's \`frame\` events in the window — ` +
       `samples 0 (1 spp), worker: **${median(oneSample.intervals).toFixed(1)} ms** (${oneSample.intervals.length} intervals; ${oneSample.thread}); samples 4 (the default), worker: ${median(withWorker.intervals).toFixed(1)} ms; ` +
-      `samples 4 on the main thread: ${median(mainThread.intervals).toFixed(1)} ms. Frames follow requestAnimationFrame, so at 60 Hz no interval is shorter than ~16.7 ms.`,
+      `samples 4 on the main thread: ${median(mainThread.intervals).toFixed(1)} ms. In a worker the next frame is asked for as the last one lands (while the scene moves); on the main thread it waits for requestAnimationFrame, so there no interval is shorter than one display frame.`,
     '',
     `With the worker the main thread only posts requests and puts the pixels on the canvas: ${share(withWorker.longMs, withWorker)} in long tasks, ` +
       `${share(withWorker.blockedMs, withWorker)} held over ${BLOCKED_GAP_MS} ms. Without it: ${share(mainThread.longMs, mainThread)} in long tasks and ${share(mainThread.blockedMs, mainThread)} held over ${BLOCKED_GAP_MS} ms` +

@@ -101,4 +101,14 @@ export default [
     edits: [{ file: 'src/element/scene-source.ts', find: '        this.defining = false;\n        this.invalidate();', replace: '        this.defining = false;' }],
     tests: ['tests/e2e/children-chunk.spec.ts'],
   },
+  {
+    name: 'L18 a worker\'s frame that lands waits for the next animation frame before the next is asked for (30 Hz for a 16 ms frame)',
+    edits: [{ file: LOOP, find: '    if (!offThread || !moving || !this.host.canDraw()', replace: '    if (true || !moving || !this.host.canDraw()' }],
+    tests: ['tests/e2e/software.spec.ts'],
+  },
+  {
+    name: 'L19 frames drawn on the main thread follow each other at once too (the page never runs between them)',
+    edits: [{ file: SOFTWARE, find: "        this.host.resume(this.software.thread === 'worker');", replace: '        this.host.resume(true);' }],
+    tests: ['tests/e2e/software.spec.ts'],
+  },
 ];

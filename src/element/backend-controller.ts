@@ -57,7 +57,7 @@ export class BackendController implements Controller, ContextClient {
       canvas: host.canvas,
       drawn: (state, report) => host.drawn(state, report),
       requestRender: () => host.requestRender(),
-      resume: () => host.resume(),
+      resume: (offThread) => host.resume(offThread),
       renderError: (e) => this.renderError(e),
     };
   }

@@ -14,8 +14,11 @@ export interface BackendHost {
   drawn(state: FrameState, report: Omit<FrameReport, 'frame'>): void;
   /** Draw again (the canvas was resized while a frame was drawn). */
   requestRender(): void;
-  /** A frame drawn elsewhere has landed: draw what changed meanwhile. */
-  resume(): void;
+  /**
+   * A frame drawn elsewhere has landed: draw what changed meanwhile. `offThread`: it was drawn
+   * in a worker, so while something moves the next one may start at once.
+   */
+  resume(offThread: boolean): void;
   /** Drawing threw: a shader that failed, a lost context, or a bug (rethrown). */
   renderError(e: unknown): void;
 }

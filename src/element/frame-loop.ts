@@ -83,9 +83,22 @@ export class FrameLoop implements Controller {
     this.rafId = requestAnimationFrame(this.onFrame);
   }
 
-  /** A frame drawn elsewhere (a worker's) has landed: draw what changed meanwhile. */
-  resume(): void {
-    if (this.dirty) this.schedule();
+  /**
+   * A frame drawn elsewhere has landed: draw what changed meanwhile. While something moves and
+   * the frame came from a worker (`offThread`), the next frame starts at once rather than at the
+   * next animation frame, so the worker never sits idle waiting for the display (a 16 ms frame
+   * would otherwise miss every other vsync and show at 30 Hz); drawn on this thread, it waits
+   * for the animation frame, which lets the page run between frames.
+   */
+  resume(offThread = false): void {
+    const moving = this.host.animating();
+    if (!this.dirty && !moving) return;
+    if (!offThread || !moving || !this.host.canDraw() || !this.inView || document.hidden) {
+      this.schedule();
+      return;
+    }
+    cancelAnimationFrame(this.rafId);
+    this.onFrame(performance.now());
   }
 
   /** Drawing buffer = CSS box × pixel ratio, within the renderer's limits. Returns true if it changed. */

@@ -140,7 +140,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
       },
       stopFrames: () => this.loop.cancel(),
       drawn: (state, report) => this.frameDrawn(state, report),
-      resume: () => this.loop.resume(),
+      resume: (offThread: boolean) => this.loop.resume(offThread),
     });
     this.controllers = [this.rig, this.loop, this.source, this.backend];
   }

@@ -49,7 +49,7 @@ export class SoftwareBackend implements Backend {
       const done = () => {
         if (this.disposed) return;
         this.host.drawn(frozen, { time: frozen.time, width, height, drawCalls: 0, passes: passesFor(frozen.view, glassSkip) });
-        this.host.resume();
+        this.host.resume(this.software.thread === 'worker');
       };
       if (out && 'putImageData' in out) {
         out.putImageData(image, 0, 0);

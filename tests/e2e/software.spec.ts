@@ -126,3 +126,28 @@ test('where a worker may not start (CSP worker-src \'none\') the software render
   expect(errors.length, 'the refusal is logged').toBeGreaterThan(0);
   expect(errors.every((e) => /worker|Content Security Policy/i.test(e)), errors.join('\n')).toBe(true);
 });
+
+// Issue 22: a spinning scene drawn in a worker asks for its next frame as the last one lands,
+// not at the next animation frame (a 16 ms frame would otherwise show at 30 Hz); on the main
+// thread it still waits for the animation frame, so the page runs between frames. Checked with
+// requestAnimationFrame silenced after the first frames: the worker's frames keep coming, the
+// main thread's stop.
+for (const thread of ['worker', 'main'] as const) {
+  test(`spinning in the ${thread === 'worker' ? 'worker, frames follow each other without waiting for' : 'main thread, frames wait for'} the animation frame`, async ({ page }) => {
+    if (thread === 'main') await page.addInitScript(() => { (window as unknown as { Worker: unknown }).Worker = undefined; });
+    await openPage(page);
+    await mount(page, { renderer: 'software', samples: 0 }, { width: 160, height: 90 });
+    const counted = await page.evaluate(async () => {
+      const el = document.querySelector('glass-plane-scene') as HTMLElement & { stats: { frames: number; thread?: string } };
+      await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+      window.requestAnimationFrame = () => 0; // no animation frame from now on
+      const before = el.stats.frames;
+      await new Promise((r) => setTimeout(r, 1500));
+      return { frames: el.stats.frames - before, thread: el.stats.thread };
+    });
+    expect(counted.thread).toBe(thread);
+    // The in-flight frame may still land once.
+    if (thread === 'worker') expect(counted.frames, 'frames in 1.5 s without animation frames').toBeGreaterThan(10);
+    else expect(counted.frames, 'frames in 1.5 s without animation frames').toBeLessThanOrEqual(1);
+  });
+}
