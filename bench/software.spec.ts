@@ -387,10 +387,7 @@ async function probe(page: Page, samples: number | null = null): Promise<Probe> 
 
 const share = (ms: number, p: Probe) => `${((100 * ms) / p.windowMs).toFixed(1)} %`;
 
-const median = (xs: number[]) => {
-  const s = [...xs].sort((a, b) => a - b);
-  return s.length === 0 ? NaN : s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-};
+const median = (xs: number[]) => summary(xs).median;
 
 async function responsiveness(page: Page): Promise<string[]> {
   const oneSample = await probe(page, 0);

@@ -1,6 +1,7 @@
 // Rough glass (SPEC §14) for one renderer, from the core's side: its chunk (rough-glass-gl.ts:
 // passes, targets, shaders) loaded the first time a frame asks for roughness, its targets made
 // on the first rough frame. Until the chunk is in, rough glass is drawn polished.
+import { isRough } from '../frame/roughness';
 import type { ResourceCounter } from './gl/resource-counter';
 import type { MultisampleTarget } from './gl/multisample-target';
 import type { RenderTarget } from './gl/render-target';
@@ -25,7 +26,7 @@ export class RoughLoader {
 
   /** See Renderer.load. */
   load(state: FrameState): Promise<void> | null {
-    if (!((state.roughness ?? 0) > 0) || this.chunk || this.failed) return null;
+    if (!isRough(state) || this.chunk || this.failed) return null;
     return (this.loading ??= import('./rough-glass-gl').then(
       (chunk) => {
         this.programs.setRoughSources(chunk.ROUGH_SOURCES);
@@ -40,7 +41,7 @@ export class RoughLoader {
 
   /** Is the glass rough this frame? Roughness > 0 and the chunk in. */
   active(state: FrameState): boolean {
-    return (state.roughness ?? 0) > 0 && this.chunk !== null;
+    return isRough(state) && this.chunk !== null;
   }
 
   /** RoughTargets.draw (after active() said yes), the targets made on first use. */

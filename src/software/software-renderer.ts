@@ -1,8 +1,8 @@
-// SPEC §11's CPU renderer: the scene value drawn by the same passes and equations as the GL
-// path (reflection into a second frame buffer, scene, glass), without DOM or GL, so it can run
-// in a worker. Pixels come back as RGBA8, top row first, like `capture()` and the reference.
-// With colorSpace 'srgb' (SPEC §13) textures and the background are decoded, the Float32
-// buffers sum linear light, and the resolve encodes once; 'none' uses every value as stored.
+// SPEC §11's CPU renderer: the GL path's passes and equations (reflection into a second frame
+// buffer, scene, glass) without DOM or GL, for a worker; RGBA8 out, top row first. In 'srgb'
+// (SPEC §13) textures and background are decoded, the Float32 buffers sum linear light and the
+// resolve encodes once; 'none' uses every value as stored.
+import { isRough } from '../frame/roughness';
 import { eyeRelativePlane } from '../math/mirror';
 import { srgbToLinear, type ColorSpace } from '../math/srgb';
 import { resolveSamples } from './encode';
@@ -179,7 +179,7 @@ export class SoftwareRenderer {
         }
         // Opaque objects, transparent ones beyond the glass, the glass's footprint, the
         // reflection there only, the glass over it all, transparent objects on the eye's side.
-        if ((state.roughness ?? 0) > 0) this.roughGlass(state, scene, images, width);
+        if (isRough(state)) this.roughGlass(state, scene, images, width);
         else {
           this.scenePass(state, scene, images, 'beyond');
           this.mask.fill(0, 0, W * H);

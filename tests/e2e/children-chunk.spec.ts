@@ -3,7 +3,7 @@
 // its frames until it is in — the first frame shows the children, never the default scene in
 // their place; a chunk that cannot load leaves the default scene with one warning.
 import { test, expect, openPage, capture } from './fixtures';
-import { mountHtml } from './helpers/scene-children';
+import { mountFirstFrame, mountHtml } from './helpers/scene-children';
 import type { RgbaImage } from './helpers/golden';
 
 const SCENE = `<glass-plane-scene time="0" spin="0" style="width:160px;height:90px" pixel-ratio="1">
@@ -14,24 +14,6 @@ const SCENE = `<glass-plane-scene time="0" spin="0" style="width:160px;height:90
 const same = (a: RgbaImage, b: RgbaImage) => a.width === b.width && a.data.every((v, i) => v === b.data[i]);
 const fetched = (page: import('@playwright/test').Page) =>
   page.evaluate(() => performance.getEntriesByType('resource').some((e) => e.name.includes('child-elements')));
-
-/** The element's first frame, read back inside its first `frame` event. */
-async function firstFrame(page: import('@playwright/test').Page, html: string): Promise<RgbaImage> {
-  const { width, height, b64 } = await page.evaluate((html) => new Promise<{ width: number; height: number; b64: string }>((resolve) => {
-    const host = document.createElement('div');
-    host.innerHTML = html;
-    const el = host.querySelector('glass-plane-scene') as HTMLElement & { capture(): ImageData };
-    el.addEventListener('frame', () => {
-      const img = el.capture();
-      const bytes = new Uint8Array(img.data.buffer);
-      let s = '';
-      for (let i = 0; i < bytes.length; i += 0x8000) s += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-      resolve({ width: img.width, height: img.height, b64: btoa(s) });
-    }, { once: true });
-    document.body.append(...host.childNodes);
-  }), html);
-  return { width, height, data: new Uint8Array(Buffer.from(b64, 'base64')) };
-}
 
 test('a scene without children never fetches their chunk', async ({ page }) => {
   await openPage(page);
@@ -46,7 +28,7 @@ test('the first frame of a scene with children shows them, however slow their ch
     await route.continue();
   });
   await openPage(page);
-  const first = await firstFrame(page, SCENE);
+  const first = await mountFirstFrame(page, SCENE);
   expect(await fetched(page)).toBe(true);
   await page.evaluate(() => new Promise((r) => setTimeout(r, 300)));
   const settled = await capture(page);

@@ -3,7 +3,7 @@
 // `roughness="0"` as the frame without the attribute bit for bit, a bad value falling back with
 // one warning — and the demo's roughness slider writes the attribute.
 import { test, expect, openPage, capture, setAttributes } from './fixtures';
-import { mountHtml } from './helpers/scene-children';
+import { mountFirstFrame, mountHtml } from './helpers/scene-children';
 import { compareImages as psnrAgainst, renderScene } from '../../src/reference';
 import { FLOOR_SCENE, floorState } from './helpers/rough-scenes';
 import type { RgbaImage } from './helpers/golden';
@@ -83,19 +83,7 @@ for (const renderer of ['webgl', 'software']) {
 // asks for roughness: the element's first frame waits for it instead of showing the glass polished.
 test('webgl: the first frame of a rough element is already rough (it waits for rough glass\'s chunk)', async ({ page }) => {
   await openPage(page);
-  const b64 = await page.evaluate((html) => new Promise<string>((resolve) => {
-    const host = document.createElement('div');
-    host.innerHTML = html;
-    const el = host.querySelector('glass-plane-scene') as HTMLElement & { capture(): ImageData };
-    el.addEventListener('frame', () => {
-      const bytes = new Uint8Array(el.capture().data.buffer);
-      let s = '';
-      for (let i = 0; i < bytes.length; i += 0x8000) s += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-      resolve(btoa(s));
-    }, { once: true });
-    document.body.append(...host.childNodes);
-  }), FLOOR('webgl', '0.5'));
-  const first = new Uint8Array(Buffer.from(b64, 'base64'));
+  const first = (await mountFirstFrame(page, FLOOR('webgl', '0.5'))).data;
   const ref = renderScene(FLOOR_SCENE, floorState({ width: W, height: H, roughness: 0.5 }), { samplesPerAxis: 2, microfacetSamples: 64 });
   // The polished glass's frame scores 29–31 dB here; the rough one the 39.08 above.
   expect(psnrAgainst(ref, first).psnr.glass, `measured ${MEASURED.webgl} dB`).toBeGreaterThan(MEASURED.webgl - 1);

@@ -82,6 +82,27 @@ export async function mountHtml(page: Page, html: string, timeoutMs = 30_000): P
   }), { html, timeoutMs });
 }
 
+/**
+ * Mounts `html` (one scene element and its children) and returns that element's first frame,
+ * read back inside its first `frame` event: what a chunk the frame waited for changed, or not.
+ */
+export async function mountFirstFrame(page: Page, html: string): Promise<{ width: number; height: number; data: Uint8Array }> {
+  const { width, height, b64 } = await page.evaluate((html) => new Promise<{ width: number; height: number; b64: string }>((resolve) => {
+    const host = document.createElement('div');
+    host.innerHTML = html;
+    const el = host.querySelector('glass-plane-scene') as HTMLElement & { capture(): ImageData };
+    el.addEventListener('frame', () => {
+      const img = el.capture();
+      const bytes = new Uint8Array(img.data.buffer);
+      let s = '';
+      for (let i = 0; i < bytes.length; i += 0x8000) s += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+      resolve({ width: img.width, height: img.height, b64: btoa(s) });
+    }, { once: true });
+    document.body.append(...host.childNodes);
+  }), html);
+  return { width, height, data: new Uint8Array(Buffer.from(b64, 'base64')) };
+}
+
 /** Resolves with the detail of the next `type` event bubbling to the scene element. */
 export async function nextEvent(page: Page, type: string, change: string, selector = 'glass-plane-scene'): Promise<any> {
   return page.evaluate(({ type, change, selector }) => new Promise((resolve, reject) => {
