@@ -1,5 +1,4 @@
 // The float64 CPU reference image of a frame: stratified samples per pixel, box-filtered, plus regions.
-import { isRough } from '../frame/roughness';
 import { defaultScene } from '../scene/default-scene';
 import type { Scene } from '../scene/scene';
 import type { DecodedImage } from '../scene/decoded-image';
@@ -98,7 +97,7 @@ export function renderScene(scene: Scene, state: ViewState, options: ReferenceOp
   const height = Math.max(0, Math.floor(state.height));
   const tracer = new SampleTracer(scene, state, textureFilter, options.images);
   // SPEC §14: each sample takes `perSample` of the pixel's stratified microfacet normals.
-  const rough = isRough(state);
+  const rough = (state.roughness ?? 0) > 0;
   const perSample = rough ? Math.max(1, Math.ceil((options.microfacetSamples ?? DEFAULT_MICROFACET_SAMPLES) / (n * n))) : 0;
   const facets = rough ? new MicrofacetSamples(perSample * n * n) : null;
   tracer.microfacets = facets ? { xi1: facets.xi1, xi2: facets.xi2, first: 0, count: perSample } : null;
