@@ -49,7 +49,18 @@ export default defineConfig(({ mode, command }) => {
         external: standalone ? [] : [/^gl-matrix/],
         // Library mode keeps whitespace in ES output; the self-contained file is for <script>
         // tags and CDNs, so it is minified whole.
-        output: standalone ? { minify: true } : {},
+        // What the element needs before its first frame is one chunk (group `$initial`): split into
+        // the many small chunks the automatic splitting makes where lazy chunks share a module,
+        // it gzips 3 kB larger (40.1 against 36.8 kB, issue 22).
+        output: { ...(standalone ? { minify: true } : {}), codeSplitting: {
+          groups: [
+            { name: 'core', tags: ['$initial'] },
+            // A course camera's projection: its maths, the scene's depth range, FrameSetup's part.
+            { name: 'course-projection', test: /src[\\/](frame[\\/]course-projection|scene[\\/]course-depth|math[\\/]course-camera)\.ts$/ },
+            // Files loaded once per page (models, course files): shared by the children and camera-src.
+            { name: 'model-cache', test: /src[\\/](element[\\/](absolute-url|children[\\/]model-cache)|loaders[\\/]load-error)\.ts$/ },
+          ],
+        } },
       },
     },
   };

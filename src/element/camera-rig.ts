@@ -5,7 +5,7 @@
 import type { FrameState } from '../render/types';
 import type { Scene } from '../scene/scene';
 import type { SceneAttributes } from './attributes';
-import { CameraSource } from './camera-source';
+import type { CameraSource } from './camera-source';
 import type { Controller } from './controller';
 import type { quat } from 'gl-matrix';
 import type { PointerControls, PointerControlsHost, PointerMode } from './controls/pointer-controls';
@@ -40,8 +40,12 @@ export interface CameraRigHost {
 
 export class CameraRig implements Controller {
   readonly flyby = new FlybyController();
-  /** `camera-src`: the course camera, when one is in force (SPEC §11). */
-  readonly cameraSource: CameraSource;
+  /**
+   * `camera-src`: the course camera, when one is in force (SPEC §11). A chunk of its own
+   * (camera-source.ts), loaded the first time camera-src is set; null until then.
+   */
+  private source: CameraSource | null = null;
+  private sourceLoading = false;
   /** The trackball's rotation of the objects, a unit quaternion [x, y, z, w]. */
   readonly objectRotation = new Float64Array([0, 0, 0, 1]);
   /** The trackball's rotation of the first light about the objects' centre. */
@@ -72,7 +76,6 @@ export class CameraRig implements Controller {
   constructor(private readonly host: CameraRigHost) {
     const { element, canvas, values } = host;
     this.flyby.setPose(values.cameraPosition, values.cameraRotation[0], values.cameraRotation[1]);
-    this.cameraSource = new CameraSource({ element, src: () => host.values.cameraSrc, changed: () => host.requestRender() });
     this.input = new FlybyInput({
       element, canvas, flyby: this.flyby,
       enabled: () => host.values.controls === 'flyby',
@@ -108,7 +111,7 @@ export class CameraRig implements Controller {
       },
       gestureEnd: () => this.gestureEnd(),
     };
-    this.parts = [this.input, this.cameraSource];
+    this.parts = [this.input];
   }
 
   hostConnected(): void {
@@ -116,12 +119,15 @@ export class CameraRig implements Controller {
     for (const p of this.parts) p.hostConnected?.();
     this.pointer?.hostConnected();
     this.loadPointer();
+    if (this.source) this.source.hostConnected();
+    else this.cameraSrcChanged();
   }
 
   hostDisconnected(): void {
     this.connected = false;
     for (const p of this.parts) p.hostDisconnected?.();
     this.pointer?.hostDisconnected();
+    this.source?.hostDisconnected();
     clearTimeout(this.lookTimer);
   }
 
@@ -164,9 +170,26 @@ export class CameraRig implements Controller {
     return undefined;
   }
 
-  /** A course camera file is loading (`ready` waits for it; for the controls' chunk frames wait). */
+  /** A course camera file (or its chunk) is loading (`ready` waits for it; for the controls' chunk frames wait). */
   get loading(): boolean {
-    return this.cameraSource.loading;
+    return this.sourceLoading || (this.source?.loading ?? false);
+  }
+
+  /** `camera-src` changed (or the element connected): its file loads, through the chunk the first time. */
+  cameraSrcChanged(): void {
+    if (this.source) return this.source.srcChanged();
+    if (this.host.values.cameraSrc === null || this.sourceLoading || !this.connected) return;
+    this.sourceLoading = true;
+    const element = this.host.element;
+    import('./camera-source').then((chunk) => {
+      this.source = new chunk.CameraSource({ element, src: () => this.host.values.cameraSrc, changed: () => this.host.requestRender() });
+      if (this.connected) this.source.hostConnected();
+    }, (e: unknown) => {
+      warn(`camera-src could not load (${String(e).slice(0, 200)}); the camera attributes stay the view`);
+    }).finally(() => {
+      this.sourceLoading = false;
+      this.host.requestRender();
+    });
   }
 
   /** The page set camera-position, -rotation or -target: the pose follows, one camera-change. */
@@ -230,13 +253,14 @@ export class CameraRig implements Controller {
     s.pitch = pose.pitch;
     s.projection = v.projection;
     s.target = v.cameraTarget; // the orthographic size is taken there (else at the glass centre)
-    const cam = this.cameraSource.camera;
+    const source = this.source, cam = source?.camera ?? null;
     s.courseCamera = cam;
-    if (!cam) return;
+    if (!source || !cam) return;
     s.cameraPosition = cam.c;
-    s.fov = CameraSource.fov(cam);
+    // The vertical field of view the course window stands for (for level-of-detail choices).
+    s.fov = 2 * Math.atan(Math.abs(cam.hy / cam.d)) * DEG;
     s.projection = 'perspective';
-    this.cameraSource.checkLooksAway(scene, s.time, s.turn ?? null);
+    source.checkLooksAway(scene, s.time, s.turn ?? null);
   }
 
   /**

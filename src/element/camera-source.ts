@@ -1,9 +1,12 @@
-// `camera-src` (SPEC §2, §11): the course's camera file for the scene element. Loaded once per
+// `camera-src` (SPEC §2, §11): the course's camera file for the scene element, a chunk of its own
+// (CameraRig loads it the first time camera-src is set). Each file is loaded once per
 // URL per page like a model; while one is in force it is the view (camera-position, -rotation,
 // -target, fov, projection and the camera controls wait until camera-src is removed). A file
 // that fails fires `error` on the element, which keeps the camera it had.
 import type { CourseCamera } from '../math/course-camera';
-import { courseSceneRange } from '../scene/course-depth';
+// Through the renderer's course chunk, so that this chunk cannot load without it: a page either
+// has both (the course camera is drawn) or neither (the camera attributes stay the view).
+import { courseSceneRange } from '../frame/course-projection';
 import type { Scene } from '../scene/scene';
 import type { SceneTurn } from '../scene/group-rotation';
 import { acquireCourseFile, loadErrorDetail, type Handle } from './children/model-cache';
@@ -11,8 +14,6 @@ import type { LoadedCamera } from './children/course-files';
 import { warn } from './warnings';
 import { absoluteUrl } from './absolute-url';
 import type { Controller } from './controller';
-
-const DEG = 180 / Math.PI;
 
 /** What CameraSource needs of the scene element. */
 export interface CameraSourceHost {
@@ -104,11 +105,6 @@ export class CameraSource implements Controller {
     if (scene.objects.length === 0 || !courseSceneRange(camera, scene, time, turn).behind) return;
     this.warned.add(camera);
     warn(`camera-src: every vertex is behind the camera (z ≤ 0 along N); drawn as the course's programs drew it, the formula applied to negative z (the view along −N, mirrored top to bottom)`);
-  }
-
-  /** The vertical field of view the course window stands for (for level-of-detail choices). */
-  static fov(camera: CourseCamera): number {
-    return 2 * Math.atan(Math.abs(camera.hy / camera.d)) * DEG;
   }
 
   private fail(url: string, detail: ReturnType<typeof loadErrorDetail>): void {

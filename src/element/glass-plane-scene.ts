@@ -176,7 +176,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     if (p === 'cameraPosition' || p === 'cameraRotation' || p === 'cameraTarget') this.rig.cameraAttributeChanged();
     if (p === 'controls') this.rig.controlsChanged();
     if (p === 'renderer' && this.isConnected) this.backend.rendererChanged();
-    if (p === 'cameraSrc') this.rig.cameraSource.srcChanged();
+    if (p === 'cameraSrc') this.rig.cameraSrcChanged();
     // Resize only: drawing here, mid-way through a script's batch of attribute changes, would
     // show a frame with half of them applied (the next animation frame comes before paint).
     if (p === 'pixelRatio') this.loop.resize();

@@ -32,7 +32,7 @@ export class WebGLBackend implements Backend {
     const loading = this.renderer.load(state);
     if (loading) {
       this.busy = true;
-      loading.catch((e: unknown) => warn(`rough glass could not load (${String(e).slice(0, 200)}); drawing the glass polished`)).finally(() => {
+      loading.catch((e: unknown) => warn(e instanceof Error ? e.message : String(e))).finally(() => {
         this.busy = false;
         if (!this.disposed) this.host.requestRender();
       });

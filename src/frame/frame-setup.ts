@@ -4,15 +4,13 @@
 import { mat3, mat4 } from 'gl-matrix';
 import { forwardFromYawPitch, orthoHalfHeight, orthographicMatrix, projectionMatrix, rotationOnlyView, viewerSide } from '../math/camera';
 import { eyeRelativePlane, MIRROR_CONTACT, reflectDirection, reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
-import { courseViewProjection, type CourseCamera } from '../math/course-camera';
-import { courseSceneRange, type CourseDepthRange } from '../scene/course-depth';
+import type { CourseDepthRange } from '../scene/course-depth';
+import type { CourseProjection } from './course-projection';
 import { CAMERA, DEFAULT_GLASS } from '../scene/default-scene';
 import { glassFrame, type GlassFrame } from '../scene/glass-frame';
-import { isIdentity, turnMatrix, type SceneTurn } from '../scene/group-rotation';
+import { isIdentity, turnMatrix } from '../scene/group-rotation';
 import { MAX_LIGHTS, type Glass, type Scene, type SceneObject } from '../scene/scene';
 import type { FrameState } from './types';
-
-const IDENTITY = [0, 0, 0, 1] as const;
 
 /** What one draw of one object needs, for one eye (real or mirrored). */
 export class DrawMatrices {
@@ -119,15 +117,18 @@ export class FrameSetup {
   private readonly scratch3 = f64(3);
   private readonly identity = mat4.identity(f64(16) as unknown as mat4) as unknown as Float64Array;
   private lastGlass: Glass | null | undefined = undefined;
-  /** courseSceneRange is a walk over every vertex: kept while camera, scene and clock are. */
-  private rangeKey: { cam: CourseCamera; scene: Scene; time: number } | null = null;
-  private readonly rangeTurn = f64(4);
   /** The trackball's turn of the objects and of the first light this frame (FrameState.turn); null: none. */
   private readonly objectsTurnMatrix = f64(16);
   private readonly lightTurnMatrix = f64(16);
   private objectsTurn: Float64Array | null = null;
   private lightTurn: Float64Array | null = null;
-  private readonly eyeRelativeCamera: CourseCamera = { c: [0, 0, 0], n: [0, 0, 1], v: [0, 1, 0], u: [1, 0, 0], d: 1, hx: 1, hy: 1 };
+
+  /**
+   * `course`: the course camera's projection (frame/course-projection.ts), which only frames
+   * with a course camera need: a renderer loads it when one asks for it. Without it a course
+   * camera is ignored (the flyby camera's pose is used).
+   */
+  constructor(public course: CourseProjection | null = null) {}
 
   update(s: FrameState, scene: Scene): void {
     const { eye, mirroredEye } = this;
@@ -137,7 +138,7 @@ export class FrameSetup {
       this.glass = glassFrame(scene.glass ?? DEFAULT_GLASS);
     }
     const plane = this.glass.plane;
-    const course = s.courseCamera ?? null;
+    const course = this.course ? s.courseCamera ?? null : null;
     const position = course ? course.c : s.cameraPosition;
     eye[0] = position[0]; eye[1] = position[1]; eye[2] = position[2];
     reflectPoint(mirroredEye, eye, plane);
@@ -171,7 +172,7 @@ export class FrameSetup {
    * perspective one), the orthographic half-height and each eye's view vector.
    */
   private viewAndProjection(s: FrameState, scene: Scene, forward: Float64Array): void {
-    const course = s.courseCamera ?? null;
+    const course = this.course ? s.courseCamera ?? null : null;
     // Same near and far for both projections (SPEC §2): the orthographic eye is a point on the
     // view plane's centre like the perspective one, and draws depths near..far ahead of it.
     const aspect = s.width / Math.max(1, s.height);
@@ -181,7 +182,7 @@ export class FrameSetup {
       this.halfHeight = 0;
       this.viewVectorMain.set(PERSPECTIVE_VIEW);
       this.viewVectorMirrored.set(PERSPECTIVE_VIEW);
-      this.courseViewProjection(course, scene, s.time, this.objectsTurn ? s.turn! : null);
+      this.course!.apply(this, course, scene, s.time, this.objectsTurn ? s.turn! : null);
       return;
     }
     if (this.orthographic) {
@@ -249,33 +250,6 @@ export class FrameSetup {
     this.forward[0] = n[0]; this.forward[1] = n[1]; this.forward[2] = n[2];
     return this.forward;
   }
-
-  /**
-   * The course's projection (SPEC §11) as viewProjection, for eye-relative points: the same
-   * matrix with C at the origin. `projection` holds it too (there is no separate view).
-   * Near and far from the scene's geometry (courseSceneRange), recomputed only when the
-   * camera, the scene or (with something spinning) the clock changed.
-   */
-  private courseViewProjection(cam: CourseCamera, scene: Scene, time: number, turn: SceneTurn | null): void {
-    const spins = scene.objects.some((o) => o.transform.spin !== 0);
-    const key = this.rangeKey, last = this.rangeTurn, q = turn?.objects ?? IDENTITY;
-    const turned = q[0] !== last[0] || q[1] !== last[1] || q[2] !== last[2] || q[3] !== last[3];
-    if (!key || key.cam !== cam || key.scene !== scene || (spins && key.time !== time) || turned || !this.cachedRange) {
-      this.rangeKey = { cam, scene, time };
-      for (let i = 0; i < 4; i++) last[i] = q[i];
-      this.cachedRange = courseSceneRange(cam, scene, time, turn);
-    }
-    const range = this.cachedRange!;
-    this.courseRange = range;
-    const e = this.eyeRelativeCamera;
-    e.n = cam.n; e.v = cam.v; e.u = cam.u; e.d = cam.d; e.hx = cam.hx; e.hy = cam.hy;
-    courseViewProjection(this.viewProjection, e, range);
-    this.projection.set(this.viewProjection);
-    // One negative half-size mirrors the picture; so does looking away (x/z, y/z with z < 0).
-    this.mirrorsWinding = (cam.hx < 0) !== (cam.hy < 0) !== range.behind;
-  }
-
-  private cachedRange: CourseDepthRange | null = null;
 
   /** turn · T · Rz·Ry·Rx · Ry(spin·t) · S, and the world bounding sphere. */
   private modelMatrix(out: ObjectMatrices, object: SceneObject, time: number, turn: Float64Array | null): void {

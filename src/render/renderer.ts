@@ -24,6 +24,7 @@ import { reflectionPass } from './passes/reflection-pass';
 import { scenePass } from './passes/scene-pass';
 import { glassPass } from './passes/glass-pass';
 import { RoughLoader } from './rough-loader';
+import { CourseLoader } from './course-loader';
 import { glassMesh } from '../scene/geometry/rectangle';
 import { DefaultSceneCache } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
@@ -82,6 +83,7 @@ export class Renderer {
   private readonly maxTargetSize: number;
   private readonly blitVao: WebGLVertexArrayObject;
   private readonly setup = new FrameSetup();
+  private readonly course = new CourseLoader(this.setup);
   private readonly ctx: PassContext;
   private readonly report: FrameReport = {
     frame: 0, time: 0, width: 0, height: 0, drawCalls: 0,
@@ -154,12 +156,13 @@ export class Renderer {
 
   /**
    * Loads what `state` needs that the core leaves out — rough glass's passes and shaders
-   * (SPEC §14) — or returns null when nothing is missing. Until it resolves, render() and read()
-   * draw that glass polished. Asked again while loading: the same promise. A chunk that fails to
-   * load rejects; after that this returns null and the glass stays polished.
+   * (SPEC §14), the course camera's projection (SPEC §11) — or returns null when nothing is
+   * missing. Until it resolves, render() and read() draw that glass polished, from the camera
+   * attributes. Asked again while loading: the same promise. A chunk that fails to load rejects
+   * (an Error whose message says what is drawn instead); after that it is not asked for again.
    */
   load(state: FrameState): Promise<void> | null {
-    return this.rough.load(state);
+    return this.rough.load(state) ?? this.course.load(state);
   }
 
   /**

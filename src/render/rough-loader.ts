@@ -34,7 +34,7 @@ export class RoughLoader {
       },
       (e: unknown) => {
         this.failed = true;
-        throw e;
+        throw new Error(`rough glass could not load (${String(e).slice(0, 200)}); drawing the glass polished`);
       },
     ));
   }

@@ -6,7 +6,7 @@ import { isRough } from '../frame/roughness';
 import { eyeRelativePlane } from '../math/mirror';
 import { srgbToLinear, type ColorSpace } from '../math/srgb';
 import { resolveSamples } from './encode';
-import { FrameSetup } from '../frame/frame-setup';
+import { courseFrameSetup } from '../frame/course-projection';
 import { encodesAtEnd } from '../frame/linear-light';
 import type { FrameState } from '../frame/types';
 import type { DecodedImage } from '../scene/decoded-image';
@@ -46,7 +46,7 @@ export class SoftwareRenderer {
   samplesPerAxis: number;
   /** The bench's split of a frame: when set, render() adds its phase times (ms) here. */
   timing: SoftwareTiming | null = null;
-  private readonly setup = new FrameSetup();
+  private readonly setup = courseFrameSetup();
   private readonly meshes = new SoftwareMeshes();
   private readonly main = new Rasterizer();
   private readonly mirror = new Rasterizer();

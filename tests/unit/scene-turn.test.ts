@@ -6,6 +6,7 @@
 import { describe, expect, it } from 'vitest';
 import { quat } from 'gl-matrix';
 import { FrameSetup } from '../../src/frame/frame-setup';
+import { courseFrameSetup } from '../../src/frame/course-projection';
 import type { FrameState } from '../../src/render/types';
 import { SoftwareRenderer } from '../../src/software';
 import { courseBasis, type CourseCamera } from '../../src/math/course-camera';
@@ -46,7 +47,7 @@ const TURNS: [string, SceneTurn][] = [
 ];
 
 function setupOf(state: FrameState, scene: Scene): FrameSetup {
-  const s = new FrameSetup();
+  const s = courseFrameSetup();
   s.update(state, scene);
   return s;
 }
@@ -113,7 +114,7 @@ describe('FrameState.turn against the turned scene value', () => {
     }
     // One setup, the same scene and clock, the turn changed in place (as the trackball does).
     const live = { objects: Float64Array.from(a.objects) as unknown as quat, light: NONE, center: CENTER };
-    const setup = new FrameSetup();
+    const setup = courseFrameSetup();
     setup.update({ ...STATE, courseCamera: cam, turn: live }, scene);
     const first = { ...setup.courseRange! };
     quat.copy(live.objects, b.objects);

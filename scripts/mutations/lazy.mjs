@@ -1,0 +1,38 @@
+// What the core leaves out and loads when a scene asks (issue 22): camera-src's two chunks (the
+// element's camera-source, the renderer's course-projection), and how frames wait for them.
+// Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
+const CHUNK = 'tests/e2e/course-chunk.spec.ts';
+const RIG = 'src/element/camera-rig.ts';
+
+export default [
+  {
+    name: 'Z1 camera-source\'s chunk arrives but is never connected (camera-src never loads its file)',
+    edits: [{ file: RIG, find: '      if (this.connected) this.source.hostConnected();\n', replace: '' }],
+    tests: [CHUNK],
+  },
+  {
+    name: 'Z2 no frame asked for once camera-source\'s chunk settles (a failed chunk: ready never fires)',
+    edits: [{ file: RIG, find: '      this.sourceLoading = false;\n      this.host.requestRender();', replace: '      this.sourceLoading = false;' }],
+    tests: [CHUNK],
+  },
+  {
+    name: 'Z3 the course projection loads but FrameSetup is never given it',
+    edits: [{ file: 'src/render/course-loader.ts', find: '        this.setup.course = new chunk.CourseProjection();\n', replace: '' }],
+    tests: [CHUNK],
+  },
+  {
+    name: 'Z4 Renderer.load never asks for the course projection',
+    edits: [{ file: 'src/render/renderer.ts', find: 'return this.rough.load(state) ?? this.course.load(state);', replace: 'return this.rough.load(state);' }],
+    tests: [CHUNK],
+  },
+  {
+    name: 'Z5 a FrameSetup without the projection still takes its eye from the course camera',
+    edits: [{ file: 'src/frame/frame-setup.ts', find: '    const course = this.course ? s.courseCamera ?? null : null;\n    const position', replace: '    const course = this.course ? s.courseCamera ?? null : null;\n    const position = s.courseCamera ? s.courseCamera.c : s.cameraPosition;\n    const _p' }],
+    tests: ['tests/unit/course-view.test.ts'],
+  },
+  {
+    name: 'Z6 camera-source takes the depth range straight from scene/ (its chunk loads without the projection\'s)',
+    edits: [{ file: 'src/element/camera-source.ts', find: "import { courseSceneRange } from '../frame/course-projection';", replace: "import { courseSceneRange } from '../scene/course-depth';" }],
+    tests: [CHUNK],
+  },
+];
