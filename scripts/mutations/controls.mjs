@@ -18,7 +18,7 @@ export default [
   },
   {
     name: '11 pointer-lock entry movement turned by',
-    edits: [{ file: 'src/element/flyby-input.ts', find: '    this.skipNext = true;', replace: '' }],
+    edits: [{ file: 'src/element/controls/flyby-input.ts', find: '    this.skipNext = true;', replace: '' }],
     tests: [CONTROLS],
   },
   {
@@ -43,7 +43,7 @@ export default [
   },
   {
     name: 'C5 flyby strafe sign flipped (D moves left)',
-    edits: [{ file: 'src/element/flyby-controller.ts', find: 'const mx = fwd * fx - side * fz;', replace: 'const mx = fwd * fx + side * fz;' }],
+    edits: [{ file: 'src/element/controls/flyby-controller.ts', find: 'const mx = fwd * fx - side * fz;', replace: 'const mx = fwd * fx + side * fz;' }],
     tests: [CONTROLS],
   },
   {
@@ -115,8 +115,23 @@ export default [
     tests: [CONTROLS],
   },
   {
-    name: 'C19 the controls\' chunk arrives but its listeners are never added',
-    edits: [{ file: 'src/element/camera-rig.ts', find: '      if (this.connected) this.pointer.hostConnected();\n', replace: '' }],
+    name: 'C19 the controls\' chunk arrives but its pointer listeners are never added',
+    edits: [{ file: 'src/element/camera-rig.ts', find: '        this.pointer.hostConnected();\n', replace: '' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C21 the controls\' chunk arrives but the flyby\'s keys are never listened to',
+    edits: [{ file: 'src/element/camera-rig.ts', find: '        this.input.hostConnected();\n', replace: '' }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C22 the controls\' chunk fetched only for orbit and trackball (flyby never moves)',
+    edits: [{ file: 'src/element/camera-rig.ts', find: "if (this.flyby || this.pointerLoading || c === null) return;", replace: "if (this.flyby || this.pointerLoading || c === null || c === 'flyby') return;" }],
+    tests: [CONTROLS],
+  },
+  {
+    name: 'C23 the controls\' chunk fetched without controls',
+    edits: [{ file: 'src/element/camera-rig.ts', find: "if (this.flyby || this.pointerLoading || c === null) return;", replace: "if (this.flyby || this.pointerLoading) return;" }],
     tests: [CONTROLS],
   },
   {

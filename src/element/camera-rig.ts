@@ -9,8 +9,9 @@ import type { CameraSource } from './camera-source';
 import type { Controller } from './controller';
 import type { quat } from 'gl-matrix';
 import type { PointerControls, PointerControlsHost, PointerMode } from './controls/pointer-controls';
-import { FlybyController } from './flyby-controller';
-import { FlybyInput } from './flyby-input';
+import type { FlybyController } from './controls/flyby-controller';
+import type { FlybyInput, FlybyInputHost } from './controls/flyby-input';
+import { setPose, type CameraPose } from '../math/camera';
 import type { CameraChangeDetail } from './types';
 import { warn } from './warnings';
 
@@ -39,7 +40,8 @@ export interface CameraRigHost {
 }
 
 export class CameraRig implements Controller {
-  readonly flyby = new FlybyController();
+  /** The camera's pose: the camera attributes', moved by the flyby and orbit. */
+  readonly pose: CameraPose = { position: [0, 0, 0], yaw: -90, pitch: 0 };
   /**
    * `camera-src`: the course camera, when one is in force (SPEC §11). A chunk of its own
    * (camera-source.ts), loaded the first time camera-src is set; null until then.
@@ -51,16 +53,16 @@ export class CameraRig implements Controller {
   /** The trackball's rotation of the first light about the objects' centre. */
   readonly lightRotation = new Float64Array([0, 0, 0, 1]);
   /**
-   * orbit and trackball input (controls/pointer-controls.ts): a chunk of its own, loaded the
-   * first time `controls` asks for either; null until then.
+   * The flyby's keys and mouse, orbit and trackball pointers (controls/controls.ts): a chunk of
+   * their own, loaded the first time `controls` asks for any; null until then.
    */
+  private flyby: FlybyController | null = null;
+  private input: FlybyInput | null = null;
   private pointer: PointerControls | null = null;
   private readonly pointerHost: PointerControlsHost;
-  /** The pointer controls' chunk is on its way: frames wait for it (see controlsLoading). */
+  /** The controls' chunk is on its way: frames wait for it (see controlsLoading). */
   private pointerLoading = false;
   private connected = false;
-  private readonly input: FlybyInput;
-  private readonly parts: Controller[];
   private lookTimer: ReturnType<typeof setTimeout> | undefined;
   /** A camera attribute set by the page: one camera-change after the current task. */
   private cameraChangeQueued = false;
@@ -75,9 +77,29 @@ export class CameraRig implements Controller {
 
   constructor(private readonly host: CameraRigHost) {
     const { element, canvas, values } = host;
-    this.flyby.setPose(values.cameraPosition, values.cameraRotation[0], values.cameraRotation[1]);
-    this.input = new FlybyInput({
-      element, canvas, flyby: this.flyby,
+    setPose(this.pose, values.cameraPosition, values.cameraRotation[0], values.cameraRotation[1]);
+    this.pointerHost = {
+      element, canvas,
+      objectRotation: this.objectRotation as unknown as quat, lightRotation: this.lightRotation as unknown as quat,
+      mode: () => (host.values.controls === 'orbit' || host.values.controls === 'trackball' ? host.values.controls as PointerMode : null),
+      pose: () => this.pose,
+      target: () => host.values.cameraTarget ?? host.objectsCenter(),
+      fov: () => host.values.fov,
+      changed: (camera) => {
+        // A trackball turn moves objects, not the camera: no write-back, no camera-change for it.
+        if (camera) this.cameraDirty = true;
+        if (!camera) host.turned();
+        host.requestRender();
+      },
+      gestureEnd: () => this.gestureEnd(),
+    };
+  }
+
+  /** What the flyby's input needs of the rig. */
+  private flybyInputHost(flyby: FlybyController): FlybyInputHost {
+    const host = this.host;
+    return {
+      element: host.element, canvas: host.canvas, flyby,
       enabled: () => host.values.controls === 'flyby',
       moved: (byMouse) => {
         if (byMouse) {
@@ -95,52 +117,41 @@ export class CameraRig implements Controller {
         host.requestRender();
       },
       cycleDebugView: () => host.cycleDebugView(),
-    });
-    this.pointerHost = {
-      element, canvas,
-      objectRotation: this.objectRotation as unknown as quat, lightRotation: this.lightRotation as unknown as quat,
-      mode: () => (host.values.controls === 'orbit' || host.values.controls === 'trackball' ? host.values.controls as PointerMode : null),
-      pose: () => this.flyby.pose,
-      target: () => host.values.cameraTarget ?? host.objectsCenter(),
-      fov: () => host.values.fov,
-      changed: (camera) => {
-        // A trackball turn moves objects, not the camera: no write-back, no camera-change for it.
-        if (camera) this.cameraDirty = true;
-        if (!camera) host.turned();
-        host.requestRender();
-      },
-      gestureEnd: () => this.gestureEnd(),
     };
-    this.parts = [this.input];
   }
 
   hostConnected(): void {
     this.connected = true;
-    for (const p of this.parts) p.hostConnected?.();
+    this.input?.hostConnected();
     this.pointer?.hostConnected();
-    this.loadPointer();
+    this.loadControls();
     if (this.source) this.source.hostConnected();
     else this.cameraSrcChanged();
   }
 
   hostDisconnected(): void {
     this.connected = false;
-    for (const p of this.parts) p.hostDisconnected?.();
+    this.input?.hostDisconnected();
     this.pointer?.hostDisconnected();
     this.source?.hostDisconnected();
     clearTimeout(this.lookTimer);
   }
 
-  /** orbit or trackball asked for and their chunk not yet in: it is fetched, then a frame drawn. */
-  private loadPointer(): void {
+  /** Controls asked for and their chunk not yet in: it is fetched, then a frame drawn. */
+  private loadControls(): void {
     const c = this.host.values.controls;
-    if (this.pointer || this.pointerLoading || (c !== 'orbit' && c !== 'trackball')) return;
+    if (this.flyby || this.pointerLoading || c === null) return;
     this.pointerLoading = true;
-    import('./controls/pointer-controls').then((chunk) => {
+    import('./controls/controls').then((chunk) => {
+      this.flyby = new chunk.FlybyController({}, this.pose);
+      this.input = new chunk.FlybyInput(this.flybyInputHost(this.flyby));
       this.pointer = new chunk.PointerControls(this.pointerHost);
-      if (this.connected) this.pointer.hostConnected();
+      if (this.connected) {
+        this.input.hostConnected();
+        this.pointer.hostConnected();
+      }
     }, (e: unknown) => {
-      warn(`controls="${c}" could not load (${String(e).slice(0, 200)}); the scene does not respond to pointers`);
+      warn(`controls="${c}" could not load (${String(e).slice(0, 200)}); the scene does not respond to input`);
     }).finally(() => {
       this.pointerLoading = false;
       this.host.requestRender();
@@ -159,12 +170,12 @@ export class CameraRig implements Controller {
 
   /** Keys held or a motion after release going on: frames keep coming. */
   get moving(): boolean {
-    return this.flyby.active || (this.pointer?.active ?? false);
+    return (this.flyby?.active ?? false) || (this.pointer?.active ?? false);
   }
 
   /** The flown camera's attributes read live (the pose moves before it is written back); else undefined. */
   liveValue(property: keyof SceneAttributes): unknown {
-    const pose = this.flyby.pose;
+    const pose = this.pose;
     if (property === 'cameraPosition') return pose.position;
     if (property === 'cameraRotation') return [pose.yaw, pose.pitch];
     return undefined;
@@ -195,7 +206,7 @@ export class CameraRig implements Controller {
   /** The page set camera-position, -rotation or -target: the pose follows, one camera-change. */
   cameraAttributeChanged(): void {
     const v = this.host.values;
-    this.flyby.setPose(v.cameraPosition, v.cameraRotation[0], v.cameraRotation[1]);
+    setPose(this.pose, v.cameraPosition, v.cameraRotation[0], v.cameraRotation[1]);
     this.aimAtTarget();
     this.queueCameraChange();
   }
@@ -218,7 +229,7 @@ export class CameraRig implements Controller {
   /** `controls` changed: a gesture and a motion under way stop. */
   controlsChanged(): void {
     this.pointer?.cancel();
-    this.loadPointer();
+    this.loadControls();
   }
 
   /** A frame begins: the flyby and the motion after release advance. */
@@ -246,7 +257,7 @@ export class CameraRig implements Controller {
    * (cameraPosition and fov then follow it, for the level-of-detail choices that read them).
    */
   aim(s: FrameState, scene: Scene): void {
-    const v = this.host.values, pose = this.flyby.pose;
+    const v = this.host.values, pose = this.pose;
     s.fov = v.fov;
     s.cameraPosition = pose.position;
     s.yaw = pose.yaw;
@@ -272,7 +283,7 @@ export class CameraRig implements Controller {
     const t = performance.now();
     const dt = this.lastNow ? (t - this.lastNow) / 1000 : 0;
     this.lastNow = t;
-    if (!this.flyby.update(dt)) return;
+    if (!this.flyby?.update(dt)) return;
     this.cameraDirty = true;
     this.keysMoved = true;
     this.host.flybyMoved();
@@ -282,15 +293,15 @@ export class CameraRig implements Controller {
   private aimAtTarget(): void {
     const t = this.host.values.cameraTarget;
     if (!t) return;
-    const p = this.flyby.pose.position;
+    const p = this.pose.position;
     const dx = t[0] - p[0], dy = t[1] - p[1], dz = t[2] - p[2];
     const d = Math.hypot(dx, dy, dz);
     if (!(d > 0)) return; // at the target: keep camera-rotation
-    this.flyby.setPose(p, Math.atan2(dz, dx) * DEG, Math.asin(dy / d) * DEG);
+    setPose(this.pose, p, Math.atan2(dz, dx) * DEG, Math.asin(dy / d) * DEG);
   }
 
   private cameraDetail(): CameraChangeDetail {
-    const { position, yaw, pitch } = this.flyby.pose;
+    const { position, yaw, pitch } = this.pose;
     const t = this.host.values.cameraTarget;
     return t ? { position: [...position], rotation: [yaw, pitch], target: [...t] } : { position: [...position], rotation: [yaw, pitch] };
   }
@@ -316,7 +327,7 @@ export class CameraRig implements Controller {
     this.keysMoved = false;
     if (!this.cameraDirty) return;
     this.cameraDirty = false;
-    const { position, yaw, pitch } = this.flyby.pose;
+    const { position, yaw, pitch } = this.pose;
     const element = this.host.element;
     this.writing = true;
     try {

@@ -37,6 +37,13 @@ export function wrapYaw(yaw: number): number {
   return ((((yaw + 180) % 360) + 360) % 360) - 180;
 }
 
+/** Copies a pose in; yaw is wrapped, pitch clamped, non-finite components leave the old value. */
+export function setPose(p: CameraPose, position: readonly [number, number, number], yaw: number, pitch: number): void {
+  for (let i = 0; i < 3; i++) if (Number.isFinite(position[i])) p.position[i] = position[i];
+  if (Number.isFinite(yaw)) p.yaw = wrapYaw(yaw);
+  if (Number.isFinite(pitch)) p.pitch = clampPitch(pitch);
+}
+
 /** out = (cos p·cos y, sin p, cos p·sin y), angles in degrees. */
 export function forwardFromYawPitch<T extends Float64Array | number[]>(out: T, yaw: number, pitch: number): T {
   const y = yaw * DEG;

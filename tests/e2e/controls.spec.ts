@@ -386,3 +386,43 @@ test('controls set on a drawn element: after the next frame a drag turns the cam
   await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 40, y: b.cy }, { t0: 40, steps: 10, dtMs: 16, restMs: 200 });
   await expect.poll(async () => (await pose(page, selector)).rotation[0] - start.rotation[0], { message: 'yaw turned by 40 px × 0.4°' }).toBeCloseTo(16, 6);
 });
+
+// The flyby is in the same chunk (controls/controls.ts): a page without `controls` fetches none of
+// it; `controls="flyby"` set on a drawn element holds the next frame until the keys listen.
+const controlsFetched = (page: Page) =>
+  page.evaluate(() => performance.getEntriesByType('resource').some((e) => /controls\/(controls|flyby-|pointer-)/.test(e.name)));
+
+test('a page without controls never fetches their chunk', async ({ page }) => {
+  await openPage(page);
+  await mount(page, { time: 0, spin: 0 }, SIZE);
+  expect(await controlsFetched(page)).toBe(false);
+});
+
+test('controls="flyby" set on a drawn element: after the next frame a held key turns the camera, however slow the chunk', async ({ page }) => {
+  await page.route('**/flyby-input*', async (route) => {
+    await new Promise((r) => setTimeout(r, 600));
+    await route.continue();
+  });
+  await openPage(page);
+  const { selector } = await mount(page, { time: 0, spin: 0 }, SIZE);
+  await setAttributes(page, selector, { controls: 'flyby' });
+  expect(await controlsFetched(page)).toBe(true);
+  const start = await pose(page, selector);
+  await page.focus(selector);
+  await page.keyboard.down('ArrowRight');
+  await page.waitForTimeout(200);
+  await page.keyboard.up('ArrowRight');
+  // 90°/s for ~0.2 s: the yaw grows by about 18° (from −169°: no wrap).
+  await expect.poll(async () => (await pose(page, selector)).rotation[0] - start.rotation[0], { message: 'yaw turned right' }).toBeGreaterThan(5);
+});
+
+test('if the controls\' chunk cannot load, the scene is drawn without input: one warning, no error', async ({ page, consoleLog }) => {
+  await page.route('**/controls/controls*', (route) => route.abort());
+  await openPage(page);
+  const { selector } = await mount(page, { time: 0, spin: 0, controls: 'flyby' }, SIZE);
+  await page.waitForTimeout(300);
+  const img = await capture(page, undefined, selector);
+  expect(img.data.some((v, i) => i % 4 !== 3 && v > 40), 'something is drawn').toBe(true);
+  expect(consoleLog.take('warning').filter((w) => w.includes('controls="flyby" could not load'))).toHaveLength(1);
+  consoleLog.take('error'); // the browser's own report of the failed fetch
+});

@@ -1,6 +1,6 @@
 // Flyby controller: keys and mouse → camera pose, frame-rate independent (seed 000's updateCamera).
 import { describe, expect, it } from 'vitest';
-import { FlybyController, MAX_LOOK_STEP } from '../../src/element/flyby-controller';
+import { FlybyController, MAX_LOOK_STEP } from '../../src/element/controls/flyby-controller';
 import { wrapYaw } from '../../src/math/camera';
 import { forwardFromYawPitch, PITCH_LIMIT } from '../../src/math/camera';
 

@@ -1,7 +1,7 @@
 // DOM input → FlybyController: keys on the focused host, pointer-lock mouse look on the canvas.
 // Listeners live only while the host is connected, so two elements never share input.
 import type { FlybyController } from './flyby-controller';
-import type { Controller } from './controller';
+import type { Controller } from '../controller';
 
 /** What FlybyInput needs of the scene element. */
 export interface FlybyInputHost {

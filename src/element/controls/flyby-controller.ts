@@ -1,5 +1,5 @@
 // Keys and mouse → flyby camera pose (seed 000's updateCamera); no DOM, no GL.
-import { clampPitch, forwardFromYawPitch, wrapYaw, type CameraPose } from '../math/camera';
+import { clampPitch, forwardFromYawPitch, setPose, wrapYaw, type CameraPose } from '../../math/camera';
 
 export interface FlybyOptions {
   /** Units per second (seed 000: 3). */
@@ -44,8 +44,6 @@ function axis(held: number, plus: number, minus: number): number {
 }
 
 export class FlybyController {
-  /** Live pose; the element reads and writes it (camera-position / camera-rotation land here). */
-  readonly pose: CameraPose = { position: [0, 0, 0], yaw: -90, pitch: 0 };
 
   private readonly speed: number;
   private readonly sensitivity: number;
@@ -55,7 +53,11 @@ export class FlybyController {
   // Preallocated so update() allocates nothing.
   private readonly forward = new Float64Array(3);
 
-  constructor(options: FlybyOptions = {}) {
+  /**
+   * `pose`: the live pose it moves, the element's (camera-position / camera-rotation land there
+   * too); the element keeps it while this controller is not loaded.
+   */
+  constructor(options: FlybyOptions = {}, readonly pose: CameraPose = { position: [0, 0, 0], yaw: -90, pitch: 0 }) {
     this.speed = option(options.speed, DEFAULTS.speed);
     this.sensitivity = option(options.sensitivity, DEFAULTS.sensitivity);
     this.turnRate = option(options.turnRate, DEFAULTS.turnRate);
@@ -64,10 +66,7 @@ export class FlybyController {
 
   /** Copies a pose in; yaw is wrapped, pitch clamped, non-finite components leave the old value. */
   setPose(position: readonly [number, number, number], yaw: number, pitch: number): void {
-    const p = this.pose;
-    for (let i = 0; i < 3; i++) if (Number.isFinite(position[i])) p.position[i] = position[i];
-    if (Number.isFinite(yaw)) p.yaw = wrapYaw(yaw);
-    if (Number.isFinite(pitch)) p.pitch = clampPitch(pitch);
+    setPose(this.pose, position, yaw, pitch);
   }
 
   /** Returns true if the controller handles the key (the element then calls preventDefault). */
