@@ -87,8 +87,6 @@ export interface AttributeSpec<K extends AttributeName = AttributeName> {
   property: K;
   attribute: string;
   default: SceneAttributes[K];
-  /** One line for the README and warnings. */
-  doc: string;
   parse(raw: string | null): Parsed<SceneAttributes[K]>;
   format(value: SceneAttributes[K]): string | null;
 }
@@ -107,11 +105,11 @@ const num = (s: string) => (/^\s*$/.test(s) ? NaN : Number(s));
 
 /** A number in [min, max] or the keyword 'auto'; `integer` rounds. */
 function autoOrNumberSpec<K extends AttributeName>(
-  property: K, attribute: string, min: number, max: number, integer: boolean, doc: string,
+  property: K, attribute: string, min: number, max: number, integer: boolean,
 ): AttributeSpec<K> {
   const def = 'auto' as SceneAttributes[K];
   return {
-    property, attribute, default: def, doc,
+    property, attribute, default: def,
     parse(raw) {
       if (raw === null || raw.trim().toLowerCase() === 'auto') return { value: def };
       let x = num(raw);
@@ -126,10 +124,10 @@ function autoOrNumberSpec<K extends AttributeName>(
 }
 
 function numberSpec<K extends AttributeName>(
-  property: K, attribute: string, def: number, min: number, max: number, doc: string,
+  property: K, attribute: string, def: number, min: number, max: number,
 ): AttributeSpec<K> {
   return {
-    property, attribute, default: def as SceneAttributes[K], doc,
+    property, attribute, default: def as SceneAttributes[K],
     parse(raw) {
       if (raw === null) return { value: def as SceneAttributes[K] };
       const x = num(raw);
@@ -147,10 +145,10 @@ function numberSpec<K extends AttributeName>(
  * clamp to it (a value that is finite in float64 may overflow float32 on its way to the GPU).
  */
 function finiteSpec<K extends AttributeName>(
-  property: K, attribute: string, def: number, doc: string, limit = Number.MAX_VALUE,
+  property: K, attribute: string, def: number, limit = Number.MAX_VALUE,
 ): AttributeSpec<K> {
   return {
-    property, attribute, default: def as SceneAttributes[K], doc,
+    property, attribute, default: def as SceneAttributes[K],
     parse(raw) {
       if (raw === null) return { value: def as SceneAttributes[K] };
       const x = num(raw);
@@ -163,11 +161,11 @@ function finiteSpec<K extends AttributeName>(
 }
 
 function keywordSpec<K extends AttributeName>(
-  property: K, attribute: string, words: readonly string[], doc: string,
+  property: K, attribute: string, words: readonly string[],
 ): AttributeSpec<K> {
   const def = words[0] as SceneAttributes[K];
   return {
-    property, attribute, default: def, doc,
+    property, attribute, default: def,
     parse(raw) {
       if (raw === null) return { value: def };
       const w = raw.trim().toLowerCase();
@@ -191,12 +189,12 @@ const MAX_COORD = 1e7;
 
 /** A tuple of `n` finite numbers; `check` may reject or adjust it (returning a problem). */
 function tupleSpec<K extends AttributeName>(
-  property: K, attribute: string, def: number[], form: string, doc: string,
+  property: K, attribute: string, def: number[], form: string,
   check: (xs: number[]) => Parsed<number[]> = (xs) => ({ value: xs }),
 ): AttributeSpec<K> {
   const fallback = () => [...def] as SceneAttributes[K];
   return {
-    property, attribute, default: def as SceneAttributes[K], doc,
+    property, attribute, default: def as SceneAttributes[K],
     parse(raw) {
       if (raw === null) return { value: fallback() };
       const xs = tupleParse(raw, def.length);
@@ -217,13 +215,12 @@ const clampCoords = (xs: number[]): Parsed<number[]> => {
 export const DEFAULT_BACKGROUND = 'rgb(25.5 25.5 25.5)';
 
 export const ATTRIBUTES: readonly AttributeSpec[] = [
-  numberSpec('transparency', 'transparency', 0.5, 0, 1, 'T in the glass equation; 1 = clear glass'),
-  finiteSpec('cubeDistance', 'cube-distance', DEFAULT_CUBE_DISTANCE, "z of the cube's centre (signed distance from the glass)", MAX_COORD),
-  numberSpec('ior', 'ior', 1.5, 1, 10, 'index of refraction for the Fresnel term'),
-  keywordSpec('fresnel', 'fresnel', FRESNEL_MODELS, 'Fresnel model: exact, schlick or classic (seed 000)'),
+  numberSpec('transparency', 'transparency', 0.5, 0, 1),
+  finiteSpec('cubeDistance', 'cube-distance', DEFAULT_CUBE_DISTANCE, MAX_COORD),
+  numberSpec('ior', 'ior', 1.5, 1, 10),
+  keywordSpec('fresnel', 'fresnel', FRESNEL_MODELS),
   {
     property: 'cameraPosition', attribute: 'camera-position', default: DEFAULT_CAMERA_POSITION,
-    doc: '"x y z" of the flyby camera',
     parse(raw) {
       if (raw === null) return { value: [...DEFAULT_CAMERA_POSITION] };
       const xs = tupleParse(raw, 3);
@@ -235,7 +232,6 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
   } satisfies AttributeSpec<'cameraPosition'>,
   {
     property: 'cameraRotation', attribute: 'camera-rotation', default: DEFAULT_CAMERA_ROTATION,
-    doc: '"yaw pitch" in degrees; yaw −90 looks down −Z, pitch clamped to ±89.9',
     parse(raw) {
       if (raw === null) return { value: [...DEFAULT_CAMERA_ROTATION] };
       const xs = tupleParse(raw, 2);
@@ -246,12 +242,10 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
     },
     format: (v) => v.join(' '),
   } satisfies AttributeSpec<'cameraRotation'>,
-  numberSpec('fov', 'fov', 60, 1, 179, 'vertical field of view in degrees'),
-  keywordSpec('projection', 'projection', PROJECTIONS,
-    'perspective, or orthographic: the size the perspective view had at the target (or the glass centre), with a working reflection'),
+  numberSpec('fov', 'fov', 60, 1, 179),
+  keywordSpec('projection', 'projection', PROJECTIONS),
   {
     property: 'controls', attribute: 'controls', default: null,
-    doc: 'flyby, orbit or trackball (the bare attribute: flyby); absent: no input',
     parse(raw) {
       if (raw === null) return { value: null };
       const w = raw.trim().toLowerCase();
@@ -262,11 +256,9 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
     },
     format: (v) => v ?? null,
   } satisfies AttributeSpec<'controls'>,
-  keywordSpec('renderer', 'renderer', RENDERERS,
-    'auto (WebGL2 where available, else the CPU), webgl, or software (the CPU, in a worker)'),
+  keywordSpec('renderer', 'renderer', RENDERERS),
   {
     property: 'cameraTarget', attribute: 'camera-target', default: null,
-    doc: '"x y z" the camera looks at (overrides camera-rotation); orbit turns about it',
     parse(raw) {
       if (raw === null) return { value: null };
       const xs = tupleParse(raw, 3);
@@ -278,14 +270,12 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
   } satisfies AttributeSpec<'cameraTarget'>,
   {
     property: 'cameraSrc', attribute: 'camera-src', default: null,
-    doc: "URL of a course camera .cfg (C, N, V, d hx hy); while it is in force it is the view (camera-position, -rotation, -target, fov, projection and camera controls wait)",
     parse: (raw) => ({ value: raw === null || raw.trim() === '' ? null : raw.trim() }),
     format: (v) => v,
   } satisfies AttributeSpec<'cameraSrc'>,
-  finiteSpec('spin', 'spin', 0.8, "the cube's spin about its Y axis, rad/s; 0 stops it"),
+  finiteSpec('spin', 'spin', 0.8),
   {
     property: 'time', attribute: 'time', default: null,
-    doc: 'fixes the scene clock, in seconds (deterministic frames)',
     parse(raw) {
       if (raw === null) return { value: null };
       const x = num(raw);
@@ -294,12 +284,11 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
     },
     format: (v) => (v === null ? null : String(v)),
   } satisfies AttributeSpec<'time'>,
-  keywordSpec('debugView', 'debug-view', DEBUG_VIEWS, 'shows one pass instead of the final image'),
+  keywordSpec('debugView', 'debug-view', DEBUG_VIEWS),
   // Defaults of the quality knobs come from the bench's Pareto front (README, "Speed and accuracy").
-  numberSpec('reflectionScale', 'reflection-scale', 1, 0.125, 2, 'reflection framebuffer size ÷ drawing-buffer size'),
+  numberSpec('reflectionScale', 'reflection-scale', 1, 0.125, 2),
   {
     property: 'samples', attribute: 'samples', default: 4,
-    doc: 'MSAA samples of the reflection and scene passes: 0, 2 or 4 (the software renderer draws 2 and 4 as 2×2 samples per pixel)',
     parse(raw) {
       if (raw === null) return { value: 4 };
       const x = num(raw);
@@ -310,27 +299,26 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
     },
     format: (v) => String(v),
   } satisfies AttributeSpec<'samples'>,
-  keywordSpec('shading', 'shading', SHADINGS, 'per-fragment phong, per-vertex gouraud, or flat (one vertex per triangle)'),
-  autoOrNumberSpec('tessellation', 'tessellation', 4, 512, true, "sphere segments 4..512, or auto (from the sphere's size on screen)"),
-  autoOrNumberSpec('pixelRatio', 'pixel-ratio', 0.25, 4, false, 'drawing-buffer pixels per CSS pixel, or auto (devicePixelRatio)'),
-  keywordSpec('reflectionFormat', 'reflection-format', ['rgba8', 'rgba16f'], 'reflection storage: rgba8, or rgba16f (half float, where supported)'),
-  keywordSpec('colorSpace', 'color-space', COLOR_SPACES, 'srgb: linear-light rendering with sRGB in and out; none: colours used as stored (the course programs)'),
-  numberSpec('roughness', 'roughness', 0, 0, 1, 'rough glass (GGX, α = roughness²): 0 polished; blurs what the glass reflects and lets through, sharp where an object touches it'),
-  keywordSpec('roughnessQuality', 'roughness-quality', ['medium', 'low', 'high'], 'neighbours rough glass gathers per pixel: low 4, medium 8, high 16 per ring'),
-  tupleSpec('glassCenter', 'glass-center', [0, 1, 0], '"x y z"', 'centre of the glass rectangle', clampCoords),
-  tupleSpec('glassNormal', 'glass-normal', [0, 0, 1], '"x y z"', 'normal of the glass (normalised); "0 1 0" makes a glass floor', (xs) => {
+  keywordSpec('shading', 'shading', SHADINGS),
+  autoOrNumberSpec('tessellation', 'tessellation', 4, 512, true),
+  autoOrNumberSpec('pixelRatio', 'pixel-ratio', 0.25, 4, false),
+  keywordSpec('reflectionFormat', 'reflection-format', ['rgba8', 'rgba16f']),
+  keywordSpec('colorSpace', 'color-space', COLOR_SPACES),
+  numberSpec('roughness', 'roughness', 0, 0, 1),
+  keywordSpec('roughnessQuality', 'roughness-quality', ['medium', 'low', 'high']),
+  tupleSpec('glassCenter', 'glass-center', [0, 1, 0], '"x y z"', clampCoords),
+  tupleSpec('glassNormal', 'glass-normal', [0, 0, 1], '"x y z"', (xs) => {
     const l = Math.hypot(xs[0], xs[1], xs[2]);
     if (!(l > 0) || !Number.isFinite(l)) return { value: [0, 0, 1], problem: 'not a usable direction, using "0 0 1"' };
     return { value: xs.map((x) => x / l) };
   }),
-  tupleSpec('glassSize', 'glass-size', [8, 4], '"w h"', 'width and height of the glass; "0 0" means no glass', (xs) => {
+  tupleSpec('glassSize', 'glass-size', [8, 4], '"w h"', (xs) => {
     if (xs.some((x) => x < 0)) return { value: xs.map((x) => Math.max(0, x)), problem: 'negative size clamped to 0' };
     const c = xs.map((x) => Math.min(MAX_COORD, x));
     return c.some((x, i) => x !== xs[i]) ? { value: c, problem: `size clamped to ${MAX_COORD}` } : { value: c };
   }),
   {
     property: 'background', attribute: 'background', default: [0.1, 0.1, 0.1],
-    doc: 'any CSS colour (or "r g b" in 0..1): the clear colour, also of the reflection',
     parse(raw) {
       if (raw === null) return { value: [0.1, 0.1, 0.1] };
       const rgb = parseCssColor(raw) ?? browserCssColor(raw);

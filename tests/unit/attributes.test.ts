@@ -5,6 +5,13 @@ import {
   type AttributeSpec, type Parsed,
 } from '../../src/element/attributes';
 import { PITCH_LIMIT } from '../../src/math/camera';
+import fs from 'node:fs';
+
+/** The element's JSDoc: `@attr {type} [name=default] - description` (custom-elements.json is made from it). */
+const ATTR_DOCS = new Map(
+  [...fs.readFileSync(new URL('../../src/element/glass-plane-scene.ts', import.meta.url), 'utf8')
+    .matchAll(/@attr \{[^}]*\} \[([a-z-]+)(?:=[^\]]*)?\] - (.*)/g)].map((m) => [m[1], m[2].trim()]),
+);
 
 function spec(attribute: string): AttributeSpec {
   const s = ATTRIBUTE_BY_NAME.get(attribute);
@@ -57,7 +64,7 @@ describe('defaults', () => {
     ]);
     for (const s of ATTRIBUTES) {
       expect(s.attribute.replace(/-([a-z])/g, (_, c: string) => c.toUpperCase())).toBe(s.property);
-      expect(s.doc.length).toBeGreaterThan(0);
+      expect(ATTR_DOCS.get(s.attribute)?.length ?? 0, `${s.attribute} documented by an @attr line`).toBeGreaterThan(10);
       expect(s.parse(null).problem).toBeUndefined();
       expect(s.parse(null).value).toEqual(s.default);
     }
