@@ -23,8 +23,8 @@ const SHADINGS: readonly Shading[] = ['flat', 'gouraud', 'phong'];
 type Page = import('@playwright/test').Page;
 interface SceneBench {
   bench: {
-    sceneTime(i: number, shading: Shading, size: Scene, mode: 'final' | 'scene', frames: number, warmup: number, knobs: Partial<Knobs>): number;
-    scenePixels(i: number, shading: Shading, size: Scene, knobs: Partial<Knobs>): { width: number; height: number; data: string };
+    sceneTime(i: number, shading: Shading, size: Scene, mode: 'final' | 'scene', frames: number, warmup: number, knobs: Partial<Knobs>): Promise<number>;
+    scenePixels(i: number, shading: Shading, size: Scene, knobs: Partial<Knobs>): Promise<{ width: number; height: number; data: string }>;
   };
 }
 

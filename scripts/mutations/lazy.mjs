@@ -3,6 +3,7 @@
 // Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
 const CHUNK = 'tests/e2e/course-chunk.spec.ts';
 const RIG = 'src/element/camera-rig.ts';
+const LOD = 'tests/e2e/reflection-lod.spec.ts';
 
 export default [
   {
@@ -34,5 +35,20 @@ export default [
     name: 'Z6 camera-source takes the depth range straight from scene/ (its chunk loads without the projection\'s)',
     edits: [{ file: 'src/element/camera-source.ts', find: "import { courseSceneRange } from '../frame/course-projection';", replace: "import { courseSceneRange } from '../scene/course-depth';" }],
     tests: [CHUNK],
+  },
+  {
+    name: 'Z7 the element\'s WebGL backend does not hand the scene to Renderer.load (reflections never clustered)',
+    edits: [{ file: 'src/element/webgl-backend.ts', find: 'const loading = this.renderer.load(state, scene);', replace: 'const loading = this.renderer.load(state);' }],
+    tests: [LOD],
+  },
+  {
+    name: 'Z8 only meshes, not Gaussians, ask for the clustering',
+    edits: [{ file: 'src/render/object-meshes.ts', find: "if (o.geometry.kind === 'mesh' || o.geometry.kind === 'gaussian') return true;", replace: "if (o.geometry.kind === 'mesh') return true;" }],
+    tests: [LOD],
+  },
+  {
+    name: 'Z9 a clustering chunk that failed is asked for again (a warning every frame)',
+    edits: [{ file: 'src/render/object-meshes.ts', find: '        this.clusteringFailed = true;\n', replace: '' }],
+    tests: [LOD],
   },
 ];

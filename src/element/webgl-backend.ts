@@ -29,7 +29,7 @@ export class WebGLBackend implements Backend {
 
   draw(state: FrameState, scene: Scene): void {
     // The first frame that needs a lazy part waits for it rather than show the glass polished.
-    const loading = this.renderer.load(state);
+    const loading = this.renderer.load(state, scene);
     if (loading) {
       this.busy = true;
       loading.catch((e: unknown) => warn(e instanceof Error ? e.message : String(e))).finally(() => {

@@ -9,10 +9,9 @@ import type { ResourceCounter } from './gl/resource-counter';
 import type { SharedResources } from './gl/shared-resources';
 import { SphereLod } from './sphere-lod';
 import { flatMesh } from '../scene/geometry/flat';
-import { clusterMesh, meshExtent } from '../scene/geometry/cluster';
 import { GAUSSIAN_EXTENT } from '../scene/geometry/gaussian';
 import { REFLECTION_MAX_FRACTION, reflectionGrid } from '../frame/reflection-lod';
-import type { Geometry } from '../scene/scene';
+import type { Geometry, Scene } from '../scene/scene';
 import type { ObjectMatrices } from '../frame/frame-setup';
 import { buildMesh, meshKey } from '../frame/mesh-choice';
 import type { FrameState } from '../frame/types';
@@ -32,14 +31,23 @@ interface Slot {
   reflection: Map<number, { key: string; mesh: Mesh } | null>;
 }
 
+type Clustering = typeof import('../scene/geometry/cluster');
+
 /** Largest side of a static geometry's own box, computed once per mesh. */
 const extents = new WeakMap<object, number>();
-function extentOf(g: Geometry): number {
+function extentOf(g: Geometry, c: Clustering): number {
   if (g.kind === 'gaussian') return 2 * GAUSSIAN_EXTENT;
   if (g.kind !== 'mesh') return 0;
   let e = extents.get(g.data);
-  if (e === undefined) extents.set(g.data, (e = meshExtent(g.data.positions)));
+  if (e === undefined) extents.set(g.data, (e = c.meshExtent(g.data.positions)));
   return e;
+}
+
+/** Whether a frame draws something the reflection may cluster: a mesh or a Gaussian, tessellation auto. */
+function clusters(state: FrameState, scene: Scene): boolean {
+  if (state.tessellation !== 'auto') return false;
+  for (const o of scene.objects) if (o.geometry.kind === 'mesh' || o.geometry.kind === 'gaussian') return true;
+  return false;
 }
 
 /** Largest scale of a model matrix's linear part (column lengths). */
@@ -54,6 +62,27 @@ export class ObjectMeshes {
   private frame = 0;
   /** This frame's orthographic half-height (0: perspective), for the spheres' size on screen. */
   private orthoHalfHeight = 0;
+  /**
+   * The reflection's mesh clustering (scene/geometry/cluster.ts), a chunk: loaded by load() the
+   * first time a scene has something to cluster; until then reflections draw the full meshes.
+   */
+  private clustering: Clustering | null = null;
+  private clusteringLoading: Promise<void> | null = null;
+  private clusteringFailed = false;
+
+  /** See Renderer.load: the clustering, when `scene` has a mesh or a Gaussian and it is not in. */
+  load(state: FrameState, scene: Scene): Promise<void> | null {
+    if (this.clustering || this.clusteringFailed || !clusters(state, scene)) return null;
+    return (this.clusteringLoading ??= import('../scene/geometry/cluster').then(
+      (chunk) => {
+        this.clustering = chunk;
+      },
+      (e: unknown) => {
+        this.clusteringFailed = true;
+        throw new Error(`the reflection's mesh clustering could not load (${String(e).slice(0, 200)}); reflections draw the full meshes`);
+      },
+    ));
+  }
 
   /**
    * A new frame: spheres choose their tessellation again (once, not once per pass).
@@ -110,9 +139,9 @@ export class ObjectMeshes {
    * (reflection-lod.ts); anything else draws what `get` gives the scene pass.
    */
   mirrored(i: number, g: Geometry, m: ObjectMatrices, state: FrameState, pixelsPerUnit: number): Mesh {
-    const full = this.get(i, g, m, state);
-    if (state.tessellation !== 'auto' || (g.kind !== 'mesh' && g.kind !== 'gaussian')) return full;
-    const grid = reflectionGrid(extentOf(g) * maxScale(m.model), pixelsPerUnit);
+    const full = this.get(i, g, m, state), c = this.clustering;
+    if (!c || state.tessellation !== 'auto' || (g.kind !== 'mesh' && g.kind !== 'gaussian')) return full;
+    const grid = reflectionGrid(extentOf(g, c) * maxScale(m.model), pixelsPerUnit);
     if (grid === 0) return full;
     const slot = this.slots[i];
     let entry = slot.reflection.get(grid);
@@ -120,7 +149,7 @@ export class ObjectMeshes {
       const key = `${slot.key}:cluster${grid}`;
       const flat = slot.flat;
       const mesh = this.shared.mesh(key, (counter) => {
-        const data = clusterMesh(buildMesh(g), grid);
+        const data = c.clusterMesh(buildMesh(g), grid);
         return new Mesh(this.gl, counter, flat ? flatMesh(data) : data);
       });
       entry = { key, mesh };

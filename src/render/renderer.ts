@@ -155,14 +155,14 @@ export class Renderer {
   }
 
   /**
-   * Loads what `state` needs that the core leaves out — rough glass's passes and shaders
-   * (SPEC §14), the course camera's projection (SPEC §11) — or returns null when nothing is
-   * missing. Until it resolves, render() and read() draw that glass polished, from the camera
-   * attributes. Asked again while loading: the same promise. A chunk that fails to load rejects
-   * (an Error whose message says what is drawn instead); after that it is not asked for again.
+   * Loads what `state` and `scene` (default: the default scene) need that the core leaves out —
+   * rough glass (SPEC §14), the course camera's projection (§11), the reflection's mesh clustering
+   * — or returns null. Until it resolves, render() and read() draw polished glass, from the camera
+   * attributes, with full meshes in the reflection. Asked again while loading: the same promise;
+   * a chunk that fails rejects (an Error saying what is drawn instead) and is not asked for again.
    */
-  load(state: FrameState): Promise<void> | null {
-    return this.rough.load(state) ?? this.course.load(state);
+  load(state: FrameState, scene?: Scene): Promise<void> | null {
+    return this.rough.load(state) ?? this.course.load(state) ?? (scene ? this.objectMeshes.load(state, scene) : null);
   }
 
   /**

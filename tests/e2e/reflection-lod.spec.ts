@@ -54,3 +54,51 @@ test('a dense mesh\'s reflection draws the clustered copy its size in the reflec
   }
   console.log(rows.join('; '));
 });
+
+// The clustering is a chunk of its own (scene/geometry/cluster.ts), fetched by the renderer the
+// first time a scene has a mesh or a Gaussian to reflect; the frame that first needs it waits.
+const GAUSSIAN = `<glass-plane-scene time="0" glass-center="0 -1 0" glass-normal="0 1 0" glass-size="8 8" camera-position="0 2 3"
+  camera-target="0 0.5 0" style="width: 160px; height: 90px"><glass-object shape="gaussian" resolution="225"></glass-object></glass-plane-scene>`;
+
+/** Mounts `html`; the triangles the element reports in its first `frame` event, and every warning text. */
+async function firstFrameTriangles(page: import('@playwright/test').Page, html: string): Promise<{ scene: number; reflection: number }> {
+  return page.evaluate((html) => new Promise((resolve, reject) => {
+    const host = document.createElement('div');
+    host.innerHTML = html;
+    const el = host.firstElementChild as SceneElement;
+    const t = setTimeout(() => reject(new Error('no frame')), 30_000);
+    el.addEventListener('frame', () => { clearTimeout(t); resolve({ ...el.stats.triangles }); }, { once: true });
+    document.body.append(el);
+  }), html);
+}
+
+const clusterFetched = (page: import('@playwright/test').Page) =>
+  page.evaluate(() => performance.getEntriesByType('resource').some((e) => e.name.includes('geometry/cluster')));
+
+test('a scene with nothing to cluster never fetches the clustering', async ({ page }) => {
+  await openPage(page);
+  await firstFrameTriangles(page, '<glass-plane-scene time="0" style="width: 160px; height: 90px"></glass-plane-scene>');
+  await page.waitForTimeout(200);
+  expect(await clusterFetched(page)).toBe(false);
+});
+
+test('the first frame of a dense mesh\'s reflection is clustered, however slow the chunk (held back 600 ms)', async ({ page }) => {
+  await page.route('**/geometry/cluster*', async (route) => {
+    await new Promise((r) => setTimeout(r, 600));
+    await route.continue();
+  });
+  await openPage(page);
+  const t = await firstFrameTriangles(page, GAUSSIAN);
+  expect(await clusterFetched(page)).toBe(true);
+  expect(t.scene).toBe(gaussianMesh(RESOLUTION).indices.length / 3);
+  expect(t.reflection, 'the 16 grid\'s copy, as in the test above').toBe(clusterMesh(gaussianMesh(RESOLUTION), 16).indices.length / 3);
+});
+
+test('if the clustering cannot load, reflections draw the full mesh: one warning, no error', async ({ page, consoleLog }) => {
+  await page.route('**/geometry/cluster*', (route) => route.abort());
+  await openPage(page);
+  const t = await firstFrameTriangles(page, GAUSSIAN);
+  expect(t.reflection).toBe(t.scene);
+  expect(consoleLog.take('warning').filter((w) => w.includes('clustering could not load'))).toHaveLength(1);
+  consoleLog.take('error'); // the browser's own report of the failed fetch
+});

@@ -38,7 +38,7 @@ function toBase64(bytes: Uint8ClampedArray): string {
 const api = {
   /** RGBA8 of `state.view` of `scene`, top row first, base64 (after loading what it needs: rough glass's chunk). */
   async draw(state: FrameState, scene: Scene, images: Record<string, { width: number; height: number; rgba: number[] }> = {}): Promise<string> {
-    await renderer.load(state);
+    await renderer.load(state, revive(scene));
     canvas.width = state.width;
     canvas.height = state.height;
     for (const [url, img] of Object.entries(images)) {
@@ -63,10 +63,11 @@ const api = {
    * one-pixel read), after one unmeasured frame (compiles, allocations). A rough figure only.
    */
   async time(state: FrameState, scene: Scene, frames: number): Promise<number> {
-    await renderer.load(state);
+    const s = revive(scene);
+    await renderer.load(state, s);
     canvas.width = state.width;
     canvas.height = state.height;
-    const s = revive(scene), px = new Uint8Array(4);
+    const px = new Uint8Array(4);
     renderer.render(state, s);
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
     const t0 = performance.now();
