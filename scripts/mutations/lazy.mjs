@@ -51,4 +51,14 @@ export default [
     edits: [{ file: 'src/render/object-meshes.ts', find: '        this.clusteringFailed = true;\n', replace: '' }],
     tests: [LOD],
   },
+  {
+    name: 'Z10 the core\'s own quaternion product: a sign of its z term flipped',
+    edits: [{ file: 'src/scene/group-rotation.ts', find: '  out[2] = az * bw + aw * bz + ax * by - ay * bx;', replace: '  out[2] = az * bw + aw * bz + ax * by + ay * bx;' }],
+    tests: ['tests/unit/controls.test.ts'],
+  },
+  {
+    name: 'Z11 the core\'s own axis quaternion: the whole angle where the half belongs',
+    edits: [{ file: 'src/scene/group-rotation.ts', find: 'const h = (deg * DEG) / 2,', replace: 'const h = deg * DEG,' }],
+    tests: ['tests/unit/controls.test.ts'],
+  },
 ];

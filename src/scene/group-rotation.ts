@@ -3,7 +3,7 @@
 // and the reference see it applied to the scene value as ordinary transforms (rotateScene); the
 // renderers get it with each frame (FrameState.turn) and compose it as one more matrix
 // (turnMatrix), so a turn builds no new scene value. Pure math.
-import { mat3, mat4, quat, vec3, type ReadonlyQuat } from 'gl-matrix';
+import { mat3, mat4, vec3, type quat, type ReadonlyQuat } from 'gl-matrix';
 import type { Light, Scene, SceneObject, Vec3 } from './scene';
 
 /**
@@ -19,13 +19,31 @@ export interface SceneTurn {
 
 const DEG = Math.PI / 180;
 
+/**
+ * out = a·b (Hamilton product, [x, y, z, w]): the rotation b, then a. Written here rather than
+ * taken from gl-matrix's quat module, whose load-time helpers (rotationTo, setAxes) a bundler
+ * cannot drop: the core stays without that module (issue 22).
+ */
+function multiply(out: quat, a: ArrayLike<number>, b: ArrayLike<number>): quat {
+  const ax = a[0], ay = a[1], az = a[2], aw = a[3], bx = b[0], by = b[1], bz = b[2], bw = b[3];
+  out[0] = ax * bw + aw * bx + ay * bz - az * by;
+  out[1] = ay * bw + aw * by + az * bx - ax * bz;
+  out[2] = az * bw + aw * bz + ax * by - ay * bx;
+  out[3] = aw * bw - ax * bx - ay * by - az * bz;
+  return out;
+}
+
+/** The rotation by `deg` degrees about axis `i` (0 x, 1 y, 2 z). */
+function axisQuat(i: number, deg: number): Float64Array {
+  const h = (deg * DEG) / 2, q = new Float64Array([0, 0, 0, Math.cos(h)]);
+  q[i] = Math.sin(h);
+  return q;
+}
+
 /** Rz·Ry·Rx of Euler degrees (x applied first), as the renderers build it. */
 export function eulerToQuat(out: quat, rotation: readonly number[]): quat {
-  const qx = quat.setAxisAngle((new Float64Array([0, 0, 0, 1]) as unknown as quat), [1, 0, 0], rotation[0] * DEG);
-  const qy = quat.setAxisAngle((new Float64Array([0, 0, 0, 1]) as unknown as quat), [0, 1, 0], rotation[1] * DEG);
-  const qz = quat.setAxisAngle((new Float64Array([0, 0, 0, 1]) as unknown as quat), [0, 0, 1], rotation[2] * DEG);
-  quat.multiply(out, qz, qy);
-  return quat.multiply(out, out, qx);
+  multiply(out, axisQuat(2, rotation[2]), axisQuat(1, rotation[1]));
+  return multiply(out, out, axisQuat(0, rotation[0]));
 }
 
 /** Euler degrees [x, y, z] with Rz·Ry·Rx = the rotation of `q`; x = 0 at gimbal lock. */
@@ -82,7 +100,7 @@ export function rotateObjects(objects: readonly SceneObject[], q: ReadonlyQuat, 
     vec3.subtract(p, o.transform.position as vec3, center as vec3);
     vec3.transformQuat(p, p, q);
     vec3.add(p, p, center as vec3);
-    quat.multiply(r, q, eulerToQuat(r, o.transform.rotation));
+    multiply(r, q, eulerToQuat(r, o.transform.rotation));
     return { ...o, transform: { ...o.transform, position: [p[0], p[1], p[2]], rotation: quatToEuler(r) } };
   });
 }

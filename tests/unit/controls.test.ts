@@ -201,6 +201,13 @@ describe('the trackball\'s rotation of the scene', () => {
     return m;
   };
 
+  it('Euler degrees to a quaternion, worked by hand: x 90° is (√½, 0, 0, √½); y 90° then x 90° is (½, ½, −½, ½)', () => {
+    const h = Math.SQRT1_2;
+    expect([...eulerToQuat(q64(), [90, 0, 0])].map((x) => +x.toFixed(12))).toEqual([+h.toFixed(12), 0, 0, +h.toFixed(12)]);
+    // Rz·Ry·Rx with x applied first: qy·qx = (0, h, 0, h)·(h, 0, 0, h).
+    expect([...eulerToQuat(q64(), [90, 90, 0])].map((x) => +x.toFixed(12))).toEqual([0.5, 0.5, -0.5, 0.5]);
+  });
+
   it('Euler degrees (Rz·Ry·Rx) ↔ quaternion round-trips, gimbal lock included', () => {
     for (const e of [[10, 20, 30], [-170, 45, 100], [0, 90, 30], [5, -89.99, 0]] as [number, number, number][]) {
       const q = eulerToQuat(q64(), e);
