@@ -3,7 +3,7 @@
 const CONTROLS = 'tests/e2e/controls.spec.ts';
 const INERTIA = 'tests/e2e/inertia.spec.ts';
 const POINTER = 'src/element/controls/pointer-controls.ts';
-const RIG = 'src/element/camera-rig.ts';
+const INPUT = 'src/element/controls/controls-input.ts';
 
 export default [
   {
@@ -68,12 +68,12 @@ export default [
   },
   {
     name: 'C10 camera-target left out of the write-back after a pan',
-    edits: [{ file: RIG, find: "        element.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);\n", replace: '' }],
+    edits: [{ file: INPUT, find: "        element.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);\n", replace: '' }],
     tests: [CONTROLS],
   },
   {
     name: 'C11 a trackball turn fires camera-change (the camera did not move)',
-    edits: [{ file: RIG, find: '        if (camera) this.cameraDirty = true;', replace: '        this.cameraDirty = true;' }],
+    edits: [{ file: INPUT, find: '        if (camera) this.cameraDirty = true;', replace: '        this.cameraDirty = true;' }],
     tests: [CONTROLS],
   },
   {
@@ -116,27 +116,27 @@ export default [
   },
   {
     name: 'C19 the controls\' chunk arrives but its pointer listeners are never added',
-    edits: [{ file: 'src/element/camera-rig.ts', find: '        this.pointer.hostConnected();\n', replace: '' }],
+    edits: [{ file: 'src/element/controls/controls-input.ts', find: '    this.pointer.hostConnected();\n', replace: '' }],
     tests: [CONTROLS],
   },
   {
     name: 'C21 the controls\' chunk arrives but the flyby\'s keys are never listened to',
-    edits: [{ file: 'src/element/camera-rig.ts', find: '        this.input.hostConnected();\n', replace: '' }],
+    edits: [{ file: 'src/element/controls/controls-input.ts', find: '    this.input.hostConnected();\n', replace: '' }],
     tests: [CONTROLS],
   },
   {
     name: 'C22 the controls\' chunk fetched only for orbit and trackball (flyby never moves)',
-    edits: [{ file: 'src/element/camera-rig.ts', find: "if (this.flyby || this.pointerLoading || c === null) return;", replace: "if (this.flyby || this.pointerLoading || c === null || c === 'flyby') return;" }],
+    edits: [{ file: 'src/element/camera-rig.ts', find: "if (this.controls || this.controlsPending || c === null) return;", replace: "if (this.controls || this.controlsPending || c === null || c === 'flyby') return;" }],
     tests: [CONTROLS],
   },
   {
     name: 'C23 the controls\' chunk fetched without controls',
-    edits: [{ file: 'src/element/camera-rig.ts', find: "if (this.flyby || this.pointerLoading || c === null) return;", replace: "if (this.flyby || this.pointerLoading) return;" }],
+    edits: [{ file: 'src/element/camera-rig.ts', find: "if (this.controls || this.controlsPending || c === null) return;", replace: "if (this.controls || this.controlsPending) return;" }],
     tests: [CONTROLS],
   },
   {
     name: 'C20 no frame asked for once the controls\' chunk is in (frames held for ever)',
-    edits: [{ file: 'src/element/camera-rig.ts', find: '      this.pointerLoading = false;\n      this.host.requestRender();', replace: '      this.pointerLoading = false;' }],
+    edits: [{ file: 'src/element/camera-rig.ts', find: '      this.controlsPending = false;\n      this.host.requestRender();', replace: '      this.controlsPending = false;' }],
     tests: [CONTROLS],
   },
 ];

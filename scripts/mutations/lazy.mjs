@@ -23,7 +23,7 @@ export default [
   },
   {
     name: 'Z4 Renderer.load never asks for the course projection',
-    edits: [{ file: 'src/render/renderer.ts', find: 'return this.rough.load(state) ?? this.course.load(state);', replace: 'return this.rough.load(state);' }],
+    edits: [{ file: 'src/render/renderer.ts', find: 'return this.rough.load(state) ?? this.course.load(state) ??', replace: 'return this.rough.load(state) ??' }],
     tests: [CHUNK],
   },
   {

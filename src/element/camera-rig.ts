@@ -1,22 +1,17 @@
-// The camera and the trackball (SPEC §10, §11): the flyby keys and mouse, orbit and trackball
-// pointers, the course camera of `camera-src`, and the end of a gesture, when the pose is
-// written back to the camera attributes once and `camera-change` is fired. Fills the camera's
-// part of each frame's state; no GL.
+// The camera and the trackball (SPEC §10, §11): the pose the camera attributes give, the course
+// camera of `camera-src`, and the input that moves them — the flyby keys and mouse, orbit and
+// trackball pointers, the write-back at a gesture's end (controls/controls-input.ts, a chunk
+// loaded when `controls` first asks). Fills the camera's part of each frame's state; no GL.
 import type { FrameState } from '../render/types';
 import type { Scene } from '../scene/scene';
 import type { SceneAttributes } from './attributes';
 import type { CameraSource } from './camera-source';
 import type { Controller } from './controller';
-import type { quat } from 'gl-matrix';
-import type { PointerControls, PointerControlsHost, PointerMode } from './controls/pointer-controls';
-import type { FlybyController } from './controls/flyby-controller';
-import type { FlybyInput, FlybyInputHost } from './controls/flyby-input';
+import type { ControlsInput } from './controls/controls-input';
 import { setPose, type CameraPose } from '../math/camera';
 import type { CameraChangeDetail } from './types';
 import { warn } from './warnings';
 
-/** The flyby's mouse look ends this long after its last movement, ms. */
-const LOOK_END_MS = 150;
 const DEG = 180 / Math.PI;
 
 /** What CameraRig needs of the scene element. */
@@ -53,77 +48,25 @@ export class CameraRig implements Controller {
   /** The trackball's rotation of the first light about the objects' centre. */
   readonly lightRotation = new Float64Array([0, 0, 0, 1]);
   /**
-   * The flyby's keys and mouse, orbit and trackball pointers (controls/controls.ts): a chunk of
-   * their own, loaded the first time `controls` asks for any; null until then.
+   * The flyby's keys and mouse, orbit and trackball pointers, the end of a gesture
+   * (controls/controls-input.ts): a chunk of their own, loaded the first time `controls` asks
+   * for any; null until then.
    */
-  private flyby: FlybyController | null = null;
-  private input: FlybyInput | null = null;
-  private pointer: PointerControls | null = null;
-  private readonly pointerHost: PointerControlsHost;
+  private controls: ControlsInput | null = null;
   /** The controls' chunk is on its way: frames wait for it (see controlsLoading). */
-  private pointerLoading = false;
+  private controlsPending = false;
   private connected = false;
-  private lookTimer: ReturnType<typeof setTimeout> | undefined;
   /** A camera attribute set by the page: one camera-change after the current task. */
   private cameraChangeQueued = false;
-  /** The camera moved since the last write-back. */
-  private cameraDirty = false;
-  /** The flyby's keys moved the camera since the last write-back (their gesture ends when it stops). */
-  private keysMoved = false;
-  /** True while the camera attributes are written back. */
-  private writing = false;
-  /** performance.now() of the flyby's last step; 0: no motion under way. */
-  private lastNow = 0;
 
-  constructor(private readonly host: CameraRigHost) {
-    const { element, canvas, values } = host;
+  constructor(readonly host: CameraRigHost) {
+    const values = host.values;
     setPose(this.pose, values.cameraPosition, values.cameraRotation[0], values.cameraRotation[1]);
-    this.pointerHost = {
-      element, canvas,
-      objectRotation: this.objectRotation as unknown as quat, lightRotation: this.lightRotation as unknown as quat,
-      mode: () => (host.values.controls === 'orbit' || host.values.controls === 'trackball' ? host.values.controls as PointerMode : null),
-      pose: () => this.pose,
-      target: () => host.values.cameraTarget ?? host.objectsCenter(),
-      fov: () => host.values.fov,
-      changed: (camera) => {
-        // A trackball turn moves objects, not the camera: no write-back, no camera-change for it.
-        if (camera) this.cameraDirty = true;
-        if (!camera) host.turned();
-        host.requestRender();
-      },
-      gestureEnd: () => this.gestureEnd(),
-    };
-  }
-
-  /** What the flyby's input needs of the rig. */
-  private flybyInputHost(flyby: FlybyController): FlybyInputHost {
-    const host = this.host;
-    return {
-      element: host.element, canvas: host.canvas, flyby,
-      enabled: () => host.values.controls === 'flyby',
-      moved: (byMouse) => {
-        if (byMouse) {
-          this.cameraDirty = true;
-          clearTimeout(this.lookTimer);
-          this.lookTimer = setTimeout(() => this.gestureEnd(), LOOK_END_MS);
-        }
-        // Motion starts now, not at the next frame: on a busy page that frame may come after
-        // the key is released already, and a first step of dt = 0 would lose the press.
-        else if (this.lastNow === 0) this.lastNow = performance.now();
-        host.requestRender();
-      },
-      settle: () => {
-        this.advanceFlyby();
-        host.requestRender();
-      },
-      cycleDebugView: () => host.cycleDebugView(),
-    };
   }
 
   hostConnected(): void {
     this.connected = true;
-    this.input?.hostConnected();
-    this.pointer?.hostConnected();
+    this.controls?.hostConnected();
     this.loadControls();
     if (this.source) this.source.hostConnected();
     else this.cameraSrcChanged();
@@ -131,46 +74,39 @@ export class CameraRig implements Controller {
 
   hostDisconnected(): void {
     this.connected = false;
-    this.input?.hostDisconnected();
-    this.pointer?.hostDisconnected();
+    this.controls?.hostDisconnected();
     this.source?.hostDisconnected();
-    clearTimeout(this.lookTimer);
   }
 
   /** Controls asked for and their chunk not yet in: it is fetched, then a frame drawn. */
   private loadControls(): void {
     const c = this.host.values.controls;
-    if (this.flyby || this.pointerLoading || c === null) return;
-    this.pointerLoading = true;
+    if (this.controls || this.controlsPending || c === null) return;
+    this.controlsPending = true;
     import('./controls/controls').then((chunk) => {
-      this.flyby = new chunk.FlybyController({}, this.pose);
-      this.input = new chunk.FlybyInput(this.flybyInputHost(this.flyby));
-      this.pointer = new chunk.PointerControls(this.pointerHost);
-      if (this.connected) {
-        this.input.hostConnected();
-        this.pointer.hostConnected();
-      }
+      this.controls = new chunk.ControlsInput(this);
+      if (this.connected) this.controls.hostConnected();
     }, (e: unknown) => {
       warn(`controls="${c}" could not load (${String(e).slice(0, 200)}); the scene does not respond to input`);
     }).finally(() => {
-      this.pointerLoading = false;
+      this.controlsPending = false;
       this.host.requestRender();
     });
   }
 
   /** The controls' chunk is loading: the element holds its frames until it is in (a drag then finds it ready). */
   get controlsLoading(): boolean {
-    return this.pointerLoading;
+    return this.controlsPending;
   }
 
   /** True while the pose is written back to the attributes (their changes are not news). */
   get writingBack(): boolean {
-    return this.writing;
+    return this.controls?.writing ?? false;
   }
 
   /** Keys held or a motion after release going on: frames keep coming. */
   get moving(): boolean {
-    return (this.flyby?.active ?? false) || (this.pointer?.active ?? false);
+    return this.controls?.moving ?? false;
   }
 
   /** The flown camera's attributes read live (the pose moves before it is written back); else undefined. */
@@ -228,28 +164,23 @@ export class CameraRig implements Controller {
 
   /** `controls` changed: a gesture and a motion under way stop. */
   controlsChanged(): void {
-    this.pointer?.cancel();
+    this.controls?.cancel();
     this.loadControls();
   }
 
   /** A frame begins: the flyby and the motion after release advance. */
   step(): void {
-    this.advanceFlyby();
-    // The motion after release, by the wall clock (SPEC §10), not the frame's timestamp.
-    if (!this.pointer?.update(performance.now())) return;
-    if (this.host.values.controls === 'orbit') this.cameraDirty = true; // a trackball's spin turns objects, not the camera
-    else this.host.turned();
+    this.controls?.step();
   }
 
   /** Frames stopped: the next flyby step starts from rest. */
   paused(): void {
-    this.lastNow = 0;
+    this.controls?.paused();
   }
 
   /** Nothing moves any more: the flyby keys' gesture ends. */
   idle(): void {
-    this.lastNow = 0;
-    if (this.cameraDirty && this.keysMoved) this.gestureEnd();
+    this.controls?.idle();
   }
 
   /**
@@ -274,21 +205,6 @@ export class CameraRig implements Controller {
     source.checkLooksAway(scene, s.time, s.turn ?? null);
   }
 
-  /**
-   * Moves the flyby camera by the time since the last step. Motion is timed with
-   * performance.now() (the key events' clock), not the frame's timestamp, which can be
-   * earlier than a key press handled in the same frame.
-   */
-  private advanceFlyby(): void {
-    const t = performance.now();
-    const dt = this.lastNow ? (t - this.lastNow) / 1000 : 0;
-    this.lastNow = t;
-    if (!this.flyby?.update(dt)) return;
-    this.cameraDirty = true;
-    this.keysMoved = true;
-    this.host.flybyMoved();
-  }
-
   /** With `camera-target`, the camera looks at it (SPEC §2): yaw and pitch from position → target. */
   private aimAtTarget(): void {
     const t = this.host.values.cameraTarget;
@@ -300,7 +216,8 @@ export class CameraRig implements Controller {
     setPose(this.pose, p, Math.atan2(dz, dx) * DEG, Math.asin(dy / d) * DEG);
   }
 
-  private cameraDetail(): CameraChangeDetail {
+  /** camera-change's detail: the pose now (and the target, when one is set). */
+  cameraDetail(): CameraChangeDetail {
     const { position, yaw, pitch } = this.pose;
     const t = this.host.values.cameraTarget;
     return t ? { position: [...position], rotation: [yaw, pitch], target: [...t] } : { position: [...position], rotation: [yaw, pitch] };
@@ -315,32 +232,5 @@ export class CameraRig implements Controller {
       this.cameraChangeQueued = false;
       if (element.isConnected) element.dispatchEvent(new CustomEvent('camera-change', { detail: this.cameraDetail() }));
     });
-  }
-
-  /**
-   * A gesture ended (SPEC §10): the camera attributes are written once (camera-target too when
-   * a pan moved it) and one camera-change is fired; the write-back itself fires none.
-   */
-  private gestureEnd(): void {
-    clearTimeout(this.lookTimer);
-    this.lookTimer = undefined;
-    this.keysMoved = false;
-    if (!this.cameraDirty) return;
-    this.cameraDirty = false;
-    const { position, yaw, pitch } = this.pose;
-    const element = this.host.element;
-    this.writing = true;
-    try {
-      element.setAttribute('camera-position', `${position[0]} ${position[1]} ${position[2]}`);
-      element.setAttribute('camera-rotation', `${yaw} ${pitch}`);
-      // A pan moves what the camera looks at: with camera-target set, the target moves with it.
-      if (this.pointer?.takePanned() && this.host.values.cameraTarget) {
-        const t = this.pointer.orbitTarget;
-        element.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);
-      }
-    } finally {
-      this.writing = false;
-    }
-    element.dispatchEvent(new CustomEvent('camera-change', { detail: this.cameraDetail() }));
   }
 }
