@@ -1,6 +1,6 @@
 // Raw OBJ lists → indexed triangle mesh: one vertex per distinct (position, uv, normal source)
 // corner, generated normals per smoothing group, the index buffer sorted by material.
-import { FACE_INTS, type ObjRaw } from './raw';
+import { RUN_INTS, type ObjRaw } from './raw';
 import type { Bounds, DrawGroup, ObjResult } from './types';
 
 /** Key tag of a corner whose normal is generated smooth (`k` = smoothing slot)… */
@@ -11,7 +11,7 @@ const FLAT_FACE = -2;
 export function buildMesh(raw: ObjRaw): Omit<ObjResult, 'warnings'> {
   const welded = weldCorners(raw);
   const { positions, normals, uvs, colors, bounds } = vertexArrays(raw, welded);
-  const { indices, groups } = indexByMaterial(raw, welded.cornerOut, welded.count);
+  const { indices, groups } = indexByMaterial(raw, welded);
   return {
     positions, normals, uvs, colors, indices, groups, bounds,
     mtllibs: raw.mtllibs, objects: raw.objects, groupNames: raw.groupNames,
@@ -30,25 +30,31 @@ const V = 0, T = 1, N = 2, K = 3, CHAIN = 4, REP = 5;
 /** The output vertices: one per distinct corner, with where each comes from. */
 interface Welded {
   count: number;
-  /** Per corner of the file: its output vertex. */
-  cornerOut: Int32Array;
+  /** The triangles' output vertices, in file order (3 per triangle). */
+  fileOrder: Uint32Array;
+  /** Per run of raw.runs: where its triangles start in `fileOrder`, and one entry more: the end. */
+  runStart: Int32Array;
   /** REC ints per output vertex. */
   rec: Int32Array;
   /** Generated normals, summed area-weighted over the faces that share them (xyz per vertex). */
   acc: Float64Array;
 }
 
+/** Output vertices of the polygon being welded, by corner (then mapped through its triangles). */
+let polygonOut = new Int32Array(64);
+
 /**
  * One output vertex per distinct (position, uv, normal source) corner; a generated normal is
  * shared by the corners of one position in one smoothing group (whatever their uv) and sums the
- * Newell normals of their faces.
+ * Newell normals of their faces. The triangles' vertices are written as the faces are welded.
  */
 function weldCorners(raw: ObjRaw): Welded {
-  const corners = raw.corners.data;
+  const corners = raw.corners.data, pos = raw.positions.data;
   const uvOf = raw.cornerUvs?.data ?? null, normalOf = raw.cornerNormals?.data ?? null;
-  const faces = raw.faces.data;
-  const faceCount = raw.faces.length / FACE_INTS;
-  const cornerOut = new Int32Array(raw.corners.length);
+  const faces = raw.faces.data, runs = raw.runs.data, tris = raw.triangles.data;
+  const runCount = raw.runs.length / RUN_INTS;
+  const fileOrder = new Uint32Array(3 * raw.triangleCount);
+  const runStart = new Int32Array(runCount + 1);
   // Vertices sharing a position are chained from head[position]; chains are a few long.
   const head = new Int32Array(raw.positions.length / 3).fill(-1);
   // Most models have about one output vertex per position: room for that, doubled if need be.
@@ -56,56 +62,70 @@ function weldCorners(raw: ObjRaw): Welded {
   let acc = new Float64Array(rec.length / 2);
   const normal = new Float64Array(3);
   let outCount = 0;
+  let at = 0, c = 0, f = 0, w = 0, tri = 0; // in faces, corners, face numbers, fileOrder, tris
 
-  for (let f = 0; f < faceCount; f++) {
-    const first = faces[f * FACE_INTS], count = faces[f * FACE_INTS + 1], smooth = faces[f * FACE_INTS + 4];
-    newellNormal(raw.positions.data, corners, first, count, normal);
-    for (let k = 0; k < count; k++) {
-      const c = first + k;
-      const v = corners[c], t = uvOf ? uvOf[c] : -1;
-      let n = normalOf ? normalOf[c] : -1;
-      let key = 0;
-      if (n < 0) {
-        key = smooth >= 0 ? smooth : f;
-        n = smooth >= 0 ? SMOOTH : FLAT_FACE;
-      }
-      let o = head[v];
-      let shared = -1; // a vertex of the same position and smoothing group, maybe another uv
-      while (o >= 0) {
-        const r = REC * o;
-        if (rec[r + N] === n && rec[r + K] === key) {
-          if (rec[r + T] === t) break;
-          if (shared < 0) shared = rec[r + REP];
+  for (let r = 0; r < runCount; r++) {
+    runStart[r] = w;
+    const smooth = runs[r * RUN_INTS + 1];
+    const end = r + 1 < runCount ? runs[(r + 1) * RUN_INTS] : raw.faceCount;
+    for (; f < end; f++) {
+      const count = faces[at++];
+      if (count > polygonOut.length) polygonOut = new Int32Array(Math.max(count, 2 * polygonOut.length));
+      newellNormal(pos, corners, c, count, normal);
+      for (let k = 0; k < count; k++, c++) {
+        const v = corners[c], t = uvOf ? uvOf[c] : -1;
+        let n = normalOf ? normalOf[c] : -1;
+        let key = 0;
+        if (n < 0) {
+          key = smooth >= 0 ? smooth : f;
+          n = smooth >= 0 ? SMOOTH : FLAT_FACE;
         }
-        o = rec[r + CHAIN];
-      }
-      if (o < 0) {
-        if (REC * outCount === rec.length) {
-          rec = doubled(rec);
-          const more = new Float64Array(2 * acc.length);
-          more.set(acc);
-          acc = more;
+        let o = head[v];
+        let shared = -1; // a vertex of the same position and smoothing group, maybe another uv
+        while (o >= 0) {
+          const q = REC * o;
+          if (rec[q + N] === n && rec[q + K] === key) {
+            if (rec[q + T] === t) break;
+            if (shared < 0) shared = rec[q + REP];
+          }
+          o = rec[q + CHAIN];
         }
-        o = outCount++;
-        const r = REC * o;
-        rec[r + V] = v;
-        rec[r + T] = t;
-        rec[r + N] = n;
-        rec[r + K] = key;
-        rec[r + CHAIN] = head[v];
-        rec[r + REP] = shared >= 0 ? shared : o;
-        head[v] = o;
+        if (o < 0) {
+          if (REC * outCount === rec.length) {
+            rec = doubled(rec);
+            const more = new Float64Array(2 * acc.length);
+            more.set(acc);
+            acc = more;
+          }
+          o = outCount++;
+          const q = REC * o;
+          rec[q + V] = v;
+          rec[q + T] = t;
+          rec[q + N] = n;
+          rec[q + K] = key;
+          rec[q + CHAIN] = head[v];
+          rec[q + REP] = shared >= 0 ? shared : o;
+          head[v] = o;
+        }
+        if (count === 3) fileOrder[w++] = o;
+        else polygonOut[k] = o;
+        if (n < 0) {
+          const a = 3 * rec[REC * o + REP];
+          acc[a] += normal[0];
+          acc[a + 1] += normal[1];
+          acc[a + 2] += normal[2];
+        }
       }
-      cornerOut[c] = o;
-      if (n < 0) {
-        const a = 3 * rec[REC * o + REP];
-        acc[a] += normal[0];
-        acc[a + 1] += normal[1];
-        acc[a + 2] += normal[2];
+      if (count > 3) { // its kept triangles, by corner number
+        const first = c - count;
+        const last = 3 * (tri + faces[at++]);
+        for (let t = 3 * tri; t < last; t++) fileOrder[w++] = polygonOut[tris[t] - first];
+        tri = last / 3;
       }
     }
   }
-  return { count: outCount, cornerOut, rec, acc };
+  runStart[runCount] = w;
+  return { count: outCount, fileOrder, runStart, rec, acc };
 }
 
 function doubled(a: Int32Array<ArrayBuffer>): Int32Array<ArrayBuffer> {
@@ -178,44 +198,42 @@ function writeUnit(normals: Float32Array, o: number, src: Float64Array, s: numbe
   }
 }
 
-/** The index buffer with each material's triangles contiguous (file order within one). */
-function indexByMaterial(raw: ObjRaw, cornerOut: Int32Array, outCount: number): { indices: Uint16Array | Uint32Array; groups: DrawGroup[] } {
-  const faces = raw.faces.data;
-  const faceCount = raw.faces.length / FACE_INTS;
-  let triangleCount = 0;
-  const materialCount = raw.materials.length;
-  const perMaterial = new Int32Array(materialCount);
+/**
+ * The index buffer with each material's triangles contiguous (file order within one), in the
+ * order of the materials' first use: the welded file order itself when no material comes back
+ * after another, else its runs copied to their material's place.
+ */
+function indexByMaterial(raw: ObjRaw, w: Welded): { indices: Uint16Array | Uint32Array; groups: DrawGroup[] } {
+  const runs = raw.runs.data, runCount = raw.runs.length / RUN_INTS;
+  const { fileOrder, runStart } = w;
+  const perMaterial = new Int32Array(raw.materials.length);
   const order: number[] = [];
-  for (let f = 0; f < faceCount; f++) {
-    const m = faces[f * FACE_INTS + 5];
+  let inOrder = true;
+  for (let r = 0; r < runCount; r++) {
+    const m = runs[r * RUN_INTS + 2];
     if (perMaterial[m] === 0) order.push(m);
-    perMaterial[m] += faces[f * FACE_INTS + 3];
-    triangleCount += faces[f * FACE_INTS + 3];
+    else if (m !== runs[(r - 1) * RUN_INTS + 2]) inOrder = false; // back to an earlier material
+    perMaterial[m] += runStart[r + 1] - runStart[r];
   }
-  const offset = new Int32Array(materialCount);
+  const offset = new Int32Array(raw.materials.length);
   const groups: DrawGroup[] = [];
   let at = 0;
   for (const m of order) {
     offset[m] = at;
-    groups.push({ material: raw.materials[m], start: 3 * at, count: 3 * perMaterial[m] });
+    groups.push({ material: raw.materials[m], start: at, count: perMaterial[m] });
     at += perMaterial[m];
   }
-  const indices = outCount > 65535 ? new Uint32Array(3 * triangleCount) : new Uint16Array(3 * triangleCount);
-  const tris = raw.triangles.data;
-  for (let f = 0; f < faceCount; f++) {
-    const m = faces[f * FACE_INTS + 5];
-    const firstTriangle = faces[f * FACE_INTS + 2];
-    const n = faces[f * FACE_INTS + 3];
-    let w = 3 * offset[m];
-    if (firstTriangle < 0) { // a triangle as written: its corners
-      const c = faces[f * FACE_INTS];
-      indices[w] = cornerOut[c];
-      indices[w + 1] = cornerOut[c + 1];
-      indices[w + 2] = cornerOut[c + 2];
-    } else {
-      for (let t = 3 * firstTriangle; t < 3 * (firstTriangle + n); t++) indices[w++] = cornerOut[tris[t]];
+  let sorted = fileOrder;
+  if (!inOrder) {
+    sorted = new Uint32Array(fileOrder.length);
+    for (let r = 0; r < runCount; r++) {
+      const m = runs[r * RUN_INTS + 2];
+      sorted.set(fileOrder.subarray(runStart[r], runStart[r + 1]), offset[m]);
+      offset[m] += runStart[r + 1] - runStart[r];
     }
-    offset[m] += n;
   }
+  if (w.count > 65535) return { indices: sorted, groups };
+  const indices = new Uint16Array(sorted.length);
+  indices.set(sorted);
   return { indices, groups };
 }

@@ -5,7 +5,7 @@ import type { Capacities } from './estimate';
 import { addUnique, splitGroups, splitMtllib } from './names';
 import { ByteScanner } from './byte-scanner';
 import { Scanner } from './scanner';
-import { FACE_INTS, FLAT, type ObjRaw } from './raw';
+import { FLAT, RUN_INTS, type ObjRaw } from './raw';
 import { dropZeroArea, MAX_FACE_CORNERS, triangulate } from './triangulate';
 import { shown, Warnings } from '../warnings';
 
@@ -42,6 +42,12 @@ class ObjReader {
   private cornerNormals: I32List | null = null;
   private readonly triangles: I32List;
   private readonly faces: I32List;
+  private faceCount = 0;
+  private triangleCount = 0;
+  private readonly runs = new I32List(3 * RUN_INTS);
+  /** The current run's smoothing slot and material (NaN before the first kept face). */
+  private runSmooth = NaN;
+  private runMaterial = NaN;
   private readonly warnings = new Warnings();
   // A bad v/vt/vn keeps its slot (so later indices still mean the same element), flagged here.
   private readonly badLine = [new Map<number, number>(), new Map<number, number>(), new Map<number, number>()];
@@ -74,7 +80,7 @@ class ObjReader {
     this.normals = new F64List(Math.max(1024, c?.normals ?? 0));
     this.corners = new I32List(Math.max(1024, c?.corners ?? 0));
     this.triangles = new I32List(Math.max(1024, c?.triangles ?? 0));
-    this.faces = new I32List(Math.max(1024, FACE_INTS * (c?.faces ?? 0)));
+    this.faces = new I32List(Math.max(1024, c?.faces ?? 0));
   }
 
   read(): ObjRaw {
@@ -96,9 +102,10 @@ class ObjReader {
       else this.otherStatement(line);
       sc.nextLine();
     }
-    const { positions, colors, uvs, normals, corners, cornerUvs, cornerNormals, triangles, faces, materials, objects, groupNames, mtllibs } = this;
+    const { positions, colors, uvs, normals, corners, cornerUvs, cornerNormals, triangles, faces, faceCount, triangleCount, runs } = this;
     return {
-      positions, colors, uvs, normals, corners, cornerUvs, cornerNormals, triangles, faces, materials, objects, groupNames, mtllibs,
+      positions, colors, uvs, normals, corners, cornerUvs, cornerNormals, triangles, faces, faceCount, triangleCount, runs,
+      materials: this.materials, objects: this.objects, groupNames: this.groupNames, mtllibs: this.mtllibs,
       warnings: this.warnings, droppedFaces: this.droppedFaces, firstDroppedLine: this.firstDroppedLine,
     };
   }
@@ -304,8 +311,7 @@ class ObjReader {
     const { corners, triangles, positions } = this;
     if (count === 3) {
       // A triangle as written is kept as written, with no entry in `triangles`.
-      this.faces.push3(start, count, -1);
-      this.faces.push3(1, this.smooth, this.material);
+      this.addFace(3, 1);
       return;
     }
     const firstTriangle = triangles.length / 3;
@@ -318,8 +324,20 @@ class ObjReader {
       return;
     }
     if (!clipped) this.warnings.add(line, `face of ${count} vertices too large to ear-clip in time; part of it drawn as a fan`);
-    this.faces.push3(start, count, firstTriangle);
-    this.faces.push3(kept, this.smooth, this.material);
+    this.addFace(count, kept);
+    this.faces.push(kept);
+  }
+
+  /** A kept face onto `faces` (a polygon's kept triangles still to push), starting a run where the smoothing or material changed. */
+  private addFace(count: number, kept: number): void {
+    if (this.smooth !== this.runSmooth || this.material !== this.runMaterial) {
+      this.runSmooth = this.smooth;
+      this.runMaterial = this.material;
+      this.runs.push3(this.faceCount, this.smooth, this.material);
+    }
+    this.faces.push(count);
+    this.faceCount++;
+    this.triangleCount += kept;
   }
 
   /** o, g, s, usemtl, mtllib; anything else is a warning, once per keyword. */
