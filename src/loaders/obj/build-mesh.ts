@@ -150,37 +150,44 @@ function newellNormal(pos: Float64Array, corners: Int32Array, first: number, cou
 
 /** The output vertices' arrays (uvs only if some corner has one, colours if the file gave any) and their bounds. */
 function vertexArrays(raw: ObjRaw, w: Welded): Pick<ObjResult, 'positions' | 'normals' | 'uvs' | 'colors' | 'bounds'> {
-  const pos = raw.positions.data;
-  const outCount = w.count;
+  const pos = raw.positions.data, fileNormals = raw.normals.data, fileUvs = raw.uvs.data, fileColors = raw.colors?.data ?? null;
+  const { rec, acc, count: outCount } = w;
   const positions = new Float32Array(outCount * 3);
   const normals = new Float32Array(outCount * 3);
   let hasUv = false;
-  for (let o = 0; o < outCount && !hasUv; o++) hasUv = w.rec[REC * o + T] >= 0;
+  for (let o = 0; o < outCount && !hasUv; o++) hasUv = rec[REC * o + T] >= 0;
   const uvs = hasUv ? new Float32Array(outCount * 2) : null;
-  const colors = raw.colors ? new Float32Array(outCount * 3) : null;
-  const min: [number, number, number] = [Infinity, Infinity, Infinity];
-  const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
+  const colors = fileColors ? new Float32Array(outCount * 3) : null;
+  let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = -Infinity, maxY = -Infinity, maxZ = -Infinity;
   for (let o = 0; o < outCount; o++) {
-    const p = 3 * w.rec[REC * o + V];
-    for (let a = 0; a < 3; a++) {
-      const x = pos[p + a];
-      positions[3 * o + a] = x;
-      if (x < min[a]) min[a] = x;
-      if (x > max[a]) max[a] = x;
-    }
-    const n = w.rec[REC * o + N];
-    if (n >= 0) writeUnit(normals, o, raw.normals.data, 3 * n);
-    else writeUnit(normals, o, w.acc, 3 * w.rec[REC * o + REP]);
+    const q = REC * o, p = 3 * rec[q + V];
+    const x = pos[p], y = pos[p + 1], z = pos[p + 2];
+    positions[3 * o] = x;
+    positions[3 * o + 1] = y;
+    positions[3 * o + 2] = z;
+    if (x < minX) minX = x;
+    if (x > maxX) maxX = x;
+    if (y < minY) minY = y;
+    if (y > maxY) maxY = y;
+    if (z < minZ) minZ = z;
+    if (z > maxZ) maxZ = z;
+    const n = rec[q + N];
+    if (n >= 0) writeUnit(normals, o, fileNormals, 3 * n);
+    else writeUnit(normals, o, acc, 3 * rec[q + REP]);
     if (uvs) {
-      const t = w.rec[REC * o + T];
+      const t = rec[q + T];
       if (t >= 0) {
-        uvs[2 * o] = raw.uvs.data[2 * t];
-        uvs[2 * o + 1] = raw.uvs.data[2 * t + 1];
+        uvs[2 * o] = fileUvs[2 * t];
+        uvs[2 * o + 1] = fileUvs[2 * t + 1];
       }
     }
-    if (colors && raw.colors) colors.set(raw.colors.data.subarray(p, p + 3), 3 * o);
+    if (colors && fileColors) {
+      colors[3 * o] = fileColors[p];
+      colors[3 * o + 1] = fileColors[p + 1];
+      colors[3 * o + 2] = fileColors[p + 2];
+    }
   }
-  const bounds: Bounds = { min, max };
+  const bounds: Bounds = { min: [minX, minY, minZ], max: [maxX, maxY, maxZ] };
   return { positions, normals, uvs, colors, bounds };
 }
 
