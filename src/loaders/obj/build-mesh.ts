@@ -35,13 +35,24 @@ interface Welded {
   /** Per run of raw.runs: where its triangles start in `fileOrder`, and one entry more: the end. */
   runStart: Int32Array;
   /** REC ints per output vertex. */
-  rec: Int32Array;
+  rec: Int32Array<ArrayBuffer>;
   /** Generated normals, summed area-weighted over the faces that share them (xyz per vertex). */
-  acc: Float64Array;
+  acc: Float64Array<ArrayBuffer>;
 }
 
 /** Output vertices of the polygon being welded, by corner (then mapped through its triangles). */
 let polygonOut = new Int32Array(64);
+
+/** What both welds start from: the output arrays, and vertex records for about one vertex a position. */
+function weldStart(raw: ObjRaw): Welded {
+  return {
+    count: 0,
+    fileOrder: new Uint32Array(3 * raw.triangleCount),
+    runStart: new Int32Array(raw.runs.length / RUN_INTS + 1),
+    rec: new Int32Array(REC * Math.max(64, raw.positions.length / 3)),
+    acc: new Float64Array(3 * Math.max(64, raw.positions.length / 3)),
+  };
+}
 
 /**
  * One output vertex per distinct (position, uv, normal source) corner; a generated normal is
@@ -49,21 +60,20 @@ let polygonOut = new Int32Array(64);
  * Newell normals of their faces. The triangles' vertices are written as the faces are welded.
  */
 function weldCorners(raw: ObjRaw): Welded {
-  const corners = raw.corners.data, pos = raw.positions.data;
   const uvOf = raw.cornerUvs?.data ?? null, normalOf = raw.cornerNormals?.data ?? null;
-  const faces = raw.faces.data, runs = raw.runs.data, tris = raw.triangles.data;
-  const runCount = raw.runs.length / RUN_INTS;
-  const fileOrder = new Uint32Array(3 * raw.triangleCount);
-  const runStart = new Int32Array(runCount + 1);
+  const runs = raw.runs.data, runCount = raw.runs.length / RUN_INTS;
+  let oneGroup = uvOf === null && normalOf === null && runs[1] >= 0;
+  for (let r = 1; r < runCount && oneGroup; r++) oneGroup = runs[r * RUN_INTS + 1] === runs[1];
+  if (oneGroup) return weldPositions(raw);
+  const corners = raw.corners.data, pos = raw.positions.data, faces = raw.faces.data;
+  const welded = weldStart(raw);
+  const { fileOrder, runStart } = welded;
+  let { rec, acc } = welded;
   // Vertices sharing a position are chained from head[position]; chains are a few long.
   const head = new Int32Array(raw.positions.length / 3).fill(-1);
-  // Most models have about one output vertex per position: room for that, doubled if need be.
-  let rec = new Int32Array(REC * Math.max(64, raw.positions.length / 3));
-  let acc = new Float64Array(rec.length / 2);
   const normal = new Float64Array(3);
   let outCount = 0;
-  let at = 0, c = 0, f = 0, w = 0, tri = 0; // in faces, corners, face numbers, fileOrder, tris
-
+  let at = 0, c = 0, f = 0, w = 0, tri = 0; // in faces, corners, face numbers, fileOrder, raw.triangles
   for (let r = 0; r < runCount; r++) {
     runStart[r] = w;
     const smooth = runs[r * RUN_INTS + 1];
@@ -71,7 +81,7 @@ function weldCorners(raw: ObjRaw): Welded {
     for (; f < end; f++) {
       const count = faces[at++];
       if (count > polygonOut.length) polygonOut = new Int32Array(Math.max(count, 2 * polygonOut.length));
-      newellNormal(pos, corners, c, count, normal);
+      let haveNormal = false; // the face's Newell normal, once a corner needs it
       for (let k = 0; k < count; k++, c++) {
         const v = corners[c], t = uvOf ? uvOf[c] : -1;
         let n = normalOf ? normalOf[c] : -1;
@@ -110,22 +120,74 @@ function weldCorners(raw: ObjRaw): Welded {
         if (count === 3) fileOrder[w++] = o;
         else polygonOut[k] = o;
         if (n < 0) {
+          if (!haveNormal) haveNormal = newellNormal(pos, corners, c - k, count, normal);
           const a = 3 * rec[REC * o + REP];
           acc[a] += normal[0];
           acc[a + 1] += normal[1];
           acc[a + 2] += normal[2];
         }
       }
-      if (count > 3) { // its kept triangles, by corner number
-        const first = c - count;
-        const last = 3 * (tri + faces[at++]);
-        for (let t = 3 * tri; t < last; t++) fileOrder[w++] = polygonOut[tris[t] - first];
-        tri = last / 3;
-      }
+      if (count > 3) w = polygonTriangles(raw.triangles.data, tri, faces[at], c - count, fileOrder, w);
+      if (count > 3) tri += faces[at++];
     }
   }
   runStart[runCount] = w;
   return { count: outCount, fileOrder, runStart, rec, acc };
+}
+
+/**
+ * weldCorners for a file of one smoothing group with neither uvs nor normals (a scan, most
+ * often): one output vertex per position used, in order of first use, each its own normal.
+ */
+function weldPositions(raw: ObjRaw): Welded {
+  const corners = raw.corners.data, pos = raw.positions.data, faces = raw.faces.data;
+  const runs = raw.runs.data, runCount = raw.runs.length / RUN_INTS;
+  const welded = weldStart(raw);
+  const { fileOrder, runStart, rec, acc } = welded;
+  const out = new Int32Array(raw.positions.length / 3).fill(-1); // per position: its output vertex
+  const normal = new Float64Array(3);
+  let outCount = 0;
+  let at = 0, c = 0, f = 0, w = 0, tri = 0;
+  for (let r = 0; r < runCount; r++) {
+    runStart[r] = w;
+    const end = r + 1 < runCount ? runs[(r + 1) * RUN_INTS] : raw.faceCount;
+    for (; f < end; f++) {
+      const count = faces[at++];
+      if (count > polygonOut.length) polygonOut = new Int32Array(Math.max(count, 2 * polygonOut.length));
+      newellNormal(pos, corners, c, count, normal);
+      const nx = normal[0], ny = normal[1], nz = normal[2];
+      for (let k = 0; k < count; k++, c++) {
+        const v = corners[c];
+        let o = out[v];
+        if (o < 0) {
+          o = out[v] = outCount++;
+          const q = REC * o;
+          rec[q + V] = v;
+          rec[q + T] = -1;
+          rec[q + N] = SMOOTH;
+          rec[q + K] = runs[1];
+          rec[q + CHAIN] = -1;
+          rec[q + REP] = o;
+        }
+        if (count === 3) fileOrder[w++] = o;
+        else polygonOut[k] = o;
+        acc[3 * o] += nx;
+        acc[3 * o + 1] += ny;
+        acc[3 * o + 2] += nz;
+      }
+      if (count > 3) w = polygonTriangles(raw.triangles.data, tri, faces[at], c - count, fileOrder, w);
+      if (count > 3) tri += faces[at++];
+    }
+  }
+  runStart[runCount] = w;
+  welded.count = outCount;
+  return welded;
+}
+
+/** A polygon's `kept` triangles from triangle `tri` of `tris` (corner numbers from `first`) onto fileOrder at `w`, through polygonOut; returns the next w. */
+function polygonTriangles(tris: Int32Array, tri: number, kept: number, first: number, fileOrder: Uint32Array, w: number): number {
+  for (let t = 3 * tri; t < 3 * (tri + kept); t++) fileOrder[w++] = polygonOut[tris[t] - first];
+  return w;
 }
 
 function doubled(a: Int32Array<ArrayBuffer>): Int32Array<ArrayBuffer> {
@@ -135,7 +197,7 @@ function doubled(a: Int32Array<ArrayBuffer>): Int32Array<ArrayBuffer> {
 }
 
 /** Newell normal of the face of `count` corners from `first`, length twice its area: summing it weights faces by area. */
-function newellNormal(pos: Float64Array, corners: Int32Array, first: number, count: number, out: Float64Array): void {
+function newellNormal(pos: Float64Array, corners: Int32Array, first: number, count: number, out: Float64Array): true {
   let nx = 0, ny = 0, nz = 0;
   let j = 3 * corners[first + count - 1];
   for (let k = 0; k < count; k++) {
@@ -146,6 +208,7 @@ function newellNormal(pos: Float64Array, corners: Int32Array, first: number, cou
     j = i;
   }
   out[0] = nx; out[1] = ny; out[2] = nz;
+  return true;
 }
 
 /** The output vertices' arrays (uvs only if some corner has one, colours if the file gave any) and their bounds. */
