@@ -53,7 +53,7 @@ export default [
   },
   {
     name: 'B10 a face with a bad corner kept on the fast path',
-    edits: [{ file: 'src/loaders/obj/reader.ts', find: "if (this.addCorner(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) !== '') {", replace: "if (this.addCorner(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) === '#') {" }],
+    edits: [{ file: 'src/loaders/obj/reader.ts', find: "if (cornerLists.add(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) !== '') {", replace: "if (cornerLists.add(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) === '#') {" }],
     tests: [EQUAL],
   },
   {
