@@ -43,12 +43,18 @@ export class ByteScanner {
   /** Where the content starts (after the byte-order mark the caller skipped). */
   private readonly start: number;
 
-  /** `start`: past the byte-order mark, if the caller found one. */
+  /**
+   * `start`: past the byte-order mark, if the caller found one. Content that does not end in a
+   * line end is read from a copy with a LF after its `length` bytes, never read as content: so
+   * a scan over digits or blanks always meets a line end within `bytes`, and those loops read
+   * the next byte with no test for the end (where they meet the added LF, `p` is `length`).
+   */
   constructor(bytes: Uint8Array, start = 0) {
-    this.bytes = bytes;
+    const last = bytes.length > 0 ? bytes[bytes.length - 1] : LF;
+    const b = last === LF || last === CR ? bytes : withLineEnd(bytes);
+    this.bytes = b;
     this.length = bytes.length;
     this.start = start;
-    const b = bytes;
     // A second mark, as scanner.ts skips a U+FEFF left in by the caller's decoder.
     this.pos = b[start] === 0xef && b[start + 1] === 0xbb && b[start + 2] === 0xbf ? start + 3 : start;
   }
@@ -140,7 +146,7 @@ export class ByteScanner {
     let count = 0;
     for (;;) {
       let c = p < n ? b[p] : EOF;
-      while (c === SPACE || c === TAB) c = ++p < n ? b[p] : EOF;
+      while (c === SPACE || c === TAB) c = b[++p];
       if (c === LF || c === CR || c === EOF) break;
       if (count === values.length) return -1;
       const end = this.numberEnd(p);
@@ -165,21 +171,21 @@ export class ByteScanner {
     let count = 0;
     for (;;) {
       let c = p < n ? b[p] : EOF;
-      while (c === SPACE || c === TAB) c = ++p < n ? b[p] : EOF;
+      while (c === SPACE || c === TAB) c = b[++p];
       if (c === LF || c === CR || c === EOF) break;
       if (3 * count === raw.length) return -1;
       for (let field = 0; field < 3; field++) {
         let negative = false;
         if (c === MINUS || c === PLUS) {
           negative = c === MINUS;
-          c = ++p < n ? b[p] : EOF;
+          c = b[++p];
         }
         let value = 0;
         let digits = 0;
         while (c >= ZERO && c <= NINE) {
           if (++digits > 9) return -1;
           value = value * 10 + (c - ZERO);
-          c = ++p < n ? b[p] : EOF;
+          c = b[++p];
         }
         if (digits === 0 && negative) return -1;
         raw[3 * count + field] = negative ? -value : value;
@@ -188,7 +194,7 @@ export class ByteScanner {
           break;
         }
         if (field === 2) return -1; // a fourth field
-        c = ++p < n ? b[p] : EOF;
+        c = b[++p];
       }
       if (c !== SPACE && c !== TAB && c !== LF && c !== CR && c !== EOF) return -1;
       count++;
@@ -211,7 +217,7 @@ export class ByteScanner {
     let negative = false;
     if (c === MINUS || c === PLUS) {
       negative = c === MINUS;
-      c = ++p < n ? b[p] : EOF;
+      c = b[++p];
     }
     let mantissa = 0;
     let digits = 0;
@@ -219,31 +225,31 @@ export class ByteScanner {
     while (c >= ZERO && c <= NINE) {
       mantissa = mantissa * 10 + (c - ZERO);
       digits++;
-      c = ++p < n ? b[p] : EOF;
+      c = b[++p];
     }
     if (c === DOT) {
-      c = ++p < n ? b[p] : EOF;
+      c = b[++p];
       while (c >= ZERO && c <= NINE) {
         mantissa = mantissa * 10 + (c - ZERO);
         digits++;
         scale++;
-        c = ++p < n ? b[p] : EOF;
+        c = b[++p];
       }
     }
     if (digits === 0) return -1;
     let exponent = 0;
     if (c === LOWER_E || c === UPPER_E) {
-      c = ++p < n ? b[p] : EOF;
+      c = b[++p];
       let expNegative = false;
       if (c === MINUS || c === PLUS) {
         expNegative = c === MINUS;
-        c = ++p < n ? b[p] : EOF;
+        c = b[++p];
       }
       let expDigits = 0;
       while (c >= ZERO && c <= NINE) {
         if (exponent < EXPONENT_CAP) exponent = exponent * 10 + (c - ZERO);
         expDigits++;
-        c = ++p < n ? b[p] : EOF;
+        c = b[++p];
       }
       if (expDigits === 0) return -1;
       if (expNegative) exponent = -exponent;
@@ -267,14 +273,14 @@ export class ByteScanner {
     let negative = false;
     if (c === MINUS || c === PLUS) {
       negative = c === MINUS;
-      c = ++p < n ? b[p] : EOF;
+      c = b[++p];
     }
     let value = 0;
     let digits = 0;
     while (c >= ZERO && c <= NINE) {
       value = value * 10 + (c - ZERO);
       digits++;
-      c = ++p < n ? b[p] : EOF;
+      c = b[++p];
     }
     if (c !== SLASH && !isDelimiterAt(b, p, n)) return this.skipBadToken();
     if (digits === 0 && negative) return this.skipBadToken();
@@ -356,6 +362,14 @@ export class ByteScanner {
     this.line++;
     return true;
   }
+}
+
+/** `bytes` and a LF. */
+function withLineEnd(bytes: Uint8Array): Uint8Array {
+  const b = new Uint8Array(bytes.length + 1);
+  b.set(bytes);
+  b[bytes.length] = LF;
+  return b;
 }
 
 /** End of the token at `p`: whitespace, line end, comment, continuation or the end. */
