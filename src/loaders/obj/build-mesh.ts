@@ -34,8 +34,10 @@ interface Welded {
   fileOrder: Uint32Array;
   /** Per run of raw.runs: where its triangles start in `fileOrder`, and one entry more: the end. */
   runStart: Int32Array;
-  /** REC ints per output vertex. */
-  rec: Int32Array<ArrayBuffer>;
+  /** REC ints per output vertex; null from weldPositions, whose vertices need only `positionOf`. */
+  rec: Int32Array<ArrayBuffer> | null;
+  /** weldPositions's output vertices' positions (each its own generated normal in `acc`), else null. */
+  positionOf: Int32Array | null;
   /** Generated normals, summed area-weighted over the faces that share them (xyz per vertex). */
   acc: Float64Array<ArrayBuffer>;
 }
@@ -43,14 +45,16 @@ interface Welded {
 /** Output vertices of the polygon being welded, by corner (then mapped through its triangles). */
 let polygonOut = new Int32Array(64);
 
-/** What both welds start from: the output arrays, and vertex records for about one vertex a position. */
-function weldStart(raw: ObjRaw): Welded {
+/** What both welds start from: the output arrays, and room for about one vertex a position (in `rec` if `records`). */
+function weldStart(raw: ObjRaw, records: boolean): Welded {
+  const room = Math.max(64, raw.positions.length / 3);
   return {
     count: 0,
     fileOrder: new Uint32Array(3 * raw.triangleCount),
     runStart: new Int32Array(raw.runs.length / RUN_INTS + 1),
-    rec: new Int32Array(REC * Math.max(64, raw.positions.length / 3)),
-    acc: new Float64Array(3 * Math.max(64, raw.positions.length / 3)),
+    rec: records ? new Int32Array(REC * room) : null,
+    positionOf: records ? null : new Int32Array(room),
+    acc: new Float64Array(3 * room),
   };
 }
 
@@ -66,9 +70,9 @@ function weldCorners(raw: ObjRaw): Welded {
   for (let r = 1; r < runCount && oneGroup; r++) oneGroup = runs[r * RUN_INTS + 1] === runs[1];
   if (oneGroup) return weldPositions(raw);
   const corners = raw.corners.data, pos = raw.positions.data, faces = raw.faces.data;
-  const welded = weldStart(raw);
+  const welded = weldStart(raw, true);
   const { fileOrder, runStart } = welded;
-  let { rec, acc } = welded;
+  let rec = welded.rec!, acc = welded.acc;
   // Vertices sharing a position are chained from head[position]; chains are a few long.
   const head = new Int32Array(raw.positions.length / 3).fill(-1);
   const normal = new Float64Array(3);
@@ -132,7 +136,7 @@ function weldCorners(raw: ObjRaw): Welded {
     }
   }
   runStart[runCount] = w;
-  return { count: outCount, fileOrder, runStart, rec, acc };
+  return { count: outCount, fileOrder, runStart, rec, positionOf: null, acc };
 }
 
 /**
@@ -142,8 +146,9 @@ function weldCorners(raw: ObjRaw): Welded {
 function weldPositions(raw: ObjRaw): Welded {
   const corners = raw.corners.data, pos = raw.positions.data, faces = raw.faces.data;
   const runs = raw.runs.data, runCount = raw.runs.length / RUN_INTS;
-  const welded = weldStart(raw);
-  const { fileOrder, runStart, rec, acc } = welded;
+  const welded = weldStart(raw, false);
+  const { fileOrder, runStart, acc } = welded;
+  const positionOf = welded.positionOf!;
   const out = new Int32Array(raw.positions.length / 3).fill(-1); // per position: its output vertex
   const normal = new Float64Array(3);
   let outCount = 0;
@@ -161,13 +166,7 @@ function weldPositions(raw: ObjRaw): Welded {
         let o = out[v];
         if (o < 0) {
           o = out[v] = outCount++;
-          const q = REC * o;
-          rec[q + V] = v;
-          rec[q + T] = -1;
-          rec[q + N] = SMOOTH;
-          rec[q + K] = runs[1];
-          rec[q + CHAIN] = -1;
-          rec[q + REP] = o;
+          positionOf[o] = v;
         }
         if (count === 3) fileOrder[w++] = o;
         else polygonOut[k] = o;
@@ -214,16 +213,16 @@ function newellNormal(pos: Float64Array, corners: Int32Array, first: number, cou
 /** The output vertices' arrays (uvs only if some corner has one, colours if the file gave any) and their bounds. */
 function vertexArrays(raw: ObjRaw, w: Welded): Pick<ObjResult, 'positions' | 'normals' | 'uvs' | 'colors' | 'bounds'> {
   const pos = raw.positions.data, fileNormals = raw.normals.data, fileUvs = raw.uvs.data, fileColors = raw.colors?.data ?? null;
-  const { rec, acc, count: outCount } = w;
+  const { rec, positionOf, acc, count: outCount } = w;
   const positions = new Float32Array(outCount * 3);
   const normals = new Float32Array(outCount * 3);
   let hasUv = false;
-  for (let o = 0; o < outCount && !hasUv; o++) hasUv = rec[REC * o + T] >= 0;
+  for (let o = 0; rec && o < outCount && !hasUv; o++) hasUv = rec[REC * o + T] >= 0;
   const uvs = hasUv ? new Float32Array(outCount * 2) : null;
   const colors = fileColors ? new Float32Array(outCount * 3) : null;
   let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = -Infinity, maxY = -Infinity, maxZ = -Infinity;
   for (let o = 0; o < outCount; o++) {
-    const q = REC * o, p = 3 * rec[q + V];
+    const q = REC * o, p = 3 * (rec ? rec[q + V] : positionOf![o]);
     const x = pos[p], y = pos[p + 1], z = pos[p + 2];
     positions[3 * o] = x;
     positions[3 * o + 1] = y;
@@ -234,10 +233,10 @@ function vertexArrays(raw: ObjRaw, w: Welded): Pick<ObjResult, 'positions' | 'no
     if (y > maxY) maxY = y;
     if (z < minZ) minZ = z;
     if (z > maxZ) maxZ = z;
-    const n = rec[q + N];
+    const n = rec ? rec[q + N] : SMOOTH;
     if (n >= 0) writeUnit(normals, o, fileNormals, 3 * n);
-    else writeUnit(normals, o, acc, 3 * rec[q + REP]);
-    if (uvs) {
+    else writeUnit(normals, o, acc, 3 * (rec ? rec[q + REP] : o));
+    if (uvs && rec) {
       const t = rec[q + T];
       if (t >= 0) {
         uvs[2 * o] = fileUvs[2 * t];
