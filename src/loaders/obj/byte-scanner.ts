@@ -20,6 +20,8 @@ const ZERO = 48;
 const NINE = 57;
 const BACKSLASH = 92;
 const LOWER_E = 101;
+const LOWER_F = 102;
+const LOWER_V = 118;
 const UPPER_E = 69;
 /** What the cursor reads past the last byte. */
 const EOF = -1;
@@ -66,6 +68,14 @@ export class ByteScanner {
   /** The byte at `p`, NaN past the end (as charCodeAt). */
   code(p: number): number {
     return p < this.length ? this.bytes[p] : NaN;
+  }
+
+  /** At a line's start: 1 for `v `, 2 for `f ` (the statements with a fast path), else 0. */
+  plainKeyword(): number {
+    const p = this.pos;
+    if (p + 1 >= this.length || this.bytes[p + 1] !== SPACE) return 0;
+    const c = this.bytes[p];
+    return c === LOWER_V ? 1 : c === LOWER_F ? 2 : 0;
   }
 
   skipBlank(): void {

@@ -67,8 +67,8 @@ class ObjReader {
     const sc = this.sc;
     while (!sc.atEnd()) {
       // The usual lines, `v x y z` and `f a b c`, read on a fast path when they are plain.
-      const c0 = sc.code(sc.pos);
-      if (sc.code(sc.pos + 1) === 32 && ((c0 === 118 /* v */ && this.plainVertex()) || (c0 === 102 /* f */ && this.plainFace()))) continue;
+      const plain = sc.plainKeyword();
+      if ((plain === 1 && this.plainVertex()) || (plain === 2 && this.plainFace())) continue;
       this.statement();
     }
     const { positions, colors, uvs, normals, triangles, faces, faceCount, triangleCount, runs } = this;
