@@ -8,8 +8,9 @@ const SMOOTH = -1;
 /** …or flat (`k` = face number, so no other face shares the vertex). */
 const FLAT_FACE = -2;
 
-export function buildMesh(raw: ObjRaw): Omit<ObjResult, 'warnings'> {
-  const welded = weldCorners(raw);
+/** `byPosition`: a file of one smoothing group with neither uvs nor normals welds by position alone (tests turn it off to compare). */
+export function buildMesh(raw: ObjRaw, byPosition = true): Omit<ObjResult, 'warnings'> {
+  const welded = weldCorners(raw, byPosition);
   const { positions, normals, uvs, colors, bounds } = vertexArrays(raw, welded);
   const { indices, groups } = indexByMaterial(raw, welded);
   return {
@@ -63,10 +64,10 @@ function weldStart(raw: ObjRaw, records: boolean): Welded {
  * shared by the corners of one position in one smoothing group (whatever their uv) and sums the
  * Newell normals of their faces. The triangles' vertices are written as the faces are welded.
  */
-function weldCorners(raw: ObjRaw): Welded {
+function weldCorners(raw: ObjRaw, byPosition: boolean): Welded {
   const uvOf = raw.cornerUvs?.data ?? null, normalOf = raw.cornerNormals?.data ?? null;
   const runs = raw.runs.data, runCount = raw.runs.length / RUN_INTS;
-  let oneGroup = uvOf === null && normalOf === null && runs[1] >= 0;
+  let oneGroup = byPosition && uvOf === null && normalOf === null && runs[1] >= 0;
   for (let r = 1; r < runCount && oneGroup; r++) oneGroup = runs[r * RUN_INTS + 1] === runs[1];
   if (oneGroup) return weldPositions(raw);
   const corners = raw.corners.data, pos = raw.positions.data, faces = raw.faces.data;
