@@ -5,24 +5,11 @@
 // message text are decoded, span by span.
 import { decodeSpan } from '../decode-span';
 
-const SPACE = 32;
-const TAB = 9;
-const LF = 10;
-const VT = 11;
-const FF = 12;
-const CR = 13;
-const HASH = 35;
-const PLUS = 43;
-const MINUS = 45;
-const DOT = 46;
-const SLASH = 47;
-const ZERO = 48;
-const NINE = 57;
-const BACKSLASH = 92;
-const LOWER_E = 101;
-const LOWER_F = 102;
-const LOWER_V = 118;
-const UPPER_E = 69;
+// The bytes the grammar looks at (constants here, not imported: the hot loops compare with them).
+const SPACE = 32, TAB = 9, LF = 10, VT = 11, FF = 12, CR = 13, HASH = 35, BACKSLASH = 92;
+const PLUS = 43, MINUS = 45, DOT = 46, SLASH = 47, ZERO = 48, NINE = 57, UPPER_E = 69, LOWER_E = 101;
+const LOWER_F = 102, LOWER_V = 118;
+
 /** What the cursor reads past the last byte. */
 const EOF = -1;
 /** Bytes enough to hold 40 UTF-16 units and more: `shown` cuts a token at 40. */
