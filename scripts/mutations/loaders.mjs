@@ -7,21 +7,22 @@ const BEZIER = 'tests/unit/course-byu-bezier.test.ts';
 const CAMERA = 'tests/unit/course-camera.test.ts';
 const LIGHTING = 'tests/unit/course-lighting.test.ts';
 const READER = 'src/loaders/obj/reader.ts';
+const CORNERS = 'src/loaders/obj/corners.ts';
 
 export default [
   {
     name: 'L1 a negative vn index read as positive',
-    edits: [{ file: READER, find: 'ni = nn === 0 ? -1 : resolve(nn, nCount);', replace: 'ni = nn === 0 ? -1 : resolve(Math.abs(nn), nCount);' }],
+    edits: [{ file: CORNERS, find: 'ni = nn === 0 ? -1 : resolve(nn, nCount);', replace: 'ni = nn === 0 ? -1 : resolve(Math.abs(nn), nCount);' }],
     tests: [OBJ],
   },
   {
     name: 'L2 positive OBJ indices read as 0-based (off by one)',
-    edits: [{ file: READER, find: 'const i = index > 0 ? index - 1 : count + index;', replace: 'const i = index > 0 ? index : count + index;' }],
+    edits: [{ file: CORNERS, find: 'const i = index > 0 ? index - 1 : count + index;', replace: 'const i = index > 0 ? index : count + index;' }],
     tests: [OBJ],
   },
   {
     name: 'L3 a negative vt index counted back from the vertices',
-    edits: [{ file: READER, find: 'ti = t === 0 ? -1 : resolve(t, tCount)', replace: 'ti = t === 0 ? -1 : resolve(t, vCount)' }],
+    edits: [{ file: CORNERS, find: 'ti = t === 0 ? -1 : resolve(t, tCount), ni', replace: 'ti = t === 0 ? -1 : resolve(t, vCount), ni' }],
     tests: [OBJ],
   },
   {

@@ -1,9 +1,17 @@
 // The OBJ parser over bytes (issue 22): byte-scanner.ts's numbers, line ends, continuations and
 // decoded names, and parseObjBytes's BOM. Each is caught by the comparison with the text parser
 // (obj-bytes.test.ts) or by the million tokens against parseFloat (obj-bytes-numbers.test.ts).
+// B14 on: the speed line's fast paths (plain lines, the weld by position, the line end added
+// after the content, runs of material and smoothing), caught by obj-fast.test.ts's comparisons
+// with the general way or by the loader's own tests.
 const BYTES = 'src/loaders/obj/byte-scanner.ts';
 const EQUAL = 'tests/unit/obj-bytes.test.ts';
 const NUMBERS = 'tests/unit/obj-bytes-numbers.test.ts';
+const FAST = 'tests/unit/obj-fast.test.ts';
+const OBJ = 'tests/unit/obj.test.ts';
+const POLYGONS = 'tests/unit/obj-polygons.test.ts';
+const MESH = 'src/loaders/obj/build-mesh.ts';
+const CORNERS = 'src/loaders/obj/corners.ts';
 
 export default [
   {
@@ -53,7 +61,7 @@ export default [
   },
   {
     name: 'B10 a face with a bad corner kept on the fast path',
-    edits: [{ file: 'src/loaders/obj/reader.ts', find: "if (this.addCorner(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) !== '') {", replace: "if (this.addCorner(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) === '#') {" }],
+    edits: [{ file: 'src/loaders/obj/reader.ts', find: "if (cornerLists.add(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) !== '') {", replace: "if (cornerLists.add(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) === '#') {" }],
     tests: [EQUAL],
   },
   {
@@ -70,5 +78,70 @@ export default [
     name: 'B13 a fault\'s line quoted from 60 bytes back, not 60 characters',
     edits: [{ file: BYTES, find: 'from > this.pos - 240', replace: 'from > this.pos - 60' }],
     tests: [EQUAL],
+  },
+  {
+    name: 'B14 a file with uvs welded by position (its uvs lost)',
+    edits: [{ file: MESH, find: 'let oneGroup = byPosition && uvOf === null && normalOf === null && runs[1] >= 0;', replace: 'let oneGroup = byPosition && normalOf === null && runs[1] >= 0;' }],
+    tests: [OBJ, FAST],
+  },
+  {
+    name: 'B15 a file under s off welded by position (smooth, not flat)',
+    edits: [{ file: MESH, find: 'let oneGroup = byPosition && uvOf === null && normalOf === null && runs[1] >= 0;', replace: 'let oneGroup = byPosition && uvOf === null && normalOf === null && runs[1] >= -1;' }],
+    tests: [POLYGONS, FAST],
+  },
+  {
+    name: 'B16 a second smoothing group welded by position with the first',
+    edits: [{ file: MESH, find: 'oneGroup = runs[r * RUN_INTS + 1] === runs[1];', replace: 'oneGroup = runs[r * RUN_INTS + 1] >= 0;' }],
+    tests: [POLYGONS, FAST],
+  },
+  {
+    name: 'B17 the weld by position shares no vertex between faces',
+    edits: [{ file: MESH, find: 'let o = out[v];', replace: 'let o = -1;' }],
+    tests: [OBJ, FAST],
+  },
+  {
+    name: 'B18 a material that comes back after another not regrouped',
+    edits: [{ file: MESH, find: 'else if (m !== runs[(r - 1) * RUN_INTS + 2]) inOrder = false;', replace: 'else if (m !== runs[(r - 1) * RUN_INTS + 2]) inOrder = true;' }],
+    tests: [OBJ],
+  },
+  {
+    name: 'B19 a usemtl starts no run (later faces keep the material before)',
+    edits: [{ file: 'src/loaders/obj/reader.ts', find: 'if (smooth !== this.runSmooth || material !== this.runMaterial) {', replace: 'if (smooth !== this.runSmooth) {' }],
+    tests: [OBJ],
+  },
+  {
+    name: 'B20 every polygon drawn with the first polygon\'s triangles',
+    edits: [{ file: MESH, find: 'for (let t = 3 * tri; t < 3 * (tri + kept); t++)', replace: 'for (let t = 0; t < 3 * kept; t++)' }],
+    tests: [POLYGONS, FAST],
+  },
+  {
+    name: 'B21 the first uv of the file read on the fast path (no uv list started)',
+    edits: [{ file: CORNERS, find: 'else if (t !== 0) return false;', replace: 'else if (t !== t) return false;' }],
+    tests: [FAST, EQUAL],
+  },
+  {
+    name: 'B22 a vertex index out of range kept on the fast path',
+    edits: [{ file: CORNERS, find: 'if (vi < 0) return false;', replace: 'if (vi < -2) return false;' }],
+    tests: [FAST, EQUAL],
+  },
+  {
+    name: 'B23 the line end added after the content read as content',
+    edits: [{ file: BYTES, find: 'this.length = bytes.length;', replace: 'this.length = b.length;' }],
+    tests: [NUMBERS, FAST],
+  },
+  {
+    name: 'B24 the byte added after the content a digit, not a line end',
+    edits: [{ file: BYTES, find: 'b[bytes.length] = LF;', replace: 'b[bytes.length] = 0x31;' }],
+    tests: [FAST, EQUAL],
+  },
+  {
+    name: 'B25 plain v lines read on the face path and f lines on the vertex path',
+    edits: [{ file: BYTES, find: 'return c === LOWER_V ? 1 : c === LOWER_F ? 2 : 0;', replace: 'return c === LOWER_V ? 2 : c === LOWER_F ? 1 : 0;' }],
+    tests: [FAST, EQUAL],
+  },
+  {
+    name: 'B26 the general weld shares a vertex whatever its uv',
+    edits: [{ file: MESH, find: 'if (rec[q + T] === t) break;', replace: 'break;' }],
+    tests: [OBJ],
   },
 ];

@@ -1,6 +1,6 @@
 // Raw OBJ lists → indexed triangle mesh: one vertex per distinct (position, uv, normal source)
 // corner, generated normals per smoothing group, the index buffer sorted by material.
-import { FACE_INTS, type ObjRaw } from './raw';
+import { RUN_INTS, type ObjRaw } from './raw';
 import type { Bounds, DrawGroup, ObjResult } from './types';
 
 /** Key tag of a corner whose normal is generated smooth (`k` = smoothing slot)… */
@@ -8,10 +8,11 @@ const SMOOTH = -1;
 /** …or flat (`k` = face number, so no other face shares the vertex). */
 const FLAT_FACE = -2;
 
-export function buildMesh(raw: ObjRaw): Omit<ObjResult, 'warnings'> {
-  const welded = weldCorners(raw);
+/** `byPosition`: a file of one smoothing group with neither uvs nor normals welds by position alone (tests turn it off to compare). */
+export function buildMesh(raw: ObjRaw, byPosition = true): Omit<ObjResult, 'warnings'> {
+  const welded = weldCorners(raw, byPosition);
   const { positions, normals, uvs, colors, bounds } = vertexArrays(raw, welded);
-  const { indices, groups } = indexByMaterial(raw, welded.cornerOut, welded.count);
+  const { indices, groups } = indexByMaterial(raw, welded);
   return {
     positions, normals, uvs, colors, indices, groups, bounds,
     mtllibs: raw.mtllibs, objects: raw.objects, groupNames: raw.groupNames,
@@ -30,82 +31,163 @@ const V = 0, T = 1, N = 2, K = 3, CHAIN = 4, REP = 5;
 /** The output vertices: one per distinct corner, with where each comes from. */
 interface Welded {
   count: number;
-  /** Per corner of the file: its output vertex. */
-  cornerOut: Int32Array;
-  /** REC ints per output vertex. */
-  rec: Int32Array;
+  /** The triangles' output vertices, in file order (3 per triangle). */
+  fileOrder: Uint32Array;
+  /** Per run of raw.runs: where its triangles start in `fileOrder`, and one entry more: the end. */
+  runStart: Int32Array;
+  /** REC ints per output vertex; null from weldPositions, whose vertices need only `positionOf`. */
+  rec: Int32Array<ArrayBuffer> | null;
+  /** weldPositions's output vertices' positions (each its own generated normal in `acc`), else null. */
+  positionOf: Int32Array | null;
   /** Generated normals, summed area-weighted over the faces that share them (xyz per vertex). */
-  acc: Float64Array;
+  acc: Float64Array<ArrayBuffer>;
+}
+
+/** Output vertices of the polygon being welded, by corner (then mapped through its triangles). */
+let polygonOut = new Int32Array(64);
+
+/** What both welds start from: the output arrays, and room for about one vertex a position (in `rec` if `records`). */
+function weldStart(raw: ObjRaw, records: boolean): Welded {
+  const room = Math.max(64, raw.positions.length / 3);
+  return {
+    count: 0,
+    fileOrder: new Uint32Array(3 * raw.triangleCount),
+    runStart: new Int32Array(raw.runs.length / RUN_INTS + 1),
+    rec: records ? new Int32Array(REC * room) : null,
+    positionOf: records ? null : new Int32Array(room),
+    acc: new Float64Array(3 * room),
+  };
 }
 
 /**
  * One output vertex per distinct (position, uv, normal source) corner; a generated normal is
  * shared by the corners of one position in one smoothing group (whatever their uv) and sums the
- * Newell normals of their faces.
+ * Newell normals of their faces. The triangles' vertices are written as the faces are welded.
  */
-function weldCorners(raw: ObjRaw): Welded {
-  const corners = raw.corners.data;
+function weldCorners(raw: ObjRaw, byPosition: boolean): Welded {
   const uvOf = raw.cornerUvs?.data ?? null, normalOf = raw.cornerNormals?.data ?? null;
-  const faces = raw.faces.data;
-  const faceCount = raw.faces.length / FACE_INTS;
-  const cornerOut = new Int32Array(raw.corners.length);
+  const runs = raw.runs.data, runCount = raw.runs.length / RUN_INTS;
+  let oneGroup = byPosition && uvOf === null && normalOf === null && runs[1] >= 0;
+  for (let r = 1; r < runCount && oneGroup; r++) oneGroup = runs[r * RUN_INTS + 1] === runs[1];
+  if (oneGroup) return weldPositions(raw);
+  const corners = raw.corners.data, pos = raw.positions.data, faces = raw.faces.data;
+  const welded = weldStart(raw, true);
+  const { fileOrder, runStart } = welded;
+  let rec = welded.rec!, acc = welded.acc;
   // Vertices sharing a position are chained from head[position]; chains are a few long.
   const head = new Int32Array(raw.positions.length / 3).fill(-1);
-  // Most models have about one output vertex per position: room for that, doubled if need be.
-  let rec = new Int32Array(REC * Math.max(64, raw.positions.length / 3));
-  let acc = new Float64Array(rec.length / 2);
   const normal = new Float64Array(3);
   let outCount = 0;
-
-  for (let f = 0; f < faceCount; f++) {
-    const first = faces[f * FACE_INTS], count = faces[f * FACE_INTS + 1], smooth = faces[f * FACE_INTS + 4];
-    newellNormal(raw.positions.data, corners, first, count, normal);
-    for (let k = 0; k < count; k++) {
-      const c = first + k;
-      const v = corners[c], t = uvOf ? uvOf[c] : -1;
-      let n = normalOf ? normalOf[c] : -1;
-      let key = 0;
-      if (n < 0) {
-        key = smooth >= 0 ? smooth : f;
-        n = smooth >= 0 ? SMOOTH : FLAT_FACE;
-      }
-      let o = head[v];
-      let shared = -1; // a vertex of the same position and smoothing group, maybe another uv
-      while (o >= 0) {
-        const r = REC * o;
-        if (rec[r + N] === n && rec[r + K] === key) {
-          if (rec[r + T] === t) break;
-          if (shared < 0) shared = rec[r + REP];
+  let at = 0, c = 0, f = 0, w = 0, tri = 0; // in faces, corners, face numbers, fileOrder, raw.triangles
+  for (let r = 0; r < runCount; r++) {
+    runStart[r] = w;
+    const smooth = runs[r * RUN_INTS + 1];
+    const end = r + 1 < runCount ? runs[(r + 1) * RUN_INTS] : raw.faceCount;
+    for (; f < end; f++) {
+      const count = faces[at++];
+      if (count > polygonOut.length) polygonOut = new Int32Array(Math.max(count, 2 * polygonOut.length));
+      let haveNormal = false; // the face's Newell normal, once a corner needs it
+      for (let k = 0; k < count; k++, c++) {
+        const v = corners[c], t = uvOf ? uvOf[c] : -1;
+        let n = normalOf ? normalOf[c] : -1;
+        let key = 0;
+        if (n < 0) {
+          key = smooth >= 0 ? smooth : f;
+          n = smooth >= 0 ? SMOOTH : FLAT_FACE;
         }
-        o = rec[r + CHAIN];
-      }
-      if (o < 0) {
-        if (REC * outCount === rec.length) {
-          rec = doubled(rec);
-          const more = new Float64Array(2 * acc.length);
-          more.set(acc);
-          acc = more;
+        let o = head[v];
+        let shared = -1; // a vertex of the same position and smoothing group, maybe another uv
+        while (o >= 0) {
+          const q = REC * o;
+          if (rec[q + N] === n && rec[q + K] === key) {
+            if (rec[q + T] === t) break;
+            if (shared < 0) shared = rec[q + REP];
+          }
+          o = rec[q + CHAIN];
         }
-        o = outCount++;
-        const r = REC * o;
-        rec[r + V] = v;
-        rec[r + T] = t;
-        rec[r + N] = n;
-        rec[r + K] = key;
-        rec[r + CHAIN] = head[v];
-        rec[r + REP] = shared >= 0 ? shared : o;
-        head[v] = o;
+        if (o < 0) {
+          if (REC * outCount === rec.length) {
+            rec = doubled(rec);
+            const more = new Float64Array(2 * acc.length);
+            more.set(acc);
+            acc = more;
+          }
+          o = outCount++;
+          const q = REC * o;
+          rec[q + V] = v;
+          rec[q + T] = t;
+          rec[q + N] = n;
+          rec[q + K] = key;
+          rec[q + CHAIN] = head[v];
+          rec[q + REP] = shared >= 0 ? shared : o;
+          head[v] = o;
+        }
+        if (count === 3) fileOrder[w++] = o;
+        else polygonOut[k] = o;
+        if (n < 0) {
+          if (!haveNormal) haveNormal = newellNormal(pos, corners, c - k, count, normal);
+          const a = 3 * rec[REC * o + REP];
+          acc[a] += normal[0];
+          acc[a + 1] += normal[1];
+          acc[a + 2] += normal[2];
+        }
       }
-      cornerOut[c] = o;
-      if (n < 0) {
-        const a = 3 * rec[REC * o + REP];
-        acc[a] += normal[0];
-        acc[a + 1] += normal[1];
-        acc[a + 2] += normal[2];
-      }
+      if (count > 3) w = polygonTriangles(raw.triangles.data, tri, faces[at], c - count, fileOrder, w);
+      if (count > 3) tri += faces[at++];
     }
   }
-  return { count: outCount, cornerOut, rec, acc };
+  runStart[runCount] = w;
+  return { count: outCount, fileOrder, runStart, rec, positionOf: null, acc };
+}
+
+/**
+ * weldCorners for a file of one smoothing group with neither uvs nor normals (a scan, most
+ * often): one output vertex per position used, in order of first use, each its own normal.
+ */
+function weldPositions(raw: ObjRaw): Welded {
+  const corners = raw.corners.data, pos = raw.positions.data, faces = raw.faces.data;
+  const runs = raw.runs.data, runCount = raw.runs.length / RUN_INTS;
+  const welded = weldStart(raw, false);
+  const { fileOrder, runStart, acc } = welded;
+  const positionOf = welded.positionOf!;
+  const out = new Int32Array(raw.positions.length / 3).fill(-1); // per position: its output vertex
+  const normal = new Float64Array(3);
+  let outCount = 0;
+  let at = 0, c = 0, f = 0, w = 0, tri = 0;
+  for (let r = 0; r < runCount; r++) {
+    runStart[r] = w;
+    const end = r + 1 < runCount ? runs[(r + 1) * RUN_INTS] : raw.faceCount;
+    for (; f < end; f++) {
+      const count = faces[at++];
+      if (count > polygonOut.length) polygonOut = new Int32Array(Math.max(count, 2 * polygonOut.length));
+      newellNormal(pos, corners, c, count, normal);
+      const nx = normal[0], ny = normal[1], nz = normal[2];
+      for (let k = 0; k < count; k++, c++) {
+        const v = corners[c];
+        let o = out[v];
+        if (o < 0) {
+          o = out[v] = outCount++;
+          positionOf[o] = v;
+        }
+        if (count === 3) fileOrder[w++] = o;
+        else polygonOut[k] = o;
+        acc[3 * o] += nx;
+        acc[3 * o + 1] += ny;
+        acc[3 * o + 2] += nz;
+      }
+      if (count > 3) w = polygonTriangles(raw.triangles.data, tri, faces[at], c - count, fileOrder, w);
+      if (count > 3) tri += faces[at++];
+    }
+  }
+  runStart[runCount] = w;
+  welded.count = outCount;
+  return welded;
+}
+
+/** A polygon's `kept` triangles from triangle `tri` of `tris` (corner numbers from `first`) onto fileOrder at `w`, through polygonOut; returns the next w. */
+function polygonTriangles(tris: Int32Array, tri: number, kept: number, first: number, fileOrder: Uint32Array, w: number): number {
+  for (let t = 3 * tri; t < 3 * (tri + kept); t++) fileOrder[w++] = polygonOut[tris[t] - first];
+  return w;
 }
 
 function doubled(a: Int32Array<ArrayBuffer>): Int32Array<ArrayBuffer> {
@@ -115,7 +197,7 @@ function doubled(a: Int32Array<ArrayBuffer>): Int32Array<ArrayBuffer> {
 }
 
 /** Newell normal of the face of `count` corners from `first`, length twice its area: summing it weights faces by area. */
-function newellNormal(pos: Float64Array, corners: Int32Array, first: number, count: number, out: Float64Array): void {
+function newellNormal(pos: Float64Array, corners: Int32Array, first: number, count: number, out: Float64Array): true {
   let nx = 0, ny = 0, nz = 0;
   let j = 3 * corners[first + count - 1];
   for (let k = 0; k < count; k++) {
@@ -126,41 +208,49 @@ function newellNormal(pos: Float64Array, corners: Int32Array, first: number, cou
     j = i;
   }
   out[0] = nx; out[1] = ny; out[2] = nz;
+  return true;
 }
 
 /** The output vertices' arrays (uvs only if some corner has one, colours if the file gave any) and their bounds. */
 function vertexArrays(raw: ObjRaw, w: Welded): Pick<ObjResult, 'positions' | 'normals' | 'uvs' | 'colors' | 'bounds'> {
-  const pos = raw.positions.data;
-  const outCount = w.count;
+  const pos = raw.positions.data, fileNormals = raw.normals.data, fileUvs = raw.uvs.data, fileColors = raw.colors?.data ?? null;
+  const { rec, positionOf, acc, count: outCount } = w;
   const positions = new Float32Array(outCount * 3);
   const normals = new Float32Array(outCount * 3);
   let hasUv = false;
-  for (let o = 0; o < outCount && !hasUv; o++) hasUv = w.rec[REC * o + T] >= 0;
+  for (let o = 0; rec && o < outCount && !hasUv; o++) hasUv = rec[REC * o + T] >= 0;
   const uvs = hasUv ? new Float32Array(outCount * 2) : null;
-  const colors = raw.colors ? new Float32Array(outCount * 3) : null;
-  const min: [number, number, number] = [Infinity, Infinity, Infinity];
-  const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
+  const colors = fileColors ? new Float32Array(outCount * 3) : null;
+  let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = -Infinity, maxY = -Infinity, maxZ = -Infinity;
   for (let o = 0; o < outCount; o++) {
-    const p = 3 * w.rec[REC * o + V];
-    for (let a = 0; a < 3; a++) {
-      const x = pos[p + a];
-      positions[3 * o + a] = x;
-      if (x < min[a]) min[a] = x;
-      if (x > max[a]) max[a] = x;
-    }
-    const n = w.rec[REC * o + N];
-    if (n >= 0) writeUnit(normals, o, raw.normals.data, 3 * n);
-    else writeUnit(normals, o, w.acc, 3 * w.rec[REC * o + REP]);
-    if (uvs) {
-      const t = w.rec[REC * o + T];
+    const q = REC * o, p = 3 * (rec ? rec[q + V] : positionOf![o]);
+    const x = pos[p], y = pos[p + 1], z = pos[p + 2];
+    positions[3 * o] = x;
+    positions[3 * o + 1] = y;
+    positions[3 * o + 2] = z;
+    if (x < minX) minX = x;
+    if (x > maxX) maxX = x;
+    if (y < minY) minY = y;
+    if (y > maxY) maxY = y;
+    if (z < minZ) minZ = z;
+    if (z > maxZ) maxZ = z;
+    const n = rec ? rec[q + N] : SMOOTH;
+    if (n >= 0) writeUnit(normals, o, fileNormals, 3 * n);
+    else writeUnit(normals, o, acc, 3 * (rec ? rec[q + REP] : o));
+    if (uvs && rec) {
+      const t = rec[q + T];
       if (t >= 0) {
-        uvs[2 * o] = raw.uvs.data[2 * t];
-        uvs[2 * o + 1] = raw.uvs.data[2 * t + 1];
+        uvs[2 * o] = fileUvs[2 * t];
+        uvs[2 * o + 1] = fileUvs[2 * t + 1];
       }
     }
-    if (colors && raw.colors) colors.set(raw.colors.data.subarray(p, p + 3), 3 * o);
+    if (colors && fileColors) {
+      colors[3 * o] = fileColors[p];
+      colors[3 * o + 1] = fileColors[p + 1];
+      colors[3 * o + 2] = fileColors[p + 2];
+    }
   }
-  const bounds: Bounds = { min, max };
+  const bounds: Bounds = { min: [minX, minY, minZ], max: [maxX, maxY, maxZ] };
   return { positions, normals, uvs, colors, bounds };
 }
 
@@ -178,44 +268,42 @@ function writeUnit(normals: Float32Array, o: number, src: Float64Array, s: numbe
   }
 }
 
-/** The index buffer with each material's triangles contiguous (file order within one). */
-function indexByMaterial(raw: ObjRaw, cornerOut: Int32Array, outCount: number): { indices: Uint16Array | Uint32Array; groups: DrawGroup[] } {
-  const faces = raw.faces.data;
-  const faceCount = raw.faces.length / FACE_INTS;
-  let triangleCount = 0;
-  const materialCount = raw.materials.length;
-  const perMaterial = new Int32Array(materialCount);
+/**
+ * The index buffer with each material's triangles contiguous (file order within one), in the
+ * order of the materials' first use: the welded file order itself when no material comes back
+ * after another, else its runs copied to their material's place.
+ */
+function indexByMaterial(raw: ObjRaw, w: Welded): { indices: Uint16Array | Uint32Array; groups: DrawGroup[] } {
+  const runs = raw.runs.data, runCount = raw.runs.length / RUN_INTS;
+  const { fileOrder, runStart } = w;
+  const perMaterial = new Int32Array(raw.materials.length);
   const order: number[] = [];
-  for (let f = 0; f < faceCount; f++) {
-    const m = faces[f * FACE_INTS + 5];
+  let inOrder = true;
+  for (let r = 0; r < runCount; r++) {
+    const m = runs[r * RUN_INTS + 2];
     if (perMaterial[m] === 0) order.push(m);
-    perMaterial[m] += faces[f * FACE_INTS + 3];
-    triangleCount += faces[f * FACE_INTS + 3];
+    else if (m !== runs[(r - 1) * RUN_INTS + 2]) inOrder = false; // back to an earlier material
+    perMaterial[m] += runStart[r + 1] - runStart[r];
   }
-  const offset = new Int32Array(materialCount);
+  const offset = new Int32Array(raw.materials.length);
   const groups: DrawGroup[] = [];
   let at = 0;
   for (const m of order) {
     offset[m] = at;
-    groups.push({ material: raw.materials[m], start: 3 * at, count: 3 * perMaterial[m] });
+    groups.push({ material: raw.materials[m], start: at, count: perMaterial[m] });
     at += perMaterial[m];
   }
-  const indices = outCount > 65535 ? new Uint32Array(3 * triangleCount) : new Uint16Array(3 * triangleCount);
-  const tris = raw.triangles.data;
-  for (let f = 0; f < faceCount; f++) {
-    const m = faces[f * FACE_INTS + 5];
-    const firstTriangle = faces[f * FACE_INTS + 2];
-    const n = faces[f * FACE_INTS + 3];
-    let w = 3 * offset[m];
-    if (firstTriangle < 0) { // a triangle as written: its corners
-      const c = faces[f * FACE_INTS];
-      indices[w] = cornerOut[c];
-      indices[w + 1] = cornerOut[c + 1];
-      indices[w + 2] = cornerOut[c + 2];
-    } else {
-      for (let t = 3 * firstTriangle; t < 3 * (firstTriangle + n); t++) indices[w++] = cornerOut[tris[t]];
+  let sorted = fileOrder;
+  if (!inOrder) {
+    sorted = new Uint32Array(fileOrder.length);
+    for (let r = 0; r < runCount; r++) {
+      const m = runs[r * RUN_INTS + 2];
+      sorted.set(fileOrder.subarray(runStart[r], runStart[r + 1]), offset[m]);
+      offset[m] += runStart[r + 1] - runStart[r];
     }
-    offset[m] += n;
   }
+  if (w.count > 65535) return { indices: sorted, groups };
+  const indices = new Uint16Array(sorted.length);
+  indices.set(sorted);
   return { indices, groups };
 }

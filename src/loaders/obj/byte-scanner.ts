@@ -5,22 +5,11 @@
 // message text are decoded, span by span.
 import { decodeSpan } from '../decode-span';
 
-const SPACE = 32;
-const TAB = 9;
-const LF = 10;
-const VT = 11;
-const FF = 12;
-const CR = 13;
-const HASH = 35;
-const PLUS = 43;
-const MINUS = 45;
-const DOT = 46;
-const SLASH = 47;
-const ZERO = 48;
-const NINE = 57;
-const BACKSLASH = 92;
-const LOWER_E = 101;
-const UPPER_E = 69;
+// The bytes the grammar looks at (constants here, not imported: the hot loops compare with them).
+const SPACE = 32, TAB = 9, LF = 10, VT = 11, FF = 12, CR = 13, HASH = 35, BACKSLASH = 92;
+const PLUS = 43, MINUS = 45, DOT = 46, SLASH = 47, ZERO = 48, NINE = 57, UPPER_E = 69, LOWER_E = 101;
+const LOWER_F = 102, LOWER_V = 118;
+
 /** What the cursor reads past the last byte. */
 const EOF = -1;
 /** Bytes enough to hold 40 UTF-16 units and more: `shown` cuts a token at 40. */
@@ -43,12 +32,18 @@ export class ByteScanner {
   /** Where the content starts (after the byte-order mark the caller skipped). */
   private readonly start: number;
 
-  /** `start`: past the byte-order mark, if the caller found one. */
+  /**
+   * `start`: past the byte-order mark, if the caller found one. Content that does not end in a
+   * line end is read from a copy with a LF after its `length` bytes, never read as content: so
+   * a scan over digits or blanks always meets a line end within `bytes`, and those loops read
+   * the next byte with no test for the end (where they meet the added LF, `p` is `length`).
+   */
   constructor(bytes: Uint8Array, start = 0) {
-    this.bytes = bytes;
+    const last = bytes.length > 0 ? bytes[bytes.length - 1] : LF;
+    const b = last === LF || last === CR ? bytes : withLineEnd(bytes);
+    this.bytes = b;
     this.length = bytes.length;
     this.start = start;
-    const b = bytes;
     // A second mark, as scanner.ts skips a U+FEFF left in by the caller's decoder.
     this.pos = b[start] === 0xef && b[start + 1] === 0xbb && b[start + 2] === 0xbf ? start + 3 : start;
   }
@@ -60,6 +55,14 @@ export class ByteScanner {
   /** The byte at `p`, NaN past the end (as charCodeAt). */
   code(p: number): number {
     return p < this.length ? this.bytes[p] : NaN;
+  }
+
+  /** At a line's start: 1 for `v `, 2 for `f ` (the statements with a fast path), else 0. */
+  plainKeyword(): number {
+    const p = this.pos;
+    if (p + 1 >= this.length || this.bytes[p + 1] !== SPACE) return 0;
+    const c = this.bytes[p];
+    return c === LOWER_V ? 1 : c === LOWER_F ? 2 : 0;
   }
 
   skipBlank(): void {
@@ -140,7 +143,7 @@ export class ByteScanner {
     let count = 0;
     for (;;) {
       let c = p < n ? b[p] : EOF;
-      while (c === SPACE || c === TAB) c = ++p < n ? b[p] : EOF;
+      while (c === SPACE || c === TAB) c = b[++p];
       if (c === LF || c === CR || c === EOF) break;
       if (count === values.length) return -1;
       const end = this.numberEnd(p);
@@ -165,21 +168,21 @@ export class ByteScanner {
     let count = 0;
     for (;;) {
       let c = p < n ? b[p] : EOF;
-      while (c === SPACE || c === TAB) c = ++p < n ? b[p] : EOF;
+      while (c === SPACE || c === TAB) c = b[++p];
       if (c === LF || c === CR || c === EOF) break;
       if (3 * count === raw.length) return -1;
       for (let field = 0; field < 3; field++) {
         let negative = false;
         if (c === MINUS || c === PLUS) {
           negative = c === MINUS;
-          c = ++p < n ? b[p] : EOF;
+          c = b[++p];
         }
         let value = 0;
         let digits = 0;
         while (c >= ZERO && c <= NINE) {
           if (++digits > 9) return -1;
           value = value * 10 + (c - ZERO);
-          c = ++p < n ? b[p] : EOF;
+          c = b[++p];
         }
         if (digits === 0 && negative) return -1;
         raw[3 * count + field] = negative ? -value : value;
@@ -188,7 +191,7 @@ export class ByteScanner {
           break;
         }
         if (field === 2) return -1; // a fourth field
-        c = ++p < n ? b[p] : EOF;
+        c = b[++p];
       }
       if (c !== SPACE && c !== TAB && c !== LF && c !== CR && c !== EOF) return -1;
       count++;
@@ -211,7 +214,7 @@ export class ByteScanner {
     let negative = false;
     if (c === MINUS || c === PLUS) {
       negative = c === MINUS;
-      c = ++p < n ? b[p] : EOF;
+      c = b[++p];
     }
     let mantissa = 0;
     let digits = 0;
@@ -219,31 +222,31 @@ export class ByteScanner {
     while (c >= ZERO && c <= NINE) {
       mantissa = mantissa * 10 + (c - ZERO);
       digits++;
-      c = ++p < n ? b[p] : EOF;
+      c = b[++p];
     }
     if (c === DOT) {
-      c = ++p < n ? b[p] : EOF;
+      c = b[++p];
       while (c >= ZERO && c <= NINE) {
         mantissa = mantissa * 10 + (c - ZERO);
         digits++;
         scale++;
-        c = ++p < n ? b[p] : EOF;
+        c = b[++p];
       }
     }
     if (digits === 0) return -1;
     let exponent = 0;
     if (c === LOWER_E || c === UPPER_E) {
-      c = ++p < n ? b[p] : EOF;
+      c = b[++p];
       let expNegative = false;
       if (c === MINUS || c === PLUS) {
         expNegative = c === MINUS;
-        c = ++p < n ? b[p] : EOF;
+        c = b[++p];
       }
       let expDigits = 0;
       while (c >= ZERO && c <= NINE) {
         if (exponent < EXPONENT_CAP) exponent = exponent * 10 + (c - ZERO);
         expDigits++;
-        c = ++p < n ? b[p] : EOF;
+        c = b[++p];
       }
       if (expDigits === 0) return -1;
       if (expNegative) exponent = -exponent;
@@ -267,14 +270,14 @@ export class ByteScanner {
     let negative = false;
     if (c === MINUS || c === PLUS) {
       negative = c === MINUS;
-      c = ++p < n ? b[p] : EOF;
+      c = b[++p];
     }
     let value = 0;
     let digits = 0;
     while (c >= ZERO && c <= NINE) {
       value = value * 10 + (c - ZERO);
       digits++;
-      c = ++p < n ? b[p] : EOF;
+      c = b[++p];
     }
     if (c !== SLASH && !isDelimiterAt(b, p, n)) return this.skipBadToken();
     if (digits === 0 && negative) return this.skipBadToken();
@@ -356,6 +359,14 @@ export class ByteScanner {
     this.line++;
     return true;
   }
+}
+
+/** `bytes` and a LF. */
+function withLineEnd(bytes: Uint8Array): Uint8Array {
+  const b = new Uint8Array(bytes.length + 1);
+  b.set(bytes);
+  b[bytes.length] = LF;
+  return b;
 }
 
 /** End of the token at `p`: whitespace, line end, comment, continuation or the end. */

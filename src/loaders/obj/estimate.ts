@@ -19,7 +19,7 @@ export interface Capacities {
   corners: number;
   /** Ints: 3 per triangle. */
   triangles: number;
-  /** Faces (the caller multiplies by its ints per face). */
+  /** Ints of the face list: one per face, two per polygon (raw.ts). */
   faces: number;
 }
 
@@ -37,9 +37,9 @@ export function estimateCapacities(b: Uint8Array): Capacities | null {
     uvs: 2 * Math.ceil(count.vt * scale),
     normals: 3 * Math.ceil(count.vn * scale),
     corners,
-    // A polygon of n corners is n − 2 triangles; a face of 3 is none (raw.ts: FACE_INTS).
+    // A polygon of n corners is n − 2 triangles; a face of 3 is none (raw.ts).
     triangles: 3 * Math.max(0, Math.ceil(count.polygonCorners * scale) - 2 * Math.ceil(count.polygons * scale)),
-    faces: Math.ceil(count.f * scale),
+    faces: Math.ceil((count.f + count.polygons) * scale),
   };
 }
 

@@ -53,6 +53,12 @@ export class I32List {
     this.length += 3;
   }
 
+  /** Room for `extra` more; returns `data` (written from `length` on, then `length` set by the caller). */
+  reserve(extra: number): Int32Array {
+    if (this.length + extra > this.data.length) this.grow(this.length + extra);
+    return this.data;
+  }
+
   clear(): void {
     this.length = 0;
   }

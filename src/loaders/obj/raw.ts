@@ -4,12 +4,8 @@ import type { Warnings } from '../warnings';
 
 /** Smoothing slot of faces under `s off` / `s 0`: flat normals. */
 export const FLAT = -1;
-/**
- * Ints per face record: first corner, corner count, first triangle, triangle count, smoothing
- * slot, material. A triangle as written has no entry in `triangles` (its first triangle is −1):
- * it is its three corners, in order.
- */
-export const FACE_INTS = 6;
+/** Ints per run of `runs`: its first face (a kept face's number), smoothing slot, material. */
+export const RUN_INTS = 3;
 
 export interface ObjRaw {
   positions: F64List;
@@ -17,15 +13,24 @@ export interface ObjRaw {
   colors: F64List | null;
   uvs: F64List;
   normals: F64List;
-  /** Per kept corner: its position index (0-based). */
+  /** Per kept corner: its position index (0-based). A face's corners follow the face before's. */
   corners: I32List;
   /** Per kept corner: its uv index, −1 for none; null while no corner has one (then filled with −1 back to the first). */
   cornerUvs: I32List | null;
   /** Per kept corner: its normal index, −1 for none; null while no corner has one. */
   cornerNormals: I32List | null;
-  /** Per triangle of a kept polygon: three global corner numbers (a face of 3 has none: FACE_INTS). */
+  /** Per triangle of a kept polygon: three global corner numbers (a triangle as written has none). */
   triangles: I32List;
+  /**
+   * Per kept face, in order: its corner count; a polygon's (more than 3) is followed by how
+   * many of `triangles` it kept (they follow the polygon before's). A triangle is 1 int.
+   */
   faces: I32List;
+  faceCount: number;
+  /** Triangles of every kept face, as drawn. */
+  triangleCount: number;
+  /** Where the smoothing slot or material changes: RUN_INTS ints a run of kept faces, in order. */
+  runs: I32List;
   materials: (string | null)[];
   objects: string[];
   groupNames: string[];

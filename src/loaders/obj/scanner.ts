@@ -196,6 +196,10 @@ export class Scanner {
   }
 
   /** byte-scanner.ts reads plain statements on a fast path first; text always goes the general way. */
+  plainKeyword(): number {
+    return 0;
+  }
+
   readPlainNumbers(_values: Float64Array): number {
     return -1;
   }

@@ -1,0 +1,103 @@
+// The OBJ parser's fast paths (issue 22's speed line): plain `v` and `f` lines read straight
+// into the lists, the weld by position alone for a file of one smoothing group with neither uvs
+// nor normals, and the byte scanner's reads past a file that ends without a line end. Each must
+// give exactly what the general way gives: the bytes against the text (which never takes a fast
+// path), the weld by position against the general weld.
+import { describe, expect, it } from 'vitest';
+import { decodeText } from '../../src/loaders/decode-text';
+import { parseObj, parseObjBytes } from '../../src/loaders/obj';
+import { buildMesh } from '../../src/loaders/obj/build-mesh';
+import { ByteScanner } from '../../src/loaders/obj/byte-scanner';
+import { readObj } from '../../src/loaders/obj/reader';
+import { bunnyObj, dragonObj } from '../data/make-obj';
+import { expectSameOutcome, outcomeOf } from './obj-same';
+
+const utf8 = (text: string): Uint8Array => new TextEncoder().encode(text);
+const TRI = 'v 0 0 0\nv 1 0 0\nv 0 1 0\n';
+const QUAD = 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n';
+
+function expectBytesAsText(text: string, label: string): void {
+  const bytes = utf8(text);
+  const want = outcomeOf(() => parseObj(decodeText(bytes), { url: 'm.obj' }));
+  expectSameOutcome(outcomeOf(() => parseObjBytes(bytes, { url: 'm.obj' })), want, label);
+}
+
+/** Plain lines (the fast path's) next to lines it must hand back to the general way. */
+const CASES: [string, string][] = [
+  ['negative indices', `${TRI}f -3 -2 -1\nv 1 1 0\nf -1 -2 -3\nf -4 2 3\n`],
+  ['missing vt or vn, and f a//c', `${TRI}vt 0 0\nvt 1 0\nvn 0 0 1\nf 1 2 3\nf 1/1 2/2 3/1\nf 1//1 2//1 3//1\nf 1/1/1 2/2/1 3/1/1\nf 1 2/1 3//1\nf 3 2 1\n`],
+  ['the first uv and the first normal on a plain face', `${TRI}f 1 2 3\nvt 0 0\nf 1/1 2/1 3/1\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1 2 3\n`],
+  ['polygons of 4, 5 and 64 to 66 corners', `${QUAD}f 1 2 3 4\nv 0.5 1.5 0\nf 1 2 3 5 4\n` +
+    [64, 65, 66].map((n) => `f ${Array.from({ length: n }, (_, i) => 1 + (i % 4)).join(' ')}\nf 1 2 3 4\n`).join('')],
+  ['exponents, signs and long numbers', `v 1e-3 -2.5E+2 +3e0\nv .5 2. -0\nv 1e23 8.5e-23 123456789012345678\nv 1e400 0 0\nv 0 1e-400 0\nv 1e 2 3\n${TRI}f -3 -2 -1\nf 1 2 3\nf 4 2 3\n`],
+  ['trailing blanks and tabs', `v 0 0 0 \t\nv 1 0 0\t\nv\t0 1 0\nf 1 2 3 \t \nf\t1 2 3\nf 1\t2\t3\nf  1  2  3  \n`],
+  ['comments mid-file and after a statement', `# a\n${TRI}# b\nf 1 2 3 # c\nf 1 2 3#d\nv 1 1 1#e\n# f\nf 2 3 4\n`],
+  ['indices out of range, zero and past 9 digits', `${TRI}f 1 2 3\nf 1 2 4\nf 0 1 2\nf 1 2 999999999\nf 1 2 1234567890\nf 1/5 2 3\nf 1//2 2 3\nf 1 2 3\n`],
+  ['faces after a bad vertex', `v 0 0 0\nv 1 x 0\nv 1 0 0\nv 0 1 0\nf 1 3 4\nf 1 2 3\nf 3 4 1\n`],
+  ['too few corners and junk', `${TRI}f 1 2\nf\nf 1 2 x\nf 1/2/3/4 2 3\nf 1 2 3 \\\n 1\nf 1 2 3\n`],
+  ['colours', `v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0 1\nf 1 2 3\nv 1 1 1 0.5 0.5 0.5 1 2\nf 2 3 4\n`],
+  ['a vertex and a face at the very end', `${TRI}f 1 2 3\nv 1 1 2.5`],
+  ['a face at the very end', `${TRI}v 1 1 0\nf 2 3 4`],
+  ['a corner cut by the end', `${TRI}f 1 2 3\nf 1 2 -`],
+];
+
+const variants = (text: string): [string, string][] => [
+  ['', text], [' (CRLF)', text.replace(/\n/g, '\r\n')], [' (CR)', text.replace(/\n/g, '\r')], [' (BOM)', `\uFEFF${text}`],
+];
+
+describe('OBJ fast paths: the same result as the general way', () => {
+  it('reads plain lines, and the lines the fast path hands back, as the text parser reads them', () => {
+    for (const [name, text] of CASES) for (const [how, t] of variants(text)) expectBytesAsText(t, name + how);
+  });
+
+  it('names the line of a face the fast path hands back with an index out of range', () => {
+    const text = `${TRI}f 1 2 3\n\nf 1 2 999999999\nf 1 2 1234567890\n`;
+    for (const [how, t] of variants(text)) {
+      const r = parseObjBytes(utf8(t));
+      expect(r.warnings, how).toEqual([
+        { line: 6, message: 'vertex index 999999999 is outside the 3 vertices read so far; face dropped' },
+        { line: 7, message: 'vertex index 1234567890 is outside the 3 vertices read so far; face dropped' },
+      ]);
+      expect(r.indices.length, how).toBe(3);
+    }
+  });
+
+  it('reads the last number of a file with no line end after it, and stops at its end', () => {
+    const r = parseObjBytes(utf8(`${TRI}f 1 2 3\nv 0 1 0.125`));
+    expect(r.warnings).toEqual([]);
+    const last = parseObjBytes(utf8(`v 0 0 0\nv 1 0 0\nv 0 1 0.125\nf 1 2 3`));
+    expect([...last.positions.slice(6)]).toEqual([0, 1, 0.125]);
+    expect(r.indices.length).toBe(3);
+    const sc = new ByteScanner(utf8('1 22 0.5e1'));
+    const values = new Float64Array(8);
+    expect(sc.readPlainNumbers(values)).toBe(3);
+    expect([...values.slice(0, 3)]).toEqual([1, 22, 5]);
+    expect(sc.atEnd()).toBe(true);
+  });
+
+  it('welds by position alone exactly as the general weld', { timeout: 60_000 }, () => {
+    const files: [string, string][] = [
+      ['bunny', bunnyObj()],
+      ['dragon res4', dragonObj(4)],
+      ['polygons', `${QUAD}v 0.5 1.5 0.25\nf 1 2 3 5 4\nf 1 2 3 4\nf -5 -4 -3\n`],
+      ['colours', `v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0 1\nv 1 1 1\nf 1 2 3\nf 2 4 3\n`],
+      ['materials that come back', `${QUAD}usemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\nusemtl a\nf 2 3 4\ns 1\nusemtl b\nf 1 2 4\n`],
+      ['one named smoothing group', `s 1\n${QUAD}f 1 2 3\nf 1 3 4\ns 1\nf 2 3 4\n`],
+    ];
+    for (const [name, text] of files) {
+      const raw = readObj(text);
+      const fast = buildMesh(raw), general = buildMesh(raw, false);
+      expectSameOutcome({ ok: true, result: { ...fast, warnings: [] } }, { ok: true, result: { ...general, warnings: [] } }, name);
+    }
+  });
+
+  it('welds each smoothing group, uv and normal apart where the file has them', () => {
+    // Two smoothing groups meeting at an edge: its two positions have a vertex in each.
+    const r = parseObj(`${QUAD}s 1\nf 1 2 3\ns 2\nf 1 3 4\n`);
+    expect(r.positions.length / 3).toBe(6);
+    const flat = parseObj(`${QUAD}s off\nf 1 2 3\nf 1 3 4\n`);
+    expect(flat.positions.length / 3).toBe(6);
+    const uv = parseObj(`${QUAD}vt 0 0\nvt 1 1\nf 1/1 2/1 3/1\nf 1/2 3/1 4/1\n`);
+    expect(uv.positions.length / 3).toBe(5);
+  });
+});
