@@ -62,6 +62,9 @@ export default defineConfig(({ mode, command }) => {
             { name: 'core', tags: ['$initial'] },
             // A course camera's projection: its maths, the scene's depth range, FrameSetup's part.
             { name: 'course-projection', test: /src[\\/](frame[\\/]course-projection|scene[\\/]course-depth|math[\\/]course-camera)\.ts$/ },
+            // Flat shading, the Gaussian, the reflection's clustering (render/mesh-extras.ts), which
+            // the software renderer's chunk shares: one file, not one per generator.
+            { name: 'mesh-extras', test: /src[\\/](render[\\/]mesh-extras|scene[\\/]geometry[\\/](flat|gaussian|cluster))\.ts$/ },
             // Files loaded once per page (models, course files): shared by the children and camera-src.
             { name: 'model-cache', test: /src[\\/](element[\\/](absolute-url|children[\\/]model-cache)|loaders[\\/]load-error)\.ts$/ },
           ],

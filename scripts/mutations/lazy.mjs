@@ -42,13 +42,13 @@ export default [
     tests: [LOD],
   },
   {
-    name: 'Z8 only meshes, not Gaussians, ask for the clustering',
-    edits: [{ file: 'src/render/object-meshes.ts', find: "if (o.geometry.kind === 'mesh' || o.geometry.kind === 'gaussian') return true;", replace: "if (o.geometry.kind === 'mesh') return true;" }],
+    name: 'Z8 only meshes, not Gaussians, ask for the mesh extras (a Gaussian never drawn)',
+    edits: [{ file: 'src/render/object-meshes.ts', find: "if (k === 'gaussian' || (k === 'mesh' && state.tessellation === 'auto')) return true;", replace: "if (k === 'mesh' && state.tessellation === 'auto') return true;" }],
     tests: [LOD],
   },
   {
     name: 'Z9 a clustering chunk that failed is asked for again (a warning every frame)',
-    edits: [{ file: 'src/render/object-meshes.ts', find: '        this.clusteringFailed = true;\n', replace: '' }],
+    edits: [{ file: 'src/render/object-meshes.ts', find: '        this.extrasFailed = true;\n', replace: '' }],
     tests: [LOD],
   },
   {
@@ -60,5 +60,10 @@ export default [
     name: 'Z11 the core\'s own axis quaternion: the whole angle where the half belongs',
     edits: [{ file: 'src/scene/group-rotation.ts', find: 'const h = (deg * DEG) / 2,', replace: 'const h = deg * DEG,' }],
     tests: ['tests/unit/controls.test.ts'],
+  },
+  {
+    name: 'Z12 flat shading does not ask for the mesh extras (drawn smooth)',
+    edits: [{ file: 'src/render/object-meshes.ts', find: "  if (state.shading === 'flat') return true;\n", replace: '' }],
+    tests: [LOD],
   },
 ];

@@ -3,7 +3,6 @@
 // meshes as given. The WebGL renderer uploads and shares what this names; the software renderer
 // keeps it as it is. No GL here.
 import { boxMesh } from '../scene/geometry/box';
-import { gaussianMesh } from '../scene/geometry/gaussian';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import { segmentsForScreenRadius, sphereMesh } from '../scene/geometry/sphere';
 import type { Geometry } from '../scene/scene';
@@ -41,11 +40,16 @@ export function meshKey(g: Geometry, segments = 0): string {
   }
 }
 
-/** The triangles of `g` (a sphere at `segments`), before flat shading splits them per face. */
-export function buildMesh(g: Geometry, segments = 0): MeshData {
+/**
+ * The triangles of `g` (a sphere at `segments`), before flat shading splits them per face.
+ * `gaussian`: the Gaussian's generator (scene/geometry/gaussian.ts), which the core leaves out.
+ */
+export function buildMesh(g: Geometry, segments = 0, gaussian?: (resolution: number) => MeshData): MeshData {
   switch (g.kind) {
     case 'box': return boxMesh(g.size);
-    case 'gaussian': return gaussianMesh(g.resolution);
+    case 'gaussian':
+      if (!gaussian) throw new Error('buildMesh: a Gaussian needs its generator');
+      return gaussian(g.resolution);
     case 'mesh': return g.data;
     case 'sphere': return sphereMesh(g.radius, segments);
   }

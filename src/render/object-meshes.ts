@@ -8,13 +8,14 @@ import { Mesh } from './gl/mesh';
 import type { ResourceCounter } from './gl/resource-counter';
 import type { SharedResources } from './gl/shared-resources';
 import { SphereLod } from './sphere-lod';
-import { flatMesh } from '../scene/geometry/flat';
-import { GAUSSIAN_EXTENT } from '../scene/geometry/gaussian';
 import { REFLECTION_MAX_FRACTION, reflectionGrid } from '../frame/reflection-lod';
 import type { Geometry, Scene } from '../scene/scene';
+import type { MeshData } from '../scene/geometry/mesh-data';
 import type { ObjectMatrices } from '../frame/frame-setup';
 import { buildMesh, meshKey } from '../frame/mesh-choice';
 import type { FrameState } from '../frame/types';
+
+const NO_TRIANGLES: MeshData = { positions: new Float32Array(0), normals: new Float32Array(0), uvs: new Float32Array(0), indices: new Uint32Array(0) };
 
 interface Slot {
   geometry: Geometry | null;
@@ -31,22 +32,28 @@ interface Slot {
   reflection: Map<number, { key: string; mesh: Mesh } | null>;
 }
 
-type Clustering = typeof import('../scene/geometry/cluster');
+type Extras = typeof import('./mesh-extras');
 
 /** Largest side of a static geometry's own box, computed once per mesh. */
 const extents = new WeakMap<object, number>();
-function extentOf(g: Geometry, c: Clustering): number {
-  if (g.kind === 'gaussian') return 2 * GAUSSIAN_EXTENT;
+function extentOf(g: Geometry, c: Extras): number {
+  if (g.kind === 'gaussian') return 2 * c.GAUSSIAN_EXTENT;
   if (g.kind !== 'mesh') return 0;
   let e = extents.get(g.data);
   if (e === undefined) extents.set(g.data, (e = c.meshExtent(g.data.positions)));
   return e;
 }
 
-/** Whether a frame draws something the reflection may cluster: a mesh or a Gaussian, tessellation auto. */
-function clusters(state: FrameState, scene: Scene): boolean {
-  if (state.tessellation !== 'auto') return false;
-  for (const o of scene.objects) if (o.geometry.kind === 'mesh' || o.geometry.kind === 'gaussian') return true;
+/**
+ * Whether a frame needs the mesh extras: flat shading, a Gaussian, or (tessellation auto) a mesh
+ * whose reflection may be clustered.
+ */
+function needsExtras(state: FrameState, scene: Scene): boolean {
+  if (state.shading === 'flat') return true;
+  for (const o of scene.objects) {
+    const k = o.geometry.kind;
+    if (k === 'gaussian' || (k === 'mesh' && state.tessellation === 'auto')) return true;
+  }
   return false;
 }
 
@@ -63,23 +70,26 @@ export class ObjectMeshes {
   /** This frame's orthographic half-height (0: perspective), for the spheres' size on screen. */
   private orthoHalfHeight = 0;
   /**
-   * The reflection's mesh clustering (scene/geometry/cluster.ts), a chunk: loaded by load() the
-   * first time a scene has something to cluster; until then reflections draw the full meshes.
+   * Flat shading, the Gaussian and the reflection's clustering (mesh-extras.ts), a chunk: loaded
+   * by load() the first time a frame needs one. Until then (or if it cannot load) meshes are drawn
+   * smooth, Gaussians not at all, reflections with the full meshes.
    */
-  private clustering: Clustering | null = null;
-  private clusteringLoading: Promise<void> | null = null;
-  private clusteringFailed = false;
+  private extras: Extras | null = null;
+  private extrasLoading: Promise<void> | null = null;
+  private extrasFailed = false;
+  /** What a Gaussian draws while its generator is not in: nothing. */
+  private empty: Mesh | null = null;
 
-  /** See Renderer.load: the clustering, when `scene` has a mesh or a Gaussian and it is not in. */
+  /** See Renderer.load: the mesh extras, when this frame needs them and they are not in. */
   load(state: FrameState, scene: Scene): Promise<void> | null {
-    if (this.clustering || this.clusteringFailed || !clusters(state, scene)) return null;
-    return (this.clusteringLoading ??= import('../scene/geometry/cluster').then(
+    if (this.extras || this.extrasFailed || !needsExtras(state, scene)) return null;
+    return (this.extrasLoading ??= import('./mesh-extras').then(
       (chunk) => {
-        this.clustering = chunk;
+        this.extras = chunk;
       },
       (e: unknown) => {
-        this.clusteringFailed = true;
-        throw new Error(`the reflection's mesh clustering could not load (${String(e).slice(0, 200)}); reflections draw the full meshes`);
+        this.extrasFailed = true;
+        throw new Error(`flat shading, the Gaussian and the reflection's clustering could not load (${String(e).slice(0, 200)}); drawing smooth meshes, no Gaussian, full meshes in the reflection`);
       },
     ));
   }
@@ -106,15 +116,16 @@ export class ObjectMeshes {
   /** The mesh object `i` (geometry `g`, world bounds in `m`) draws with this frame. */
   get(i: number, g: Geometry, m: ObjectMatrices, state: FrameState): Mesh {
     const slot = (this.slots[i] ??= { geometry: null, flat: false, key: null, mesh: null, lod: null, lodFrame: -1, reflection: new Map() });
-    const flat = state.shading === 'flat';
+    const ex = this.extras, flat = state.shading === 'flat' && ex !== null;
     if (g.kind === 'sphere') {
       this.release(slot);
       slot.geometry = g;
       const lod = (slot.lod ??= new SphereLod(this.gl, this.counter));
       if (slot.lodFrame === this.frame && lod.mesh) return lod.mesh;
       slot.lodFrame = this.frame;
-      return lod.update(state, m.center, m.radius, g.radius, this.orthoHalfHeight);
+      return lod.update(state, m.center, m.radius, g.radius, this.orthoHalfHeight, ex && ex.flatMesh);
     }
+    if (g.kind === 'gaussian' && !ex) return (this.empty ??= new Mesh(this.gl, this.counter, NO_TRIANGLES));
     if (slot.geometry === g && slot.flat === flat && slot.mesh) return slot.mesh;
     slot.lod?.dispose();
     slot.lod = null;
@@ -122,8 +133,8 @@ export class ObjectMeshes {
     if (key !== slot.key) {
       this.release(slot);
       slot.mesh = this.shared.mesh(key, (counter) => {
-        const data = buildMesh(g);
-        return new Mesh(this.gl, counter, flat ? flatMesh(data) : data);
+        const data = buildMesh(g, 0, ex?.gaussianMesh);
+        return new Mesh(this.gl, counter, flat ? ex!.flatMesh(data) : data);
       });
       slot.key = key;
     }
@@ -139,7 +150,7 @@ export class ObjectMeshes {
    * (reflection-lod.ts); anything else draws what `get` gives the scene pass.
    */
   mirrored(i: number, g: Geometry, m: ObjectMatrices, state: FrameState, pixelsPerUnit: number): Mesh {
-    const full = this.get(i, g, m, state), c = this.clustering;
+    const full = this.get(i, g, m, state), c = this.extras;
     if (!c || state.tessellation !== 'auto' || (g.kind !== 'mesh' && g.kind !== 'gaussian')) return full;
     const grid = reflectionGrid(extentOf(g, c) * maxScale(m.model), pixelsPerUnit);
     if (grid === 0) return full;
@@ -149,8 +160,8 @@ export class ObjectMeshes {
       const key = `${slot.key}:cluster${grid}`;
       const flat = slot.flat;
       const mesh = this.shared.mesh(key, (counter) => {
-        const data = c.clusterMesh(buildMesh(g), grid);
-        return new Mesh(this.gl, counter, flat ? flatMesh(data) : data);
+        const data = c.clusterMesh(buildMesh(g, 0, c.gaussianMesh), grid);
+        return new Mesh(this.gl, counter, flat ? c.flatMesh(data) : data);
       });
       entry = { key, mesh };
       if (mesh.count > REFLECTION_MAX_FRACTION * full.count) {
@@ -173,6 +184,8 @@ export class ObjectMeshes {
 
   dispose(): void {
     this.trim(0);
+    this.empty?.dispose();
+    this.empty = null;
   }
 
   private release(slot: Slot): void {

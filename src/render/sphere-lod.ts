@@ -4,7 +4,7 @@
 import { Mesh } from './gl/mesh';
 import type { ResourceCounter } from './gl/resource-counter';
 import { sphereMesh } from '../scene/geometry/sphere';
-import { flatMesh } from '../scene/geometry/flat';
+import type { MeshData } from '../scene/geometry/mesh-data';
 import type { FrameState } from '../frame/types';
 import { sphereSegments } from '../frame/mesh-choice';
 
@@ -21,13 +21,16 @@ export class SphereLod {
    * The mesh to draw this frame for a sphere of `radius` (its own frame) whose world bounds are
    * `centre`, `worldRadius` (`orthoHalfHeight` as for sphereScreenRadius); rebuilt only when the segment count, radius or shading must change.
    */
-  update(state: FrameState, centre: ArrayLike<number>, worldRadius: number, radius: number, orthoHalfHeight = 0): Mesh {
+  update(
+    state: FrameState, centre: ArrayLike<number>, worldRadius: number, radius: number, orthoHalfHeight: number,
+    flatten: ((data: MeshData) => MeshData) | null,
+  ): Mesh {
     const wanted = sphereSegments(state, centre, worldRadius, orthoHalfHeight, 1, this.mesh ? this.segments : 0);
-    const flat = state.shading === 'flat';
+    const flat = state.shading === 'flat' && flatten !== null;
     if (!this.mesh || wanted !== this.segments || flat !== this.flat || radius !== this.radius) {
       this.mesh?.dispose();
       const data = sphereMesh(radius, wanted);
-      this.mesh = new Mesh(this.gl, this.counter, flat ? flatMesh(data) : data);
+      this.mesh = new Mesh(this.gl, this.counter, flat ? flatten!(data) : data);
       this.segments = wanted;
       this.flat = flat;
       this.radius = radius;

@@ -1,6 +1,7 @@
 // The triangle mesh each scene object is drawn with: the GL path's choice (frame/mesh-choice.ts),
 // per face when flat; built once per content and kept.
 import { flatMesh } from '../scene/geometry/flat';
+import { gaussianMesh } from '../scene/geometry/gaussian';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import type { Geometry } from '../scene/scene';
 import { buildMesh, meshKey, sphereSegments } from '../frame/mesh-choice';
@@ -30,7 +31,7 @@ export class SoftwareMeshes {
   private base(g: Geometry, state: FrameState, centre: ArrayLike<number>, radius: number, orthoHalfHeight: number, pixelScale: number): MeshData {
     if (g.kind === 'mesh') return g.data;
     const segments = g.kind === 'sphere' ? sphereSegments(state, centre, radius, orthoHalfHeight, pixelScale) : 0;
-    return this.cached(meshKey(g, segments), () => buildMesh(g, segments));
+    return this.cached(meshKey(g, segments), () => buildMesh(g, segments, gaussianMesh));
   }
 
   private cached(key: string, build: () => MeshData): MeshData {

@@ -3,7 +3,8 @@
 // REFLECTION_CELL_PX pixels of the reflection target at the object's centre, seen from the
 // MIRRORED eye. The triangle counts the frame reports are checked against that rule computed here,
 // in float64, from the camera, the glass and the target's size.
-import { test, expect, openPage, setAttributes, type SceneElement } from './fixtures';
+import { test, expect, openPage, setAttributes, capture, type SceneElement } from './fixtures';
+import { mountFirstFrame } from './helpers/scene-children';
 import { gaussianMesh, GAUSSIAN_EXTENT } from '../../src/scene/geometry/gaussian';
 import { clusterMesh } from '../../src/scene/geometry/cluster';
 import { REFLECTION_CELL_PX, REFLECTION_GRIDS, REFLECTION_MAX_FRACTION } from '../../src/frame/reflection-lod';
@@ -55,8 +56,8 @@ test('a dense mesh\'s reflection draws the clustered copy its size in the reflec
   console.log(rows.join('; '));
 });
 
-// The clustering is a chunk of its own (scene/geometry/cluster.ts), fetched by the renderer the
-// first time a scene has a mesh or a Gaussian to reflect; the frame that first needs it waits.
+// The clustering is in a chunk of its own with flat shading and the Gaussian (render/mesh-extras.ts),
+// fetched by the renderer the first time a frame needs one of them; that frame waits for it.
 const GAUSSIAN = `<glass-plane-scene time="0" glass-center="0 -1 0" glass-normal="0 1 0" glass-size="8 8" camera-position="0 2 3"
   camera-target="0 0.5 0" style="width: 160px; height: 90px"><glass-object shape="gaussian" resolution="225"></glass-object></glass-plane-scene>`;
 
@@ -73,9 +74,9 @@ async function firstFrameTriangles(page: import('@playwright/test').Page, html: 
 }
 
 const clusterFetched = (page: import('@playwright/test').Page) =>
-  page.evaluate(() => performance.getEntriesByType('resource').some((e) => e.name.includes('geometry/cluster')));
+  page.evaluate(() => performance.getEntriesByType('resource').some((e) => e.name.includes('mesh-extras')));
 
-test('a scene with nothing to cluster never fetches the clustering', async ({ page }) => {
+test('a scene with nothing to cluster, no Gaussian and smooth shading never fetches the mesh extras', async ({ page }) => {
   await openPage(page);
   await firstFrameTriangles(page, '<glass-plane-scene time="0" style="width: 160px; height: 90px"></glass-plane-scene>');
   await page.waitForTimeout(200);
@@ -83,7 +84,7 @@ test('a scene with nothing to cluster never fetches the clustering', async ({ pa
 });
 
 test('the first frame of a dense mesh\'s reflection is clustered, however slow the chunk (held back 600 ms)', async ({ page }) => {
-  await page.route('**/geometry/cluster*', async (route) => {
+  await page.route('**/mesh-extras*', async (route) => {
     await new Promise((r) => setTimeout(r, 600));
     await route.continue();
   });
@@ -94,11 +95,29 @@ test('the first frame of a dense mesh\'s reflection is clustered, however slow t
   expect(t.reflection, 'the 16 grid\'s copy, as in the test above').toBe(clusterMesh(gaussianMesh(RESOLUTION), 16).indices.length / 3);
 });
 
-test('if the clustering cannot load, reflections draw the full mesh: one warning, no error', async ({ page, consoleLog }) => {
-  await page.route('**/geometry/cluster*', (route) => route.abort());
+test('if the mesh extras cannot load, the Gaussian is not drawn and the scene goes on: one warning, no error', async ({ page, consoleLog }) => {
+  await page.route('**/mesh-extras*', (route) => route.abort());
   await openPage(page);
   const t = await firstFrameTriangles(page, GAUSSIAN);
-  expect(t.reflection).toBe(t.scene);
+  expect([t.scene, t.reflection]).toEqual([0, 0]);
   expect(consoleLog.take('warning').filter((w) => w.includes('clustering could not load'))).toHaveLength(1);
   consoleLog.take('error'); // the browser's own report of the failed fetch
+});
+
+test('shading="flat": the first frame is flat, however slow the mesh extras (held back 600 ms)', async ({ page }) => {
+  const html = (shading: string) => `<glass-plane-scene time="0" spin="0" shading="${shading}" style="width: 160px; height: 90px"></glass-plane-scene>`;
+  await page.route('**/mesh-extras*', async (route) => {
+    await new Promise((r) => setTimeout(r, 600));
+    await route.continue();
+  });
+  await openPage(page);
+  const first = await mountFirstFrame(page, html('flat'));
+  expect(await clusterFetched(page)).toBe(true);
+  await page.waitForTimeout(300);
+  const settled = await capture(page);
+  const same = (a: { data: Uint8Array }, b: { data: Uint8Array }) => Buffer.compare(Buffer.from(a.data), Buffer.from(b.data)) === 0;
+  expect(same(first, settled), 'the first frame is the settled (flat) one').toBe(true);
+  await openPage(page);
+  const smooth = await mountFirstFrame(page, html('phong'));
+  expect(same(first, smooth), 'flat differs from phong').toBe(false);
 });
