@@ -18,12 +18,12 @@ export default [
   },
   {
     name: 'Z3 the course projection loads but FrameSetup is never given it',
-    edits: [{ file: 'src/render/course-loader.ts', find: '        this.setup.course = new chunk.CourseProjection();\n', replace: '' }],
+    edits: [{ file: 'src/render/course-loader.ts', find: '      this.setup.course = new this.part.value!.CourseProjection();\n', replace: '' }],
     tests: [CHUNK],
   },
   {
     name: 'Z4 Renderer.load never asks for the course projection',
-    edits: [{ file: 'src/render/renderer.ts', find: 'return this.rough.load(state) ?? this.course.load(state) ??', replace: 'return this.rough.load(state) ??' }],
+    edits: [{ file: 'src/render/renderer.ts', find: 'this.rough.load(state), this.course.load(state), meshes);', replace: 'this.rough.load(state), null, meshes);' }],
     tests: [CHUNK],
   },
   {
@@ -47,8 +47,8 @@ export default [
     tests: [LOD],
   },
   {
-    name: 'Z9 a clustering chunk that failed is asked for again (a warning every frame)',
-    edits: [{ file: 'src/render/object-meshes.ts', find: '        this.extrasFailed = true;\n', replace: '' }],
+    name: 'Z9 a lazy part that failed is asked for again (a warning every frame)',
+    edits: [{ file: 'src/render/lazy-part.ts', find: '        this.failed = true;\n', replace: '' }],
     tests: [LOD],
   },
   {
@@ -65,5 +65,15 @@ export default [
     name: 'Z12 flat shading does not ask for the mesh extras (drawn smooth)',
     edits: [{ file: 'src/render/object-meshes.ts', find: "  if (state.shading === 'flat') return true;\n", replace: '' }],
     tests: [LOD],
+  },
+  {
+    name: 'Z13 the renderer\'s checks are never loaded (frames go unchecked)',
+    edits: [{ file: 'src/render/renderer.ts', find: 'loadAll(this.checks.load(this.options.checks === true),', replace: 'loadAll(null,' }],
+    tests: ['tests/e2e/frame-checks.spec.ts'],
+  },
+  {
+    name: 'Z14 two parts loading at once: only the first waited for (a course frame drawn before its projection)',
+    edits: [{ file: 'src/render/lazy-part.ts', find: '  return Promise.allSettled([a, b, c, d])', replace: '  return Promise.allSettled([a ?? b ?? c ?? d])' }],
+    tests: [CHUNK],
   },
 ];

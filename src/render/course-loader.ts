@@ -3,24 +3,20 @@
 // element holds that frame (Renderer.load) so it is never drawn from the wrong camera.
 import type { FrameSetup } from '../frame/frame-setup';
 import type { FrameState } from '../frame/types';
+import { LazyPart } from './lazy-part';
 
 export class CourseLoader {
-  private loading: Promise<void> | null = null;
-  private failed = false;
+  private readonly part = new LazyPart(
+    () => import('../frame/course-projection'), 'camera-src', 'drawing from the camera attributes',
+  );
 
   constructor(private readonly setup: FrameSetup) {}
 
   /** See Renderer.load. */
   load(state: FrameState): Promise<void> | null {
-    if (!state.courseCamera || this.setup.course || this.failed) return null;
-    return (this.loading ??= import('../frame/course-projection').then(
-      (chunk) => {
-        this.setup.course = new chunk.CourseProjection();
-      },
-      (e: unknown) => {
-        this.failed = true;
-        throw new Error(`camera-src could not load its projection (${String(e).slice(0, 200)}); drawing from the camera attributes`);
-      },
-    ));
+    if (this.setup.course) return null;
+    return this.part.load(!!state.courseCamera)?.then(() => {
+      this.setup.course = new this.part.value!.CourseProjection();
+    }) ?? null;
   }
 }

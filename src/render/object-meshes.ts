@@ -13,6 +13,7 @@ import type { Geometry, Scene } from '../scene/scene';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import type { ObjectMatrices } from '../frame/frame-setup';
 import { buildMesh, meshKey } from '../frame/mesh-choice';
+import { LazyPart } from './lazy-part';
 import type { FrameState } from '../frame/types';
 
 const NO_TRIANGLES: MeshData = { positions: new Float32Array(0), normals: new Float32Array(0), uvs: new Float32Array(0), indices: new Uint32Array(0) };
@@ -74,24 +75,16 @@ export class ObjectMeshes {
    * by load() the first time a frame needs one. Until then (or if it cannot load) meshes are drawn
    * smooth, Gaussians not at all, reflections with the full meshes.
    */
-  private extras: Extras | null = null;
-  private extrasLoading: Promise<void> | null = null;
-  private extrasFailed = false;
+  private readonly extras = new LazyPart(
+    () => import('./mesh-extras'), "flat shading, the Gaussian and the reflection's clustering",
+    'drawing smooth meshes, no Gaussian, full meshes in the reflection',
+  );
   /** What a Gaussian draws while its generator is not in: nothing. */
   private empty: Mesh | null = null;
 
   /** See Renderer.load: the mesh extras, when this frame needs them and they are not in. */
   load(state: FrameState, scene: Scene): Promise<void> | null {
-    if (this.extras || this.extrasFailed || !needsExtras(state, scene)) return null;
-    return (this.extrasLoading ??= import('./mesh-extras').then(
-      (chunk) => {
-        this.extras = chunk;
-      },
-      (e: unknown) => {
-        this.extrasFailed = true;
-        throw new Error(`flat shading, the Gaussian and the reflection's clustering could not load (${String(e).slice(0, 200)}); drawing smooth meshes, no Gaussian, full meshes in the reflection`);
-      },
-    ));
+    return this.extras.value ? null : this.extras.load(needsExtras(state, scene));
   }
 
   /**
@@ -116,7 +109,7 @@ export class ObjectMeshes {
   /** The mesh object `i` (geometry `g`, world bounds in `m`) draws with this frame. */
   get(i: number, g: Geometry, m: ObjectMatrices, state: FrameState): Mesh {
     const slot = (this.slots[i] ??= { geometry: null, flat: false, key: null, mesh: null, lod: null, lodFrame: -1, reflection: new Map() });
-    const ex = this.extras, flat = state.shading === 'flat' && ex !== null;
+    const ex = this.extras.value, flat = state.shading === 'flat' && ex !== null;
     if (g.kind === 'sphere') {
       this.release(slot);
       slot.geometry = g;
@@ -150,7 +143,7 @@ export class ObjectMeshes {
    * (reflection-lod.ts); anything else draws what `get` gives the scene pass.
    */
   mirrored(i: number, g: Geometry, m: ObjectMatrices, state: FrameState, pixelsPerUnit: number): Mesh {
-    const full = this.get(i, g, m, state), c = this.extras;
+    const full = this.get(i, g, m, state), c = this.extras.value;
     if (!c || state.tessellation !== 'auto' || (g.kind !== 'mesh' && g.kind !== 'gaussian')) return full;
     const grid = reflectionGrid(extentOf(g, c) * maxScale(m.model), pixelsPerUnit);
     if (grid === 0) return full;

@@ -6,10 +6,9 @@ import { MultisampleTarget } from './gl/multisample-target';
 import { ObjectMeshes } from './object-meshes';
 import { glassScreenRect, type ScreenRect } from '../frame/glass-bounds';
 import { reflectionScissor, reflectionTargetSide } from '../frame/reflection-scissor';
-import { findNonFinite } from '../frame/finite-check';
 import { glassSkipReason, PASSES, passesFor } from '../frame/pass-reports';
 import { maxTargetSize } from './gl/limits';
-import { reportGlErrors } from './gl/errors';
+import { LazyPart, loadAll } from './lazy-part';
 import { ResourceCounter } from './gl/resource-counter';
 import { TextureCache } from './texture-cache';
 import { LinearFrame } from './linear-frame';
@@ -31,8 +30,7 @@ import type { GlassFrame } from '../scene/glass-frame';
 import type { Scene } from '../scene/scene';
 import type { FrameReport, FrameState, RenderStats, Viewport } from '../frame/types';
 
-/** The element's software frames report their passes the same way (kept here for its import). */
-export { passesFor };
+export { passesFor }; // the element's software frames report their passes the same way
 
 export interface RendererOptions {
   /** Check gl.getError() after every frame and report through `onError` (tests and debugging). */
@@ -84,6 +82,7 @@ export class Renderer {
   private readonly blitVao: WebGLVertexArrayObject;
   private readonly setup = new FrameSetup();
   private readonly course = new CourseLoader(this.setup);
+  private readonly checks = new LazyPart(() => import('./frame-checks'), 'the frame checks', 'frames go unchecked');
   private readonly ctx: PassContext;
   private readonly report: FrameReport = {
     frame: 0, time: 0, width: 0, height: 0, drawCalls: 0,
@@ -150,19 +149,20 @@ export class Renderer {
       if (passes[p].ran) this.counts.passesRun[p]++;
       else this.counts.passesSkipped[p]++;
     }
-    if (this.options.checks) reportGlErrors(this.gl, this.counts.frames);
+    this.checks.value?.reportGlErrors(this.gl, this.counts.frames);
     return r;
   }
 
   /**
    * Loads what `state` and `scene` (default: the default scene) need that the core leaves out —
-   * rough glass (SPEC §14), the course camera's projection (§11), the reflection's mesh clustering
-   * — or returns null. Until it resolves, render() and read() draw polished glass, from the camera
-   * attributes, with full meshes in the reflection. Asked again while loading: the same promise;
-   * a chunk that fails rejects (an Error saying what is drawn instead) and is not asked for again.
+   * the checks, rough glass (SPEC §14), the course camera's projection (§11), the mesh extras —
+   * or null. Until it resolves, render() and read() draw polished glass, from the camera attributes,
+   * with full meshes in the reflection. A chunk that fails rejects (an Error saying what is drawn
+   * instead) and is not asked for again.
    */
   load(state: FrameState, scene?: Scene): Promise<void> | null {
-    return this.rough.load(state) ?? this.course.load(state) ?? (scene ? this.objectMeshes.load(state, scene) : null);
+    const meshes = scene ? this.objectMeshes.load(state, scene) : null;
+    return loadAll(this.checks.load(this.options.checks === true), this.rough.load(state), this.course.load(state), meshes);
   }
 
   /**
@@ -247,7 +247,7 @@ export class Renderer {
       this.glassMesh = this.ctx.glassMesh = new Mesh(this.gl, this.counter, glassMesh(this.setup.glass));
       this.glassMeshFrame = this.setup.glass;
     }
-    if (this.options.checks) this.checkFinite(state);
+    if (this.checks.value) this.checkFinite(state);
     const rect = glassScreenRect(this.setup.viewProjection, this.setup.eye, state.width, state.height, this.glassRect, this.setup.glass.corners);
     this.glassSkipReason = glassSkipReason(this.setup, rect, this.optimize);
     this.ctx.cull = this.optimize;
@@ -394,7 +394,7 @@ export class Renderer {
   }
 
   private checkFinite(state: FrameState): void {
-    const bad = findNonFinite(this.setup, state, this.ctx.scene.objects.length);
+    const bad = this.checks.value!.findNonFinite(this.setup, state, this.ctx.scene.objects.length);
     if (bad) console.error(`glass-plane-scene: non-finite uniform ${bad} in frame ${this.counts.frames + 1}`);
   }
 }

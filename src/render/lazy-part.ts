@@ -1,0 +1,40 @@
+// A part of the renderer that only some frames need, in a chunk of its own (issue 22): fetched
+// the first time a frame asks for it (Renderer.load), the same promise while it comes; if it
+// cannot load, the promise rejects once with an Error saying what is drawn instead, and the part
+// is not asked for again.
+export class LazyPart<T> {
+  /** The part, once loaded; null before (and for ever after a failure). */
+  value: T | null = null;
+  private loading: Promise<void> | null = null;
+  private failed = false;
+
+  /** `instead`: what is drawn without it (ends the warning "… could not load (why); …"). */
+  constructor(private readonly fetch: () => Promise<T>, private readonly name: string, private readonly instead: string) {}
+
+  /** Fetches the part when `needed` and not in (nor failed); null when there is nothing to wait for. */
+  load(needed: boolean): Promise<void> | null {
+    if (!needed || this.value || this.failed) return null;
+    return (this.loading ??= this.fetch().then(
+      (value) => {
+        this.value = value;
+      },
+      (e: unknown) => {
+        this.failed = true;
+        throw new Error(`${this.name} could not load (${String(e).slice(0, 200)}); ${this.instead}`);
+      },
+    ));
+  }
+}
+
+/**
+ * One promise for the parts a frame is waiting for (each a LazyPart.load result, null when not
+ * waited for), or null for none: settled when every one is, rejected with each failure's message
+ * (so each is warned about once). Fixed arguments, so a frame that waits for nothing allocates nothing.
+ */
+export function loadAll(a: Promise<void> | null, b: Promise<void> | null, c: Promise<void> | null, d: Promise<void> | null): Promise<void> | null {
+  if (!a && !b && !c && !d) return null;
+  return Promise.allSettled([a, b, c, d]).then((results) => {
+    const failed = results.flatMap((r) => (r.status === 'rejected' ? [r.reason instanceof Error ? r.reason.message : String(r.reason)] : []));
+    if (failed.length) throw new Error(failed.join('; '));
+  });
+}
