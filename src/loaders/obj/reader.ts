@@ -35,6 +35,10 @@ class ObjReader {
   private readonly triangles: I32List;
   private readonly faces: I32List;
   private faceCount = 0;
+  /** How many positions, uvs and normals have been read: the lists' lengths over 3, 2 and 3, kept as integers. */
+  private vCount = 0;
+  private tCount = 0;
+  private nCount = 0;
   private triangleCount = 0;
   private readonly runs = new I32List(3 * RUN_INTS);
   /** The current run's smoothing slot and material (NaN before the first kept face). */
@@ -125,7 +129,7 @@ class ObjReader {
     sc.pos += 1;
     const start = this.cornerLists.corners.length;
     const count = sc.readPlainCorners(this.raw);
-    if (count < 3 || !this.cornerLists.addPlain(this.raw, count, this.positions.length / 3, this.uvs.length / 2, this.normals.length / 3)) {
+    if (count < 3 || !this.cornerLists.addPlain(this.raw, count, this.vCount, this.tCount, this.nCount)) {
       sc.pos = from;
       return false;
     }
@@ -167,7 +171,7 @@ class ObjReader {
   /** The vertex of the `n` numbers readValues read (−1: a bad one). */
   private addVertex(line: number, n: number): void {
     const { sc, positions, values, warnings } = this;
-    const index = positions.length / 3;
+    const index = this.vCount++;
     if (n < 3) {
       this.cornerLists.markBad(0, index, line);
       warnings.add(line, n < 0 ? `vertex with a coordinate that is not a number (${shownLine(sc)}); faces using it are dropped`
@@ -193,13 +197,14 @@ class ObjReader {
     sc.pos += 2;
     const n = this.readValues();
     if (n < 1) {
-      this.cornerLists.markBad(1, uvs.length / 2, line);
+      this.cornerLists.markBad(1, this.tCount++, line);
       this.warnings.add(line, `texture coordinate that is not a number (${shownLine(sc)}); faces using it are dropped`);
       uvs.push(NaN);
       uvs.push(NaN);
     } else {
       uvs.push(values[0]);
       uvs.push(n > 1 ? values[1] : 0);
+      this.tCount++;
     }
   }
 
@@ -209,11 +214,12 @@ class ObjReader {
     this.sc.pos += 2;
     const n = this.readValues();
     if (n < 3) {
-      this.cornerLists.markBad(2, normals.length / 3, line);
+      this.cornerLists.markBad(2, this.nCount++, line);
       this.warnings.add(line, `normal with ${n < 0 ? 'a value that is not a number' : `${n} of its 3 values`}; faces using it are dropped`);
       normals.push3(NaN, NaN, NaN);
     } else {
       normals.push3(values[0], values[1], values[2]);
+      this.nCount++;
     }
   }
 
@@ -241,7 +247,7 @@ class ObjReader {
     const sc = this.sc;
     let fault = '';
     let cornerCount = 0;
-    const vCount = this.positions.length / 3, tCount = this.uvs.length / 2, nCount = this.normals.length / 3;
+    const { vCount, tCount, nCount } = this;
     for (;;) {
       sc.skipBlank();
       if (sc.atStatementEnd()) break;
@@ -276,7 +282,7 @@ class ObjReader {
     const count = sc.readPlainCorners(raw);
     if (count < 0) return false;
     const first = cornerLists.corners.length;
-    const vCount = this.positions.length / 3, tCount = this.uvs.length / 2, nCount = this.normals.length / 3;
+    const { vCount, tCount, nCount } = this;
     for (let k = 0; k < 3 * count; k += 3) {
       if (cornerLists.add(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) !== '') {
         cornerLists.truncate(first);
