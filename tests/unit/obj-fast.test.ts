@@ -8,6 +8,7 @@ import { decodeText } from '../../src/loaders/decode-text';
 import { parseObj, parseObjBytes } from '../../src/loaders/obj';
 import { buildMesh } from '../../src/loaders/obj/build-mesh';
 import { ByteScanner } from '../../src/loaders/obj/byte-scanner';
+import { readPositionCorners } from '../../src/loaders/obj/position-corners';
 import { readObj } from '../../src/loaders/obj/reader';
 import { bunnyObj, dragonObj } from '../data/make-obj';
 import { expectSameOutcome, outcomeOf } from './obj-same';
@@ -39,6 +40,10 @@ const CASES: [string, string][] = [
   ['a vertex and a face at the very end', `${TRI}f 1 2 3\nv 1 1 2.5`],
   ['a face at the very end', `${TRI}v 1 1 0\nf 2 3 4`],
   ['a corner cut by the end', `${TRI}f 1 2 3\nf 1 2 -`],
+  // Bare position indices (position-corners.ts): each read as a double, checked against the vertices read so far.
+  ['bare indices: leading zeros, the last vertex and one past, signs, long runs of digits', `${QUAD}f 001 02 0003\nf 2 3 4\nf 1 2 5\n` +
+    `f +1 2 3\nf 1 2 ${'9'.repeat(400)}\nf 1 2 ${'0'.repeat(30)}3\nf 4 3 2 1\nv 2 2 0\nf 1 2 5\nf 1 2 0\n`],
+  ['bare indices after a bad texture coordinate or normal', `${TRI}f 1 2 3\nvt x\nf 3 2 1\n${TRI}vn 0 0\nf 4 5 6\nf 1 2 3\n`],
 ];
 
 const variants = (text: string): [string, string][] => [
@@ -73,6 +78,21 @@ describe('OBJ fast paths: the same result as the general way', () => {
     expect(sc.readPlainNumbers(values)).toBe(3);
     expect([...values.slice(0, 3)]).toEqual([1, 22, 5]);
     expect(sc.atEnd()).toBe(true);
+  });
+
+  it('reads a face of bare indices only up to its line end, the cursor unmoved when it hands the face back', () => {
+    const room = new Int32Array(8);
+    const sc = new ByteScanner(utf8(`f 1 2\t3  \nf 1 2 3 # c\nf 1 2 3 4 5\n`));
+    sc.pos = 1;
+    expect(readPositionCorners(sc, room, 2, 6, 3)).toBe(3);
+    expect([...room.slice(2, 5)]).toEqual([0, 1, 2]);
+    expect(sc.code(sc.pos)).toBe(10);
+    for (const [from, vCount, fits] of [[12, 3, 6], [24, 4, 6], [24, 5, 4]]) {
+      sc.pos = from;
+      expect(readPositionCorners(sc, room, 0, fits, vCount)).toBe(-1);
+      expect(sc.pos).toBe(from);
+    }
+    expect(readPositionCorners(sc, room, 0, 5, 5)).toBe(5);
   });
 
   it('welds by position alone exactly as the general weld', { timeout: 60_000 }, () => {

@@ -4,6 +4,7 @@ import { CornerLists } from './corners';
 import { F64List, I32List } from './growable';
 import type { Capacities } from './estimate';
 import { ByteScanner } from './byte-scanner';
+import { readPositionCorners } from './position-corners';
 import { Scanner } from './scanner';
 import { RUN_INTS, type ObjRaw } from './raw';
 import { Settings } from './settings';
@@ -11,6 +12,9 @@ import { dropZeroArea, MAX_FACE_CORNERS, triangulate } from './triangulate';
 import { shown, Warnings } from '../warnings';
 
 export type { ObjRaw } from './raw';
+
+/** The most corners a face read on a fast path may have (a longer one is read the general way). */
+const PLAIN_CORNERS = 64;
 
 /** The cursor the reader walks: over text (scanner.ts) or UTF-8 bytes (byte-scanner.ts), the same statements either way. */
 export type ObjScanner = Scanner | ByteScanner;
@@ -51,13 +55,17 @@ class ObjReader {
   private firstDroppedLine = 0;
   /** The numbers of the statement being read (readValues). */
   private readonly values = new Float64Array(8);
-  /** A plain face's raw indices (readPlainCorners): 3 per corner, up to 64 corners. */
-  private readonly raw = new Int32Array(3 * 64);
+  /** A plain face's raw indices (readPlainCorners): 3 per corner, up to PLAIN_CORNERS corners. */
+  private readonly raw = new Int32Array(3 * PLAIN_CORNERS);
   /** What readCorners found: the first fault ('' for none) and how many corners the face has. */
   private fault = '';
   private cornerCount = 0;
 
+  /** `sc` when it reads bytes (the fast path for bare position indices reads them itself), else null. */
+  private readonly byteScanner: ByteScanner | null;
+
   constructor(private readonly sc: ObjScanner, capacities: Capacities | null = null) {
+    this.byteScanner = sc instanceof ByteScanner ? sc : null;
     const c = capacities;
     this.positions = new F64List(Math.max(1024, c?.positions ?? 0));
     this.uvs = new F64List(Math.max(1024, c?.uvs ?? 0));
@@ -127,11 +135,21 @@ class ObjReader {
     const sc = this.sc;
     const line = sc.line, from = sc.pos;
     sc.pos += 1;
-    const start = this.cornerLists.corners.length;
-    const count = sc.readPlainCorners(this.raw);
-    if (count < 3 || !this.cornerLists.addPlain(this.raw, count, this.vCount, this.tCount, this.nCount)) {
-      sc.pos = from;
-      return false;
+    const lists = this.cornerLists, corners = lists.corners;
+    const start = corners.length;
+    // `f 1 2 3`: straight into the corner list; any other plain face by way of `raw`.
+    let count = -1;
+    if (this.byteScanner !== null && lists.positionsOnly()) {
+      count = readPositionCorners(this.byteScanner, corners.reserve(PLAIN_CORNERS), start, PLAIN_CORNERS, this.vCount);
+      if (count >= 3) corners.length = start + count;
+    }
+    if (count < 3) {
+      sc.pos = from + 1;
+      count = sc.readPlainCorners(this.raw);
+      if (count < 3 || !lists.addPlain(this.raw, count, this.vCount, this.tCount, this.nCount)) {
+        sc.pos = from;
+        return false;
+      }
     }
     this.keepFace(line, start, count);
     sc.nextLine();
