@@ -4,7 +4,7 @@
 // B14 on: the speed line's fast paths (plain lines, the weld by position, the line end added
 // after the content, runs of material and smoothing), caught by obj-fast.test.ts's comparisons
 // with the general way or by the loader's own tests. B27 on: faces of bare position indices
-// read straight into the corner list (position-corners.ts).
+// read straight into the corner list (position-corners.ts); B33 on: a triangle's Newell normal.
 const BYTES = 'src/loaders/obj/byte-scanner.ts';
 const EQUAL = 'tests/unit/obj-bytes.test.ts';
 const NUMBERS = 'tests/unit/obj-bytes-numbers.test.ts';
@@ -175,5 +175,15 @@ export default [
     name: 'B32 a bare face of fewer than 3 corners kept',
     edits: [{ file: 'src/loaders/obj/reader.ts', find: 'if (count >= 3) corners.length = start + count;', replace: 'if (count >= 0) corners.length = start + count;' }],
     tests: [FAST, EQUAL],
+  },
+  {
+    name: "B33 a triangle's Newell normal summed in another order (not the polygon loop's bits)",
+    edits: [{ file: MESH, find: 'out[0] = 0 + (cy - ay) * (cz + az) + (ay - by) * (az + bz) + (by - cy) * (bz + cz);', replace: 'out[0] = 0 + (by - cy) * (bz + cz) + (cy - ay) * (cz + az) + (ay - by) * (az + bz);' }],
+    tests: [FAST],
+  },
+  {
+    name: "B34 a triangle's Newell normal summed without the loop's starting 0 (a −0 kept)",
+    edits: [{ file: MESH, find: 'out[1] = 0 + (cz - az)', replace: 'out[1] = (cz - az)' }],
+    tests: [FAST],
   },
 ];

@@ -6,7 +6,7 @@
 import { describe, expect, it } from 'vitest';
 import { decodeText } from '../../src/loaders/decode-text';
 import { parseObj, parseObjBytes } from '../../src/loaders/obj';
-import { buildMesh } from '../../src/loaders/obj/build-mesh';
+import { buildMesh, newellNormal } from '../../src/loaders/obj/build-mesh';
 import { ByteScanner } from '../../src/loaders/obj/byte-scanner';
 import { readPositionCorners } from '../../src/loaders/obj/position-corners';
 import { readObj } from '../../src/loaders/obj/reader';
@@ -93,6 +93,29 @@ describe('OBJ fast paths: the same result as the general way', () => {
       expect(sc.pos).toBe(from);
     }
     expect(readPositionCorners(sc, room, 0, 5, 5)).toBe(5);
+  });
+
+  it("sums a triangle's Newell normal exactly as the loop over a polygon's edges does", () => {
+    // The loop newellNormal runs for a polygon, here on 3 corners: edge last→first, then in order.
+    const loop = (pos: Float64Array, corners: Int32Array): number[] => {
+      let nx = 0, ny = 0, nz = 0;
+      for (let k = 0, j = 3 * corners[2]; k < 3; j = 3 * corners[k++]) {
+        const i = 3 * corners[k];
+        nx += (pos[j + 1] - pos[i + 1]) * (pos[j + 2] + pos[i + 2]);
+        ny += (pos[j + 2] - pos[i + 2]) * (pos[j] + pos[i]);
+        nz += (pos[j] - pos[i]) * (pos[j + 1] + pos[i + 1]);
+      }
+      return [nx, ny, nz];
+    };
+    let seed = 7;
+    const random = (): number => (seed = (seed * 16807) % 2147483647) / 2147483647 - 0.5;
+    const out = new Float64Array(3);
+    for (let t = 0; t < 2000; t++) {
+      const pos = Float64Array.from({ length: 12 }, () => (t % 3 === 0 ? Math.round(4 * random()) : random() * 10 ** (t % 7)));
+      const corners = Int32Array.from([3, 1, 0, 2].slice(t % 2, (t % 2) + 3));
+      newellNormal(pos, corners, 0, 3, out);
+      expect([...out], `triangle ${t}`).toEqual(loop(pos, corners));
+    }
   });
 
   it('welds by position alone exactly as the general weld', { timeout: 60_000 }, () => {
