@@ -45,9 +45,9 @@ class ObjReader {
   private nCount = 0;
   private triangleCount = 0;
   private readonly runs = new I32List(3 * RUN_INTS);
-  /** The current run's smoothing slot and material (NaN before the first kept face). */
-  private runSmooth = NaN;
-  private runMaterial = NaN;
+  /** The current run's smoothing slot and material; before the first kept face, −2 and −1 (no slot or material is: integers, not NaN, so the test a face makes is on integers). */
+  private runSmooth = -2;
+  private runMaterial = -1;
   private readonly warnings = new Warnings();
   /** The names read and the current material and smoothing slot. */
   private readonly settings = new Settings();
@@ -315,13 +315,13 @@ class ObjReader {
 
   /** The face's `count` corners (read from `start`) and triangles kept, unless triangulating leaves no area. */
   private keepFace(line: number, start: number, count: number): void {
-    const { triangles, positions } = this;
-    const corners = this.cornerLists.corners;
     if (count === 3) {
       // A triangle as written is kept as written, with no entry in `triangles`.
       this.addFace(3, 1);
       return;
     }
+    const { triangles, positions } = this;
+    const corners = this.cornerLists.corners;
     const firstTriangle = triangles.length / 3;
     const clipped = triangulate(positions.data, corners.data, start, count, triangles);
     // What triangulating a polygon makes of zero area is not kept.
