@@ -68,7 +68,7 @@ export default [
   },
   {
     name: 'B11 an infinite coordinate kept on the fast path (no warning)',
-    edits: [{ file: BYTES, find: 'if (!Number.isFinite(x)) return -1;', replace: 'if (x !== x) return -1;' }],
+    edits: [{ file: BYTES, find: 'if (end < 0 || !Number.isFinite(this.value)) return -1;', replace: 'if (end < 0) return -1;' }],
     tests: [EQUAL],
   },
   {

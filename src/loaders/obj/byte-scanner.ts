@@ -27,8 +27,8 @@ export class ByteScanner {
   line = 1;
   readonly bytes: Uint8Array;
   readonly length: number;
-  /** Where the number numberAt read last ends. */
-  private numberEnd = 0;
+  /** The value of the number numberEnd read last: a field (its box written in place), as a returned double is a new heap number a call. */
+  private value = 0;
   /** Where the content starts (after the byte-order mark the caller skipped). */
   private readonly start: number;
 
@@ -124,10 +124,10 @@ export class ByteScanner {
 
   /** As scanner.ts's readNumber: NaN (the token skipped) unless the token is a decimal number, then exactly parseFloat's value. */
   readNumber(): number {
-    const x = this.numberAt(this.pos);
-    if (x !== x) return this.skipBadToken();
-    this.pos = this.numberEnd;
-    return x;
+    const end = this.numberEnd(this.pos);
+    if (end < 0) return this.skipBadToken();
+    this.pos = end;
+    return this.value;
   }
 
   /**
@@ -146,10 +146,10 @@ export class ByteScanner {
       while (c === SPACE || c === TAB) c = b[++p];
       if (c === LF || c === CR || c === EOF) break;
       if (count === values.length) return -1;
-      const x = this.numberAt(p);
-      if (!Number.isFinite(x)) return -1;
-      values[count++] = x;
-      p = this.numberEnd;
+      const end = this.numberEnd(p);
+      if (end < 0 || !Number.isFinite(this.value)) return -1;
+      values[count++] = this.value;
+      p = end;
     }
     this.pos = p;
     return count;
@@ -201,13 +201,12 @@ export class ByteScanner {
   }
 
   /**
-   * The value of the decimal number at `from`, its end in `numberEnd`; NaN when the token is
-   * not one (a decimal number is never NaN). The value is exactly parseFloat's: below 2^53 a
-   * mantissa is an exact double and so is a power of ten up to 1e22, so one multiply or divide
-   * rounds correctly (Clinger's fast path); anything else (long mantissas, big exponents,
-   * subnormals) goes to parseFloat.
+   * The end of the decimal number at `p` with its value in `value`, or −1 when the token is not
+   * one. The value is exactly parseFloat's: below 2^53 a mantissa is an exact double and so is
+   * a power of ten up to 1e22, so one multiply or divide rounds correctly (Clinger's fast
+   * path); anything else (long mantissas, big exponents, subnormals) goes to parseFloat.
    */
-  private numberAt(from: number): number {
+  private numberEnd(from: number): number {
     const b = this.bytes;
     const n = this.length;
     let p = from;
@@ -234,7 +233,7 @@ export class ByteScanner {
         c = b[++p];
       }
     }
-    if (digits === 0) return NaN;
+    if (digits === 0) return -1;
     let exponent = 0;
     if (c === LOWER_E || c === UPPER_E) {
       c = b[++p];
@@ -249,18 +248,19 @@ export class ByteScanner {
         expDigits++;
         c = b[++p];
       }
-      if (expDigits === 0) return NaN;
+      if (expDigits === 0) return -1;
       if (expNegative) exponent = -exponent;
     }
     // A space or LF (the usual ends) is a delimiter wherever it is; else the full test.
-    if (c !== SPACE && c !== LF && !isDelimiterAt(b, p, n)) return NaN;
-    this.numberEnd = p;
+    if (c !== SPACE && c !== LF && !isDelimiterAt(b, p, n)) return -1;
     const power = exponent - scale;
     if (mantissa >= EXACT_MANTISSA || power < -22 || power > 22 || exponent >= EXPONENT_CAP || exponent <= -EXPONENT_CAP) {
-      return parseFloat(decodeSpan(b, from, p)); // the span holds the sign
+      this.value = parseFloat(decodeSpan(b, from, p)); // the span holds the sign
+    } else {
+      const value = power < 0 ? mantissa / POW10[-power] : mantissa * POW10[power];
+      this.value = negative ? -value : value;
     }
-    const value = power < 0 ? mantissa / POW10[-power] : mantissa * POW10[power];
-    return negative ? -value : value;
+    return p;
   }
 
   readIndexField(): number {
