@@ -76,6 +76,15 @@ class ObjReader {
   }
 
   read(): ObjRaw {
+    this.statements();
+    return this.result();
+  }
+
+  /**
+   * Every statement to the end. Only the loop: the JIT compiles it while it runs (on-stack), and
+   * code after it, not yet run then, would throw that compiled code away at the end of each file.
+   */
+  private statements(): void {
     const sc = this.sc;
     while (!sc.atEnd()) {
       // The usual lines, `v x y z` and `f a b c`, read on a fast path when they are plain.
@@ -83,6 +92,9 @@ class ObjReader {
       if ((plain === 1 && this.plainVertex()) || (plain === 2 && this.plainFace())) continue;
       this.statement();
     }
+  }
+
+  private result(): ObjRaw {
     const { positions, colors, uvs, normals, triangles, faces, faceCount, triangleCount, runs } = this;
     const { corners, uvs: cornerUvs, normals: cornerNormals } = this.cornerLists;
     return {
