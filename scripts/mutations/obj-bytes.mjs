@@ -3,7 +3,8 @@
 // (obj-bytes.test.ts) or by the million tokens against parseFloat (obj-bytes-numbers.test.ts).
 // B14 on: the speed line's fast paths (plain lines, the weld by position, the line end added
 // after the content, runs of material and smoothing), caught by obj-fast.test.ts's comparisons
-// with the general way or by the loader's own tests.
+// with the general way or by the loader's own tests. B27 on: faces of bare position indices
+// read straight into the corner list (position-corners.ts); B33 on: a triangle's Newell normal.
 const BYTES = 'src/loaders/obj/byte-scanner.ts';
 const EQUAL = 'tests/unit/obj-bytes.test.ts';
 const NUMBERS = 'tests/unit/obj-bytes-numbers.test.ts';
@@ -12,6 +13,7 @@ const OBJ = 'tests/unit/obj.test.ts';
 const POLYGONS = 'tests/unit/obj-polygons.test.ts';
 const MESH = 'src/loaders/obj/build-mesh.ts';
 const CORNERS = 'src/loaders/obj/corners.ts';
+const POSITION_CORNERS = 'src/loaders/obj/position-corners.ts';
 
 export default [
   {
@@ -143,5 +145,45 @@ export default [
     name: 'B26 the general weld shares a vertex whatever its uv',
     edits: [{ file: MESH, find: 'if (rec[q + T] === t) break;', replace: 'break;' }],
     tests: [OBJ],
+  },
+  {
+    name: 'B27 a bare face index one past the vertices read kept',
+    edits: [{ file: POSITION_CORNERS, find: 'if (value === 0 || value > vCount) return -1;', replace: 'if (value === 0 || value > vCount + 1) return -1;' }],
+    tests: [FAST, EQUAL],
+  },
+  {
+    name: 'B28 a bare face index 0 kept (as position −1)',
+    edits: [{ file: POSITION_CORNERS, find: 'if (value === 0 || value > vCount) return -1;', replace: 'if (value > vCount) return -1;' }],
+    tests: [FAST, EQUAL],
+  },
+  {
+    name: 'B29 a bare face read straight into the corners once the uv or normal list has started',
+    edits: [{ file: CORNERS, find: 'return !this.anyBad && this.uvs === null && this.normals === null;', replace: 'return !this.anyBad;' }],
+    tests: [FAST, EQUAL],
+  },
+  {
+    name: 'B30 a bare face read straight into the corners after a bad element',
+    edits: [{ file: CORNERS, find: 'return !this.anyBad && this.uvs === null && this.normals === null;', replace: 'return this.uvs === null && this.normals === null;' }],
+    tests: [FAST, EQUAL],
+  },
+  {
+    name: 'B31 a bare face of more corners than the room written past it',
+    edits: [{ file: POSITION_CORNERS, find: 'if (count === room) return -1;', replace: 'if (count > room) return -1;' }],
+    tests: [FAST],
+  },
+  {
+    name: 'B32 a bare face of fewer than 3 corners kept',
+    edits: [{ file: 'src/loaders/obj/reader.ts', find: 'if (count >= 3) corners.length = start + count;', replace: 'if (count >= 0) corners.length = start + count;' }],
+    tests: [FAST, EQUAL],
+  },
+  {
+    name: "B33 a triangle's Newell normal summed in another order (not the polygon loop's bits)",
+    edits: [{ file: MESH, find: 'out[0] = 0 + (cy - ay) * (cz + az) + (ay - by) * (az + bz) + (by - cy) * (bz + cz);', replace: 'out[0] = 0 + (by - cy) * (bz + cz) + (cy - ay) * (cz + az) + (ay - by) * (az + bz);' }],
+    tests: [FAST],
+  },
+  {
+    name: "B34 a triangle's Newell normal summed without the loop's starting 0 (a −0 kept)",
+    edits: [{ file: MESH, find: 'out[1] = 0 + (cz - az)', replace: 'out[1] = (cz - az)' }],
+    tests: [FAST],
   },
 ];

@@ -6,8 +6,9 @@
 import { describe, expect, it } from 'vitest';
 import { decodeText } from '../../src/loaders/decode-text';
 import { parseObj, parseObjBytes } from '../../src/loaders/obj';
-import { buildMesh } from '../../src/loaders/obj/build-mesh';
+import { buildMesh, newellNormal } from '../../src/loaders/obj/build-mesh';
 import { ByteScanner } from '../../src/loaders/obj/byte-scanner';
+import { readPositionCorners } from '../../src/loaders/obj/position-corners';
 import { readObj } from '../../src/loaders/obj/reader';
 import { bunnyObj, dragonObj } from '../data/make-obj';
 import { expectSameOutcome, outcomeOf } from './obj-same';
@@ -39,6 +40,10 @@ const CASES: [string, string][] = [
   ['a vertex and a face at the very end', `${TRI}f 1 2 3\nv 1 1 2.5`],
   ['a face at the very end', `${TRI}v 1 1 0\nf 2 3 4`],
   ['a corner cut by the end', `${TRI}f 1 2 3\nf 1 2 -`],
+  // Bare position indices (position-corners.ts): each read as a double, checked against the vertices read so far.
+  ['bare indices: leading zeros, the last vertex and one past, signs, long runs of digits', `${QUAD}f 001 02 0003\nf 2 3 4\nf 1 2 5\n` +
+    `f +1 2 3\nf 1 2 ${'9'.repeat(400)}\nf 1 2 ${'0'.repeat(30)}3\nf 4 3 2 1\nv 2 2 0\nf 1 2 5\nf 1 2 0\n`],
+  ['bare indices after a bad texture coordinate or normal', `${TRI}f 1 2 3\nvt x\nf 3 2 1\n${TRI}vn 0 0\nf 4 5 6\nf 1 2 3\n`],
 ];
 
 const variants = (text: string): [string, string][] => [
@@ -73,6 +78,44 @@ describe('OBJ fast paths: the same result as the general way', () => {
     expect(sc.readPlainNumbers(values)).toBe(3);
     expect([...values.slice(0, 3)]).toEqual([1, 22, 5]);
     expect(sc.atEnd()).toBe(true);
+  });
+
+  it('reads a face of bare indices only up to its line end, the cursor unmoved when it hands the face back', () => {
+    const room = new Int32Array(8);
+    const sc = new ByteScanner(utf8(`f 1 2\t3  \nf 1 2 3 # c\nf 1 2 3 4 5\n`));
+    sc.pos = 1;
+    expect(readPositionCorners(sc, room, 2, 6, 3)).toBe(3);
+    expect([...room.slice(2, 5)]).toEqual([0, 1, 2]);
+    expect(sc.code(sc.pos)).toBe(10);
+    for (const [from, vCount, fits] of [[12, 3, 6], [24, 4, 6], [24, 5, 4]]) {
+      sc.pos = from;
+      expect(readPositionCorners(sc, room, 0, fits, vCount)).toBe(-1);
+      expect(sc.pos).toBe(from);
+    }
+    expect(readPositionCorners(sc, room, 0, 5, 5)).toBe(5);
+  });
+
+  it("sums a triangle's Newell normal exactly as the loop over a polygon's edges does", () => {
+    // The loop newellNormal runs for a polygon, here on 3 corners: edge last→first, then in order.
+    const loop = (pos: Float64Array, corners: Int32Array): number[] => {
+      let nx = 0, ny = 0, nz = 0;
+      for (let k = 0, j = 3 * corners[2]; k < 3; j = 3 * corners[k++]) {
+        const i = 3 * corners[k];
+        nx += (pos[j + 1] - pos[i + 1]) * (pos[j + 2] + pos[i + 2]);
+        ny += (pos[j + 2] - pos[i + 2]) * (pos[j] + pos[i]);
+        nz += (pos[j] - pos[i]) * (pos[j + 1] + pos[i + 1]);
+      }
+      return [nx, ny, nz];
+    };
+    let seed = 7;
+    const random = (): number => (seed = (seed * 16807) % 2147483647) / 2147483647 - 0.5;
+    const out = new Float64Array(3);
+    for (let t = 0; t < 2000; t++) {
+      const pos = Float64Array.from({ length: 12 }, () => (t % 3 === 0 ? Math.round(4 * random()) : random() * 10 ** (t % 7)));
+      const corners = Int32Array.from([3, 1, 0, 2].slice(t % 2, (t % 2) + 3));
+      newellNormal(pos, corners, 0, 3, out);
+      expect([...out], `triangle ${t}`).toEqual(loop(pos, corners));
+    }
   });
 
   it('welds by position alone exactly as the general weld', { timeout: 60_000 }, () => {

@@ -197,7 +197,8 @@ function doubled(a: Int32Array<ArrayBuffer>): Int32Array<ArrayBuffer> {
 }
 
 /** Newell normal of the face of `count` corners from `first`, length twice its area: summing it weights faces by area. */
-function newellNormal(pos: Float64Array, corners: Int32Array, first: number, count: number, out: Float64Array): true {
+export function newellNormal(pos: Float64Array, corners: Int32Array, first: number, count: number, out: Float64Array): true {
+  if (count === 3) return triangleNormal(pos, 3 * corners[first], 3 * corners[first + 1], 3 * corners[first + 2], out);
   let nx = 0, ny = 0, nz = 0;
   let j = 3 * corners[first + count - 1];
   for (let k = 0; k < count; k++) {
@@ -208,6 +209,20 @@ function newellNormal(pos: Float64Array, corners: Int32Array, first: number, cou
     j = i;
   }
   out[0] = nx; out[1] = ny; out[2] = nz;
+  return true;
+}
+
+/**
+ * newellNormal of the triangle of positions `a`, `b`, `c` (offsets in `pos`): the same terms
+ * summed in the same order (edge c→a, a→b, b→c, from 0), so the same bits, each coordinate read once.
+ */
+function triangleNormal(pos: Float64Array, a: number, b: number, c: number, out: Float64Array): true {
+  const ax = pos[a], ay = pos[a + 1], az = pos[a + 2];
+  const bx = pos[b], by = pos[b + 1], bz = pos[b + 2];
+  const cx = pos[c], cy = pos[c + 1], cz = pos[c + 2];
+  out[0] = 0 + (cy - ay) * (cz + az) + (ay - by) * (az + bz) + (by - cy) * (bz + cz);
+  out[1] = 0 + (cz - az) * (cx + ax) + (az - bz) * (ax + bx) + (bz - cz) * (bx + cx);
+  out[2] = 0 + (cx - ax) * (cy + ay) + (ax - bx) * (ay + by) + (bx - cx) * (by + cy);
   return true;
 }
 

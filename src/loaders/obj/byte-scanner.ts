@@ -27,7 +27,7 @@ export class ByteScanner {
   line = 1;
   readonly bytes: Uint8Array;
   readonly length: number;
-  /** The value of the number numberEnd read last. */
+  /** The value of the number numberEnd read last: a field (its box written in place), as a returned double is a new heap number a call. */
   private value = 0;
   /** Where the content starts (after the byte-order mark the caller skipped). */
   private readonly start: number;
@@ -251,7 +251,8 @@ export class ByteScanner {
       if (expDigits === 0) return -1;
       if (expNegative) exponent = -exponent;
     }
-    if (!isDelimiterAt(b, p, n)) return -1;
+    // A space or LF (the usual ends) is a delimiter wherever it is; else the full test.
+    if (c !== SPACE && c !== LF && !isDelimiterAt(b, p, n)) return -1;
     const power = exponent - scale;
     if (mantissa >= EXACT_MANTISSA || power < -22 || power > 22 || exponent >= EXPONENT_CAP || exponent <= -EXPONENT_CAP) {
       this.value = parseFloat(decodeSpan(b, from, p)); // the span holds the sign

@@ -65,6 +65,11 @@ export class CornerLists {
     return true;
   }
 
+  /** True while a corner of bare position index goes onto `corners` alone: no uv or normal list yet, no bad element. */
+  positionsOnly(): boolean {
+    return !this.anyBad && this.uvs === null && this.normals === null;
+  }
+
   /** Forgets the corners from `start` on. */
   truncate(start: number): void {
     this.corners.length = start;

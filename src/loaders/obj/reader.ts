@@ -4,6 +4,7 @@ import { CornerLists } from './corners';
 import { F64List, I32List } from './growable';
 import type { Capacities } from './estimate';
 import { ByteScanner } from './byte-scanner';
+import { readPositionCorners } from './position-corners';
 import { Scanner } from './scanner';
 import { RUN_INTS, type ObjRaw } from './raw';
 import { Settings } from './settings';
@@ -11,6 +12,9 @@ import { dropZeroArea, MAX_FACE_CORNERS, triangulate } from './triangulate';
 import { shown, Warnings } from '../warnings';
 
 export type { ObjRaw } from './raw';
+
+/** The most corners a face read on a fast path may have (a longer one is read the general way). */
+const PLAIN_CORNERS = 64;
 
 /** The cursor the reader walks: over text (scanner.ts) or UTF-8 bytes (byte-scanner.ts), the same statements either way. */
 export type ObjScanner = Scanner | ByteScanner;
@@ -35,11 +39,15 @@ class ObjReader {
   private readonly triangles: I32List;
   private readonly faces: I32List;
   private faceCount = 0;
+  /** How many positions, uvs and normals have been read: the lists' lengths over 3, 2 and 3, kept as integers. */
+  private vCount = 0;
+  private tCount = 0;
+  private nCount = 0;
   private triangleCount = 0;
   private readonly runs = new I32List(3 * RUN_INTS);
-  /** The current run's smoothing slot and material (NaN before the first kept face). */
-  private runSmooth = NaN;
-  private runMaterial = NaN;
+  /** The current run's smoothing slot and material; before the first kept face, −2 and −1 (no slot or material is: integers, not NaN, so the test a face makes is on integers). */
+  private runSmooth = -2;
+  private runMaterial = -1;
   private readonly warnings = new Warnings();
   /** The names read and the current material and smoothing slot. */
   private readonly settings = new Settings();
@@ -47,13 +55,17 @@ class ObjReader {
   private firstDroppedLine = 0;
   /** The numbers of the statement being read (readValues). */
   private readonly values = new Float64Array(8);
-  /** A plain face's raw indices (readPlainCorners): 3 per corner, up to 64 corners. */
-  private readonly raw = new Int32Array(3 * 64);
+  /** A plain face's raw indices (readPlainCorners): 3 per corner, up to PLAIN_CORNERS corners. */
+  private readonly raw = new Int32Array(3 * PLAIN_CORNERS);
   /** What readCorners found: the first fault ('' for none) and how many corners the face has. */
   private fault = '';
   private cornerCount = 0;
 
+  /** `sc` when it reads bytes (the fast path for bare position indices reads them itself), else null. */
+  private readonly byteScanner: ByteScanner | null;
+
   constructor(private readonly sc: ObjScanner, capacities: Capacities | null = null) {
+    this.byteScanner = sc instanceof ByteScanner ? sc : null;
     const c = capacities;
     this.positions = new F64List(Math.max(1024, c?.positions ?? 0));
     this.uvs = new F64List(Math.max(1024, c?.uvs ?? 0));
@@ -64,6 +76,15 @@ class ObjReader {
   }
 
   read(): ObjRaw {
+    this.statements();
+    return this.result();
+  }
+
+  /**
+   * Every statement to the end. Only the loop: the JIT compiles it while it runs (on-stack), and
+   * code after it, not yet run then, would throw that compiled code away at the end of each file.
+   */
+  private statements(): void {
     const sc = this.sc;
     while (!sc.atEnd()) {
       // The usual lines, `v x y z` and `f a b c`, read on a fast path when they are plain.
@@ -71,6 +92,9 @@ class ObjReader {
       if ((plain === 1 && this.plainVertex()) || (plain === 2 && this.plainFace())) continue;
       this.statement();
     }
+  }
+
+  private result(): ObjRaw {
     const { positions, colors, uvs, normals, triangles, faces, faceCount, triangleCount, runs } = this;
     const { corners, uvs: cornerUvs, normals: cornerNormals } = this.cornerLists;
     return {
@@ -123,11 +147,21 @@ class ObjReader {
     const sc = this.sc;
     const line = sc.line, from = sc.pos;
     sc.pos += 1;
-    const start = this.cornerLists.corners.length;
-    const count = sc.readPlainCorners(this.raw);
-    if (count < 3 || !this.cornerLists.addPlain(this.raw, count, this.positions.length / 3, this.uvs.length / 2, this.normals.length / 3)) {
-      sc.pos = from;
-      return false;
+    const lists = this.cornerLists, corners = lists.corners;
+    const start = corners.length;
+    // `f 1 2 3`: straight into the corner list; any other plain face by way of `raw`.
+    let count = -1;
+    if (this.byteScanner !== null && lists.positionsOnly()) {
+      count = readPositionCorners(this.byteScanner, corners.reserve(PLAIN_CORNERS), start, PLAIN_CORNERS, this.vCount);
+      if (count >= 3) corners.length = start + count;
+    }
+    if (count < 3) {
+      sc.pos = from + 1;
+      count = sc.readPlainCorners(this.raw);
+      if (count < 3 || !lists.addPlain(this.raw, count, this.vCount, this.tCount, this.nCount)) {
+        sc.pos = from;
+        return false;
+      }
     }
     this.keepFace(line, start, count);
     sc.nextLine();
@@ -167,7 +201,7 @@ class ObjReader {
   /** The vertex of the `n` numbers readValues read (−1: a bad one). */
   private addVertex(line: number, n: number): void {
     const { sc, positions, values, warnings } = this;
-    const index = positions.length / 3;
+    const index = this.vCount++;
     if (n < 3) {
       this.cornerLists.markBad(0, index, line);
       warnings.add(line, n < 0 ? `vertex with a coordinate that is not a number (${shownLine(sc)}); faces using it are dropped`
@@ -193,13 +227,14 @@ class ObjReader {
     sc.pos += 2;
     const n = this.readValues();
     if (n < 1) {
-      this.cornerLists.markBad(1, uvs.length / 2, line);
+      this.cornerLists.markBad(1, this.tCount++, line);
       this.warnings.add(line, `texture coordinate that is not a number (${shownLine(sc)}); faces using it are dropped`);
       uvs.push(NaN);
       uvs.push(NaN);
     } else {
       uvs.push(values[0]);
       uvs.push(n > 1 ? values[1] : 0);
+      this.tCount++;
     }
   }
 
@@ -209,11 +244,12 @@ class ObjReader {
     this.sc.pos += 2;
     const n = this.readValues();
     if (n < 3) {
-      this.cornerLists.markBad(2, normals.length / 3, line);
+      this.cornerLists.markBad(2, this.nCount++, line);
       this.warnings.add(line, `normal with ${n < 0 ? 'a value that is not a number' : `${n} of its 3 values`}; faces using it are dropped`);
       normals.push3(NaN, NaN, NaN);
     } else {
       normals.push3(values[0], values[1], values[2]);
+      this.nCount++;
     }
   }
 
@@ -241,7 +277,7 @@ class ObjReader {
     const sc = this.sc;
     let fault = '';
     let cornerCount = 0;
-    const vCount = this.positions.length / 3, tCount = this.uvs.length / 2, nCount = this.normals.length / 3;
+    const { vCount, tCount, nCount } = this;
     for (;;) {
       sc.skipBlank();
       if (sc.atStatementEnd()) break;
@@ -276,7 +312,7 @@ class ObjReader {
     const count = sc.readPlainCorners(raw);
     if (count < 0) return false;
     const first = cornerLists.corners.length;
-    const vCount = this.positions.length / 3, tCount = this.uvs.length / 2, nCount = this.normals.length / 3;
+    const { vCount, tCount, nCount } = this;
     for (let k = 0; k < 3 * count; k += 3) {
       if (cornerLists.add(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) !== '') {
         cornerLists.truncate(first);
@@ -291,13 +327,13 @@ class ObjReader {
 
   /** The face's `count` corners (read from `start`) and triangles kept, unless triangulating leaves no area. */
   private keepFace(line: number, start: number, count: number): void {
-    const { triangles, positions } = this;
-    const corners = this.cornerLists.corners;
     if (count === 3) {
       // A triangle as written is kept as written, with no entry in `triangles`.
       this.addFace(3, 1);
       return;
     }
+    const { triangles, positions } = this;
+    const corners = this.cornerLists.corners;
     const firstTriangle = triangles.length / 3;
     const clipped = triangulate(positions.data, corners.data, start, count, triangles);
     // What triangulating a polygon makes of zero area is not kept.
