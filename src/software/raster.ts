@@ -58,6 +58,14 @@ export class Rasterizer {
    * sample is a pixel of its own (no multisampling, or supersampling when the caller sizes so).
    */
   shadeEvery = 1;
+  /**
+   * The rows drawn, [top, bottom) on the target's grid (a band of a frame split across workers;
+   * multiples of shadeEvery): a triangle's box is clamped to them as to the target's edges, and
+   * its edge functions are exact integers evaluated at the box's corner, so a row is drawn bit
+   * for bit as in the whole frame.
+   */
+  top = 0;
+  bottom = Infinity;
 
   // Per fragment, for the shader: the clipped vertices (`poly`), the triangle's three vertex
   // offsets into it, the perspective-correct barycentrics and their derivatives per pixel.
@@ -128,8 +136,10 @@ export class Rasterizer {
     if (this.depth.length < width * height) this.depth = new Float32Array(width * height);
   }
 
+  /** Clears the depth of the rows drawn (top..bottom). */
   clearDepth(): void {
-    this.depth.fill(Infinity, 0, this.width * this.height);
+    const W = this.width;
+    this.depth.fill(Infinity, this.top * W, Math.min(this.bottom, this.height) * W);
   }
 
   /**
@@ -227,8 +237,8 @@ export class Rasterizer {
     // Bounding box of pixel centres (c = p·SUB + HALF) inside it, clamped to the target.
     const px0 = Math.max(0, Math.ceil((Math.min(x0, x1, x2) - HALF) / SUB));
     const px1 = Math.min(this.width - 1, Math.floor((Math.max(x0, x1, x2) - HALF) / SUB));
-    const py0 = Math.max(0, Math.ceil((Math.min(y0, y1, y2) - HALF) / SUB));
-    const py1 = Math.min(this.height - 1, Math.floor((Math.max(y0, y1, y2) - HALF) / SUB));
+    const py0 = Math.max(this.top, Math.ceil((Math.min(y0, y1, y2) - HALF) / SUB));
+    const py1 = Math.min(this.height - 1, this.bottom - 1, Math.floor((Math.max(y0, y1, y2) - HALF) / SUB));
     if (px0 > px1 || py0 > py1) return;
     if (this.shadeEvery > 1) this.scanPixels(i, j, k, area, px0, px1, py0, py1, shader);
     else this.scan(i, j, k, area, px0, px1, py0, py1, shader);
