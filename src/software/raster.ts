@@ -1,7 +1,6 @@
 // Triangles in clip space → pixels: Sutherland–Hodgman clipping in clip space, edge functions on
 // a fixed-point grid with the top-left fill rule, a Float32 z-buffer, perspective-correct
 // barycentrics (and their screen derivatives, for texture LOD). Knows nothing of shading.
-
 import { ALL, copyVertex, inside, planeDistance, PLANES, USER, CLIP_W, CLIP_DISTANCE, VARYINGS } from './clip';
 import { edgeFunctions, HALF, runEnd, runStart, SUB } from './edges';
 
@@ -60,9 +59,8 @@ export class Rasterizer {
   shadeEvery = 1;
   /**
    * The rows drawn, [top, bottom) on the target's grid (a band of a frame split across workers;
-   * multiples of shadeEvery): a triangle's box is clamped to them as to the target's edges, and
-   * its edge functions are exact integers evaluated at the box's corner, so a row is drawn bit
-   * for bit as in the whole frame.
+   * multiples of shadeEvery): each triangle's box is clamped to them; its edge functions are exact
+   * integers at the box's corner, so a row is drawn bit for bit as in the whole frame.
    */
   top = 0;
   bottom = Infinity;
@@ -136,7 +134,6 @@ export class Rasterizer {
     if (this.depth.length < width * height) this.depth = new Float32Array(width * height);
   }
 
-  /** Clears the depth of the rows drawn (top..bottom). */
   clearDepth(): void {
     const W = this.width;
     this.depth.fill(Infinity, this.top * W, Math.min(this.bottom, this.height) * W);

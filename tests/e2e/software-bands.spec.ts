@@ -5,7 +5,6 @@
 import { test, expect, mount, openPage, type SceneElement } from './fixtures';
 
 const SIZE = { width: 320, height: 180 };
-const WORKER_NAME = 'glass-plane-scene software renderer';
 
 /** Records each software worker started and terminated (an init script: before the element runs). */
 function countWorkers() {
@@ -32,7 +31,8 @@ const workers = (page: Page) => page.evaluate(() => (window as unknown as { __so
 /** New hosts start `n` workers (the element's SoftwareHost, the same module the element loads). */
 async function useWorkers(page: Page, n: number): Promise<void> {
   await page.evaluate(async (n) => {
-    const m = await import(/* @vite-ignore */ '/src/element/software-host.ts');
+    const url = '/src/element/software-host.ts'; // served by Vite, the module the element loads
+    const m = (await import(/* @vite-ignore */ url)) as { SoftwareHost: { workerCount: number | null } };
     m.SoftwareHost.workerCount = n;
   }, n);
 }
