@@ -69,6 +69,8 @@ export class SoftwareHost {
   private nextId = 0;
   /** Each band's rows per ms in the frames before (smoothed): a slower band gets fewer rows. */
   private speeds: number[] = [];
+  /** The last frame's slowest band: its worker's own time, ms (the bench reads it). */
+  lastWorkerMs = 0;
 
   /**
    * Decoded pixels of the scene's image textures by URL. The host is the element's image sink
@@ -150,6 +152,7 @@ export class SoftwareHost {
     const id = ++this.nextId, bands = this.bandsOf(state);
     const drawn = bands.map((band, i) => this.workers[i].draw({ id, state, samplesPerAxis, band }, scene, this.images));
     return Promise.all(drawn).then((parts) => {
+      this.lastWorkerMs = Math.max(...parts.map((p) => p.ms));
       if (bands[0] === null) return parts[0].pixels;
       const width = Math.max(0, Math.floor(state.width));
       const frame = new Uint8ClampedArray(4 * width * Math.max(0, Math.floor(state.height)));

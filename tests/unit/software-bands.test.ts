@@ -12,6 +12,7 @@ import { defaultScene } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
 import { SoftwareRenderer, putBand, renderBand, splitRows, type Band } from '../../src/software';
 import { CASES, IMAGES, STATE } from './software-cases';
+import { Rasterizer, VARYINGS } from '../../src/software/raster';
 
 /** The whole frame from `bands`, each drawn by its renderer of `renderers` (one per band). */
 function banded(renderers: SoftwareRenderer[], bands: Band[], state: FrameState, scene: Scene): Uint8ClampedArray {
@@ -36,6 +37,35 @@ function courseCamera(): CourseCamera {
   if (typeof basis === 'string') throw new Error(basis);
   return { c: [3.6, 2.4, 4], ...basis, d: 1, hx: 0.6, hy: 0.5 };
 }
+
+describe('Rasterizer.top and bottom', () => {
+  /** Fragments (and repeated samples) per row of a 40×30 target covered by two triangles, with rows top..bottom drawn. */
+  function rowsDrawn(shadeEvery: number, top: number, bottom: number): number[] {
+    const r = new Rasterizer(40, 30);
+    r.shadeEvery = shadeEvery;
+    r.top = top;
+    r.bottom = bottom;
+    r.clearDepth();
+    r.derivatives = false;
+    const v = new Float64Array(4 * VARYINGS);
+    [[-1, -1], [1, -1], [1, 1], [-1, 1]].forEach(([x, y], i) => { v[i * VARYINGS] = x; v[i * VARYINGS + 1] = y; v[i * VARYINGS + 3] = 1; });
+    const rows = new Array<number>(30).fill(0);
+    const count = (sample: number) => rows[Math.floor(sample / 40)]++;
+    r.drawTriangles(v, [0, 1, 2, 0, 2, 3], 6, { fragment: count, repeat: count });
+    return rows;
+  }
+  for (const n of [1, 2]) {
+    it(`draws only the band's rows and each of them whole (shadeEvery ${n}), its depth cleared only there`, () => {
+      expect(rowsDrawn(n, 10, 20)).toEqual(Array.from({ length: 30 }, (_, y) => (y >= 10 && y < 20 ? 40 : 0)));
+      expect(rowsDrawn(n, 0, Infinity)).toEqual(new Array(30).fill(40));
+      const r = new Rasterizer(40, 30);
+      r.top = 10;
+      r.bottom = 20;
+      r.clearDepth();
+      expect([r.depth[9 * 40 + 39], r.depth[10 * 40], r.depth[19 * 40 + 39], r.depth[20 * 40]]).toEqual([0, Infinity, Infinity, 0]);
+    });
+  }
+});
 
 describe('splitRows', () => {
   it('covers every row once, top first, evenly or by weight', () => {
