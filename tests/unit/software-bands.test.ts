@@ -46,6 +46,7 @@ describe('Rasterizer.top and bottom', () => {
     r.top = top;
     r.bottom = bottom;
     r.clearDepth();
+    r.depthTest = false; // rows outside the band keep their depth (0 here): the box alone must keep them out
     r.derivatives = false;
     const v = new Float64Array(4 * VARYINGS);
     [[-1, -1], [1, -1], [1, 1], [-1, 1]].forEach(([x, y], i) => { v[i * VARYINGS] = x; v[i * VARYINGS + 1] = y; v[i * VARYINGS + 3] = 1; });
