@@ -360,4 +360,9 @@ export default [
     edits: [{ file: 'src/software/software-renderer.ts', find: 'const out = this.output.subarray(4 * top * width, 4 * bottom * width);', replace: 'const out = this.output.subarray(0, 4 * (bottom - top) * width);' }],
     tests: [BANDS],
   },
+  {
+    name: 'S61 bands: triangles left out before clipping against the wrong row (the band\'s last rows lose theirs)',
+    edits: [{ file: 'src/software/raster.ts', find: 'lo = 1 - (2 * (this.bottom + 1)) / H;', replace: 'lo = 1 - (2 * (this.bottom - 8)) / H;' }],
+    tests: [BANDS],
+  },
 ];
