@@ -5,7 +5,6 @@
 // With several workers (one per core, up to MAX_WORKERS) a frame is cut into bands of rows, one
 // per worker, each drawn as in the whole frame (software/bands.ts) and put back together here.
 import type { FrameState } from '../frame/types';
-import { isRough } from '../frame/roughness';
 import type { Scene } from '../scene/scene';
 import type { DecodedImage } from '../scene/decoded-image';
 import type { SoftwareRenderer } from '../software/software-renderer';
@@ -137,7 +136,7 @@ export class SoftwareHost {
    */
   private bandsOf(state: FrameState): (Band | null)[] {
     const n = this.workers.length, height = Math.max(0, Math.floor(state.height));
-    if (n < 2 || isRough(state) || state.view === 'passes' || height < n * MIN_BAND_ROWS) return [null];
+    if (n < 2 || !this.local.drawsBands(state) || height < n * MIN_BAND_ROWS) return [null];
     if (this.speeds.length !== n) this.speeds = new Array<number>(n).fill(1);
     return splitRows(height, n, this.speeds);
   }

@@ -103,6 +103,11 @@ export class SoftwareRenderer {
     };
   }
 
+  /** Whether `band` is drawn as a band for this state (else the whole frame is: rough glass, the `passes` view). */
+  drawsBands(state: FrameState): boolean {
+    return state.view !== 'passes' && !isRough(state);
+  }
+
   /**
    * Draws `state.view` of `scene` (SPEC §3's default scene when absent) and returns its pixels:
    * RGBA8, top row first. The array is the renderer's own and is overwritten by the next call.
@@ -137,7 +142,7 @@ export class SoftwareRenderer {
     const W = width * n, H = height * n;
     this.resize(W, H, width * height);
     if (W === 0 || H === 0) return this.output;
-    const band = banded && !isRough(state) ? this.band : null;
+    const band = banded && this.drawsBands(state) ? this.band : null;
     const top = band ? Math.max(0, Math.min(height, Math.floor(band.top))) : 0;
     const bottom = band ? Math.max(top, Math.min(height, Math.floor(band.bottom))) : height;
     this.main.top = this.mirror.top = top * n;
