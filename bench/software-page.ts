@@ -35,7 +35,8 @@ const gl = canvas.getContext('webgl2', {
 const renderer = new Renderer(gl, {});
 renderer.setImage(WHITE_URL, new ImageData(new Uint8ClampedArray(WHITE.data), 1, 1));
 const pixel = new Uint8Array(4);
-let host: SoftwareHost | null = null;
+/** The element's SoftwareHost by worker count (null: its own default, one per core up to 4). */
+const hosts = new Map<number | null, SoftwareHost>();
 let worker: Worker | null = null;
 let nextId = 0;
 
@@ -45,8 +46,9 @@ function toBase64(bytes: Uint8ClampedArray | Uint8Array): string {
   return btoa(s);
 }
 
-async function softwareHost(): Promise<SoftwareHost> {
-  host ??= await SoftwareHost.create();
+async function softwareHost(workers: number | null = null): Promise<SoftwareHost> {
+  let host = hosts.get(workers);
+  if (!host) hosts.set(workers, (host = await SoftwareHost.create(true, workers ?? undefined)));
   if (host.thread !== 'worker') throw new Error('the software host did not start its worker');
   return host;
 }
@@ -70,20 +72,43 @@ const api = {
    * Round trip per frame (ms) of the default scene through the element's SoftwareHost: request
    * posted, pixels back on the main thread. The clock moves each frame so the cube turns.
    */
-  async hostFrames(size: Size, samplesPerAxis: number, frames: number, warmup: number, colorSpace: ColorSpace = DEFAULTS.colorSpace, samples: number = DEFAULTS.samples): Promise<number[]> {
-    const h = await softwareHost(), scene = defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), out: number[] = [];
+  async hostFrames(
+    size: Size, samplesPerAxis: number, frames: number, warmup: number, colorSpace: ColorSpace = DEFAULTS.colorSpace, samples: number = DEFAULTS.samples,
+    workers: number | null = null, benchScene: number | null = null,
+  ): Promise<number[]> {
+    return (await this.hostFramesTimed(size, samplesPerAxis, frames, warmup, colorSpace, samples, workers, benchScene)).map((f) => f.roundTrip);
+  },
+
+  /** hostFrames, with each frame's slowest band's own time in its worker (SoftwareHost.lastWorkerMs). */
+  async hostFramesTimed(
+    size: Size, samplesPerAxis: number, frames: number, warmup: number, colorSpace: ColorSpace = DEFAULTS.colorSpace, samples: number = DEFAULTS.samples,
+    workers: number | null = null, benchScene: number | null = null,
+  ): Promise<{ roundTrip: number; render: number }[]> {
+    const h = await softwareHost(workers), out: { roundTrip: number; render: number }[] = [];
+    const scene = benchScene === null ? defaultScene(DEFAULT_CUBE_DISTANCE, 0.8) : BENCH_SCENES[benchScene].scene;
+    const view = benchScene === null ? DEFAULT_VIEW : BENCH_SCENES[benchScene].view;
     for (let i = 0; i < warmup + frames; i++) {
       const t0 = performance.now();
-      await h.render(frameState(size, 1 + i / 60, DEFAULT_VIEW, colorSpace, samples), scene, samplesPerAxis);
-      if (i >= warmup) out.push(performance.now() - t0);
+      await h.render(frameState(size, 1 + i / 60, view, colorSpace, samples), scene, samplesPerAxis);
+      if (i >= warmup) out.push({ roundTrip: performance.now() - t0, render: h.lastWorkerMs });
     }
     return out;
   },
 
+  /** Workers a host started by default (one per core, up to 4). */
+  async defaultWorkers(): Promise<number> {
+    return (await softwareHost()).workerCount;
+  },
+
   /** The default scene at `time` through SoftwareHost's worker: RGBA8, top row first, base64. */
-  async hostPixels(size: Size, samplesPerAxis: number, time: number, colorSpace: ColorSpace = DEFAULTS.colorSpace, samples: number = DEFAULTS.samples): Promise<string> {
-    const h = await softwareHost();
-    return toBase64(await h.render(frameState(size, time, DEFAULT_VIEW, colorSpace, samples), defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), samplesPerAxis));
+  async hostPixels(
+    size: Size, samplesPerAxis: number, time: number, colorSpace: ColorSpace = DEFAULTS.colorSpace, samples: number = DEFAULTS.samples,
+    workers: number | null = null, benchScene: number | null = null,
+  ): Promise<string> {
+    const h = await softwareHost(workers);
+    const scene = benchScene === null ? defaultScene(DEFAULT_CUBE_DISTANCE, 0.8) : BENCH_SCENES[benchScene].scene;
+    const view = benchScene === null ? DEFAULT_VIEW : BENCH_SCENES[benchScene].view;
+    return toBase64(await h.render(frameState(size, time, view, colorSpace, samples), scene, samplesPerAxis));
   },
 
   /**
@@ -106,11 +131,11 @@ const api = {
    * WebGL ms per frame, each frame closed by a 1-pixel readback (so it is complete, as a software
    * frame is when its pixels are back): the default scene, or the Bézier patch at E (`bezier`).
    */
-  glFrames(size: Size, frames: number, warmup: number, bezier: number | null = null, colorSpace: ColorSpace = DEFAULTS.colorSpace): number[] {
+  glFrames(size: Size, frames: number, warmup: number, bezier: number | null = null, colorSpace: ColorSpace = DEFAULTS.colorSpace, benchScene: number | null = null): number[] {
     if (canvas.width !== size.width) canvas.width = size.width;
     if (canvas.height !== size.height) canvas.height = size.height;
-    const scene = bezier === null ? undefined : bezierScene(bezier);
-    const view = bezier === null ? DEFAULT_VIEW : BEZIER_VIEW;
+    const scene = benchScene !== null ? BENCH_SCENES[benchScene].scene : bezier === null ? undefined : bezierScene(bezier);
+    const view = benchScene !== null ? BENCH_SCENES[benchScene].view : bezier === null ? DEFAULT_VIEW : BEZIER_VIEW;
     const out: number[] = [];
     for (let i = 0; i < warmup + frames; i++) {
       const t0 = performance.now();
@@ -121,11 +146,12 @@ const api = {
     return out;
   },
 
-  glPixels(size: Size, time: number, bezier: number | null = null, colorSpace: ColorSpace = DEFAULTS.colorSpace): string {
+  glPixels(size: Size, time: number, bezier: number | null = null, colorSpace: ColorSpace = DEFAULTS.colorSpace, benchScene: number | null = null): string {
     if (canvas.width !== size.width) canvas.width = size.width;
     if (canvas.height !== size.height) canvas.height = size.height;
-    const scene = bezier === null ? undefined : bezierScene(bezier);
-    const px = renderer.read('screen', frameState(size, time, bezier === null ? DEFAULT_VIEW : BEZIER_VIEW, colorSpace), scene);
+    const scene = benchScene !== null ? BENCH_SCENES[benchScene].scene : bezier === null ? undefined : bezierScene(bezier);
+    const view = benchScene !== null ? BENCH_SCENES[benchScene].view : bezier === null ? DEFAULT_VIEW : BEZIER_VIEW;
+    const px = renderer.read('screen', frameState(size, time, view, colorSpace), scene);
     return toBase64(px.data);
   },
 };

@@ -36,6 +36,8 @@ const BEZIER_E = SMOKE ? [10] : [5, 10, 20, 40, 160];
 const REF_E = SMOKE ? 40 : 1024;
 const REF_E_CHECK = SMOKE ? null : 512;
 const PROBE_MS = SMOKE ? 500 : 3000;
+/** Section 6's probes per worker count and samples, alternating with the other counts'. */
+const PROBE_ROUNDS = SMOKE ? 1 : 2;
 const PIXEL_TIME = 1.25;
 /** Section 5's reference: bench.spec.ts's own (same size, time, views and spp), so the cache serves both. */
 const VIEWS_REF_SPP = SMOKE ? 1 : 8;
@@ -324,10 +326,15 @@ interface Probe { thread: string; frames: number; longTasks: number; longMs: num
 const BLOCKED_GAP_MS = 16;
 
 /** Mounts a spinning renderer="software" element and watches the main thread for `PROBE_MS`. */
-async function probe(page: Page, samples: number | null = null): Promise<Probe> {
+async function probe(page: Page, samples: number | null = null, workers: number | null = null): Promise<Probe> {
   await page.goto('/bench/software-element.html');
-  return page.evaluate(async ({ size, windowMs, blockedGap, samples }) => {
+  return page.evaluate(async ({ size, windowMs, blockedGap, samples, workers }) => {
     await customElements.whenDefined('glass-plane-scene');
+    if (workers !== null) {
+      // The element's SoftwareHost (the module it loads, served by Vite) starts this many workers.
+      const url = '/src/element/software-host.ts';
+      ((await import(/* @vite-ignore */ url)) as { SoftwareHost: { workerCount: number | null } }).SoftwareHost.workerCount = workers;
+    }
     const el = document.createElement('glass-plane-scene') as HTMLElement & { stats: { frames: number; thread?: string } };
     el.setAttribute('renderer', 'software');
     if (samples !== null) el.setAttribute('samples', String(samples));
@@ -382,7 +389,7 @@ async function probe(page: Page, samples: number | null = null): Promise<Probe> 
     const thread = el.stats.thread ?? '?';
     el.remove();
     return { thread, frames, longTasks, longMs, maxLong, rafs, maxRafGap, blockedMs, windowMs: t1 - t0, intervals };
-  }, { size: SIZE, windowMs: PROBE_MS, blockedGap: BLOCKED_GAP_MS, samples });
+  }, { size: SIZE, windowMs: PROBE_MS, blockedGap: BLOCKED_GAP_MS, samples, workers });
 }
 
 const share = (ms: number, p: Probe) => `${((100 * ms) / p.windowMs).toFixed(1)} %`;
@@ -424,6 +431,79 @@ async function responsiveness(page: Page): Promise<string[]> {
   ];
 }
 
+/**
+ * Issue 22: the frame split into bands across 1, 2 and all workers (SoftwareHost, one per core up
+ * to 4): the element's frame interval and long tasks (probe), the host's round trip and its slowest
+ * band's own time for the default scene and the 100k-triangle floor, WebGL beside them; the pixels
+ * of every count are the same bytes (asserted), so one PSNR per scene.
+ */
+async function workerRows(page: Page): Promise<string[]> {
+  await page.goto('/bench/software.html'); // section 4's probes left it
+  await page.waitForFunction(() => 'softwareBench' in window);
+  const b = api(page), all = await b.call('defaultWorkers');
+  const counts = [...new Set([1, 2, all])];
+  const label = (n: number) => `${n}${n === all ? ' (all: one per core, up to 4)' : ''}`;
+  type Kind = { key: string; label: string; scene: number | null; samples: FrameState['samples'] };
+  const kinds: Kind[] = [
+    { key: 'default 0', label: 'default scene, samples 0', scene: null, samples: 0 },
+    { key: 'default 4', label: 'default scene, samples 4', scene: null, samples: 4 },
+    { key: 'floor 4', label: `${BENCH_SCENES[GAUSS_100K].name}, samples 4`, scene: GAUSS_100K, samples: 4 },
+  ];
+  const rt = new Map<string, number[]>(), own = new Map<string, number[]>(), gl = new Map<string, number[]>();
+  const push = (m: Map<string, number[]>, k: string, xs: number[]) => m.set(k, [...(m.get(k) ?? []), ...xs]);
+  const frames = (k: Kind) => (k.scene === null ? FRAMES : Math.max(2, FRAMES / 2));
+  for (let rep = 0; rep < REPETITIONS; rep++) {
+    for (const [n, k] of shuffled(counts.flatMap((n) => kinds.map((k) => [n, k] as const)), 41 + rep)) {
+      const r = await b.call('hostFramesTimed', SIZE, 1, frames(k), WARMUP, 'srgb', k.samples, n, k.scene);
+      push(rt, `${n} ${k.key}`, r.map((x) => x.roundTrip));
+      push(own, `${n} ${k.key}`, r.map((x) => x.render));
+    }
+    for (const k of kinds) push(gl, k.key, await b.call('glFrames', SIZE, frames(k), WARMUP, null, 'srgb', k.scene));
+  }
+  const psnr = new Map<string, string>(), glPsnr = new Map<string, string>();
+  for (const k of kinds) {
+    const view = k.scene === null ? DEFAULT_VIEW : BENCH_SCENES[k.scene].view;
+    const scene = k.scene === null ? defaultScene(DEFAULT_CUBE_DISTANCE, 0.8) : BENCH_SCENES[k.scene].scene;
+    const ref = renderScene(scene, state(SIZE, view, PIXEL_TIME, 'srgb', k.samples), { samplesPerAxis: REF_SPP });
+    const pixels = await Promise.all(counts.map((n) => b.call('hostPixels', SIZE, 1, PIXEL_TIME, 'srgb', k.samples, n, k.scene)));
+    for (const p of pixels) expect(p, `${k.label}: every worker count draws the same bytes`).toBe(pixels[0]);
+    psnr.set(k.key, regionCells(compareImages(ref, bytes(pixels[0]))));
+    if (k.samples === 4) glPsnr.set(k.key, regionCells(compareImages(ref, bytes(await b.call('glPixels', SIZE, PIXEL_TIME, null, 'srgb', k.scene)))));
+  }
+  // Each count's probes alternate with the others' (2 rounds, shuffled), so a load that comes
+  // and goes on a shared machine falls on every count alike; their intervals are pooled.
+  const probes = new Map<string, Probe>();
+  for (let round = 0; round < PROBE_ROUNDS; round++) {
+    for (const [n, samples] of shuffled(counts.flatMap((n) => [[n, 0], [n, 4]] as const), 53 + round)) {
+      const p = await probe(page, samples, n), k = `${n} ${samples}`, q = probes.get(k);
+      probes.set(k, q ? { ...q, longMs: q.longMs + p.longMs, windowMs: q.windowMs + p.windowMs, intervals: [...q.intervals, ...p.intervals] } : p);
+    }
+  }
+  const interval = (n: number, k: Kind) => {
+    const p = probes.get(`${n} ${k.samples}`);
+    if (k.scene !== null || !p) return '—';
+    const m = median(p.intervals);
+    return `${k.samples === 0 ? `**${m.toFixed(1)}**` : m.toFixed(1)} (${p.intervals.length}); long tasks ${share(p.longMs, p)}`;
+  };
+  return [
+    `## 6. The frame split across workers (issue 22), ${SIZE.width}×${SIZE.height}`, '',
+    'SoftwareHost cuts each frame into bands of rows, one per worker, each drawn as in the whole frame (the bytes of every worker count below are the same: asserted), ' +
+      'its rows weighted by each worker\'s speed in the frames before; rough glass and the `passes` view go whole to one worker. ' +
+      `This machine reports ${all} cores (navigator.hardwareConcurrency), so "all" is ${all} workers. ` +
+      `**Frame interval**: the median time between the element\'s \`frame\` events while the cube spins (section 4\'s probe, ${PROBE_ROUNDS} × ${PROBE_MS / 1000} s, each count\'s windows alternating with the others\'; the number of intervals in brackets) and the long tasks\' share of that time; ` +
+      `**round trip**: SoftwareHost.render() posted → whole frame back on the main thread, one frame in flight, the clock moving (${REPETITIONS} repetitions × ${FRAMES} frames, ${Math.max(2, FRAMES / 2)} for the floor, after ${WARMUP} warm-up, shuffled); ` +
+      '**slowest band**: that frame\'s slowest worker\'s own time (render and copy of its rows). ' +
+      `PSNR against the float64 reference (${REF_SPP}×${REF_SPP} spp) at t = ${PIXEL_TIME} s, srgb, dB ${REGIONS.join(' / ')}. WebGL (SwiftShader, MSAA 4, the same page) beside each scene.`, '',
+    '| scene | workers | element frame interval, ms median (intervals); long tasks | round trip, ms/frame median [IQR] | slowest band, ms median [IQR] | PSNR dB |',
+    '|---|---|---|---|---|---|',
+    ...kinds.flatMap((k) => [
+      ...counts.map((n) => `| ${k.label} | ${label(n)} | ${interval(n, k)} | ${med(rt.get(`${n} ${k.key}`)!)} | ${med(own.get(`${n} ${k.key}`)!)} | ${psnr.get(k.key)} |`),
+      `| ${k.label} | WebGL | — | ${med(gl.get(k.key)!)} | — | ${glPsnr.get(k.key) ?? '(MSAA 4 only)'} |`,
+    ]),
+    '',
+  ];
+}
+
 test('bench: software renderer (issue 11)', async ({ page }) => {
   test.setTimeout(40 * 60_000);
   const loadBefore = loadavg()[0];
@@ -435,6 +515,7 @@ test('bench: software renderer (issue 11)', async ({ page }) => {
     ...(await bezier(page)),
     ...(await responsiveness(page)),
     ...views(),
+    ...(await workerRows(page)),
   ];
   const md = [
     '# Bench: the software renderer (issue 11)', '',

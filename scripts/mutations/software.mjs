@@ -9,6 +9,9 @@ const ANISO = 'tests/unit/software-anisotropic.test.ts';
 const MSAA = 'tests/unit/software-msaa.test.ts';
 const BASELINE = 'tests/unit/software-baseline.test.ts';
 const CACHES = 'tests/unit/software-caches.test.ts';
+const BANDS = 'tests/unit/software-bands.test.ts';
+const BANDS_E2E = 'tests/e2e/software-bands.spec.ts';
+const ELEMENT = 'tests/e2e/software.spec.ts';
 
 export default [
   {
@@ -108,7 +111,7 @@ export default [
   },
   {
     name: 'S15 srgb: the final encode missing (linear light written to the bytes)',
-    edits: [{ file: 'src/software/software-renderer.ts', find: 'resolveSamples(this.output, source, width, height, n, encodesAtEnd(state));', replace: 'resolveSamples(this.output, source, width, height, n, false);' }],
+    edits: [{ file: 'src/software/software-renderer.ts', find: 'width, bottom - top, n, encodesAtEnd(state));', replace: 'width, bottom - top, n, false);' }],
     tests: [SRGB],
   },
   {
@@ -316,5 +319,50 @@ export default [
     name: 'S51 glass cache: read and kept in the frame its key changes (the frame before wrote under another key)',
     edits: [{ file: 'src/software/glass-cache.ts', find: '    this.active = same;\n', replace: '    this.active = true;\n' }],
     tests: [BASELINE, CACHES],
+  },
+  {
+    name: 'S53 bands: a row between two bands drawn by neither (each band starts one row late)',
+    edits: [{ file: 'src/software/bands.ts', find: '    top = bottom;\n', replace: '    top = bottom + 1;\n' }],
+    tests: [BANDS],
+  },
+  {
+    name: 'S54 bands: the last band dropped (the frame cut into one band fewer than workers)',
+    edits: [{ file: 'src/software/bands.ts', find: '  for (let i = 0; i < count; i++) {\n    acc +=', replace: '  for (let i = 0; i < count - 1; i++) {\n    acc +=' }],
+    tests: [BANDS, BANDS_E2E],
+  },
+  {
+    name: 'S55 bands: a band\'s rows put back at the top of the frame (its offset ignored)',
+    edits: [{ file: 'src/software/bands.ts', find: '(band.bottom - band.top) * width), 4 * band.top * width);', replace: '(band.bottom - band.top) * width), 0);' }],
+    tests: [BANDS, BANDS_E2E],
+  },
+  {
+    name: 'S56 bands: the rasterizer draws every row whatever the band (the box not clamped to it)',
+    edits: [{ file: 'src/software/raster.ts', find: 'const py0 = Math.max(this.top, Math.ceil(', replace: 'const py0 = Math.max(0, Math.ceil(' }],
+    tests: [BANDS],
+  },
+  {
+    name: 'S57 bands: rough glass drawn in bands (the gather reads rows no band drew)',
+    edits: [{ file: 'src/software/software-renderer.ts', find: "return state.view !== 'passes' && !isRough(state);", replace: "return state.view !== 'passes';" }],
+    tests: [BANDS],
+  },
+  {
+    name: 'S58 bands: the workers never terminated (the element gone, they stay)',
+    edits: [{ file: 'src/element/software-host.ts', find: '    this.worker.terminate();\n', replace: '' }],
+    tests: [BANDS_E2E],
+  },
+  {
+    name: 'S59 bands: a worker that cannot start leaves the frame waiting (no fall back to the main thread)',
+    edits: [{ file: 'src/element/software-host.ts', find: '      e.preventDefault?.();\n      failed();\n', replace: '      e.preventDefault?.();\n' }],
+    tests: [ELEMENT],
+  },
+  {
+    name: 'S60 bands: the resolve writes the band\'s rows at the top of the output',
+    edits: [{ file: 'src/software/software-renderer.ts', find: 'const out = this.output.subarray(4 * top * width, 4 * bottom * width);', replace: 'const out = this.output.subarray(0, 4 * (bottom - top) * width);' }],
+    tests: [BANDS],
+  },
+  {
+    name: 'S61 bands: triangles left out before clipping against the wrong row (the band\'s last rows lose theirs)',
+    edits: [{ file: 'src/software/raster.ts', find: 'lo = 1 - (2 * (this.bottom + 1)) / H;', replace: 'lo = 1 - (2 * (this.bottom - 8)) / H;' }],
+    tests: [BANDS],
   },
 ];

@@ -50,3 +50,15 @@ export function inside(v: Float64Array, o: number, user: boolean): number {
 export function copyVertex(src: Float64Array, from: number, dst: Float64Array, to: number, n: number): void {
   for (let k = 0; k < n; k++) dst[to + k] = src[from + k];
 }
+
+/**
+ * Whether triangle (a, b, c), in front of the eye (w > 0 at each vertex), lies wholly above NDC
+ * y = `hi` or wholly below `lo`: a half-space holds the clipped polygon too, so it cannot reach
+ * a band of rows between them (Rasterizer.top; the caller leaves a row's margin for rounding).
+ */
+export function outsideRows(v: Float64Array, a: number, b: number, c: number, hi: number, lo: number): boolean {
+  const wa = v[a + CLIP_W], wb = v[b + CLIP_W], wc = v[c + CLIP_W];
+  if (!(wa > 0 && wb > 0 && wc > 0)) return false;
+  const ya = v[a + 1], yb = v[b + 1], yc = v[c + 1];
+  return (ya > hi * wa && yb > hi * wb && yc > hi * wc) || (ya < lo * wa && yb < lo * wb && yc < lo * wc);
+}

@@ -2,3 +2,4 @@
 export { SoftwareRenderer, type SoftwareRendererOptions } from './software-renderer';
 export type { SoftwareTiming } from './object-shader';
 export { Rasterizer, type FragmentShader, type CullMode } from './raster';
+export { splitRows, renderBand, putBand, type Band } from './bands';

@@ -5,6 +5,7 @@ import type { FrameState } from '../frame/types';
 import type { Scene } from '../scene/scene';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import type { DecodedImage } from '../scene/decoded-image';
+import type { Band } from './bands';
 
 export interface SoftwareRequest {
   id: number;
@@ -20,10 +21,13 @@ export interface SoftwareRequest {
   images: [string, DecodedImage][];
   /** Samples per pixel along each axis. */
   samplesPerAxis: number;
+  /** The rows this worker draws (one band of a frame split across workers); null: the whole frame. */
+  band: Band | null;
 }
 
 export type SoftwareResponse =
-  | { id: number; pixels: Uint8ClampedArray; width: number; height: number }
+  /** `pixels`: the band's rows (the whole frame's without one); `ms`: the worker's own time for them. */
+  | { id: number; pixels: Uint8ClampedArray; width: number; height: number; ms: number }
   | { id: number; error: string };
 
 /** Remembers what a worker holds, so a mesh or an image crosses once. */

@@ -1,12 +1,10 @@
 // Triangles in clip space → pixels: Sutherland–Hodgman clipping in clip space, edge functions on
 // a fixed-point grid with the top-left fill rule, a Float32 z-buffer, perspective-correct
 // barycentrics (and their screen derivatives, for texture LOD). Knows nothing of shading.
-
-import { ALL, copyVertex, inside, planeDistance, PLANES, USER, CLIP_W, CLIP_DISTANCE, VARYINGS } from './clip';
+import { ALL, copyVertex, inside, outsideRows, planeDistance, PLANES, USER, CLIP_W, CLIP_DISTANCE, VARYINGS } from './clip';
 import { edgeFunctions, HALF, runEnd, runStart, SUB } from './edges';
 
 export { CLIP_W, CLIP_DISTANCE, VARYINGS };
-
 export { SUBPIXEL_BITS } from './edges';
 /** A clipped triangle has at most 3 + one vertex per plane (near, far, 4 guard, user). */
 const MAX_POLY = 10;
@@ -58,6 +56,11 @@ export class Rasterizer {
    * sample is a pixel of its own (no multisampling, or supersampling when the caller sizes so).
    */
   shadeEvery = 1;
+  // The rows drawn, [top, bottom) (a band of the frame; multiples of shadeEvery): each triangle's
+  // box is clamped to them, its edge functions exact integers at the box's corner, so a row is
+  // drawn bit for bit as in the whole frame.
+  top = 0;
+  bottom = Infinity;
 
   // Per fragment, for the shader: the clipped vertices (`poly`), the triangle's three vertex
   // offsets into it, the perspective-correct barycentrics and their derivatives per pixel.
@@ -129,7 +132,8 @@ export class Rasterizer {
   }
 
   clearDepth(): void {
-    this.depth.fill(Infinity, 0, this.width * this.height);
+    const W = this.width;
+    this.depth.fill(Infinity, this.top * W, Math.min(this.bottom, this.height) * W);
   }
 
   /**
@@ -142,10 +146,13 @@ export class Rasterizer {
       this.poly = new Float64Array(MAX_POLY * s);
       this.scratch = new Float64Array(MAX_POLY * s);
     }
-    const user = this.userClip;
+    const user = this.userClip, H = this.height, banded = this.top > 0 || this.bottom < H;
+    // A band's triangles wholly more than a row above or below it are left before clipping.
+    const hi = 1 - (2 * (this.top - 1)) / H, lo = 1 - (2 * (this.bottom + 1)) / H;
     for (let t = 0; t + 2 < count; t += 3) {
       this.face = (t / 3) * MAX_POLY;
       const a = indices[t] * s, b = indices[t + 1] * s, c = indices[t + 2] * s;
+      if (banded && outsideRows(vertices, a, b, c, hi, lo)) continue;
       // Trivial accept: every vertex inside every plane; trivial reject: all outside one.
       const inA = inside(vertices, a, user), inB = inside(vertices, b, user), inC = inside(vertices, c, user);
       if ((inA & inB & inC) === ALL) {
@@ -227,8 +234,8 @@ export class Rasterizer {
     // Bounding box of pixel centres (c = p·SUB + HALF) inside it, clamped to the target.
     const px0 = Math.max(0, Math.ceil((Math.min(x0, x1, x2) - HALF) / SUB));
     const px1 = Math.min(this.width - 1, Math.floor((Math.max(x0, x1, x2) - HALF) / SUB));
-    const py0 = Math.max(0, Math.ceil((Math.min(y0, y1, y2) - HALF) / SUB));
-    const py1 = Math.min(this.height - 1, Math.floor((Math.max(y0, y1, y2) - HALF) / SUB));
+    const py0 = Math.max(this.top, Math.ceil((Math.min(y0, y1, y2) - HALF) / SUB));
+    const py1 = Math.min(this.height - 1, this.bottom - 1, Math.floor((Math.max(y0, y1, y2) - HALF) / SUB));
     if (px0 > px1 || py0 > py1) return;
     if (this.shadeEvery > 1) this.scanPixels(i, j, k, area, px0, px1, py0, py1, shader);
     else this.scan(i, j, k, area, px0, px1, py0, py1, shader);

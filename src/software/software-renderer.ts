@@ -23,6 +23,7 @@ import { Rasterizer } from './raster';
 import { RoughBuffers, RoughGather } from './rough-gather';
 import { ROUGH_GATHER } from '../frame/rough-glass';
 import { ggxAlpha } from '../math/ggx';
+import { fill, PassesTiles } from './passes-tiles';
 
 export interface SoftwareRendererOptions {
   /**
@@ -68,9 +69,18 @@ export class SoftwareRenderer {
   private readonly background = new Float64Array(3);
   private readonly sideClip = new Float64Array(4);
   private readonly transparent: number[] = [];
-  /** The `passes` view's frame, and the state each of its tiles is drawn with (reused). */
-  private tiled = new Uint8ClampedArray(0);
-  private readonly tileState = {} as FrameState;
+  /**
+   * The pixel rows to draw, [top, bottom): one band of a frame split across workers
+   * (element/software-host.ts); the output's other rows are left as they were. Every row drawn
+   * is the whole frame's, bit for bit (the same setup, tessellation and triangles, clamped to the
+   * rows; Rasterizer.top). Ignored — the whole frame drawn — by rough glass, whose glass gathers
+   * from around each pixel over the whole frame, and by the `passes` view. null: every row.
+   */
+  band: { top: number; bottom: number } | null = null;
+  private readonly passesTiles = new PassesTiles();
+  /** The samples drawn this frame, [from, to) on the target's grid (the band's rows). */
+  private from = 0;
+  private to = 0;
   private readonly draw: ObjectDraw;
   private readonly defaultScene = new DefaultSceneCache();
   /** Shaded samples per pixel along an axis (supersampling's n; 1 when multisampled). */
@@ -93,6 +103,11 @@ export class SoftwareRenderer {
     };
   }
 
+  /** Whether `band` is drawn as a band for this state (else the whole frame is: rough glass, the `passes` view). */
+  drawsBands(state: FrameState): boolean {
+    return state.view !== 'passes' && !isRough(state);
+  }
+
   /**
    * Draws `state.view` of `scene` (SPEC §3's default scene when absent) and returns its pixels:
    * RGBA8, top row first. The array is the renderer's own and is overwritten by the next call.
@@ -100,45 +115,23 @@ export class SoftwareRenderer {
    * material whose image is missing draws with the procedural texture.
    */
   render(state: FrameState, scene?: Scene, images?: ReadonlyMap<string, DecodedImage>): Uint8ClampedArray {
-    if (state.view === 'passes') return this.tiles(state, scene, images);
+    if (state.view === 'passes') return this.passesTiles.draw(state, (tile) => this.timed(tile, scene, images, false));
+    return this.timed(state, scene, images, true);
+  }
+
+  private timed(state: FrameState, scene: Scene | undefined, images: ReadonlyMap<string, DecodedImage> | undefined, banded: boolean): Uint8ClampedArray {
     const timing = this.timing;
     this.objectShader.timing = timing;
-    if (!timing) return this.frame(state, scene, images);
+    if (!timing) return this.frame(state, scene, images, banded);
     const t0 = performance.now();
     try {
-      return this.frame(state, scene, images);
+      return this.frame(state, scene, images, banded);
     } finally {
       timing.total += performance.now() - t0;
     }
   }
 
-  /**
-   * The `passes` debug view as the WebGL renderer tiles it: reflection | scene over
-   * fresnel | final, each drawn at its tile's size; on an odd size the right column and the top
-   * row take the extra pixel.
-   */
-  private tiles(state: FrameState, scene?: Scene, images?: ReadonlyMap<string, DecodedImage>): Uint8ClampedArray {
-    const width = Math.max(0, Math.floor(state.width)), height = Math.max(0, Math.floor(state.height));
-    if (this.tiled.length !== 4 * width * height) this.tiled = new Uint8ClampedArray(4 * width * height);
-    const left = Math.floor(width / 2), right = width - left;
-    const bottom = Math.floor(height / 2), top = height - bottom;
-    const tile = Object.assign(this.tileState, state);
-    const put = (view: FrameState['view'], x: number, y: number, w: number, h: number) => {
-      if (w === 0 || h === 0) return;
-      tile.view = view;
-      tile.width = w;
-      tile.height = h;
-      const px = this.render(tile, scene, images);
-      for (let row = 0; row < h; row++) this.tiled.set(px.subarray(4 * row * w, 4 * (row + 1) * w), 4 * ((y + row) * width + x));
-    };
-    put('reflection', 0, 0, left, top);
-    put('scene', left, 0, right, top);
-    put('fresnel', 0, top, left, bottom);
-    put('final', left, top, right, bottom);
-    return this.tiled;
-  }
-
-  private frame(state: FrameState, scene?: Scene, images?: ReadonlyMap<string, DecodedImage>): Uint8ClampedArray {
+  private frame(state: FrameState, scene: Scene | undefined, images: ReadonlyMap<string, DecodedImage> | undefined, banded: boolean): Uint8ClampedArray {
     scene ??= this.defaultScene.get(state.cubeDistance, state.spin);
     const ssaa = Math.max(1, Math.min(8, Math.floor(this.samplesPerAxis)));
     const msaa = ssaa === 1 && state.samples >= 2 ? 2 : 1;
@@ -149,6 +142,13 @@ export class SoftwareRenderer {
     const W = width * n, H = height * n;
     this.resize(W, H, width * height);
     if (W === 0 || H === 0) return this.output;
+    const band = banded && this.drawsBands(state) ? this.band : null;
+    const top = band ? Math.max(0, Math.min(height, Math.floor(band.top))) : 0;
+    const bottom = band ? Math.max(top, Math.min(height, Math.floor(band.bottom))) : height;
+    this.main.top = this.mirror.top = top * n;
+    this.main.bottom = this.mirror.bottom = bottom * n;
+    this.from = top * n * W;
+    this.to = bottom * n * W;
     this.prepare(state, scene);
 
     const view = state.view; // 'passes' is tiled by render()
@@ -157,11 +157,11 @@ export class SoftwareRenderer {
     switch (view) {
       case 'reflection':
         if (hasGlass) {
-          this.mask.fill(1, 0, W * H);
+          this.mask.fill(1, this.from, this.to);
           this.reflectionPass(state, scene, images, false);
           source = this.reflection;
         } else {
-          fill(this.colour, W * H, this.background);
+          fill(this.colour, this.from, this.to, this.background);
         }
         break;
       case 'scene':
@@ -169,7 +169,7 @@ export class SoftwareRenderer {
         break;
       case 'fresnel':
         this.opaquePass(state, scene, images);
-        fill(this.colour, W * H, BLACK);
+        fill(this.colour, this.from, this.to, BLACK);
         if (hasGlass) this.glass('fresnel');
         break;
       default:
@@ -182,7 +182,7 @@ export class SoftwareRenderer {
         if (isRough(state)) this.roughGlass(state, scene, images, width);
         else {
           this.scenePass(state, scene, images, 'beyond');
-          this.mask.fill(0, 0, W * H);
+          this.mask.fill(0, this.from, this.to);
           this.glass('mask');
           this.reflectionPass(state, scene, images, true);
           this.glass('compose');
@@ -190,7 +190,8 @@ export class SoftwareRenderer {
         this.drawObjects(this.main, state, scene, images, false, 'transparent', 'eye');
     }
     // F is a number, shown unencoded in either space (SPEC §13); every other view is a picture.
-    resolveSamples(this.output, source, width, height, n, encodesAtEnd(state));
+    const out = this.output.subarray(4 * top * width, 4 * bottom * width);
+    resolveSamples(out, source.subarray(3 * this.from, 3 * this.to), width, bottom - top, n, encodesAtEnd(state));
     return this.output;
   }
 
@@ -207,7 +208,7 @@ export class SoftwareRenderer {
     try {
       if (transmits) {
         for (let k = 0; k < 4; k++) codePlane[k] = -s.side * plane[k];
-        fill(b.behind, W * H, this.background);
+        fill(b.behind, 0, W * H, this.background);
         b.codes.fill(1, 0, W * H);
         r.clearDepth();
         r.mask = null;
@@ -297,7 +298,7 @@ export class SoftwareRenderer {
 
   private opaquePass(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined): void {
     const r = this.main;
-    fill(this.colour, r.width * r.height, this.background);
+    fill(this.colour, this.from, this.to, this.background);
     r.clearDepth();
     r.mask = null;
     this.drawObjects(r, state, scene, images, false, 'opaque', 'all');
@@ -306,7 +307,7 @@ export class SoftwareRenderer {
   /** Pass 1 into the reflection buffer, at the masked pixels only when `masked`. */
   private reflectionPass(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined, masked: boolean): void {
     const r = this.mirror;
-    fill(this.reflection, r.width * r.height, this.background);
+    fill(this.reflection, this.from, this.to, this.background);
     r.clearDepth();
     r.mask = masked ? this.mask : null;
     this.objectShader.colour = this.reflection;
@@ -386,15 +387,5 @@ export class SoftwareRenderer {
     let t = built.get(image);
     if (t === undefined) built.set(image, (t = imageMipTexture(image, space)));
     return t ?? proceduralMipTexture(space);
-  }
-}
-
-function fill(buffer: Float32Array, pixels: number, rgb: ArrayLike<number>): void {
-  if (rgb[0] === rgb[1] && rgb[1] === rgb[2]) {
-    buffer.fill(rgb[0], 0, 3 * pixels);
-    return;
-  }
-  for (let i = 0, o = 0; i < pixels; i++, o += 3) {
-    buffer[o] = rgb[0]; buffer[o + 1] = rgb[1]; buffer[o + 2] = rgb[2];
   }
 }

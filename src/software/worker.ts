@@ -1,7 +1,9 @@
-// The software renderer's worker (SPEC §11): draws each requested frame off the main thread and
-// sends the pixels back (transferred, not copied). Meshes and images arrive once and are kept.
+// The software renderer's worker (SPEC §11): draws each requested frame, or its band of rows when
+// the frame is split across workers, off the main thread and sends the pixels back (transferred,
+// not copied). Meshes and images arrive once and are kept.
 /// <reference lib="webworker" />
 import { SoftwareRenderer } from './software-renderer';
+import { renderBand } from './bands';
 import { unpackScene, type SoftwareRequest, type SoftwareResponse } from './protocol';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import type { DecodedImage } from '../scene/decoded-image';
@@ -23,8 +25,9 @@ scope.onmessage = (e: MessageEvent<SoftwareRequest>) => {
     if (r.scene) scene = unpackScene(r.scene, meshes);
     if (!scene) throw new Error('no scene sent yet');
     renderer.samplesPerAxis = r.samplesPerAxis;
-    const pixels = renderer.render(r.state, scene, images).slice();
-    response = { id: r.id, pixels, width: r.state.width, height: r.state.height };
+    const t0 = performance.now();
+    const pixels = renderBand(renderer, r.state, scene, images, r.band);
+    response = { id: r.id, pixels, width: r.state.width, height: r.state.height, ms: performance.now() - t0 };
     scope.postMessage(response, [pixels.buffer]);
   } catch (err) {
     response = { id: r.id, error: err instanceof Error ? err.message : String(err) };
