@@ -76,4 +76,19 @@ export default [
     edits: [{ file: 'src/render/lazy-part.ts', find: '  return Promise.allSettled([a, b, c, d])', replace: '  return Promise.allSettled([a ?? b ?? c ?? d])' }],
     tests: [CHUNK],
   },
+  {
+    name: 'Z15 the core\'s own vector rotation: the last cross term added where it is subtracted',
+    edits: [{ file: 'src/scene/group-rotation.ts', find: '  out[0] = vx + qw * tx + qy * tz - qz * ty;', replace: '  out[0] = vx + qw * tx + qy * tz + qz * ty;' }],
+    tests: ['tests/unit/controls.test.ts'],
+  },
+  {
+    name: 'Z16 the core\'s own vector rotation summed in another order (not gl-matrix\'s bits)',
+    edits: [{ file: 'src/scene/group-rotation.ts', find: '  out[1] = vy + qw * ty + qz * tx - qx * tz;', replace: '  out[1] = vy + (qw * ty + qz * tx - qx * tz);' }],
+    tests: ['tests/unit/controls.test.ts'],
+  },
+  {
+    name: 'Z17 quatToEuler\'s r21 entry with the wrong sign',
+    edits: [{ file: 'src/scene/group-rotation.ts', find: 'r21 = zy + wx,', replace: 'r21 = zy - wx,' }],
+    tests: ['tests/unit/controls.test.ts'],
+  },
 ];

@@ -3,7 +3,7 @@
 // and the reference see it applied to the scene value as ordinary transforms (rotateScene); the
 // renderers get it with each frame (FrameState.turn) and compose it as one more matrix
 // (turnMatrix), so a turn builds no new scene value. Pure math.
-import { mat3, mat4, vec3, type quat, type ReadonlyQuat } from 'gl-matrix';
+import { mat4, type quat, type ReadonlyQuat } from 'gl-matrix';
 import type { Light, Scene, SceneObject, Vec3 } from './scene';
 
 /**
@@ -40,6 +40,22 @@ function axisQuat(i: number, deg: number): Float64Array {
   return q;
 }
 
+/**
+ * out = v turned by the unit quaternion q: t = 2 (q⃗ × v), out = v + w t + q⃗ × t (the same
+ * operations, in the same order, as gl-matrix's vec3.transformQuat, so the same bits; its vec3
+ * module stays out of the core with the quat one).
+ */
+function rotateVector(out: number[] | Float64Array, q: ArrayLike<number>, vx: number, vy: number, vz: number): void {
+  const qx = q[0], qy = q[1], qz = q[2], qw = q[3];
+  let tx = qy * vz - qz * vy, ty = qz * vx - qx * vz, tz = qx * vy - qy * vx;
+  tx = tx + tx;
+  ty = ty + ty;
+  tz = tz + tz;
+  out[0] = vx + qw * tx + qy * tz - qz * ty;
+  out[1] = vy + qw * ty + qz * tx - qx * tz;
+  out[2] = vz + qw * tz + qx * ty - qy * tx;
+}
+
 /** Rz·Ry·Rx of Euler degrees (x applied first), as the renderers build it. */
 export function eulerToQuat(out: quat, rotation: readonly number[]): quat {
   multiply(out, axisQuat(2, rotation[2]), axisQuat(1, rotation[1]));
@@ -48,8 +64,11 @@ export function eulerToQuat(out: quat, rotation: readonly number[]): quat {
 
 /** Euler degrees [x, y, z] with Rz·Ry·Rx = the rotation of `q`; x = 0 at gimbal lock. */
 export function quatToEuler(q: ReadonlyQuat): Vec3 {
-  const m = mat3.fromQuat((new Float64Array(9) as unknown as mat3), q); // column-major: m[c*3 + r]
-  const r20 = m[2], r21 = m[5], r22 = m[8], r10 = m[1], r00 = m[0], r01 = m[3], r11 = m[4];
+  // The rotation matrix's entries rRC (row R, column C) that the angles need, from q as
+  // gl-matrix's mat3.fromQuat forms them.
+  const x = q[0], y2 = q[1] + q[1], z = q[2], w = q[3], x2 = x + x, z2 = z + z;
+  const xx = x * x2, yx = q[1] * x2, yy = q[1] * y2, zx = z * x2, zy = z * y2, zz = z * z2, wx = w * x2, wy = w * y2, wz = w * z2;
+  const r20 = zx - wy, r21 = zy + wx, r22 = 1 - xx - yy, r10 = yx + wz, r00 = 1 - yy - zz, r01 = yx - wz, r11 = 1 - xx - zz;
   const y = Math.asin(Math.max(-1, Math.min(1, -r20)));
   if (Math.abs(r20) < 0.9999999) return [Math.atan2(r21, r22) / DEG, y / DEG, Math.atan2(r10, r00) / DEG];
   return [0, y / DEG, Math.atan2(-r01, r11) / DEG];
@@ -59,12 +78,11 @@ export function quatToEuler(q: ReadonlyQuat): Vec3 {
 export function boundsCenter(objects: readonly SceneObject[]): Vec3 {
   if (objects.length === 0) return [0, 0, 0];
   const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
-  const q = (new Float64Array([0, 0, 0, 1]) as unknown as quat), c = (new Float64Array(3) as unknown as vec3);
+  const q = (new Float64Array([0, 0, 0, 1]) as unknown as quat), c = new Float64Array(3);
   for (const o of objects) {
-    const { position, rotation, scale } = o.transform;
-    vec3.multiply(c, o.bounds.center as vec3, scale as vec3);
-    vec3.transformQuat(c, c, eulerToQuat(q, rotation));
-    vec3.add(c, c, position as vec3);
+    const { position, rotation, scale } = o.transform, b = o.bounds.center;
+    rotateVector(c, eulerToQuat(q, rotation), b[0] * scale[0], b[1] * scale[1], b[2] * scale[2]);
+    for (let i = 0; i < 3; i++) c[i] += position[i];
     const r = o.bounds.radius * Math.max(Math.abs(scale[0]), Math.abs(scale[1]), Math.abs(scale[2]));
     for (let i = 0; i < 3; i++) {
       lo[i] = Math.min(lo[i], c[i] - r);
@@ -95,11 +113,11 @@ export function turnMatrix(out: mat4, q: ReadonlyQuat, center: ArrayLike<number>
 /** The objects turned by `q` about `center`: position c + q·(p − c), rotation q·R. */
 export function rotateObjects(objects: readonly SceneObject[], q: ReadonlyQuat, center: Vec3): readonly SceneObject[] {
   if (isIdentity(q)) return objects;
-  const r = (new Float64Array([0, 0, 0, 1]) as unknown as quat), p = (new Float64Array(3) as unknown as vec3);
+  const r = (new Float64Array([0, 0, 0, 1]) as unknown as quat), p = new Float64Array(3);
   return objects.map((o) => {
-    vec3.subtract(p, o.transform.position as vec3, center as vec3);
-    vec3.transformQuat(p, p, q);
-    vec3.add(p, p, center as vec3);
+    const t = o.transform.position;
+    rotateVector(p, q, t[0] - center[0], t[1] - center[1], t[2] - center[2]);
+    for (let i = 0; i < 3; i++) p[i] += center[i];
     multiply(r, q, eulerToQuat(r, o.transform.rotation));
     return { ...o, transform: { ...o.transform, position: [p[0], p[1], p[2]], rotation: quatToEuler(r) } };
   });
@@ -108,10 +126,10 @@ export function rotateObjects(objects: readonly SceneObject[], q: ReadonlyQuat, 
 /** A light turned by `q` about `center`: a point light's position, a directional light's direction. */
 export function rotateLight(light: Light, q: ReadonlyQuat, center: Vec3): Light {
   if (isIdentity(q)) return light;
-  const v = (Float64Array.from(light.vector) as unknown as vec3);
-  if (light.kind === 'point') vec3.subtract(v, v, center as vec3);
-  vec3.transformQuat(v, v, q);
-  if (light.kind === 'point') vec3.add(v, v, center as vec3);
+  const l = light.vector, point = light.kind === 'point', v = new Float64Array(3);
+  if (point) rotateVector(v, q, l[0] - center[0], l[1] - center[1], l[2] - center[2]);
+  else rotateVector(v, q, l[0], l[1], l[2]);
+  if (point) for (let i = 0; i < 3; i++) v[i] += center[i];
   return { ...light, vector: [v[0], v[1], v[2]] };
 }
 

@@ -1,13 +1,13 @@
 // SPEC §10's pure parts: Shoemake's arcball with Bell's sheet, inertia exact for any frame time,
 // the release velocity, the orbit camera, and the trackball's rotation of the scene value.
 import { describe, expect, it } from 'vitest';
-import { mat4, quat, vec3 } from 'gl-matrix';
+import { mat3, mat4, quat, vec3 } from 'gl-matrix';
 import { arcballAngle, arcballPoint } from '../../src/element/controls/arcball';
 import { Inertia, INERTIA_STOP, INERTIA_TAU, MAX_RATE, MAX_STEP, REST_MS, VelocityTracker } from '../../src/element/controls/inertia';
 import { OrbitCamera } from '../../src/element/controls/orbit';
 import { boundsCenter, eulerToQuat, quatToEuler, rotateLight, rotateObjects } from '../../src/scene/group-rotation';
 import { forwardFromYawPitch, type CameraPose } from '../../src/math/camera';
-import type { SceneObject } from '../../src/scene/scene';
+import type { Light, SceneObject } from '../../src/scene/scene';
 
 const DEG = Math.PI / 180;
 // gl-matrix's create() is float32: the controls work in float64, and so do these checks.
@@ -241,5 +241,49 @@ describe('the trackball\'s rotation of the scene', () => {
     expect(p.vector.map((x) => Math.round(x * 1e9) / 1e9)).toEqual([1, 1, -1]);
     const d = rotateLight({ ...base, kind: 'directional', vector: [1, 0, 0] } as never, q, [1, 1, 0]);
     expect(d.vector.map((x) => Math.round(x * 1e9) / 1e9)).toEqual([0, 0, -1]);
+  });
+});
+
+describe('the group rotation\'s own quaternion arithmetic (the core does without gl-matrix\'s quat and vec3)', () => {
+  // Random unit quaternions, Euler angles, centres and lights: the results equal, bit for bit,
+  // the same computations through gl-matrix (quat.multiply, vec3.transformQuat, mat3.fromQuat).
+  const rand = (seed: number) => () => ((seed = (seed * 16807) % 2147483647) / 2147483647) * 2 - 1;
+  const r = rand(7);
+  const obj = (position: [number, number, number], rotation: [number, number, number]): SceneObject => ({
+    geometry: { kind: 'box', size: 1 }, transform: { position, rotation, scale: [1 + r(), 2, 1 - r() / 2], spin: 0 },
+    material: { ambient: [0, 0, 0], diffuse: [1, 1, 1], specular: [0, 0, 0], shininess: 1, opacity: 1, texture: { kind: 'procedural' }, mapping: 'uv' },
+    bounds: { center: [0, 0, 0], radius: 1 },
+  });
+  /** quatToEuler through gl-matrix's mat3.fromQuat (column-major m[c*3 + r]). */
+  const eulerOf = (q: quat) => {
+    const m = mat3.fromQuat(new Float64Array(9) as unknown as mat3, q);
+    const y = Math.asin(Math.max(-1, Math.min(1, -m[2])));
+    if (Math.abs(m[2]) < 0.9999999) return [Math.atan2(m[5], m[8]) / DEG, y / DEG, Math.atan2(m[1], m[0]) / DEG];
+    return [0, y / DEG, Math.atan2(-m[3], m[4]) / DEG];
+  };
+  it('boundsCenter, rotateObjects and rotateLight equal their gl-matrix forms on 200 random cases', () => {
+    for (let k = 0; k < 200; k++) {
+      const q = quat.normalize(q64(), [r(), r(), r(), r()] as unknown as quat);
+      const e: [number, number, number] = [180 * r(), 90 * r(), 180 * r()];
+      const o = { ...obj([3 * r(), 3 * r(), 3 * r()], e), bounds: { center: [r(), r(), r()], radius: 1 + r() } } as SceneObject;
+      // gl-matrix's forms, written out here.
+      const qx = quat.setAxisAngle(q64(), [1, 0, 0], e[0] * DEG), qy = quat.setAxisAngle(q64(), [0, 1, 0], e[1] * DEG), qz = quat.setAxisAngle(q64(), [0, 0, 1], e[2] * DEG);
+      const qe = quat.multiply(q64(), quat.multiply(q64(), qz, qy), qx);
+      expect([...eulerToQuat(q64(), e)]).toEqual([...qe]);
+      const c = vec3.add(v64(), vec3.transformQuat(v64(), vec3.multiply(v64(), o.bounds.center as vec3, o.transform.scale as vec3), qe), o.transform.position as vec3);
+      // One object: the middle of its box is its centre, (c − r + c + r) / 2, to rounding.
+      const b = boundsCenter([o]), rad = o.bounds.radius * Math.max(...o.transform.scale.map(Math.abs));
+      expect(b).toEqual([0, 1, 2].map((i) => (c[i] - rad + (c[i] + rad)) / 2));
+      const centre: [number, number, number] = [r(), r(), r()];
+      const p = vec3.add(v64(), vec3.transformQuat(v64(), vec3.subtract(v64(), o.transform.position as vec3, centre), q), centre);
+      const [turned] = rotateObjects([o], q, centre);
+      expect(turned.transform.position).toEqual([p[0], p[1], p[2]]);
+      expect(turned.transform.rotation).toEqual(eulerOf(quat.multiply(q64(), q, qe)));
+      const light = { ambient: [0, 0, 0], diffuse: [1, 1, 1], specular: [1, 1, 1], kind: 'point', vector: [r(), r(), r()] } as never as Light;
+      const lp = vec3.add(v64(), vec3.transformQuat(v64(), vec3.subtract(v64(), light.vector as vec3, centre), q), centre);
+      expect(rotateLight(light, q, centre).vector).toEqual([lp[0], lp[1], lp[2]]);
+      const dir = { ...light, kind: 'directional' } as Light, ld = vec3.transformQuat(v64(), dir.vector as vec3, q);
+      expect(rotateLight(dir, q, centre).vector).toEqual([ld[0], ld[1], ld[2]]);
+    }
   });
 });
