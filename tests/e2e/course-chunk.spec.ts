@@ -75,6 +75,12 @@ for (const name of CHUNKS) {
 }
 
 test('the Renderer draws a course camera from the camera attributes until load(), from the course camera after', async ({ page }) => {
+  // The projection's chunk comes 300 ms after the renderer's checks (the page runs with checks on):
+  // load() must wait for every part a frame needs, not only the first.
+  await page.route('**/course-projection*', async (route) => {
+    await new Promise((r) => setTimeout(r, 300));
+    await route.continue();
+  });
   await openRendererPage(page);
   const text = fs.readFileSync(path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../data/course/camera.cfg'), 'utf8');
   const { warnings: _w, ...camera } = parseCameraCfg(text, { url: 'camera.cfg' });
