@@ -103,7 +103,7 @@ export default [
   },
   {
     name: 'W19 the renderer takes a rough frame as rough before its chunk is in',
-    edits: [{ file: 'src/render/rough-loader.ts', find: 'return isRough(state) && this.chunk !== null;', replace: 'return isRough(state);' }],
+    edits: [{ file: 'src/render/rough-loader.ts', find: 'return isRough(state) && this.part.value !== null;', replace: 'return isRough(state);' }],
     tests: [ROUGH],
   },
 ];

@@ -6,6 +6,7 @@ import { forwardFromYawPitch, orthoHalfHeight, orthographicMatrix, projectionMat
 import { eyeRelativePlane, MIRROR_CONTACT, reflectDirection, reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
 import type { CourseDepthRange } from '../scene/course-depth';
 import type { CourseProjection } from './course-projection';
+import type { CourseCamera } from '../math/course-camera';
 import { CAMERA, DEFAULT_GLASS } from '../scene/default-scene';
 import { glassFrame, type GlassFrame } from '../scene/glass-frame';
 import { isIdentity, turnMatrix } from '../scene/group-rotation';
@@ -152,7 +153,7 @@ export class FrameSetup {
     const turn = s.turn ?? null;
     this.objectsTurn = turn && !isIdentity(turn.objects) ? (turnMatrix(this.objectsTurnMatrix as unknown as mat4, turn.objects, turn.center) as unknown as Float64Array) : null;
     this.lightTurn = turn && !isIdentity(turn.light) ? (turnMatrix(this.lightTurnMatrix as unknown as mat4, turn.light, turn.center) as unknown as Float64Array) : null;
-    this.viewAndProjection(s, scene, forward);
+    this.viewAndProjection(s, scene, forward, course);
     // Mirrored eye-relative: V·R·x = Vrot·L·(x − mirroredEye), L the plane's linear reflection.
     reflectionMatrix(this.reflectionLinear, plane);
     this.reflectionLinear[12] = this.reflectionLinear[13] = this.reflectionLinear[14] = 0;
@@ -171,8 +172,7 @@ export class FrameSetup {
    * projection and viewProjection of this frame's camera (the course's, an orthographic or a
    * perspective one), the orthographic half-height and each eye's view vector.
    */
-  private viewAndProjection(s: FrameState, scene: Scene, forward: Float64Array): void {
-    const course = this.course ? s.courseCamera ?? null : null;
+  private viewAndProjection(s: FrameState, scene: Scene, forward: Float64Array, course: CourseCamera | null): void {
     // Same near and far for both projections (SPEC §2): the orthographic eye is a point on the
     // view plane's centre like the perspective one, and draws depths near..far ahead of it.
     const aspect = s.width / Math.max(1, s.height);

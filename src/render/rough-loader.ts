@@ -2,6 +2,7 @@
 // passes, targets, shaders) loaded the first time a frame asks for roughness, its targets made
 // on the first rough frame. Until the chunk is in, rough glass is drawn polished.
 import { isRough } from '../frame/roughness';
+import { LazyPart } from './lazy-part';
 import type { ResourceCounter } from './gl/resource-counter';
 import type { MultisampleTarget } from './gl/multisample-target';
 import type { RenderTarget } from './gl/render-target';
@@ -11,10 +12,14 @@ import type { RoughTargets } from './rough-targets';
 import type { FrameState } from '../frame/types';
 
 export class RoughLoader {
-  private chunk: typeof import('./rough-glass-gl') | null = null;
-  private loading: Promise<void> | null = null;
-  /** The chunk failed to load: rough glass stays polished for this renderer. */
-  private failed = false;
+  /** The chunk, its shader sources handed to the program cache as it arrives. */
+  private readonly part = new LazyPart(
+    () => import('./rough-glass-gl').then((chunk) => {
+      this.programs.setRoughSources(chunk.ROUGH_SOURCES);
+      return chunk;
+    }),
+    'rough glass', 'drawing the glass polished',
+  );
   private targets: RoughTargets | null = null;
 
   constructor(
@@ -26,28 +31,18 @@ export class RoughLoader {
 
   /** See Renderer.load. */
   load(state: FrameState): Promise<void> | null {
-    if (!isRough(state) || this.chunk || this.failed) return null;
-    return (this.loading ??= import('./rough-glass-gl').then(
-      (chunk) => {
-        this.programs.setRoughSources(chunk.ROUGH_SOURCES);
-        this.chunk = chunk;
-      },
-      (e: unknown) => {
-        this.failed = true;
-        throw new Error(`rough glass could not load (${String(e).slice(0, 200)}); drawing the glass polished`);
-      },
-    ));
+    return this.part.load(isRough(state));
   }
 
   /** Is the glass rough this frame? Roughness > 0 and the chunk in. */
   active(state: FrameState): boolean {
-    return isRough(state) && this.chunk !== null;
+    return isRough(state) && this.part.value !== null;
   }
 
   /** RoughTargets.draw (after active() said yes), the targets made on first use. */
   draw(ctx: PassContext, sharp: RenderTarget, msaa: MultisampleTarget | null): number {
     const { gl, counter, programs, vao, maxSize, halfFloat } = this;
-    this.targets ??= new this.chunk!.RoughTargets(gl, counter, programs, vao, maxSize, halfFloat);
+    this.targets ??= new this.part.value!.RoughTargets(gl, counter, programs, vao, maxSize, halfFloat);
     return this.targets.draw(ctx, sharp, msaa);
   }
 
