@@ -48,4 +48,19 @@ export default [
     edits: [{ file: 'src/software/software-renderer.ts', find: 'for (let k = 0; k < 4; k++) codePlane[k] = s.side * plane[k];', replace: 'for (let k = 0; k < 4; k++) codePlane[k] = -s.side * plane[k];' }],
     tests: [ROUGH],
   },
+  {
+    name: 'Q10 the inverse view-projection with one cofactor\'s sign flipped (math/invert.ts)',
+    edits: [{ file: 'src/math/invert.ts', find: 'out[9] = (-m30 * t23 + m32 * t03 - m33 * t02) * k;', replace: 'out[9] = (m30 * t23 - m32 * t03 + m33 * t02) * k;' }],
+    tests: ['tests/unit/invert.test.ts', ROUGH],
+  },
+  {
+    name: 'Q11 the inverse not divided by the determinant',
+    edits: [{ file: 'src/math/invert.ts', find: 'const k = 1 / det;', replace: 'const k = 1;' }],
+    tests: ['tests/unit/invert.test.ts', ROUGH],
+  },
+  {
+    name: 'Q12 a singular matrix inverted anyway (out filled with infinities)',
+    edits: [{ file: 'src/math/invert.ts', find: 'if (det === 0 || !Number.isFinite(det)) return false;', replace: '' }],
+    tests: ['tests/unit/invert.test.ts'],
+  },
 ];

@@ -6,7 +6,7 @@
 // shaders/rough-glass.glsl gathers R̃ and B̃ from them (bind() sets its inputs). In rough glass's
 // own chunk (rough-glass-gl.ts); made on the first rough frame, kept while the renderer lives;
 // nothing is allocated per frame.
-import { mat4 } from 'gl-matrix';
+import { invert4 } from '../math/invert';
 import { MipTarget } from './gl/mip-target';
 import { MultisampleTarget } from './gl/multisample-target';
 import type { RenderTarget, TargetFormat } from './gl/render-target';
@@ -100,7 +100,7 @@ export class RoughTargets implements RoughBinding {
     // Mirror images and what lies beyond the glass both sit on its far side: h = −side·(n·x + d),
     // x unprojected by the inverse of the eye-relative view-projection (the mirrored pass's own
     // projection is that one times the plane's reflection: the same inverse gives the image).
-    if (mat4.invert(this.inverse64 as unknown as mat4, setup.viewProjection as unknown as mat4)) this.inverse.set(this.inverse64);
+    if (invert4(this.inverse64, setup.viewProjection)) this.inverse.set(this.inverse64);
     eyeRelativePlane(this.farSide64, setup.glass.plane, setup.eye, -setup.side);
     this.farSide.set(this.farSide64);
 

@@ -5,7 +5,7 @@
 // from the glass — so an object touching the glass stays sharp and one far from it spreads its
 // light wide — and left out where a ray to it would leave the glass's far side or pass the
 // pixel's own surface first.
-import { mat4 } from 'gl-matrix';
+import { invert4 } from '../math/invert';
 import { refractThin } from '../math/ggx';
 import { ROUGH_FIRST_RING, roughRings, type RoughGatherSettings } from '../frame/rough-glass';
 import { FloatMips } from './float-mips';
@@ -63,7 +63,7 @@ export class RoughGather {
     orthographic: boolean, forward: ArrayLike<number>,
   ): void {
     this.vp = viewProjection;
-    mat4.invert(this.inverse as unknown as mat4, viewProjection as unknown as mat4);
+    invert4(this.inverse, viewProjection);
     this.width = width;
     this.height = height;
     this.orthographic = orthographic;
