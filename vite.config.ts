@@ -65,6 +65,9 @@ export default defineConfig(({ mode, command }) => {
             // Flat shading, the Gaussian, the reflection's clustering (render/mesh-extras.ts), which
             // the software renderer's chunk shares: one file, not one per generator.
             { name: 'mesh-extras', test: /src[\\/](render[\\/]mesh-extras|scene[\\/]geometry[\\/](flat|gaussian|cluster))\.ts$/ },
+            // What turns the scene value (the trackball's, or objectRotation's, first turn): the
+            // element fetches it, and the controls' chunk imports it.
+            { name: 'group-rotation', test: /src[\\/]scene[\\/]group-rotation\.ts$/ },
             // Files loaded once per page (models, course files): shared by the children and camera-src.
             { name: 'model-cache', test: /src[\\/](element[\\/](absolute-url|children[\\/]model-cache)|loaders[\\/]load-error)\.ts$/ },
           ],

@@ -4,6 +4,7 @@
 const CHUNK = 'tests/e2e/course-chunk.spec.ts';
 const RIG = 'src/element/camera-rig.ts';
 const LOD = 'tests/e2e/reflection-lod.spec.ts';
+const CHUNKS = 'tests/e2e/turn-debug-chunks.spec.ts';
 
 export default [
   {
@@ -77,12 +78,12 @@ export default [
     tests: [CHUNK],
   },
   {
-    name: 'Z15 the core\'s own vector rotation: the last cross term added where it is subtracted',
+    name: 'Z15 the group rotation\'s own vector rotation: the last cross term added where it is subtracted',
     edits: [{ file: 'src/scene/group-rotation.ts', find: '  out[0] = vx + qw * tx + qy * tz - qz * ty;', replace: '  out[0] = vx + qw * tx + qy * tz + qz * ty;' }],
     tests: ['tests/unit/controls.test.ts'],
   },
   {
-    name: 'Z16 the core\'s own vector rotation summed in another order (not gl-matrix\'s bits)',
+    name: 'Z16 the group rotation\'s own vector rotation summed in another order (not gl-matrix\'s bits)',
     edits: [{ file: 'src/scene/group-rotation.ts', find: '  out[1] = vy + qw * ty + qz * tx - qx * tz;', replace: '  out[1] = vy + (qw * ty + qz * tx - qx * tz);' }],
     tests: ['tests/unit/controls.test.ts'],
   },
@@ -90,5 +91,45 @@ export default [
     name: 'Z17 quatToEuler\'s r21 entry with the wrong sign',
     edits: [{ file: 'src/scene/group-rotation.ts', find: 'r21 = zy + wx,', replace: 'r21 = zy - wx,' }],
     tests: ['tests/unit/controls.test.ts'],
+  },
+  {
+    name: 'Z18 a frame with a turn is drawn without waiting for the group rotation (about the origin)',
+    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '|| this.rig.controlsLoading || this.scenes.waiting) return;', replace: '|| this.rig.controlsLoading) return;\n    void this.scenes.waiting;' }],
+    tests: [CHUNKS],
+  },
+  {
+    name: 'Z19 the controls\' chunk does not hand the group rotation on (`scene` unturned after a trackball turn)',
+    edits: [{ file: RIG, find: '      this.host.rotationArrived(chunk.groupRotation);\n', replace: '' }],
+    tests: [CHUNKS],
+  },
+  {
+    name: 'Z20 the centre of a value built before the group rotation came is never found (the turn about the origin)',
+    edits: [{ file: 'src/element/scene-value.ts', find: '      this.centered = false;\n      this.builds++;', replace: '      this.centered = true;\n      this.builds++;' }],
+    tests: [CHUNKS],
+  },
+  {
+    name: 'Z21 `scene` never turned once the group rotation is in',
+    edits: [{ file: 'src/element/scene-value.ts', find: '    if (!code) return this.current;\n', replace: '    if (code) return this.current;\n' }],
+    tests: [CHUNKS],
+  },
+  {
+    name: 'Z22 a failed group rotation is not warned about',
+    edits: [{ file: 'src/element/scene-value.ts', find: 'loading.catch((e: Error) => warn(e.message))', replace: 'loading.catch(() => {})' }],
+    tests: [CHUNKS],
+  },
+  {
+    name: 'Z23 Renderer.load never asks for the debug views (the final image in their place)',
+    edits: [{ file: 'src/render/renderer.ts', find: 'meshes, this.views.load(view));', replace: 'meshes, null);' }],
+    tests: [CHUNKS],
+  },
+  {
+    name: 'Z24 the debug views\' chunk asked for in the final view too (fetched by every page)',
+    edits: [{ file: 'src/render/renderer.ts', find: "const view = state.view !== 'final' && state.view !== 'scene';", replace: "const view = state.view !== 'scene';" }],
+    tests: [CHUNKS],
+  },
+  {
+    name: 'Z25 the passes view\'s reflection tile drawn over the fresnel tile\'s place',
+    edits: [{ file: 'src/render/debug-views.ts', find: 'n += blit(f, framebuffer, setTile(0, bottom, left, top));', replace: 'n += blit(f, framebuffer, setTile(0, 0, left, top));' }],
+    tests: ['tests/e2e/debug-views.spec.ts'],
   },
 ];

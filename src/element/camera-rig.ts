@@ -8,6 +8,7 @@ import type { SceneAttributes } from './attributes';
 import type { CameraSource } from './camera-source';
 import type { Controller } from './controller';
 import type { ControlsInput } from './controls/controls-input';
+import type { GroupRotation } from './scene-value';
 import { setPose, type CameraPose } from '../math/camera';
 import type { CameraChangeDetail } from './types';
 import { warn } from './warnings';
@@ -30,6 +31,8 @@ export interface CameraRigHost {
   flybyMoved(): void;
   /** What orbit turns about without `camera-target`: the centre of the objects as drawn. */
   objectsCenter(): ArrayLike<number>;
+  /** The controls' chunk carries the group rotation (the trackball turns the scene): handed on with it. */
+  rotationArrived(code: GroupRotation): void;
   /** The debug-view key (F) was pressed. */
   cycleDebugView(): void;
 }
@@ -84,6 +87,7 @@ export class CameraRig implements Controller {
     if (this.controls || this.controlsPending || c === null) return;
     this.controlsPending = true;
     import('./controls/controls').then((chunk) => {
+      this.host.rotationArrived(chunk.groupRotation);
       this.controls = new chunk.ControlsInput(this);
       if (this.connected) this.controls.hostConnected();
     }, (e: unknown) => {

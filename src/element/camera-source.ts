@@ -8,7 +8,7 @@ import type { CourseCamera } from '../math/course-camera';
 // has both (the course camera is drawn) or neither (the camera attributes stay the view).
 import { courseSceneRange } from '../frame/course-projection';
 import type { Scene } from '../scene/scene';
-import type { SceneTurn } from '../scene/group-rotation';
+import type { SceneTurn } from '../scene/turn';
 import { acquireCourseFile, loadErrorDetail, type Handle } from './children/model-cache';
 import type { LoadedCamera } from './children/course-files';
 import { warn } from './warnings';

@@ -5,7 +5,6 @@
 import { ATTRIBUTES, ATTRIBUTE_BY_NAME, DEBUG_VIEWS, defaultAttributes, type SceneAttributes } from './attributes';
 import { defineAttributeProperties, upgradeProperties, type AttributeHost } from './attribute-properties';
 import { AttributeWarnings, warn } from './warnings';
-import { boundsCenter } from '../scene/group-rotation';
 import { applyStyle } from './element-style';
 import { readCanvas } from './canvas-readback';
 import type { FrameReport, FrameState, RenderStats } from '../render/types';
@@ -109,7 +108,8 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
       element: this, canvas, values: this.values, requestRender,
       turned: () => this.scenes.turnChanged(),
       flybyMoved: () => { this.loop.dirty = true; },
-      objectsCenter: () => boundsCenter(this.scene.objects),
+      objectsCenter: () => this.scenes.objectsCenter(),
+      rotationArrived: (code) => this.scenes.rotationArrived(code),
       cycleDebugView: () => { this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length]; },
     });
     const { objectRotation, lightRotation } = this.rig;
@@ -117,6 +117,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
       inputs: () => ({ ...this.values, spin: this.effectiveSpin() }),
       parts: () => this.source.current(),
       objectRotation, lightRotation,
+      turnLoaded: requestRender,
     });
     this.states.current.turn = this.scenes.turn;
     this.loop = new FrameLoop({
@@ -200,7 +201,8 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
   /**
    * The scene as one value (SPEC §9): the glass and background from the attributes, the
    * children's objects and lights, or SPEC §3's defaults where there are none, turned by the
-   * trackball. Read-only; a new value after every change (the same object until then).
+   * trackball. Read-only; a new value after every change (the same object until then). A turn
+   * set without `controls` shows in it from the next `frame` on (its code is fetched first).
    */
   get scene(): Scene {
     return this.scenes.turned;
@@ -255,8 +257,8 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
   private drawFrame(now: number): void {
     this.rig.step();
     const backend = this.backend.current!;
-    // Dirty stays set: drawn when the last frame is back, or a chunk (controls, children) is in.
-    if (backend.busy || this.rig.controlsLoading) return;
+    // Dirty stays set: drawn when the last frame is back, or a chunk (controls, turn, children) is in.
+    if (backend.busy || this.rig.controlsLoading || this.scenes.waiting) return;
     const scene = this.scenes.current; // finding children not yet defined starts loading them
     if (this.source.defining) return; // and the frame waits for them
     this.loop.dirty = false;

@@ -2,12 +2,19 @@
 // children's parts when one of them changes, and kept until then. The trackball's turn is not in
 // it: the turn travels in each frame's state (FrameState.turn), so a turn or a camera move builds
 // nothing and the frame loop allocates no scene while things move. The page's `scene` is the
-// value with the turn applied, built when read.
+// value with the turn applied, built when read. What applies a turn and finds the centre it turns
+// about (scene/group-rotation.ts) is a chunk, fetched when a turn is first set (or brought by
+// the controls' chunk): frames wait for it, and until it is in, `scene` is the value unturned.
 import type { ReadonlyQuat } from 'gl-matrix';
-import { boundsCenter, rotateScene, type SceneTurn } from '../scene/group-rotation';
+import { LazyPart } from '../render/lazy-part';
+import { isIdentity, type SceneTurn } from '../scene/turn';
 import type { Scene } from '../scene/scene';
 import { composeScene, SCENE_ATTRIBUTES, type ChildParts, type SceneInputs } from './compose-scene';
 import type { SceneAttributes } from './attributes';
+import { warn } from './warnings';
+
+/** The group rotation's chunk: what turns the scene value and finds the objects' centre. */
+export type GroupRotation = typeof import('../scene/group-rotation');
 
 /** What SceneValue needs of the scene element. */
 export interface SceneValueHost {
@@ -18,6 +25,8 @@ export interface SceneValueHost {
   /** The trackball's rotations of the objects and of the first light (live: changed in place). */
   readonly objectRotation: ReadonlyQuat;
   readonly lightRotation: ReadonlyQuat;
+  /** The group rotation's chunk settled (in or failed): draw the frame that waited for it. */
+  turnLoaded(): void;
 }
 
 const SHAPING: ReadonlySet<keyof SceneAttributes> = new Set(SCENE_ATTRIBUTES);
@@ -28,8 +37,14 @@ export class SceneValue {
   /** The turn for the frame state: the live rotations, about the centre of this value's objects. */
   readonly turn: SceneTurn;
   private readonly center = new Float64Array(3);
+  /** `center` is this value's (false after a build until the group rotation is in). */
+  private centered = false;
   private value: Scene | null = null;
   private turnedValue: Scene | null = null;
+  private readonly rotation = new LazyPart<GroupRotation>(
+    () => import('../scene/group-rotation'), 'The trackball\'s turn', 'the objects turn about the origin, and `scene` leaves the turn out',
+  );
+  private fetching = false;
 
   constructor(private readonly host: SceneValueHost) {
     this.turn = { objects: host.objectRotation, light: host.lightRotation, center: this.center };
@@ -39,15 +54,48 @@ export class SceneValue {
   get current(): Scene {
     if (!this.value) {
       this.value = composeScene(this.host.inputs(), this.host.parts());
-      this.center.set(boundsCenter(this.value.objects));
+      this.centered = false;
       this.builds++;
+    }
+    const code = this.rotation.value;
+    if (!this.centered && code) {
+      this.center.set(code.boundsCenter(this.value.objects));
+      this.centered = true;
     }
     return this.value;
   }
 
-  /** The page's value: `current` with the trackball's turn applied (the same object while neither changes). */
+  /**
+   * The page's value: `current` with the trackball's turn applied (the same object while neither
+   * changes); `current` while no turn is set, or before the group rotation's chunk is in.
+   */
   get turned(): Scene {
-    return (this.turnedValue ??= rotateScene(this.current, this.host.objectRotation, this.host.lightRotation));
+    const code = this.rotation.value;
+    if (!code) return this.current;
+    return (this.turnedValue ??= code.rotateScene(this.current, this.host.objectRotation, this.host.lightRotation));
+  }
+
+  /** The centre of the objects as drawn (turned); the origin before the group rotation is in. */
+  objectsCenter(): ArrayLike<number> {
+    return this.rotation.value?.boundsCenter(this.turned.objects) ?? [0, 0, 0];
+  }
+
+  /** True while a turn is set and the group rotation's chunk is on its way (fetched the first time): the frame waits for it. */
+  get waiting(): boolean {
+    const h = this.host, loading = this.rotation.load(!isIdentity(h.objectRotation) || !isIdentity(h.lightRotation));
+    if (loading && !this.fetching) {
+      this.fetching = true;
+      loading.catch((e: Error) => warn(e.message)).finally(() => {
+        this.fetching = false;
+        h.turnLoaded();
+      });
+    }
+    return loading !== null;
+  }
+
+  /** The controls' chunk brought the group rotation with the trackball: no fetch of its own. */
+  rotationArrived(code: GroupRotation): void {
+    this.rotation.provide(code);
   }
 
   /** An attribute changed: the value is built again only if it shapes the scene. */

@@ -5,7 +5,7 @@ import { courseViewProjection, type CourseCamera } from '../math/course-camera';
 import { courseSceneRange, type CourseDepthRange } from '../scene/course-depth';
 
 export { courseSceneRange };
-import type { SceneTurn } from '../scene/group-rotation';
+import type { SceneTurn } from '../scene/turn';
 import type { Scene } from '../scene/scene';
 import { FrameSetup } from './frame-setup';
 

@@ -9,7 +9,7 @@ import type { CourseProjection } from './course-projection';
 import type { CourseCamera } from '../math/course-camera';
 import { CAMERA, DEFAULT_GLASS } from '../scene/default-scene';
 import { glassFrame, type GlassFrame } from '../scene/glass-frame';
-import { isIdentity, turnMatrix } from '../scene/group-rotation';
+import { isIdentity, turnMatrix } from '../scene/turn';
 import { MAX_LIGHTS, type Glass, type Scene, type SceneObject } from '../scene/scene';
 import type { FrameState } from './types';
 

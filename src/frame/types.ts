@@ -3,7 +3,7 @@ import type { FresnelModel } from '../math/fresnel';
 import type { ColorSpace } from '../math/srgb';
 import type { Projection } from '../math/camera';
 import type { CourseCamera } from '../math/course-camera';
-import type { SceneTurn } from '../scene/group-rotation';
+import type { SceneTurn } from '../scene/turn';
 import type { RoughnessQuality } from './rough-glass';
 
 export type { Projection, ColorSpace };

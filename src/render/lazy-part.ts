@@ -11,6 +11,11 @@ export class LazyPart<T> {
   /** `instead`: what is drawn without it (ends the warning "… could not load (why); …"). */
   constructor(private readonly fetch: () => Promise<T>, private readonly name: string, private readonly instead: string) {}
 
+  /** The part handed over by a chunk that carries it already: `value` from now on, with no fetch. */
+  provide(value: T): void {
+    this.value ??= value;
+  }
+
   /** Fetches the part when `needed` and not in (nor failed); null when there is nothing to wait for. */
   load(needed: boolean): Promise<void> | null {
     if (!needed || this.value || this.failed) return null;
@@ -31,9 +36,11 @@ export class LazyPart<T> {
  * waited for), or null for none: settled when every one is, rejected with each failure's message
  * (so each is warned about once). Fixed arguments, so a frame that waits for nothing allocates nothing.
  */
-export function loadAll(a: Promise<void> | null, b: Promise<void> | null, c: Promise<void> | null, d: Promise<void> | null): Promise<void> | null {
-  if (!a && !b && !c && !d) return null;
-  return Promise.allSettled([a, b, c, d]).then((results) => {
+export function loadAll(
+  a: Promise<void> | null, b: Promise<void> | null, c: Promise<void> | null, d: Promise<void> | null, e: Promise<void> | null,
+): Promise<void> | null {
+  if (!a && !b && !c && !d && !e) return null;
+  return Promise.allSettled([a, b, c, d, e]).then((results) => {
     const failed = results.flatMap((r) => (r.status === 'rejected' ? [r.reason instanceof Error ? r.reason.message : String(r.reason)] : []));
     if (failed.length) throw new Error(failed.join('; '));
   });

@@ -4,7 +4,6 @@ import standardFrag from '../../shaders/standard.frag?raw';
 import glassVert from '../../shaders/glass.vert?raw';
 import glassFrag from '../../shaders/glass.frag?raw';
 import blitVert from '../../shaders/blit.vert?raw';
-import blitFrag from '../../shaders/blit.frag?raw';
 import encodeFrag from '../../shaders/encode.frag?raw';
 import lighting from '../../shaders/lighting.glsl?raw';
 import type { FresnelModel } from '../math/fresnel';
@@ -78,9 +77,8 @@ export class ProgramCache {
   /** [clip][shading][variantIndex(v)] */
   private standards: Partial<Record<ClipMode, Partial<Record<Shading, (Program | undefined)[]>>>> = {};
   private glasses: Partial<Record<FresnelModel, { colour?: Program; fresnel?: Program; rough?: Program }>> = {};
-  private blitProgram: Program | undefined;
-  private encodeProgram: Program | undefined;
-  private distanceProgram: Program | undefined;
+  /** Full-screen triangles' programs by name (fullScreen). */
+  private readonly screens = new Map<string, Program>();
   /** Rough glass's shader parts, once its chunk has loaded (setRoughSources). */
   private rough: RoughSources | null = null;
   /**
@@ -132,18 +130,24 @@ export class ProgramCache {
       : (variants.colour ??= this.build(`glass:${model}:false`, glassVert, glassFrag, glassHeader(model, false)));
   }
 
-  blit(): Program {
-    return (this.blitProgram ??= this.build('blit', blitVert, blitFrag, []));
+  /**
+   * A full-screen triangle (shaders/blit.vert) with the fragment shader `frag`, compiled the
+   * first time `name` is asked for: the debug views' blit (render/debug-views.ts) and the two below.
+   */
+  fullScreen(name: string, frag: string): Program {
+    let p = this.screens.get(name);
+    if (!p) this.screens.set(name, (p = this.build(name, blitVert, frag, [])));
+    return p;
   }
 
-  /** The frame's one sRGB encode (SPEC §13), with the blit's full-screen triangle. */
+  /** The frame's one sRGB encode (SPEC §13). */
   encode(): Program {
-    return (this.encodeProgram ??= this.build('encode', blitVert, encodeFrag, []));
+    return this.fullScreen('encode', encodeFrag);
   }
 
-  /** Rough glass's distance code into a target's alpha (shaders/distance.frag), with the blit's triangle. */
+  /** Rough glass's distance code into a target's alpha (shaders/distance.frag). */
   distance(): Program {
-    return (this.distanceProgram ??= this.build('distance', blitVert, this.roughSources().distance, []));
+    return this.screens.get('distance') ?? this.fullScreen('distance', this.roughSources().distance);
   }
 
   private build(key: string, vert: string, frag: string, header: string[]): Program {
@@ -164,7 +168,7 @@ export class ProgramCache {
     this.all.length = 0;
     this.standards = {};
     this.glasses = {};
-    this.blitProgram = this.encodeProgram = this.distanceProgram = undefined;
+    this.screens.clear();
     this.broken.clear();
   }
 }

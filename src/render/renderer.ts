@@ -29,6 +29,7 @@ import { DefaultSceneCache } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
 import type { Scene } from '../scene/scene';
 import type { FrameReport, FrameState, RenderStats, Viewport } from '../frame/types';
+import type { DebugViewFrame } from './debug-views';
 
 export { passesFor }; // the element's software frames report their passes the same way
 
@@ -41,8 +42,6 @@ export type { Pixels };
 
 export type ReadbackSource = 'screen' | 'reflection' | 'scene' | 'final';
 
-const BLACK = [0, 0, 0] as const;
-
 function setViewport(out: Viewport, x: number, y: number, width: number, height: number): Viewport {
   out.x = x;
   out.y = y;
@@ -51,9 +50,10 @@ function setViewport(out: Viewport, x: number, y: number, width: number, height:
   return out;
 }
 
-export class Renderer {
+export class Renderer implements DebugViewFrame {
   private readonly counter = new ResourceCounter();
-  private readonly programs: ProgramCache;
+  /** @internal */
+  readonly programs: ProgramCache;
   private readonly objectMeshes: ObjectMeshes;
   private glassMesh: Mesh;
   /** The glass frame `glassMesh` was built for. */
@@ -79,11 +79,15 @@ export class Renderer {
   private readonly canHalfFloat: boolean;
   /** Largest side of any render target (texture, renderbuffer and viewport limits). */
   private readonly maxTargetSize: number;
-  private readonly blitVao: WebGLVertexArrayObject;
+  /** @internal */
+  readonly blitVao: WebGLVertexArrayObject;
   private readonly setup = new FrameSetup();
   private readonly course = new CourseLoader(this.setup);
   private readonly checks = new LazyPart(() => import('./frame-checks'), 'the frame checks', 'frames go unchecked');
-  private readonly ctx: PassContext;
+  /** debug-view reflection, fresnel and passes (render/debug-views.ts): a chunk, loaded by load(). */
+  private readonly views = new LazyPart(() => import('./debug-views'), 'debug-view', 'the final image is drawn');
+  /** @internal */
+  readonly ctx: PassContext;
   private readonly report: FrameReport = {
     frame: 0, time: 0, width: 0, height: 0, drawCalls: 0,
     passes: passesFor('final'),
@@ -94,7 +98,6 @@ export class Renderer {
   private readonly scissor: Viewport = { x: 0, y: 0, width: 0, height: 0 };
   /** The viewports of this frame's drawing (filled in place: nothing is allocated per frame). */
   private readonly full: Viewport = { x: 0, y: 0, width: 0, height: 0 };
-  private readonly tile: Viewport = { x: 0, y: 0, width: 0, height: 0 };
   /**
    * Skip the reflection and glass when the glass is not on screen, cull objects beyond the
    * glass from the reflection, scissor it to the glass (SPEC §7). Off only to measure savings.
@@ -162,7 +165,8 @@ export class Renderer {
    */
   load(state: FrameState, scene?: Scene): Promise<void> | null {
     const meshes = scene ? this.objectMeshes.load(state, scene) : null;
-    return loadAll(this.checks.load(this.options.checks === true), this.rough.load(state), this.course.load(state), meshes);
+    const view = state.view !== 'final' && state.view !== 'scene';
+    return loadAll(this.checks.load(this.options.checks === true), this.rough.load(state), this.course.load(state), meshes, this.views.load(view));
   }
 
   /**
@@ -277,11 +281,22 @@ export class Renderer {
     return reflectionScissor(this.glassRect, width, height, this.reflection.width, this.reflection.height, this.scissor);
   }
 
+  /** @internal DebugViewFrame: this frame's sharp reflection texture. */
+  reflectionColor(): WebGLTexture {
+    return this.reflection.color;
+  }
+
+  /** @internal DebugViewFrame: rough glass's images when the final image has rough glass (their draw calls), else null. */
+  roughImages(): number | null {
+    return this.rough.active(this.ctx.state) && this.glassSkipReason === undefined ? this.rough.draw(this.ctx, this.reflection, this.reflectionSamples()) : null;
+  }
+
   /**
    * Pass 1 into the reflection texture, through a multisampled target when asked. `scissored`
    * limits it to the glass (the final image); debug views and captures of it draw it whole.
+   * @internal DebugViewFrame
    */
-  private runReflection(scissored = false): number {
+  runReflection(scissored = false): number {
     const { width, height } = this.reflection;
     this.ctx.scissor = scissored && this.optimize ? this.reflectionScissor() : null;
     const msaa = this.reflectionSamples();
@@ -316,81 +331,26 @@ export class Renderer {
     return n;
   }
 
-  /** Draws `state.view` into `framebuffer`; returns the draw calls. */
+  /** Draws `state.view` into `framebuffer` (a debug view whose chunk is not in: the final image); returns the draw calls. */
   private drawView(state: FrameState, framebuffer: WebGLFramebuffer | null): number {
     const full = setViewport(this.full, 0, 0, state.width, state.height);
-    const ctx = this.ctx;
-    switch (state.view) {
-      case 'scene':
-        beginTarget(this.gl, framebuffer, full, this.background);
-        return scenePass(ctx);
-      case 'fresnel':
-        return this.drawFresnel(framebuffer, full);
-      case 'reflection': {
-        const n = this.runReflection();
-        return n + this.blit(framebuffer, full);
-      }
-      case 'passes':
-        return this.drawTiles(framebuffer, state.width, state.height);
-      default: {
-        if (this.glassSkipReason !== undefined) {
-          beginTarget(this.gl, framebuffer, full, this.background);
-          return scenePass(ctx);
-        }
-        const rough = this.rough.active(state);
-        const n = rough ? this.rough.draw(this.ctx, this.reflection, this.reflectionSamples()) : this.runReflection(true);
-        beginTarget(this.gl, framebuffer, full, this.background);
-        return n + this.sceneAndGlass(rough);
-      }
+    const view = state.view, views = this.views.value;
+    if (view !== 'final' && view !== 'scene' && views) return views.drawDebugView(this, view, framebuffer, full);
+    if (view === 'scene' || this.glassSkipReason !== undefined) {
+      beginTarget(this.gl, framebuffer, full, this.background);
+      return scenePass(this.ctx);
     }
-  }
-
-  private drawFresnel(framebuffer: WebGLFramebuffer | null, vp: Viewport): number {
-    beginTarget(this.gl, framebuffer, vp, BLACK);
-    return scenePass(this.ctx, true) + glassPass(this.ctx, this.reflection.color, true);
-  }
-
-  /**
-   * Reflection | scene over fresnel | final, in the four quadrants. On an odd size the right
-   * column and top row of tiles take the extra pixel, so no line between them is left unwritten.
-   */
-  private drawTiles(framebuffer: WebGLFramebuffer | null, width: number, height: number): number {
-    const ctx = this.ctx;
-    const left = Math.floor(width / 2);
-    const right = width - left;
-    const bottom = Math.floor(height / 2);
-    const top = height - bottom;
-    const t = this.tile;
-    const rough = this.rough.active(ctx.state) && this.glassSkipReason === undefined;
-    let n = (rough ? this.rough.draw(this.ctx, this.reflection, this.reflectionSamples()) : 0) + this.runReflection();
-    n += this.blit(framebuffer, setViewport(t, 0, bottom, left, top));
-    beginTarget(this.gl, framebuffer, setViewport(t, left, bottom, right, top), this.background);
-    n += scenePass(ctx);
-    n += this.drawFresnel(framebuffer, setViewport(t, 0, 0, left, bottom));
-    beginTarget(this.gl, framebuffer, setViewport(t, left, 0, right, bottom), this.background);
+    const rough = this.rough.active(state);
+    const n = rough ? this.rough.draw(this.ctx, this.reflection, this.reflectionSamples()) : this.runReflection(true);
+    beginTarget(this.gl, framebuffer, full, this.background);
     return n + this.sceneAndGlass(rough);
   }
 
-  /** Passes 2 and 3; rough (after RoughLoader.draw), the opaque glass then the transparent objects, which it erased drawn first. */
-  private sceneAndGlass(rough: boolean): number {
+  /** @internal DebugViewFrame: passes 2 and 3; rough (after RoughLoader.draw), the opaque glass then the transparent objects, which it erased drawn first. */
+  sceneAndGlass(rough: boolean): number {
     const ctx = this.ctx, r = this.rough.current;
     if (!rough || !r) return scenePass(ctx) + glassPass(ctx, this.reflection.color);
     return scenePass(ctx, false, 'opaque') + glassPass(ctx, r.reflectionColor, false, r) + scenePass(ctx, false, 'transparent');
-  }
-
-  private blit(framebuffer: WebGLFramebuffer | null, vp: Viewport): number {
-    const gl = this.gl;
-    beginTarget(gl, framebuffer, vp, this.background);
-    const p = this.programs.blit();
-    p.use();
-    gl.uniform1i(p.location('uSource'), 0);
-    gl.activeTexture(gl.TEXTURE0);
-    gl.bindTexture(gl.TEXTURE_2D, this.reflection.color);
-    gl.bindVertexArray(this.blitVao);
-    gl.drawArrays(gl.TRIANGLES, 0, 3);
-    gl.bindVertexArray(null);
-    gl.bindTexture(gl.TEXTURE_2D, null);
-    return 1;
   }
 
   private checkFinite(state: FrameState): void {

@@ -8,7 +8,7 @@ import { courseDepthRange, type CourseCamera } from '../math/course-camera';
 import { reflectPoint } from '../math/mirror';
 import { GAUSSIAN_EXTENT, gaussianHeight } from './geometry/gaussian';
 import { glassFrame } from './glass-frame';
-import { isIdentity, turnMatrix, type SceneTurn } from './group-rotation';
+import { isIdentity, turnMatrix, type SceneTurn } from './turn';
 import type { Scene, SceneObject } from './scene';
 
 export interface CourseDepthRange {

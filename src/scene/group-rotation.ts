@@ -1,21 +1,12 @@
 // The trackball's rotation of the scene (SPEC §10): every object turned as a group about the
 // centre of their bounds, and the first light turned about the same centre. The page's `scene`
 // and the reference see it applied to the scene value as ordinary transforms (rotateScene); the
-// renderers get it with each frame (FrameState.turn) and compose it as one more matrix
-// (turnMatrix), so a turn builds no new scene value. Pure math.
-import { mat4, type quat, type ReadonlyQuat } from 'gl-matrix';
+// renderers get it with each frame (FrameState.turn, turn.ts) and compose it as one more matrix,
+// so a turn builds no new scene value. Pure math, in a chunk of its own (issue 22): the element
+// fetches it when a turn is first set, and the `controls` chunk brings it with the trackball.
+import type { quat, ReadonlyQuat } from 'gl-matrix';
 import type { Light, Scene, SceneObject, Vec3 } from './scene';
-
-/**
- * The trackball's turn as a renderer takes it: the objects by `objects`, the first light by
- * `light` (unit quaternions [x, y, z, w]), both about `center`, the centre of the objects' bounds
- * (boundsCenter of the scene drawn).
- */
-export interface SceneTurn {
-  readonly objects: ReadonlyQuat;
-  readonly light: ReadonlyQuat;
-  readonly center: ArrayLike<number>;
-}
+import { isIdentity } from './turn';
 
 const DEG = Math.PI / 180;
 
@@ -91,23 +82,6 @@ export function boundsCenter(objects: readonly SceneObject[]): Vec3 {
   }
   const mid = (i: number) => (Number.isFinite(lo[i] + hi[i]) ? (lo[i] + hi[i]) / 2 : 0);
   return [mid(0), mid(1), mid(2)];
-}
-
-/** No turn: the rotation's vector part is zero. */
-export const isIdentity = (q: ReadonlyQuat) => q[0] === 0 && q[1] === 0 && q[2] === 0;
-
-/**
- * The turn by `q` about `center` as one matrix, T(c)·R(q)·T(−c): put before a model matrix it
- * turns the object as rotateObjects does (equal to rounding); applied to a point light's position
- * or (its 3×3) a directional light's direction, as rotateLight does.
- */
-export function turnMatrix(out: mat4, q: ReadonlyQuat, center: ArrayLike<number>): mat4 {
-  mat4.fromQuat(out, q);
-  const cx = center[0], cy = center[1], cz = center[2];
-  out[12] = cx - (out[0] * cx + out[4] * cy + out[8] * cz);
-  out[13] = cy - (out[1] * cx + out[5] * cy + out[9] * cz);
-  out[14] = cz - (out[2] * cx + out[6] * cy + out[10] * cz);
-  return out;
 }
 
 /** The objects turned by `q` about `center`: position c + q·(p − c), rotation q·R. */

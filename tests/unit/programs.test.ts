@@ -22,9 +22,10 @@ describe('ProgramCache', () => {
     expect(cache.standard('discard', 'phong', V)).not.toBe(first);
     expect(cache.glass('schlick', true)).toBe(cache.glass('schlick', true));
     expect(cache.glass('schlick', true)).not.toBe(cache.glass('schlick', false));
-    expect(cache.blit()).toBe(cache.blit());
-    expect(cache.size).toBe(5);
-    expect(calls.get('linkProgram')).toBe(5);
+    expect(cache.encode()).toBe(cache.encode());
+    expect(cache.fullScreen('blit', 'void main() {}')).toBe(cache.fullScreen('blit', 'ignored: cached by name'));
+    expect(cache.size).toBe(6);
+    expect(calls.get('linkProgram')).toBe(6);
   });
 
   it('a cached lookup builds no header, key or array (nothing allocated per frame)', () => {
@@ -33,7 +34,7 @@ describe('ProgramCache', () => {
     const all = () => {
       for (const c of CLIPS) for (const s of SHADINGS) cache.standard(c, s, V);
       for (const m of FRESNEL_MODELS) for (const o of [false, true]) cache.glass(m, o);
-      cache.blit();
+      cache.encode();
     };
     all(); // compiles every variant
     const size = cache.size;

@@ -12,7 +12,8 @@ import { SoftwareRenderer } from '../../src/software';
 import { courseBasis, type CourseCamera } from '../../src/math/course-camera';
 import { courseSceneRange } from '../../src/scene/course-depth';
 import { defaultScene } from '../../src/scene/default-scene';
-import { boundsCenter, rotateScene, type SceneTurn } from '../../src/scene/group-rotation';
+import { boundsCenter, rotateScene } from '../../src/scene/group-rotation';
+import type { SceneTurn } from '../../src/scene/turn';
 import type { Light, Scene } from '../../src/scene/scene';
 import { expectClose } from './helpers';
 

@@ -1,0 +1,152 @@
+// Two more parts the core leaves out (issue 22), each a chunk fetched when a scene first asks:
+// the group rotation (scene/group-rotation.ts: what applies a turn to `scene` and finds the
+// centre it turns about), wanted once `objectRotation` turns the objects or the trackball is in
+// use; and the debug views (render/debug-views.ts) of debug-view reflection, fresnel and passes.
+// A page that asks for neither fetches neither; a frame that needs one waits for it; a chunk
+// that cannot load gives one warning, no `error`, and the stated fallback.
+import type { Page } from '@playwright/test';
+import { test, expect, openPage, capture, type RgbaImage } from './fixtures';
+import { mountHtml } from './helpers/scene-children';
+
+const TURN = 'group-rotation';
+const VIEWS = 'debug-views';
+/** A quarter turn about y: the box and the sphere change places on screen. */
+const QUARTER: [number, number, number, number] = [0, Math.SQRT1_2, 0, Math.SQRT1_2];
+const SCENE = (attrs = '') => `<glass-plane-scene time="0" spin="0" ${attrs}></glass-plane-scene>`;
+
+interface Turnable extends HTMLElement {
+  objectRotation: number[];
+  readonly scene: { objects: { transform: { position: number[]; rotation: number[] } }[] };
+}
+
+const same = (a: RgbaImage, b: RgbaImage) => a.width === b.width && a.data.every((v, i) => v === b.data[i]);
+const fetched = (page: Page, name: string) =>
+  page.evaluate((n) => performance.getEntriesByType('resource').some((e) => e.name.includes(n)), name);
+const wait = (page: Page, ms: number) => page.evaluate((t) => new Promise((r) => setTimeout(r, t)), ms);
+/** Holds back every request for `name` by `ms`. */
+const holdBack = (page: Page, name: string, ms: number) =>
+  page.route(`**/*${name}*`, async (route) => {
+    await new Promise((r) => setTimeout(r, ms));
+    await route.continue();
+  });
+/** Counts the scene's `frame` events from now on (read with framesSeen). */
+const countFrames = (page: Page) => page.evaluate(() => {
+  const w = window as unknown as { __frames: number };
+  w.__frames = 0;
+  document.querySelector('glass-plane-scene')!.addEventListener('frame', () => w.__frames++);
+});
+const framesSeen = (page: Page) => page.evaluate(() => (window as unknown as { __frames: number }).__frames);
+/** Sets objectRotation and reads `scene`'s first object in the same task. */
+const turnNow = (page: Page, q: number[]) => page.evaluate((q) => {
+  const el = document.querySelector('glass-plane-scene') as unknown as Turnable;
+  el.objectRotation = q;
+  return el.scene.objects[0].transform;
+}, q);
+const firstObject = (page: Page) => page.evaluate(() => (document.querySelector('glass-plane-scene') as unknown as Turnable).scene.objects[0].transform);
+
+/** The default scene turned a quarter, settled, with nothing held back: the picture and the first object. */
+async function turnedReference(page: Page): Promise<{ picture: RgbaImage; plain: RgbaImage; object: { position: number[]; rotation: number[] } }> {
+  await openPage(page);
+  await mountHtml(page, SCENE());
+  const plain = await capture(page);
+  await turnNow(page, QUARTER);
+  await wait(page, 300);
+  return { picture: await capture(page), plain, object: await firstObject(page) };
+}
+
+test('the default scene fetches neither chunk; objectRotation fetches the group rotation, debug-view passes the debug views', async ({ page }) => {
+  await openPage(page);
+  await mountHtml(page, SCENE());
+  await turnNow(page, [0, 0, 0, 1]); // the identity is no turn: nothing to fetch
+  await wait(page, 200);
+  expect([await fetched(page, TURN), await fetched(page, VIEWS)]).toEqual([false, false]);
+  await turnNow(page, QUARTER);
+  await expect.poll(() => fetched(page, TURN)).toBe(true);
+  expect(await fetched(page, VIEWS)).toBe(false);
+  await page.evaluate(() => document.querySelector('glass-plane-scene')!.setAttribute('debug-view', 'passes'));
+  await expect.poll(() => fetched(page, VIEWS)).toBe(true);
+});
+
+test('objectRotation without controls: frames wait for the group rotation (held 600 ms), `scene` is turned from the next frame on', async ({ page }) => {
+  const ref = await turnedReference(page);
+  expect(same(ref.picture, ref.plain), 'a quarter turn changes the picture').toBe(false);
+  await holdBack(page, TURN, 600);
+  await openPage(page);
+  await mountHtml(page, SCENE());
+  const before = await firstObject(page);
+  await countFrames(page);
+  // Before the chunk is in, `scene` leaves the turn out (README: it settles with the next frame).
+  expect(await turnNow(page, QUARTER), 'scene before the chunk').toEqual(before);
+  await wait(page, 400);
+  expect(await framesSeen(page), 'frames drawn while the chunk is held back').toBe(0);
+  await expect.poll(() => framesSeen(page), { timeout: 5000 }).toBeGreaterThan(0);
+  expect(same(await capture(page), ref.picture), 'the first frame drawn is the turned picture').toBe(true);
+  const after = await firstObject(page);
+  expect(after).toEqual(ref.object);
+  expect(after.position, 'the turn moved the first object').not.toEqual(before.position);
+});
+
+test('with controls="trackball" the group rotation comes with the controls: `scene` is turned in the same task', async ({ page }) => {
+  const ref = await turnedReference(page);
+  await openPage(page);
+  await mountHtml(page, SCENE('controls="trackball"'));
+  expect(await fetched(page, TURN), 'fetched with the controls').toBe(true);
+  expect(await turnNow(page, QUARTER)).toEqual(ref.object);
+  await wait(page, 300);
+  expect(same(await capture(page), ref.picture)).toBe(true);
+});
+
+test('if the group rotation cannot load: one warning, no error, the objects turn about the origin and `scene` leaves the turn out', async ({ page, consoleLog }) => {
+  const ref = await turnedReference(page);
+  await page.route(`**/*${TURN}*`, (route) => route.abort());
+  await openPage(page);
+  const seen = await mountHtml(page, SCENE());
+  const before = await firstObject(page);
+  await countFrames(page);
+  await turnNow(page, QUARTER);
+  await turnNow(page, [0, 0.5, 0, Math.sqrt(0.75)]); // a second turn: no second warning
+  await expect.poll(() => framesSeen(page), { timeout: 5000 }).toBeGreaterThan(0);
+  await wait(page, 300);
+  expect(seen.filter((e) => e.type === 'error')).toEqual([]);
+  expect(await firstObject(page)).toEqual(before);
+  const shown = await capture(page);
+  expect(same(shown, ref.plain), 'still turned').toBe(false);
+  expect(same(shown, ref.picture), 'not about the objects\' centre').toBe(false);
+  expect(consoleLog.take('warning').filter((w) => w.includes('trackball\'s turn could not load'))).toHaveLength(1);
+  consoleLog.take('error'); // the browser's own report of the failed fetch
+});
+
+test('debug-view="passes" with the debug views held back 600 ms: no frame until they are in, then the four passes', async ({ page }) => {
+  await openPage(page);
+  await mountHtml(page, SCENE('debug-view="passes"'));
+  await wait(page, 300);
+  const passes = await capture(page);
+  await openPage(page);
+  await mountHtml(page, SCENE());
+  const final = await capture(page);
+  expect(same(passes, final), 'the passes view is not the final image').toBe(false);
+  await holdBack(page, VIEWS, 600);
+  await openPage(page);
+  await mountHtml(page, SCENE());
+  await countFrames(page);
+  await page.evaluate(() => document.querySelector('glass-plane-scene')!.setAttribute('debug-view', 'passes'));
+  await wait(page, 400);
+  expect(await framesSeen(page), 'frames drawn while the chunk is held back').toBe(0);
+  await expect.poll(() => framesSeen(page), { timeout: 5000 }).toBeGreaterThan(0);
+  expect(same(await capture(page), passes)).toBe(true);
+});
+
+test('if the debug views cannot load: one warning, no error, the final image', async ({ page, consoleLog }) => {
+  await openPage(page);
+  await mountHtml(page, SCENE());
+  const final = await capture(page);
+  await page.route(`**/*${VIEWS}*`, (route) => route.abort());
+  await openPage(page);
+  const seen = await mountHtml(page, SCENE('debug-view="fresnel"'));
+  await page.evaluate(() => document.querySelector('glass-plane-scene')!.setAttribute('debug-view', 'reflection'));
+  await wait(page, 300);
+  expect(seen.filter((e) => e.type === 'error')).toEqual([]);
+  expect(same(await capture(page), final)).toBe(true);
+  expect(consoleLog.take('warning').filter((w) => w.includes('debug-view could not load'))).toHaveLength(1);
+  consoleLog.take('error');
+});
