@@ -13,7 +13,7 @@ export default [
   },
   {
     name: '10 touch-action none without controls',
-    edits: [{ file: 'src/element/element-style.ts', find: 'canvas { display: block; width: 100%; height: 100%; }', replace: 'canvas { display: block; width: 100%; height: 100%; touch-action: none; }' }],
+    edits: [{ file: 'src/element/element-style.ts', find: 'canvas{display:block;width:100%;height:100%}', replace: 'canvas{display:block;width:100%;height:100%;touch-action:none}' }],
     tests: [CONTROLS],
   },
   {
@@ -111,7 +111,7 @@ export default [
   },
   {
     name: 'C18 frames not held while the controls\' chunk loads (a drag after the next frame is lost)',
-    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '    if (backend.busy || this.rig.controlsLoading) return;', replace: '    if (backend.busy) return;' }],
+    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '    if (backend.busy || this.rig.controlsLoading || this.scenes.waiting) return;', replace: '    if (backend.busy || this.scenes.waiting) return;' }],
     tests: [CONTROLS],
   },
   {

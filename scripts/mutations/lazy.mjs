@@ -1,10 +1,13 @@
 // What the core leaves out and loads when a scene asks (issue 22): camera-src's two chunks (the
-// element's camera-source, the renderer's course-projection), and how frames wait for them.
+// element's camera-source, the renderer's course-projection), the group rotation, the debug
+// views, the orthographic projection, the children's gatherer, the failure messages and image
+// textures, and how frames wait for them.
 // Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
 const CHUNK = 'tests/e2e/course-chunk.spec.ts';
 const RIG = 'src/element/camera-rig.ts';
 const LOD = 'tests/e2e/reflection-lod.spec.ts';
 const CHUNKS = 'tests/e2e/turn-debug-chunks.spec.ts';
+const CORE = 'tests/e2e/core-chunks.spec.ts';
 
 export default [
   {
@@ -19,12 +22,12 @@ export default [
   },
   {
     name: 'Z3 the course projection loads but FrameSetup is never given it',
-    edits: [{ file: 'src/render/course-loader.ts', find: '      this.setup.course = new this.part.value!.CourseProjection();\n', replace: '' }],
+    edits: [{ file: 'src/render/setup-parts.ts', find: '      setup.course = new this.course.value!.CourseProjection();\n', replace: '' }],
     tests: [CHUNK],
   },
   {
     name: 'Z4 Renderer.load never asks for the course projection',
-    edits: [{ file: 'src/render/renderer.ts', find: 'this.rough.load(state), this.course.load(state), meshes);', replace: 'this.rough.load(state), null, meshes);' }],
+    edits: [{ file: 'src/render/renderer.ts', find: "this.setupParts.load(state), meshes,", replace: "this.setupParts.load({ ...state, courseCamera: null }), meshes," }],
     tests: [CHUNK],
   },
   {
@@ -74,7 +77,7 @@ export default [
   },
   {
     name: 'Z14 two parts loading at once: only the first waited for (a course frame drawn before its projection)',
-    edits: [{ file: 'src/render/lazy-part.ts', find: '  return Promise.allSettled([a, b, c, d])', replace: '  return Promise.allSettled([a ?? b ?? c ?? d])' }],
+    edits: [{ file: 'src/render/lazy-part.ts', find: '  return Promise.allSettled([a, b, c, d, e])', replace: '  return Promise.allSettled([a ?? b ?? c ?? d ?? e])' }],
     tests: [CHUNK],
   },
   {
@@ -130,6 +133,51 @@ export default [
   {
     name: 'Z25 the passes view\'s reflection tile drawn over the fresnel tile\'s place',
     edits: [{ file: 'src/render/debug-views.ts', find: 'n += blit(f, framebuffer, setTile(0, bottom, left, top));', replace: 'n += blit(f, framebuffer, setTile(0, 0, left, top));' }],
-    tests: ['tests/e2e/debug-views.spec.ts'],
+    tests: ['tests/e2e/goldens.spec.ts'],
+  },
+  {
+    name: 'Z26 FrameSetup draws in perspective though it has the orthographic projection',
+    edits: [{ file: 'src/frame/frame-setup.ts', find: "const projection = course || !this.ortho ? 'perspective'", replace: "const projection = course || this.ortho ? 'perspective'" }],
+    tests: ['tests/unit/orthographic.test.ts'],
+  },
+  {
+    name: 'Z27 Renderer.load never asks for the orthographic projection (drawn in perspective)',
+    edits: [{ file: 'src/render/setup-parts.ts', find: "this.ortho.load(state.projection === 'orthographic')", replace: 'this.ortho.load(false)' }],
+    tests: [CORE],
+  },
+  {
+    name: 'Z28 the orthographic projection\'s depth row with the wrong sign (near and far swapped)',
+    edits: [{ file: 'src/math/orthographic.ts', find: '  out[10] = 2 * depth;', replace: '  out[10] = -2 * depth;' }],
+    tests: ['tests/unit/orthographic.test.ts'],
+  },
+  {
+    name: 'Z29 a child found but what gathers the parts never fetched (the default scene for ever)',
+    edits: [{ file: 'src/element/scene-source.ts', find: "        this.fetch(import('./children/gather-parts').then((m) => { gatherer = m; }), 'the children\\'s parts');\n", replace: '' }],
+    tests: ['tests/e2e/children.spec.ts'],
+  },
+  {
+    name: 'Z30 the gatherer\'s arrival not waited for (the default scene shown first)',
+    edits: [{ file: 'src/element/scene-source.ts', find: '    return this.fetching > 0;', replace: '    return false;' }],
+    tests: ['tests/e2e/children-chunk.spec.ts'],
+  },
+  {
+    name: 'Z31 a failure\'s message part left empty',
+    edits: [{ file: 'src/element/failure.ts', find: '      if (this.type === type) this.message.textContent = text;', replace: '' }],
+    tests: [CORE, 'tests/e2e/no-webgl2.spec.ts'],
+  },
+  {
+    name: 'Z32 no message at all when the messages\' chunk cannot load',
+    edits: [{ file: 'src/element/failure.ts', find: '.then((m) => m.FAILURE_MESSAGES[type], () => message)', replace: ".then((m) => m.FAILURE_MESSAGES[type], () => '')" }],
+    tests: [CORE],
+  },
+  {
+    name: 'Z33 image textures never asked for (the procedural texture for ever)',
+    edits: [{ file: 'src/element/glass-plane-scene.ts', find: "    if (!scene.objects.some((o) => o.material.texture.kind === 'image')) return;", replace: '    return;' }],
+    tests: [CORE, 'tests/e2e/texture-images.spec.ts'],
+  },
+  {
+    name: 'Z34 a scene value without images makes its successors never look (a texture added later is not drawn)',
+    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '    if (this.imagesAsked || scene === this.imagesChecked) return;', replace: '    if (this.imagesAsked || this.imagesChecked) return;' }],
+    tests: [CORE],
   },
 ];

@@ -93,12 +93,12 @@ export default [
   },
   {
     name: 'L16 the scene element never loads its children (they stay undefined)',
-    edits: [{ file: 'src/element/scene-source.ts', find: '    if (!this.defining) {\n      this.defining = true;', replace: '    if (this.defining) {\n      this.defining = true;' }],
+    edits: [{ file: 'src/element/scene-source.ts', find: '    if (this.awaiting.size === 1) this.fetch(defineChildren(), `<${name}>`);', replace: '' }],
     tests: ['tests/e2e/children-chunk.spec.ts'],
   },
   {
     name: 'L17 a children\'s chunk that failed leaves the frames held (nothing asks for a frame)',
-    edits: [{ file: 'src/element/scene-source.ts', find: '        this.defining = false;\n        this.invalidate();', replace: '        this.defining = false;' }],
+    edits: [{ file: 'src/element/scene-source.ts', find: '      this.fetching--;\n      this.invalidate();', replace: '      this.fetching--;' }],
     tests: ['tests/e2e/children-chunk.spec.ts'],
   },
   {

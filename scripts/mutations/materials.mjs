@@ -48,7 +48,7 @@ export default [
   },
   {
     name: 'M9 the last of two lighting files gives the material',
-    edits: [{ file: 'src/element/scene-source.ts', find: '      if (fileMaterial) break;\n', replace: '' }],
+    edits: [{ file: 'src/element/children/gather-parts.ts', find: '    if (fileMaterial) break;\n', replace: '' }],
     tests: [COURSE],
   },
   {

@@ -219,17 +219,7 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
   finiteSpec('cubeDistance', 'cube-distance', DEFAULT_CUBE_DISTANCE, MAX_COORD),
   numberSpec('ior', 'ior', 1.5, 1, 10),
   keywordSpec('fresnel', 'fresnel', FRESNEL_MODELS),
-  {
-    property: 'cameraPosition', attribute: 'camera-position', default: DEFAULT_CAMERA_POSITION,
-    parse(raw) {
-      if (raw === null) return { value: [...DEFAULT_CAMERA_POSITION] };
-      const xs = tupleParse(raw, 3);
-      if (!xs) return { value: [...DEFAULT_CAMERA_POSITION], problem: 'expected "x y z", using the default view' };
-      const c = xs.map((x) => Math.max(-MAX_COORD, Math.min(MAX_COORD, x))) as Vec3Tuple;
-      return c.some((x, i) => x !== xs[i]) ? { value: c, problem: `coordinates clamped to ±${MAX_COORD}` } : { value: c };
-    },
-    format: (v) => v.join(' '),
-  } satisfies AttributeSpec<'cameraPosition'>,
+  tupleSpec('cameraPosition', 'camera-position', DEFAULT_CAMERA_POSITION, '"x y z"', clampCoords),
   {
     property: 'cameraRotation', attribute: 'camera-rotation', default: DEFAULT_CAMERA_ROTATION,
     parse(raw) {

@@ -12,6 +12,7 @@ import type { GroupRotation } from './scene-value';
 import { setPose, type CameraPose } from '../math/camera';
 import type { CameraChangeDetail } from './types';
 import { warn } from './warnings';
+import { loadFailed } from '../render/lazy-part';
 
 const DEG = 180 / Math.PI;
 
@@ -29,8 +30,8 @@ export interface CameraRigHost {
   turned(): void;
   /** The flyby moved during a frame: that frame must be drawn even if another is on its way. */
   flybyMoved(): void;
-  /** What orbit turns about without `camera-target`: the centre of the objects as drawn. */
-  objectsCenter(): ArrayLike<number>;
+  /** The scene as drawn (turned): orbit turns about the centre of its objects without `camera-target`. */
+  scene(): Scene;
   /** The controls' chunk carries the group rotation (the trackball turns the scene): handed on with it. */
   rotationArrived(code: GroupRotation): void;
   /** The debug-view key (F) was pressed. */
@@ -91,7 +92,7 @@ export class CameraRig implements Controller {
       this.controls = new chunk.ControlsInput(this);
       if (this.connected) this.controls.hostConnected();
     }, (e: unknown) => {
-      warn(`controls="${c}" could not load (${String(e).slice(0, 200)}); the scene does not respond to input`);
+      warn(loadFailed(`controls="${c}"`, e, 'the scene does not respond to input'));
     }).finally(() => {
       this.controlsPending = false;
       this.host.requestRender();
@@ -136,7 +137,7 @@ export class CameraRig implements Controller {
       this.source = new chunk.CameraSource({ element, src: () => this.host.values.cameraSrc, changed: () => this.host.requestRender() });
       if (this.connected) this.source.hostConnected();
     }, (e: unknown) => {
-      warn(`camera-src could not load (${String(e).slice(0, 200)}); the camera attributes stay the view`);
+      warn(loadFailed('camera-src', e, 'the camera attributes stay the view'));
     }).finally(() => {
       this.sourceLoading = false;
       this.host.requestRender();

@@ -1,16 +1,15 @@
 // The shadow root's styles: a constructable sheet (allowed under a strict CSP), <style> as fallback.
-const CSS = `
-:host { display: inline-block; position: relative; width: 300px; height: 150px; contain: content; }
-:host([hidden]) { display: none; }
-:host(:focus-visible) { outline: 2px solid Highlight; outline-offset: 2px; }
-canvas { display: block; width: 100%; height: 100%; }
-/* The page scrolls through the element unless a controls mode takes the fingers (SPEC §10). */
-:host([controls]), :host([controls]) canvas { touch-action: none; }
-[part=message] { position: absolute; inset: 0; display: flex; align-items: center; justify-content: center;
-  box-sizing: border-box; padding: 1em; font: 14px/1.4 system-ui, sans-serif; color: #ddd;
-  background: #1a1a1a; text-align: center; overflow: hidden; }
-[part=message][hidden] { display: none; }
-`;
+// The page scrolls through the element unless a controls mode takes the fingers (SPEC §10):
+// touch-action none with [controls]. Written compact: this text ships as it is.
+const CSS = `:host{display:inline-block;position:relative;width:300px;height:150px;contain:content}
+:host([hidden]){display:none}
+:host(:focus-visible){outline:2px solid Highlight;outline-offset:2px}
+canvas{display:block;width:100%;height:100%}
+:host([controls]),:host([controls]) canvas{touch-action:none}
+[part=message]{position:absolute;inset:0;display:flex;align-items:center;justify-content:center;
+box-sizing:border-box;padding:1em;font:14px/1.4 system-ui,sans-serif;color:#ddd;
+background:#1a1a1a;text-align:center;overflow:hidden}
+[part=message][hidden]{display:none}`;
 
 let sheet: CSSStyleSheet | null | undefined;
 

@@ -1,15 +1,9 @@
 // Why the element cannot draw (SPEC §2): shown in its `message` part, fired as `error`. A missing
 // WebGL2 hides the canvas; a lost context waits for the context to come back; a shader that
-// failed waits for a change that may select a variant that compiles.
+// failed waits for a change that may select a variant that compiles. The message part's texts are
+// a chunk of their own (failure-messages.ts, issue 22): a page that never fails never loads them.
 import type { ErrorType } from './types';
 import { PREFIX } from './warnings';
-
-const MESSAGES: Record<ErrorType, string> = {
-  'webgl2-unavailable': 'WebGL2 is not available here, so the glass scene cannot be shown.',
-  shader: 'The glass scene could not be drawn: a shader failed to compile.',
-  'context-lost': 'The graphics context was lost; waiting for it to come back.',
-  load: 'The glass scene could not be loaded.',
-};
 
 export class Failure {
   /** What keeps the element from drawing now; null: nothing does. */
@@ -29,7 +23,11 @@ export class Failure {
   fail(type: ErrorType, error: unknown): void {
     const message = error instanceof Error ? error.message : String(error);
     this.type = type;
-    this.message.textContent = MESSAGES[type];
+    this.message.textContent = '';
+    // The texts come with their chunk; without it, the error's own message.
+    void import('./failure-messages').then((m) => m.FAILURE_MESSAGES[type], () => message).then((text) => {
+      if (this.type === type) this.message.textContent = text;
+    });
     this.message.hidden = false;
     this.canvas.hidden = type === 'webgl2-unavailable';
     if (type === 'shader') {

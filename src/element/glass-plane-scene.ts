@@ -13,7 +13,8 @@ import type { CapturePass, GlassPlaneSceneEventMap } from './types';
 import type { Controller } from './controller';
 import { ElementBase } from './element-base';
 import { SceneSource } from './scene-source';
-import { TextureImages } from './texture-images';
+import type { TextureImages } from './texture-images';
+import { loadFailed } from '../render/lazy-part';
 import { sceneSpins } from './compose-scene';
 import { SceneValue } from './scene-value';
 import { FrameStates } from './frame-state';
@@ -79,8 +80,14 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
   private readonly warnings = new AttributeWarnings();
   /** The light-DOM children (<glass-object>, <glass-light>) as parts of the scene. */
   private readonly source = new SceneSource({ element: this, partsChanged: () => this.sceneChanged() });
-  /** Image textures the scene names, decoded once per URL per page, given to the renderer. */
-  private readonly images = new TextureImages({ sink: () => this.backend.current, loaded: () => this.requestRender() });
+  /**
+   * Image textures the scene names, decoded once per URL per page, given to the renderer: a chunk
+   * (texture-images.ts) fetched by the first scene value that names one; null before.
+   */
+  private images: TextureImages | null = null;
+  /** The scene value last looked through for image textures while their chunk was not asked for. */
+  private imagesChecked: Scene | null = null;
+  private imagesAsked = false;
   /** The camera, its controls, the trackball and the course camera. */
   private readonly rig: CameraRig;
   /** The scene value, built when its content changes; the trackball's turn travels apart. */
@@ -108,7 +115,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
       element: this, canvas, values: this.values, requestRender,
       turned: () => this.scenes.turnChanged(),
       flybyMoved: () => { this.loop.dirty = true; },
-      objectsCenter: () => this.scenes.objectsCenter(),
+      scene: () => this.scene,
       rotationArrived: (code) => this.scenes.rotationArrived(code),
       cycleDebugView: () => { this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length]; },
     });
@@ -135,7 +142,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
       element: this, canvas, failure: this.failure, requestRender,
       renderer: () => this.values.renderer,
       started: (backend) => {
-        this.images.feed(backend);
+        this.images?.feed(backend);
         this.loop.resize();
         this.requestRender();
       },
@@ -264,8 +271,21 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     this.loop.dirty = false;
     if (this.clientWidth === 0 || this.clientHeight === 0) return; // nothing to show
     const state = this.frameState(now);
-    this.images.sync(scene);
+    this.syncImages(scene);
     backend.draw(state, scene);
+  }
+
+  /** Asks for the images `scene` names; the first value that names one fetches their chunk (frames go on, procedurally textured). */
+  private syncImages(scene: Scene): void {
+    if (this.images) return this.images.sync(scene);
+    if (this.imagesAsked || scene === this.imagesChecked) return;
+    this.imagesChecked = scene;
+    if (!scene.objects.some((o) => o.material.texture.kind === 'image')) return;
+    this.imagesAsked = true;
+    import('./texture-images').then((chunk) => {
+      this.images = new chunk.TextureImages({ sink: () => this.backend.current, loaded: () => this.requestRender() });
+      this.requestRender();
+    }, (e: unknown) => warn(loadFailed('image textures', e, 'using the procedural texture')));
   }
 
   /** The attributes' part of the frame, then the camera's (which reads the scene for a course camera). */

@@ -1,16 +1,23 @@
 // Watches the scene element's light-DOM children and gathers their parts of the scene:
 // a MutationObserver for children added, removed or reordered, the children's own change
 // notices for their attributes and loads, and whenDefined for children upgraded later. The
-// children's own chunk (children/child-elements.ts) is fetched when the first of them is found.
-import { MAX_LIGHTS, type Light, type SceneObject } from '../scene/scene';
+// children's own chunk (children/child-elements.ts) is fetched when the first of them is found
+// undefined, and what gathers their parts (children/gather-parts.ts, a chunk of its own: children
+// defined by another copy of the package need it too) when the first is found: frames wait for both.
 import type { ChildParts } from './compose-scene';
 import { CHILD_CHANGE, LIGHT_TAG, OBJECT_TAG } from './children/tags';
 import type { GlassLight } from './children/glass-light';
 import type { GlassObject } from './children/glass-object';
 import { defineChildren } from './children-loader';
+import type { GatherHost } from './children/gather-parts';
 import { warn } from './warnings';
-import type { MtlValues } from './children/object-material';
+import { loadFailed } from '../render/lazy-part';
 import type { Controller } from './controller';
+
+const NO_PARTS: ChildParts = { objects: null, lights: null };
+
+/** children/gather-parts.ts once it is in (page-wide). */
+let gatherer: typeof import('./children/gather-parts') | null = null;
 
 /** What SceneSource needs of the scene element. */
 export interface SceneSourceHost {
@@ -20,14 +27,17 @@ export interface SceneSourceHost {
   partsChanged(): void;
 }
 
-export class SceneSource implements Controller {
+export class SceneSource implements Controller, GatherHost {
   private observer: MutationObserver | null = null;
   private parts: ChildParts | null = null;
-  private warnedLights = false;
+  /** @internal GatherHost */
+  warnedLights = false;
   private readonly awaiting = new Set<string>();
-  /** The children's chunk is on its way: frames wait for it (the scene is not drawn without them). */
-  defining = false;
-  private readonly element: HTMLElement;
+  /** Chunks on their way (the children's, the gatherer): frames wait for them (the scene is not drawn without them). */
+  private fetching = 0;
+  /** The gatherer was asked for (once per scene; after a failure, the scene is drawn without its children). */
+  private gathererAsked = false;
+  readonly element: HTMLElement;
 
   constructor(private readonly host: SceneSourceHost) {
     this.element = host.element;
@@ -61,58 +71,46 @@ export class SceneSource implements Controller {
     return (this.parts ??= this.gather());
   }
 
+  /** A chunk is on its way: the frame waits. */
+  get defining(): boolean {
+    return this.fetching > 0;
+  }
+
+  /** The children's parts, by the gatherer; before it is in, a child of ours starts loading it (and defining them). */
   private gather(): ChildParts {
-    let objects: SceneObject[] | null = null;
-    let lights: Light[] | null = null;
-    let extra = 0;
-    // The material of the first lighting file in document order that has loaded (SPEC §11).
-    let fileMaterial: MtlValues | null = null;
-    for (const child of this.element.children) {
-      if (child.localName !== LIGHT_TAG || typeof (child as Partial<GlassLight>).toMaterial !== 'function') continue;
-      fileMaterial = safely(() => (child as GlassLight).toMaterial(), null);
-      if (fileMaterial) break;
-    }
+    if (gatherer) return gatherer.gatherParts(this);
     for (const child of this.element.children) {
       const name = child.localName;
       if (name !== OBJECT_TAG && name !== LIGHT_TAG) continue;
-      // Duck-typed, not instanceof: another copy of this package may have defined the tags.
-      const object = child as Partial<GlassObject>, light = child as Partial<GlassLight>;
-      if (typeof object.toSceneObjects !== 'function' && typeof light.toLight !== 'function') {
-        this.awaitDefinition(name); // not upgraded yet: counts once it is
-        continue;
+      if (!this.gathererAsked) {
+        this.gathererAsked = true;
+        this.fetch(import('./children/gather-parts').then((m) => { gatherer = m; }), 'the children\'s parts');
       }
-      if (name === OBJECT_TAG) {
-        (objects ??= []).push(...safely(() => object.toSceneObjects!(fileMaterial), []));
-      } else if ((lights ??= []).length < MAX_LIGHTS) {
-        const l = safely(() => light.toLight!(), null);
-        if (l) lights.push(l);
-      } else extra++;
+      this.awaitDefinition(name);
     }
-    // Lights whose file failed or still loads add none: with none left, the default light.
-    if (lights && lights.length === 0) lights = null;
-    if (extra > 0 && !this.warnedLights) {
-      this.warnedLights = true;
-      warn(`at most ${MAX_LIGHTS} <glass-light> children are used; ${extra} more ignored`);
-    }
-    return { objects, lights };
+    return NO_PARTS;
   }
 
-  private awaitDefinition(name: string): void {
+  /** @internal GatherHost: `name` is not defined yet; its chunk is fetched, and the scene gathered again once it is. */
+  awaitDefinition(name: string): void {
     if (this.awaiting.has(name) || typeof customElements === 'undefined' || customElements.get(name)) return;
     this.awaiting.add(name);
-    if (!this.defining) {
-      this.defining = true;
-      defineChildren().catch((e: unknown) => {
-        warn(`<${name}> could not load (${String(e).slice(0, 200)}); the scene is drawn without its children`);
-      }).finally(() => {
-        this.defining = false;
-        this.invalidate();
-      });
-    }
+    if (this.awaiting.size === 1) this.fetch(defineChildren(), `<${name}>`);
     customElements.whenDefined(name).then(() => {
       this.awaiting.delete(name);
       this.invalidate();
     }, () => {});
+  }
+
+  /** Frames wait for `loading`; if it fails, one warning naming `what`, and the scene without the children. */
+  private fetch(loading: Promise<void>, what: string): void {
+    this.fetching++;
+    loading.catch((e: unknown) => {
+      warn(loadFailed(what, e, 'the scene is drawn without its children'));
+    }).finally(() => {
+      this.fetching--;
+      this.invalidate();
+    });
   }
 
   private readonly invalidate = (): void => {
@@ -124,14 +122,4 @@ export class SceneSource implements Controller {
     if ((e.target as Element).parentElement !== this.element) return;
     this.invalidate();
   };
-}
-
-/** A child's bug must not take the scene down: its part is left out. */
-function safely<T>(f: () => T, fallback: T): T {
-  try {
-    return f();
-  } catch (e) {
-    warn(`a child could not describe its part of the scene: ${e instanceof Error ? e.message : String(e)}`);
-    return fallback;
-  }
 }

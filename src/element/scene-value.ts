@@ -75,11 +75,6 @@ export class SceneValue {
     return (this.turnedValue ??= code.rotateScene(this.current, this.host.objectRotation, this.host.lightRotation));
   }
 
-  /** The centre of the objects as drawn (turned); the origin before the group rotation is in. */
-  objectsCenter(): ArrayLike<number> {
-    return this.rotation.value?.boundsCenter(this.turned.objects) ?? [0, 0, 0];
-  }
-
   /** True while a turn is set and the group rotation's chunk is on its way (fetched the first time): the frame waits for it. */
   get waiting(): boolean {
     const h = this.host, loading = this.rotation.load(!isIdentity(h.objectRotation) || !isIdentity(h.lightRotation));

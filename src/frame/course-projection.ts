@@ -7,7 +7,6 @@ import { courseSceneRange, type CourseDepthRange } from '../scene/course-depth';
 export { courseSceneRange };
 import type { SceneTurn } from '../scene/turn';
 import type { Scene } from '../scene/scene';
-import { FrameSetup } from './frame-setup';
 
 const IDENTITY = [0, 0, 0, 1] as const;
 
@@ -51,6 +50,3 @@ export class CourseProjection {
     out.mirrorsWinding = (cam.hx < 0) !== (cam.hy < 0) !== range.behind;
   }
 }
-
-/** A FrameSetup that follows course cameras (the software renderer's: its chunk is lazy already). */
-export const courseFrameSetup = (): FrameSetup => new FrameSetup(new CourseProjection());

@@ -2,10 +2,11 @@
 // Positions are relative to the eye (camera-relative rendering) so far cameras keep precision.
 // Reads the scene value (SPEC §9): any number of objects, any glass placement, up to 4 lights.
 import { mat3, mat4 } from 'gl-matrix';
-import { forwardFromYawPitch, orthoHalfHeight, orthographicMatrix, projectionMatrix, rotationOnlyView, viewerSide } from '../math/camera';
-import { eyeRelativePlane, MIRROR_CONTACT, reflectDirection, reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
+import { forwardFromYawPitch, projectionMatrix, rotationOnlyView, viewerSide } from '../math/camera';
+import { eyeRelativePlane, MIRROR_CONTACT, reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
 import type { CourseDepthRange } from '../scene/course-depth';
 import type { CourseProjection } from './course-projection';
+import type { OrthographicView } from './orthographic-view';
 import type { CourseCamera } from '../math/course-camera';
 import { CAMERA, DEFAULT_GLASS } from '../scene/default-scene';
 import { glassFrame, type GlassFrame } from '../scene/glass-frame';
@@ -127,9 +128,10 @@ export class FrameSetup {
   /**
    * `course`: the course camera's projection (frame/course-projection.ts), which only frames
    * with a course camera need: a renderer loads it when one asks for it. Without it a course
-   * camera is ignored (the flyby camera's pose is used).
+   * camera is ignored (the flyby camera's pose is used). `ortho`: the orthographic projection
+   * (frame/orthographic-view.ts), loaded the same way; without it frames are drawn in perspective.
    */
-  constructor(public course: CourseProjection | null = null) {}
+  constructor(public course: CourseProjection | null = null, public ortho: OrthographicView | null = null) {}
 
   update(s: FrameState, scene: Scene): void {
     const { eye, mirroredEye } = this;
@@ -145,7 +147,7 @@ export class FrameSetup {
     reflectPoint(mirroredEye, eye, plane);
     this.eyeDistance = signedDistance(plane, eye);
     const forward = course ? this.copyForward(course.n) : forwardFromYawPitch(this.forward, s.yaw, s.pitch);
-    const projection = course ? 'perspective' : s.projection ?? 'perspective';
+    const projection = course || !this.ortho ? 'perspective' : s.projection ?? 'perspective';
     this.orthographic = projection === 'orthographic';
     this.side = viewerSide(plane, eye, forward, projection);
     this.viewDot = plane[0] * forward[0] + plane[1] * forward[1] + plane[2] * forward[2];
@@ -186,13 +188,7 @@ export class FrameSetup {
       return;
     }
     if (this.orthographic) {
-      this.halfHeight = orthoHalfHeight(s, scene.glass?.center ?? null);
-      orthographicMatrix(this.projection, this.halfHeight, aspect, CAMERA.near, CAMERA.far);
-      const vm = this.viewVectorMain, vr = this.viewVectorMirrored, t = this.scratch3;
-      vm[0] = -forward[0]; vm[1] = -forward[1]; vm[2] = -forward[2]; vm[3] = 0;
-      t[0] = -forward[0]; t[1] = -forward[1]; t[2] = -forward[2];
-      reflectDirection(t, t, this.glass.plane);
-      vr[0] = t[0]; vr[1] = t[1]; vr[2] = t[2]; vr[3] = 0;
+      this.ortho!(this, s, scene.glass?.center ?? null, forward, this.glass.plane, aspect);
     } else {
       this.halfHeight = 0;
       projectionMatrix(this.projection, s.fov, aspect, CAMERA.near, CAMERA.far);

@@ -84,45 +84,6 @@ export function projectionMatrix<T extends Float64Array | number[]>(
 
 export type Projection = 'perspective' | 'orthographic';
 
-/** The part of a frame's state the orthographic size depends on. */
-export interface OrthoView {
-  cameraPosition: readonly [number, number, number];
-  yaw: number;
-  pitch: number;
-  fov: number;
-  target?: readonly [number, number, number] | null;
-}
-
-/**
- * Smallest depth the orthographic size is taken at: the near distance (SPEC §3), the nearest
- * slice the perspective view draws. A target at or behind the eye would otherwise give a
- * zero or negative size (a singular projection).
- */
-export const MIN_ORTHO_DEPTH = CAMERA.near;
-
-/**
- * Half-height of the orthographic view (SPEC §10): depth·tan(fov/2), the depth of the target
- * (or else the glass centre, or else the origin) measured along the view direction, so the
- * orthographic view keeps there the size the perspective view had.
- */
-export function orthoHalfHeight(state: OrthoView, glassCenter: ReadonlyVec3 | null): number {
-  const y = state.yaw * DEG;
-  const p = clampPitch(state.pitch) * DEG;
-  const point = state.target ?? glassCenter ?? ORIGIN;
-  const e = state.cameraPosition;
-  const depth = (point[0] - e[0]) * Math.cos(p) * Math.cos(y) + (point[1] - e[1]) * Math.sin(p)
-    + (point[2] - e[2]) * Math.cos(p) * Math.sin(y);
-  return Math.max(depth, MIN_ORTHO_DEPTH) * tanHalfFov(state.fov);
-}
-
-/** out = orthographic projection of half-height `halfHeight` (width by `aspect`), OpenGL clip depth. */
-export function orthographicMatrix<T extends Float64Array | number[]>(
-  out: T, halfHeight: number, aspect: number, near: number, far: number,
-): T {
-  const hw = halfHeight * aspect;
-  return mat4.orthoNO(out as mat4, -hw, hw, -halfHeight, halfHeight, near, far) as T;
-}
-
 /**
  * +1 when the camera sees the side of `plane` its normal points to, −1 otherwise. A perspective
  * eye sees the side it stands on (on the plane counts as +). An orthographic camera sees the

@@ -1,7 +1,8 @@
 // The GPU camera as rays: pixel (px, py), top row first, → a ray through NDC with its differentials.
 // Perspective: rays from the eye through the view plane; orthographic: parallel rays along forward
 // from origins spread over the view rectangle (SPEC §10).
-import { orthoHalfHeight, orthographicMatrix, projectionMatrix, rotationOnlyView } from '../math/camera';
+import { projectionMatrix, rotationOnlyView } from '../math/camera';
+import { orthoHalfHeight, orthographicMatrix } from '../math/orthographic';
 import type { ReadonlyVec3 } from 'gl-matrix';
 import { CAMERA } from '../scene/default-scene';
 import type { Ray } from './ray';

@@ -2,6 +2,10 @@
 // the first time a frame asks for it (Renderer.load), the same promise while it comes; if it
 // cannot load, the promise rejects once with an Error saying what is drawn instead, and the part
 // is not asked for again.
+
+/** The one message for a part that failed to load: "`what` could not load (why); `instead`". */
+export const loadFailed = (what: string, e: unknown, instead: string): string =>
+  `${what} could not load (${String(e).slice(0, 200)}); ${instead}`;
 export class LazyPart<T> {
   /** The part, once loaded; null before (and for ever after a failure). */
   value: T | null = null;
@@ -25,7 +29,7 @@ export class LazyPart<T> {
       },
       (e: unknown) => {
         this.failed = true;
-        throw new Error(`${this.name} could not load (${String(e).slice(0, 200)}); ${this.instead}`);
+        throw new Error(loadFailed(this.name, e, this.instead));
       },
     ));
   }

@@ -23,7 +23,7 @@ import { reflectionPass } from './passes/reflection-pass';
 import { scenePass } from './passes/scene-pass';
 import { glassPass } from './passes/glass-pass';
 import { RoughLoader } from './rough-loader';
-import { CourseLoader } from './course-loader';
+import { SetupParts } from './setup-parts';
 import { glassMesh } from '../scene/geometry/rectangle';
 import { DefaultSceneCache } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
@@ -82,7 +82,8 @@ export class Renderer implements DebugViewFrame {
   /** @internal */
   readonly blitVao: WebGLVertexArrayObject;
   private readonly setup = new FrameSetup();
-  private readonly course = new CourseLoader(this.setup);
+  /** The course camera's and the orthographic projection, loaded by load(). */
+  private readonly setupParts = new SetupParts(this.setup);
   private readonly checks = new LazyPart(() => import('./frame-checks'), 'the frame checks', 'frames go unchecked');
   /** debug-view reflection, fresnel and passes (render/debug-views.ts): a chunk, loaded by load(). */
   private readonly views = new LazyPart(() => import('./debug-views'), 'debug-view', 'the final image is drawn');
@@ -158,15 +159,16 @@ export class Renderer implements DebugViewFrame {
 
   /**
    * Loads what `state` and `scene` (default: the default scene) need that the core leaves out —
-   * the checks, rough glass (SPEC §14), the course camera's projection (§11), the mesh extras —
-   * or null. Until it resolves, render() and read() draw polished glass, from the camera attributes,
-   * with full meshes in the reflection. A chunk that fails rejects (an Error saying what is drawn
-   * instead) and is not asked for again.
+   * the checks, rough glass (SPEC §14), the course camera's (§11) and the orthographic (§10)
+   * projections, the mesh extras, the debug views — or null. Until it resolves, render() and
+   * read() draw polished glass, in perspective from the camera attributes, with full meshes in
+   * the reflection, the final image for a debug view. A chunk that fails rejects (an Error
+   * saying what is drawn instead) and is not asked for again.
    */
   load(state: FrameState, scene?: Scene): Promise<void> | null {
     const meshes = scene ? this.objectMeshes.load(state, scene) : null;
     const view = state.view !== 'final' && state.view !== 'scene';
-    return loadAll(this.checks.load(this.options.checks === true), this.rough.load(state), this.course.load(state), meshes, this.views.load(view));
+    return loadAll(this.checks.load(this.options.checks === true), this.rough.load(state), this.setupParts.load(state), meshes, this.views.load(view));
   }
 
   /**

@@ -6,7 +6,9 @@ import { isRough } from '../frame/roughness';
 import { eyeRelativePlane } from '../math/mirror';
 import { srgbToLinear, type ColorSpace } from '../math/srgb';
 import { resolveSamples } from './encode';
-import { courseFrameSetup } from '../frame/course-projection';
+import { CourseProjection } from '../frame/course-projection';
+import { orthographicView } from '../frame/orthographic-view';
+import { FrameSetup } from '../frame/frame-setup';
 import { encodesAtEnd } from '../frame/linear-light';
 import type { FrameState } from '../frame/types';
 import type { DecodedImage } from '../scene/decoded-image';
@@ -47,7 +49,8 @@ export class SoftwareRenderer {
   samplesPerAxis: number;
   /** The bench's split of a frame: when set, render() adds its phase times (ms) here. */
   timing: SoftwareTiming | null = null;
-  private readonly setup = courseFrameSetup();
+  /** Every part FrameSetup takes: this chunk is lazy already. */
+  private readonly setup = new FrameSetup(new CourseProjection(), orthographicView);
   private readonly meshes = new SoftwareMeshes();
   private readonly main = new Rasterizer();
   private readonly mirror = new Rasterizer();

@@ -6,7 +6,7 @@ import { courseBasis, courseProject, type CourseCamera, type Vec3 } from '../../
 import { reflectPoint } from '../../src/math/mirror';
 import { compareImages, renderScene } from '../../src/reference';
 import { FrameSetup } from '../../src/frame/frame-setup';
-import { CourseProjection, courseFrameSetup } from '../../src/frame/course-projection';
+import { CourseProjection } from '../../src/frame/course-projection';
 import type { FrameState } from '../../src/frame/types';
 import { courseSceneRange } from '../../src/scene/course-depth';
 import { BACKGROUND, DEFAULT_LIGHT, defaultScene } from '../../src/scene/default-scene';
@@ -45,7 +45,7 @@ const POINTS: Vec3[] = [[-1, 1, 0.75], [1, 1, -1.5], [-4, -1, 0], [4, 3, 0], [0.
 describe('frame setup with a course camera', () => {
   it('projects every point where courseProject puts it, with the eye at C, whatever cameraPosition says', () => {
     for (const cam of [OBLIQUE, { ...OBLIQUE, hx: -0.6 }, { ...OBLIQUE, hy: -0.5, d: 2 }]) {
-      const setup = courseFrameSetup();
+      const setup = new FrameSetup(new CourseProjection());
       setup.update(state(cam), defaultScene(0.75, 0.8));
       expect([...setup.eye]).toEqual(cam.c);
       for (const p of POINTS) {
@@ -58,7 +58,7 @@ describe('frame setup with a course camera', () => {
   });
 
   it('puts every vertex of the scene between near and far (depth within −1..1)', () => {
-    const setup = courseFrameSetup();
+    const setup = new FrameSetup(new CourseProjection());
     const scene = defaultScene(0.75, 0.8);
     setup.update(state(OBLIQUE), scene);
     const range = setup.courseRange!;
@@ -91,13 +91,13 @@ describe('frame setup with a course camera', () => {
       OBLIQUE, { ...OBLIQUE, hx: -0.6 }, { ...OBLIQUE, hy: -0.5 }, { ...OBLIQUE, hx: -0.6, hy: -0.5 },
       { ...OBLIQUE, d: -1 },
     ].map((cam) => {
-      const setup = courseFrameSetup();
+      const setup = new FrameSetup(new CourseProjection());
       setup.update(state(cam), scene);
       return setup.mirrorsWinding;
     });
     expect(flags).toEqual([false, true, true, false, false]);
     const away = camera([3.6, 2.4, 4], [7.2, 3.8, 8], [0, 1, 0], 1, 0.6, 0.5);
-    const setup = courseFrameSetup();
+    const setup = new FrameSetup(new CourseProjection());
     setup.update(state(away), scene);
     expect(setup.courseRange!.behind).toBe(true);
     expect(setup.mirrorsWinding).toBe(true);
@@ -110,7 +110,7 @@ describe('frame setup with a course camera', () => {
   });
 
   it('the flyby camera is untouched when courseCamera is null', () => {
-    const a = courseFrameSetup(), b = courseFrameSetup();
+    const a = new FrameSetup(new CourseProjection()), b = new FrameSetup(new CourseProjection());
     const scene = defaultScene(0.75, 0.8);
     a.update(state(null, { cameraPosition: [3.6, 2.4, 0.2], yaw: -169, pitch: -23.6 }), scene);
     const s = state(null, { cameraPosition: [3.6, 2.4, 0.2], yaw: -169, pitch: -23.6 });
@@ -122,7 +122,7 @@ describe('frame setup with a course camera', () => {
   });
 
   it('a setup without the course projection (its chunk not loaded) draws from the camera attributes', () => {
-    const bare = new FrameSetup(), flyby = courseFrameSetup();
+    const bare = new FrameSetup(), flyby = new FrameSetup(new CourseProjection());
     const scene = defaultScene(0.75, 0.8);
     const pose: Partial<FrameState> = { cameraPosition: [3.6, 2.4, 0.2], yaw: -169, pitch: -23.6 };
     bare.update(state(OBLIQUE, pose), scene);

@@ -29,9 +29,10 @@ const SCENE: Scene = {
   }],
 };
 
-/** The WebGL renderer's sphere segments for `state` (its stats), on a stand-in context. */
-function webglSegments(state: FrameState): number {
+/** The WebGL renderer's sphere segments for `state` (its stats), on a stand-in context, with the parts it loads for it. */
+async function webglSegments(state: FrameState): Promise<number> {
   const r = new Renderer(fakeGl().gl);
+  await r.load(state, SCENE);
   r.render(state, SCENE);
   const n = r.stats.sphereSegments;
   r.dispose();
@@ -52,15 +53,15 @@ function softwareIndices(state: FrameState): number {
 }
 
 describe('the sphere\'s tessellation, WebGL and software alike', () => {
-  it('here the orthographic view needs fewer segments than the perspective one (24, 28): the half-height counts', () => {
-    expect(webglSegments({ ...STATE, projection: 'perspective' })).toBe(28);
-    expect(webglSegments({ ...STATE, projection: 'orthographic' })).toBe(24);
+  it('here the orthographic view needs fewer segments than the perspective one (24, 28): the half-height counts', async () => {
+    expect(await webglSegments({ ...STATE, projection: 'perspective' })).toBe(28);
+    expect(await webglSegments({ ...STATE, projection: 'orthographic' })).toBe(24);
   });
 
   for (const projection of ['perspective', 'orthographic'] as const) {
-    it(`${projection}, tessellation auto: the software renderer draws the sphere WebGL draws`, () => {
+    it(`${projection}, tessellation auto: the software renderer draws the sphere WebGL draws`, async () => {
       const state = { ...STATE, projection };
-      const segments = webglSegments(state);
+      const segments = await webglSegments(state);
       expect(softwareIndices(state), `${segments} segments`).toBe(sphereMesh(1, segments).indices.length);
     });
   }

@@ -6,9 +6,9 @@
 // orthographic half-height (the sizes test).
 import { describe, expect, it } from 'vitest';
 import { apply, expectClose } from './helpers';
-import {
-  forwardFromYawPitch, MIN_ORTHO_DEPTH, orthoHalfHeight, orthographicMatrix, viewerSide, type OrthoView,
-} from '../../src/math/camera';
+import { forwardFromYawPitch, viewerSide } from '../../src/math/camera';
+import { MIN_ORTHO_DEPTH, orthoHalfHeight, orthographicMatrix, type OrthoView } from '../../src/math/orthographic';
+import { orthographicView } from '../../src/frame/orthographic-view';
 import { MIRROR_CONTACT, reflectDirection, reflectPoint, type Plane } from '../../src/math/mirror';
 import { FrameSetup } from '../../src/frame/frame-setup';
 import { sphereScreenRadius } from '../../src/frame/sphere-screen';
@@ -107,7 +107,7 @@ function clip(setup: FrameSetup, eye: 'main' | 'mirrored', p: ArrayLike<number>)
 describe('the mirrored orthographic camera (FrameSetup)', () => {
   const s = state();
   const scene = defaultScene(s.cubeDistance, s.spin);
-  const setup = new FrameSetup();
+  const setup = new FrameSetup(null, orthographicView);
   setup.update(s, scene);
   const plane = setup.glass.plane;
 
@@ -139,7 +139,7 @@ describe('the mirrored orthographic camera (FrameSetup)', () => {
   });
 
   it('perspective keeps V towards the eye: uViewVector (0, 0, 0, 1) for both eyes', () => {
-    const p = new FrameSetup();
+    const p = new FrameSetup(null, orthographicView);
     p.update(state({ projection: undefined }), scene);
     expect(p.orthographic).toBe(false);
     expect(p.halfHeight).toBe(0);
@@ -152,7 +152,7 @@ describe('the mirrored orthographic camera (FrameSetup)', () => {
   it('clips exactly at the glass, keeping the side the view comes from even with the eye behind the plane', () => {
     // A glass floor; the eye 1 below it, looking down 30° at it: it sees the floor's top.
     const floorScene: Scene = { ...scene, glass: { center: [0, 0, 0], normal: [0, 1, 0], size: [8, 8] } };
-    const low = new FrameSetup();
+    const low = new FrameSetup(null, orthographicView);
     low.update(state({ cameraPosition: [0, -1, 6], yaw: -90, pitch: -30 }), floorScene);
     expect(low.eyeDistance).toBeLessThan(0);
     expect(low.side).toBe(1);

@@ -6,7 +6,7 @@
 import { describe, expect, it } from 'vitest';
 import { quat } from 'gl-matrix';
 import { FrameSetup } from '../../src/frame/frame-setup';
-import { courseFrameSetup } from '../../src/frame/course-projection';
+import { CourseProjection } from '../../src/frame/course-projection';
 import type { FrameState } from '../../src/render/types';
 import { SoftwareRenderer } from '../../src/software';
 import { courseBasis, type CourseCamera } from '../../src/math/course-camera';
@@ -48,7 +48,7 @@ const TURNS: [string, SceneTurn][] = [
 ];
 
 function setupOf(state: FrameState, scene: Scene): FrameSetup {
-  const s = courseFrameSetup();
+  const s = new FrameSetup(new CourseProjection());
   s.update(state, scene);
   return s;
 }
@@ -115,7 +115,7 @@ describe('FrameState.turn against the turned scene value', () => {
     }
     // One setup, the same scene and clock, the turn changed in place (as the trackball does).
     const live = { objects: Float64Array.from(a.objects) as unknown as quat, light: NONE, center: CENTER };
-    const setup = courseFrameSetup();
+    const setup = new FrameSetup(new CourseProjection());
     setup.update({ ...STATE, courseCamera: cam, turn: live }, scene);
     const first = { ...setup.courseRange! };
     quat.copy(live.objects, b.objects);

@@ -10,6 +10,7 @@ import type { CameraChangeDetail } from '../types';
 import { FlybyController } from './flyby-controller';
 import { FlybyInput } from './flyby-input';
 import { PointerControls, type PointerMode } from './pointer-controls';
+import { boundsCenter } from '../../scene/group-rotation';
 
 /** The flyby's mouse look ends this long after its last movement, ms. */
 const LOOK_END_MS = 150;
@@ -65,7 +66,7 @@ export class ControlsInput implements Controller {
       objectRotation: rig.objectRotation as unknown as quat, lightRotation: rig.lightRotation as unknown as quat,
       mode: () => (host.values.controls === 'orbit' || host.values.controls === 'trackball' ? host.values.controls as PointerMode : null),
       pose: () => rig.pose,
-      target: () => host.values.cameraTarget ?? host.objectsCenter(),
+      target: () => host.values.cameraTarget ?? boundsCenter(host.scene().objects),
       fov: () => host.values.fov,
       changed: (camera) => {
         // A trackball turn moves objects, not the camera: no write-back, no camera-change for it.
