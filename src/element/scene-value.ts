@@ -42,7 +42,7 @@ export class SceneValue {
   private value: Scene | null = null;
   private turnedValue: Scene | null = null;
   private readonly rotation = new LazyPart<GroupRotation>(
-    () => import('../scene/group-rotation'), 'The trackball\'s turn', 'the objects turn about the origin, and `scene` leaves the turn out',
+    () => import('../scene/group-rotation'), 'the trackball\'s turn', 'the objects turn about the origin, and `scene` leaves the turn out',
   );
   private fetching = false;
 
