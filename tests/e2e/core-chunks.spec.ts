@@ -5,9 +5,10 @@
 // frame that needs the projection waits for it; each that cannot load gives its stated fallback
 // (image textures come only with children, whose chunk imports the decoder: it fails with them).
 import type { Page } from '@playwright/test';
-import { test, expect, openPage, capture, type RgbaImage } from './fixtures';
+import { test, expect, openPage, capture } from './fixtures';
 import { mountHtml } from './helpers/scene-children';
 import { withoutWebGL2 } from './helpers/no-webgl2';
+import { blockChunk, countFrames, expectOneWarning, fetchedChunks as fetched, framesSeen, holdBack, samePixels as same, wait } from './helpers/chunks';
 
 const ORTHO = 'orthographic-view';
 const GATHER = 'gather-parts';
@@ -16,10 +17,6 @@ const MESSAGES = 'failure-messages';
 const CHECKER = '/tests/e2e/pages/models/checker.png';
 const SCENE = (attrs = '', children = '') => `<glass-plane-scene time="0" spin="0" ${attrs}>${children}</glass-plane-scene>`;
 
-const same = (a: RgbaImage, b: RgbaImage) => a.width === b.width && a.data.every((v, i) => v === b.data[i]);
-const fetched = (page: Page, names: string[]) =>
-  page.evaluate((ns) => ns.filter((n) => performance.getEntriesByType('resource').some((e) => e.name.includes(n))), names);
-const wait = (page: Page, ms: number) => page.evaluate((t) => new Promise((r) => setTimeout(r, t)), ms);
 const settled = async (page: Page) => {
   await wait(page, 300);
   return capture(page);
@@ -46,22 +43,14 @@ test('projection="orthographic" held back 600 ms: no frame until it is in, then 
   await mountHtml(page, SCENE('projection="orthographic"'));
   const orthographic = await settled(page);
   expect(same(orthographic, perspective), 'the two projections differ').toBe(false);
-  await page.route(`**/*${ORTHO}*`, async (route) => {
-    await new Promise((r) => setTimeout(r, 600));
-    await route.continue();
-  });
+  await holdBack(page, ORTHO, 600);
   await openPage(page);
   await mountHtml(page, SCENE());
-  const frames = await page.evaluate(() => {
-    const w = window as unknown as { __frames: number };
-    w.__frames = 0;
-    const el = document.querySelector('glass-plane-scene')!;
-    el.addEventListener('frame', () => w.__frames++);
-    el.setAttribute('projection', 'orthographic');
-    return new Promise<number>((r) => setTimeout(() => r(w.__frames), 400));
-  });
-  expect(frames, 'frames drawn while the projection is held back').toBe(0);
-  await expect.poll(() => page.evaluate(() => (window as unknown as { __frames: number }).__frames), { timeout: 5000 }).toBeGreaterThan(0);
+  await countFrames(page);
+  await page.evaluate(() => document.querySelector('glass-plane-scene')!.setAttribute('projection', 'orthographic'));
+  await wait(page, 400);
+  expect(await framesSeen(page), 'frames drawn while the projection is held back').toBe(0);
+  await expect.poll(() => framesSeen(page), { timeout: 5000 }).toBeGreaterThan(0);
   expect(same(await capture(page), orthographic)).toBe(true);
 });
 
@@ -69,26 +58,24 @@ test('if the orthographic projection cannot load: one warning, no error, drawn i
   await openPage(page);
   await mountHtml(page, SCENE());
   const perspective = await settled(page);
-  await page.route(`**/*${ORTHO}*`, (route) => route.abort());
+  await blockChunk(page, ORTHO);
   await openPage(page);
   const seen = await mountHtml(page, SCENE('projection="orthographic"'));
   expect(seen.filter((e) => e.type === 'error')).toEqual([]);
   expect(same(await settled(page), perspective)).toBe(true);
-  expect(consoleLog.take('warning').filter((w) => w.includes('projection="orthographic" could not load'))).toHaveLength(1);
-  consoleLog.take('error'); // the browser's own report of the failed fetch
+  expectOneWarning(consoleLog, 'projection="orthographic" could not load');
 });
 
 test('if what gathers the children cannot load: one warning, no error, the default scene', async ({ page, consoleLog }) => {
   await openPage(page);
   await mountHtml(page, SCENE());
   const plain = await settled(page);
-  await page.route(`**/*${GATHER}*`, (route) => route.abort());
+  await blockChunk(page, GATHER);
   await openPage(page);
   const seen = await mountHtml(page, SCENE('', '<glass-object shape="sphere" position="0 1 0"></glass-object>'));
   expect(seen.filter((e) => e.type === 'error')).toEqual([]);
   expect(same(await settled(page), plain)).toBe(true);
-  expect(consoleLog.take('warning').filter((w) => w.includes('the scene is drawn without its children'))).toHaveLength(1);
-  consoleLog.take('error');
+  expectOneWarning(consoleLog, 'the scene is drawn without its children');
 });
 
 test('a texture set on a child after the first frames: its image is fetched and drawn', async ({ page }) => {
@@ -110,7 +97,7 @@ test('a texture set on a child after the first frames: its image is fetched and 
 test('a failure\'s message comes with its chunk; without it, the error\'s own text', async ({ page, consoleLog }) => {
   await page.addInitScript(withoutWebGL2);
   for (const blocked of [false, true]) {
-    if (blocked) await page.route(`**/*${MESSAGES}*`, (route) => route.abort());
+    if (blocked) await blockChunk(page, MESSAGES);
     await openPage(page);
     const text = await page.evaluate(() => new Promise<{ event: string; shown: string }>((resolve) => {
       const el = document.createElement('glass-plane-scene');
