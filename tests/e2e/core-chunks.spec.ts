@@ -8,7 +8,7 @@ import type { Page } from '@playwright/test';
 import { test, expect, openPage, capture } from './fixtures';
 import { mountHtml } from './helpers/scene-children';
 import { withoutWebGL2 } from './helpers/no-webgl2';
-import { blockChunk, countFrames, expectOneWarning, fetchedChunks as fetched, framesSeen, holdBack, samePixels as same, wait } from './helpers/chunks';
+import { blockChunk, expectFrameHeldFor, expectOneWarning, fetchedChunks as fetched, samePixels as same, wait } from './helpers/chunks';
 
 const ORTHO = 'orthographic-view';
 const GATHER = 'gather-parts';
@@ -36,22 +36,7 @@ test('the default scene fetches none of the four; each page that needs one fetch
 });
 
 test('projection="orthographic" held back 600 ms: no frame until it is in, then the orthographic picture', async ({ page }) => {
-  await openPage(page);
-  await mountHtml(page, SCENE());
-  const perspective = await settled(page);
-  await openPage(page);
-  await mountHtml(page, SCENE('projection="orthographic"'));
-  const orthographic = await settled(page);
-  expect(same(orthographic, perspective), 'the two projections differ').toBe(false);
-  await holdBack(page, ORTHO, 600);
-  await openPage(page);
-  await mountHtml(page, SCENE());
-  await countFrames(page);
-  await page.evaluate(() => document.querySelector('glass-plane-scene')!.setAttribute('projection', 'orthographic'));
-  await wait(page, 400);
-  expect(await framesSeen(page), 'frames drawn while the projection is held back').toBe(0);
-  await expect.poll(() => framesSeen(page), { timeout: 5000 }).toBeGreaterThan(0);
-  expect(same(await capture(page), orthographic)).toBe(true);
+  await expectFrameHeldFor(page, ORTHO, 'projection', 'orthographic');
 });
 
 test('if the orthographic projection cannot load: one warning, no error, drawn in perspective', async ({ page, consoleLog }) => {

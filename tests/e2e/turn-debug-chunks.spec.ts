@@ -7,7 +7,7 @@
 import type { Page } from '@playwright/test';
 import { test, expect, openPage, capture, type RgbaImage } from './fixtures';
 import { mountHtml } from './helpers/scene-children';
-import { blockChunk, countFrames, expectOneWarning, fetchedChunks, framesSeen, holdBack, samePixels as same, wait } from './helpers/chunks';
+import { blockChunk, countFrames, expectFrameHeldFor, expectOneWarning, fetchedChunks, framesSeen, holdBack, samePixels as same, wait } from './helpers/chunks';
 
 const TURN = 'group-rotation';
 const VIEWS = 'debug-views';
@@ -104,23 +104,7 @@ test('if the group rotation cannot load: one warning, no error, the objects turn
 });
 
 test('debug-view="passes" with the debug views held back 600 ms: no frame until they are in, then the four passes', async ({ page }) => {
-  await openPage(page);
-  await mountHtml(page, SCENE('debug-view="passes"'));
-  await wait(page, 300);
-  const passes = await capture(page);
-  await openPage(page);
-  await mountHtml(page, SCENE());
-  const final = await capture(page);
-  expect(same(passes, final), 'the passes view is not the final image').toBe(false);
-  await holdBack(page, VIEWS, 600);
-  await openPage(page);
-  await mountHtml(page, SCENE());
-  await countFrames(page);
-  await page.evaluate(() => document.querySelector('glass-plane-scene')!.setAttribute('debug-view', 'passes'));
-  await wait(page, 400);
-  expect(await framesSeen(page), 'frames drawn while the chunk is held back').toBe(0);
-  await expect.poll(() => framesSeen(page), { timeout: 5000 }).toBeGreaterThan(0);
-  expect(same(await capture(page), passes)).toBe(true);
+  await expectFrameHeldFor(page, VIEWS, 'debug-view', 'passes');
 });
 
 test('if the debug views cannot load: one warning, no error, the final image', async ({ page, consoleLog }) => {

@@ -1,7 +1,8 @@
 // For the specs of the chunks the core leaves out (issue 22): which were fetched, holding one
 // back or blocking it, counting the frames drawn meanwhile, and the one warning a failed chunk gives.
 import type { Page } from '@playwright/test';
-import { expect, type ConsoleLog, type RgbaImage } from '../fixtures';
+import { expect, openPage, capture, type ConsoleLog, type RgbaImage } from '../fixtures';
+import { mountHtml } from './scene-children';
 
 export const samePixels = (a: RgbaImage, b: RgbaImage): boolean => a.width === b.width && a.data.every((v, i) => v === b.data[i]);
 
@@ -36,4 +37,30 @@ export const framesSeen = (page: Page): Promise<number> => page.evaluate(() => (
 export function expectOneWarning(consoleLog: ConsoleLog, text: string): void {
   expect(consoleLog.take('warning').filter((w) => w.includes(text))).toHaveLength(1);
   consoleLog.take('error');
+}
+
+/**
+ * An attribute that needs the chunk `name`, set on a default scene (160×90, time 0, spin 0) while
+ * that chunk is held back 600 ms: no frame is drawn until it is in, and the first is the picture
+ * the element draws with the attribute set from the start (which must differ from the plain one).
+ */
+export async function expectFrameHeldFor(page: Page, name: string, attribute: string, value: string): Promise<void> {
+  const scene = (attrs: string) => `<glass-plane-scene time="0" spin="0" ${attrs}></glass-plane-scene>`;
+  await openPage(page);
+  await mountHtml(page, scene(`${attribute}="${value}"`));
+  await wait(page, 300);
+  const wanted = await capture(page);
+  await openPage(page);
+  await mountHtml(page, scene(''));
+  await wait(page, 300);
+  expect(samePixels(wanted, await capture(page)), `${attribute}="${value}" changes the picture`).toBe(false);
+  await holdBack(page, name, 600);
+  await openPage(page);
+  await mountHtml(page, scene(''));
+  await countFrames(page);
+  await page.evaluate(([a, v]) => document.querySelector('glass-plane-scene')!.setAttribute(a, v), [attribute, value]);
+  await wait(page, 400);
+  expect(await framesSeen(page), `frames drawn while ${name} is held back`).toBe(0);
+  await expect.poll(() => framesSeen(page), { timeout: 5000 }).toBeGreaterThan(0);
+  expect(samePixels(await capture(page), wanted), 'the first frame once it is in').toBe(true);
 }
