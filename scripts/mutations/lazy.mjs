@@ -22,12 +22,12 @@ export default [
   },
   {
     name: 'Z3 the course projection loads but FrameSetup is never given it',
-    edits: [{ file: 'src/render/setup-parts.ts', find: '      setup.course = new this.course.value!.CourseProjection();\n', replace: '' }],
+    edits: [{ file: 'src/render/setup-parts.ts', find: '      setup.course = new this.coursePart.value!.CourseProjection();\n', replace: '' }],
     tests: [CHUNK],
   },
   {
     name: 'Z4 Renderer.load never asks for the course projection',
-    edits: [{ file: 'src/render/renderer.ts', find: "this.setupParts.load(state), meshes,", replace: "this.setupParts.load({ ...state, courseCamera: null }), meshes," }],
+    edits: [{ file: 'src/render/renderer.ts', find: 'w[2] = this.setupParts.course(state);', replace: 'w[2] = null;' }],
     tests: [CHUNK],
   },
   {
@@ -72,12 +72,12 @@ export default [
   },
   {
     name: 'Z13 the renderer\'s checks are never loaded (frames go unchecked)',
-    edits: [{ file: 'src/render/renderer.ts', find: 'loadAll(this.checks.load(this.options.checks === true),', replace: 'loadAll(null,' }],
+    edits: [{ file: 'src/render/renderer.ts', find: 'w[0] = this.checks.load(this.options.checks === true);', replace: 'w[0] = null;' }],
     tests: ['tests/e2e/frame-checks.spec.ts'],
   },
   {
     name: 'Z14 two parts loading at once: only the first waited for (a course frame drawn before its projection)',
-    edits: [{ file: 'src/render/lazy-part.ts', find: '  return Promise.allSettled([a, b, c, d, e])', replace: '  return Promise.allSettled([a ?? b ?? c ?? d ?? e])' }],
+    edits: [{ file: 'src/render/lazy-part.ts', find: '  return Promise.allSettled(parts.slice())', replace: '  return Promise.allSettled([parts.find((p) => p)])' }],
     tests: [CHUNK],
   },
   {
@@ -122,12 +122,12 @@ export default [
   },
   {
     name: 'Z23 Renderer.load never asks for the debug views (the final image in their place)',
-    edits: [{ file: 'src/render/renderer.ts', find: 'meshes, this.views.load(view));', replace: 'meshes, null);' }],
+    edits: [{ file: 'src/render/renderer.ts', find: "w[5] = this.views.load(state.view !== 'final' && state.view !== 'scene');", replace: 'w[5] = null;' }],
     tests: [CHUNKS],
   },
   {
     name: 'Z24 the debug views\' chunk asked for in the final view too (fetched by every page)',
-    edits: [{ file: 'src/render/renderer.ts', find: "const view = state.view !== 'final' && state.view !== 'scene';", replace: "const view = state.view !== 'scene';" }],
+    edits: [{ file: 'src/render/renderer.ts', find: "w[5] = this.views.load(state.view !== 'final' && state.view !== 'scene');", replace: "w[5] = this.views.load(state.view !== 'scene');" }],
     tests: [CHUNKS],
   },
   {
@@ -142,7 +142,7 @@ export default [
   },
   {
     name: 'Z27 Renderer.load never asks for the orthographic projection (drawn in perspective)',
-    edits: [{ file: 'src/render/setup-parts.ts', find: "this.ortho.load(state.projection === 'orthographic')", replace: 'this.ortho.load(false)' }],
+    edits: [{ file: 'src/render/setup-parts.ts', find: "this.orthoPart.load(state.projection === 'orthographic')", replace: 'this.orthoPart.load(false)' }],
     tests: [CORE],
   },
   {

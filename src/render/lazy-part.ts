@@ -36,15 +36,16 @@ export class LazyPart<T> {
 }
 
 /**
- * One promise for the parts a frame is waiting for (each a LazyPart.load result, null when not
- * waited for), or null for none: settled when every one is, rejected with each failure's message
- * (so each is warned about once). Fixed arguments, so a frame that waits for nothing allocates nothing.
+ * One promise for the parts a frame is waiting for (`parts`: LazyPart.load results, null where
+ * not waited for), or null for none: settled when every one is, rejected with each failure's
+ * message (so each is warned about once). The caller refills one array each frame, so a frame
+ * that waits for nothing allocates nothing.
  */
-export function loadAll(
-  a: Promise<void> | null, b: Promise<void> | null, c: Promise<void> | null, d: Promise<void> | null, e: Promise<void> | null,
-): Promise<void> | null {
-  if (!a && !b && !c && !d && !e) return null;
-  return Promise.allSettled([a, b, c, d, e]).then((results) => {
+export function loadAll(parts: readonly (Promise<void> | null)[]): Promise<void> | null {
+  let waiting = false;
+  for (let i = 0; i < parts.length; i++) if (parts[i]) waiting = true;
+  if (!waiting) return null;
+  return Promise.allSettled(parts.slice()).then((results) => {
     const failed = results.flatMap((r) => (r.status === 'rejected' ? [r.reason instanceof Error ? r.reason.message : String(r.reason)] : []));
     if (failed.length) throw new Error(failed.join('; '));
   });

@@ -85,6 +85,8 @@ export class Renderer implements DebugViewFrame {
   /** The course camera's and the orthographic projection, loaded by load(). */
   private readonly setupParts = new SetupParts(this.setup);
   private readonly checks = new LazyPart(() => import('./frame-checks'), 'the frame checks', 'frames go unchecked');
+  /** This frame's waits in load(), one per lazy part (refilled: nothing allocated per frame). */
+  private readonly waiting: (Promise<void> | null)[] = [null, null, null, null, null, null];
   /** debug-view reflection, fresnel and passes (render/debug-views.ts): a chunk, loaded by load(). */
   private readonly views = new LazyPart(() => import('./debug-views'), 'debug-view', 'the final image is drawn');
   /** @internal */
@@ -166,9 +168,14 @@ export class Renderer implements DebugViewFrame {
    * saying what is drawn instead) and is not asked for again.
    */
   load(state: FrameState, scene?: Scene): Promise<void> | null {
-    const meshes = scene ? this.objectMeshes.load(state, scene) : null;
-    const view = state.view !== 'final' && state.view !== 'scene';
-    return loadAll(this.checks.load(this.options.checks === true), this.rough.load(state), this.setupParts.load(state), meshes, this.views.load(view));
+    const w = this.waiting;
+    w[0] = this.checks.load(this.options.checks === true);
+    w[1] = this.rough.load(state);
+    w[2] = this.setupParts.course(state);
+    w[3] = this.setupParts.ortho(state);
+    w[4] = scene ? this.objectMeshes.load(state, scene) : null;
+    w[5] = this.views.load(state.view !== 'final' && state.view !== 'scene');
+    return loadAll(w);
   }
 
   /**

@@ -5,27 +5,31 @@
 // holds that frame (Renderer.load) so it is never drawn from the wrong camera.
 import type { FrameSetup } from '../frame/frame-setup';
 import type { FrameState } from '../frame/types';
-import { LazyPart, loadAll } from './lazy-part';
+import { LazyPart } from './lazy-part';
 
 export class SetupParts {
-  private readonly course = new LazyPart(
+  private readonly coursePart = new LazyPart(
     () => import('../frame/course-projection'), 'camera-src', 'drawing from the camera attributes',
   );
-  private readonly ortho = new LazyPart(
+  private readonly orthoPart = new LazyPart(
     () => import('../frame/orthographic-view'), 'projection="orthographic"', 'drawing in perspective',
   );
 
   constructor(private readonly setup: FrameSetup) {}
 
-  /** See Renderer.load. */
-  load(state: FrameState): Promise<void> | null {
+  /** See Renderer.load: the course projection, given to FrameSetup as it arrives. */
+  course(state: FrameState): Promise<void> | null {
     const setup = this.setup;
-    const course = setup.course ? null : this.course.load(!!state.courseCamera)?.then(() => {
-      setup.course = new this.course.value!.CourseProjection();
+    return setup.course ? null : this.coursePart.load(!!state.courseCamera)?.then(() => {
+      setup.course = new this.coursePart.value!.CourseProjection();
     }) ?? null;
-    const ortho = setup.ortho ? null : this.ortho.load(state.projection === 'orthographic')?.then(() => {
-      setup.ortho = this.ortho.value!.orthographicView;
+  }
+
+  /** See Renderer.load: the orthographic projection, given to FrameSetup as it arrives. */
+  ortho(state: FrameState): Promise<void> | null {
+    const setup = this.setup;
+    return setup.ortho ? null : this.orthoPart.load(state.projection === 'orthographic')?.then(() => {
+      setup.ortho = this.orthoPart.value!.orthographicView;
     }) ?? null;
-    return course && ortho ? loadAll(course, ortho, null, null, null) : course ?? ortho;
   }
 }
