@@ -108,7 +108,7 @@ export default [
   },
   {
     name: 'B19 a usemtl starts no run (later faces keep the material before)',
-    edits: [{ file: 'src/loaders/obj/reader.ts', find: 'if (smooth !== this.runSmooth || material !== this.runMaterial) {', replace: 'if (smooth !== this.runSmooth) {' }],
+    edits: [{ file: 'src/loaders/obj/reader.ts', find: 'if (r === 0 || d[r - 2] !== smooth || d[r - 1] !== material)', replace: 'if (r === 0 || d[r - 2] !== smooth)' }],
     tests: [OBJ],
   },
   {
@@ -185,5 +185,15 @@ export default [
     name: "B34 a triangle's Newell normal summed without the loop's starting 0 (a −0 kept)",
     edits: [{ file: MESH, find: 'out[1] = 0 + (cz - az)', replace: 'out[1] = (cz - az)' }],
     tests: [FAST],
+  },
+  {
+    name: 'B35 runs of a material that comes back copied in file order, not into their group',
+    edits: [{ file: MESH, find: 'indices.set(fileOrder.subarray(runStart[r], runStart[r + 1]), offset[m]);', replace: 'indices.set(fileOrder.subarray(runStart[r], runStart[r + 1]), runStart[r]);' }],
+    tests: [OBJ],
+  },
+  {
+    name: 'B36 indices of a mesh over 65535 vertices put into 16 bits',
+    edits: [{ file: MESH, find: 'const wide = w.count > 65535;', replace: 'const wide = false;' }],
+    tests: [OBJ, FAST, 'tests/unit/obj-bytes-suite.test.ts'],
   },
 ];

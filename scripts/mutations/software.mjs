@@ -365,4 +365,9 @@ export default [
     edits: [{ file: 'src/software/raster.ts', find: 'lo = 1 - (2 * (this.bottom + 1)) / H;', replace: 'lo = 1 - (2 * (this.bottom - 8)) / H;' }],
     tests: [BANDS],
   },
+  {
+    name: 'S62 a frame in flight when the element goes drawn again on the main thread (a whole CPU frame thrown away)',
+    edits: [{ file: 'src/element/software-host.ts', find: '.catch(() => (this.disposed ? new Uint8ClampedArray(0) : this.renderNow(state, scene, samplesPerAxis)));', replace: '.catch(() => this.renderNow(state, scene, samplesPerAxis));' }],
+    tests: ['tests/e2e/software-bands.spec.ts'],
+  },
 ];

@@ -68,6 +68,8 @@ export class SoftwareHost {
   private nextId = 0;
   /** Each band's rows per ms in the frames before (smoothed): a slower band gets fewer rows. */
   private speeds: number[] = [];
+  /** Disposed: a frame its workers were stopped in is dropped, not drawn again on the main thread. */
+  private disposed = false;
   /** The last frame's slowest band: its worker's own time, ms (the bench reads it). */
   lastWorkerMs = 0;
 
@@ -162,7 +164,7 @@ export class SoftwareHost {
         if (b.bottom > b.top && p.ms > 0) this.speeds[i] = 0.5 * this.speeds[i] + 0.5 * ((b.bottom - b.top) / p.ms);
       });
       return frame;
-    }).catch(() => this.renderNow(state, scene, samplesPerAxis));
+    }).catch(() => (this.disposed ? new Uint8ClampedArray(0) : this.renderNow(state, scene, samplesPerAxis)));
   }
 
   /** Draws on the main thread, now (capture of a pass, the fallback). A copy of the pixels. */
@@ -172,6 +174,7 @@ export class SoftwareHost {
   }
 
   dispose(): void {
+    this.disposed = true;
     this.stopWorkers();
   }
 }

@@ -94,3 +94,25 @@ test('every worker is terminated when the element goes, and when it switches to 
   await page.evaluate((s) => document.querySelector(s)!.setAttribute('renderer', 'webgl'), b.selector);
   await expect.poll(() => workers(page)).toEqual({ started: 6, terminated: 6 });
 });
+
+test('a frame in flight when the element goes is dropped, not drawn again on the main thread', async ({ page }) => {
+  await openPage(page);
+  await useWorkers(page, 2);
+  await page.evaluate(async () => {
+    const url = '/src/element/software-host.ts';
+    const m = (await import(/* @vite-ignore */ url)) as { SoftwareHost: { prototype: { renderNow(...a: unknown[]): unknown } } };
+    const w = window as unknown as { __mainThreadFrames: number };
+    w.__mainThreadFrames = 0;
+    const renderNow = m.SoftwareHost.prototype.renderNow;
+    m.SoftwareHost.prototype.renderNow = function (this: unknown, ...a: unknown[]) {
+      w.__mainThreadFrames++;
+      return renderNow.apply(this, a);
+    };
+  });
+  // Spinning: the next worker frame is asked for as soon as the last lands, so one is always in flight.
+  const { selector } = await mount(page, { renderer: 'software', samples: 4, spin: 2 }, SIZE);
+  await page.evaluate(() => new Promise((r) => setTimeout(r, 300)));
+  await page.evaluate((s) => document.querySelector(s)!.remove(), selector);
+  await page.evaluate(() => new Promise((r) => setTimeout(r, 500)));
+  expect(await page.evaluate(() => (window as unknown as { __mainThreadFrames: number }).__mainThreadFrames)).toBe(0);
+});

@@ -132,8 +132,10 @@ function weldCorners(raw: ObjRaw, byPosition: boolean): Welded {
           acc[a + 2] += normal[2];
         }
       }
-      if (count > 3) w = polygonTriangles(raw.triangles.data, tri, faces[at], c - count, fileOrder, w);
-      if (count > 3) tri += faces[at++];
+      if (count > 3) {
+        w = polygonTriangles(raw.triangles.data, tri, faces[at], c - count, fileOrder, w);
+        tri += faces[at++];
+      }
     }
   }
   runStart[runCount] = w;
@@ -175,8 +177,10 @@ function weldPositions(raw: ObjRaw): Welded {
         acc[3 * o + 1] += ny;
         acc[3 * o + 2] += nz;
       }
-      if (count > 3) w = polygonTriangles(raw.triangles.data, tri, faces[at], c - count, fileOrder, w);
-      if (count > 3) tri += faces[at++];
+      if (count > 3) {
+        w = polygonTriangles(raw.triangles.data, tri, faces[at], c - count, fileOrder, w);
+        tri += faces[at++];
+      }
     }
   }
   runStart[runCount] = w;
@@ -308,17 +312,17 @@ function indexByMaterial(raw: ObjRaw, w: Welded): { indices: Uint16Array | Uint3
     groups.push({ material: raw.materials[m], start: at, count: perMaterial[m] });
     at += perMaterial[m];
   }
-  let sorted = fileOrder;
-  if (!inOrder) {
-    sorted = new Uint32Array(fileOrder.length);
+  const wide = w.count > 65535;
+  if (inOrder && wide) return { indices: fileOrder, groups };
+  // One copy, straight into the final type: in file order, or each run moved to its material's group.
+  const indices = wide ? new Uint32Array(fileOrder.length) : new Uint16Array(fileOrder.length);
+  if (inOrder) indices.set(fileOrder);
+  else {
     for (let r = 0; r < runCount; r++) {
       const m = runs[r * RUN_INTS + 2];
-      sorted.set(fileOrder.subarray(runStart[r], runStart[r + 1]), offset[m]);
+      indices.set(fileOrder.subarray(runStart[r], runStart[r + 1]), offset[m]);
       offset[m] += runStart[r + 1] - runStart[r];
     }
   }
-  if (w.count > 65535) return { indices: sorted, groups };
-  const indices = new Uint16Array(sorted.length);
-  indices.set(sorted);
   return { indices, groups };
 }

@@ -45,9 +45,6 @@ class ObjReader {
   private nCount = 0;
   private triangleCount = 0;
   private readonly runs = new I32List(3 * RUN_INTS);
-  /** The current run's smoothing slot and material; before the first kept face, −2 and −1 (no slot or material is: integers, not NaN, so the test a face makes is on integers). */
-  private runSmooth = -2;
-  private runMaterial = -1;
   private readonly warnings = new Warnings();
   /** The names read and the current material and smoothing slot. */
   private readonly settings = new Settings();
@@ -225,16 +222,15 @@ class ObjReader {
   private textureCoordinate(line: number): void {
     const { sc, uvs, values } = this;
     sc.pos += 2;
-    const n = this.readValues();
+    const n = this.readValues(), index = this.tCount++;
     if (n < 1) {
-      this.cornerLists.markBad(1, this.tCount++, line);
+      this.cornerLists.markBad(1, index, line);
       this.warnings.add(line, `texture coordinate that is not a number (${shownLine(sc)}); faces using it are dropped`);
       uvs.push(NaN);
       uvs.push(NaN);
     } else {
       uvs.push(values[0]);
       uvs.push(n > 1 ? values[1] : 0);
-      this.tCount++;
     }
   }
 
@@ -242,14 +238,13 @@ class ObjReader {
   private normal(line: number): void {
     const { normals, values } = this;
     this.sc.pos += 2;
-    const n = this.readValues();
+    const n = this.readValues(), index = this.nCount++;
     if (n < 3) {
-      this.cornerLists.markBad(2, this.nCount++, line);
+      this.cornerLists.markBad(2, index, line);
       this.warnings.add(line, `normal with ${n < 0 ? 'a value that is not a number' : `${n} of its 3 values`}; faces using it are dropped`);
       normals.push3(NaN, NaN, NaN);
     } else {
       normals.push3(values[0], values[1], values[2]);
-      this.nCount++;
     }
   }
 
@@ -351,11 +346,9 @@ class ObjReader {
   /** A kept face onto `faces` (a polygon's kept triangles still to push), starting a run where the smoothing or material changed. */
   private addFace(count: number, kept: number): void {
     const { smooth, material } = this.settings;
-    if (smooth !== this.runSmooth || material !== this.runMaterial) {
-      this.runSmooth = smooth;
-      this.runMaterial = material;
-      this.runs.push3(this.faceCount, smooth, material);
-    }
+    // A new run where the smoothing slot or material differs from the last run's (or there is none).
+    const runs = this.runs, r = runs.length, d = runs.data;
+    if (r === 0 || d[r - 2] !== smooth || d[r - 1] !== material) runs.push3(this.faceCount, smooth, material);
     this.faces.push(count);
     this.faceCount++;
     this.triangleCount += kept;
