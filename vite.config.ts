@@ -4,6 +4,19 @@
 import { defineConfig, type Plugin } from 'vite';
 import { demoModels } from './demo/demo-models.ts';
 import { glslMinify } from './scripts/glsl-minify.ts';
+import { CHUNKS } from './src/frame/chunks.ts';
+
+const escape = (s: string) => s.replace(/[.*+?^${}()|[\]\\]/g, '\\$&');
+
+/** One group per chunk of CHUNKS that lists its modules: a module belongs to it by its path. */
+function chunkGroups(): { name: string; test: RegExp }[] {
+  return Object.entries(CHUNKS).flatMap(([name, chunk]) => {
+    const modules: readonly string[] | undefined = 'modules' in chunk ? chunk.modules : undefined;
+    if (!modules) return [];
+    const paths = modules.map((m) => m.split('/').map(escape).join('[\\\\/]'));
+    return [{ name, test: new RegExp(`(^|[\\\\/])(${paths.join('|')})$`) }];
+  });
+}
 
 /** `/` opens the demo, so `npm run demo` lands on it. */
 const demoAtRoot: Plugin = {
@@ -60,16 +73,8 @@ export default defineConfig(({ mode, command }) => {
         output: { ...(standalone ? { minify: true } : {}), codeSplitting: {
           groups: [
             { name: 'core', tags: ['$initial'] },
-            // A course camera's projection: its maths, the scene's depth range, FrameSetup's part.
-            { name: 'course-projection', test: /src[\\/](frame[\\/]course-projection|scene[\\/]course-depth|math[\\/]course-camera)\.ts$/ },
-            // Flat shading, the Gaussian, the reflection's clustering (render/mesh-extras.ts), which
-            // the software renderer's chunk shares: one file, not one per generator.
-            { name: 'mesh-extras', test: /src[\\/](render[\\/]mesh-extras|scene[\\/]geometry[\\/](flat|gaussian|cluster))\.ts$/ },
-            // What turns the scene value (the trackball's, or objectRotation's, first turn): the
-            // element fetches it, and the controls' chunk imports it.
-            { name: 'group-rotation', test: /src[\\/]scene[\\/]group-rotation\.ts$/ },
-            // Files loaded once per page (models, course files): shared by the children and camera-src.
-            { name: 'model-cache', test: /src[\\/](element[\\/](absolute-url|children[\\/]model-cache)|loaders[\\/]load-error)\.ts$/ },
+            // The chunk groups of src/frame/chunks.ts: its small parts, one file for each moment they are needed.
+            ...chunkGroups(),
           ],
         } },
       },

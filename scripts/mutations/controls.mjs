@@ -111,7 +111,7 @@ export default [
   },
   {
     name: 'C18 frames not held while the controls\' chunk loads (a drag after the next frame is lost)',
-    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '    if (backend.busy || this.rig.controlsLoading || this.scenes.waiting) return;', replace: '    if (backend.busy || this.scenes.waiting) return;' }],
+    edits: [{ file: 'src/element/parts.ts', find: 'needed: (h) => h.values.controls !== null, holds: true', replace: 'needed: (h) => h.values.controls !== null, holds: false' }],
     tests: [CONTROLS],
   },
   {
@@ -126,17 +126,17 @@ export default [
   },
   {
     name: 'C22 the controls\' chunk fetched only for orbit and trackball (flyby never moves)',
-    edits: [{ file: 'src/element/camera-rig.ts', find: "if (this.controls || this.controlsPending || c === null) return;", replace: "if (this.controls || this.controlsPending || c === null || c === 'flyby') return;" }],
+    edits: [{ file: 'src/element/parts.ts', find: 'needed: (h) => h.values.controls !== null,', replace: 'needed: (h) => h.values.controls !== null && h.values.controls !== \'flyby\',' }],
     tests: [CONTROLS],
   },
   {
     name: 'C23 the controls\' chunk fetched without controls',
-    edits: [{ file: 'src/element/camera-rig.ts', find: "if (this.controls || this.controlsPending || c === null) return;", replace: "if (this.controls || this.controlsPending) return;" }],
+    edits: [{ file: 'src/element/parts.ts', find: 'needed: (h) => h.values.controls !== null,', replace: 'needed: () => true,' }],
     tests: [CONTROLS],
   },
   {
-    name: 'C20 no frame asked for once the controls\' chunk is in (frames held for ever)',
-    edits: [{ file: 'src/element/camera-rig.ts', find: '      this.controlsPending = false;\n      this.host.requestRender();', replace: '      this.controlsPending = false;' }],
+    name: 'C20 no frame asked for once the element\'s lazy parts settle (frames held for ever)',
+    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '{ settled: requestRender, warn }', replace: '{ settled: () => {}, warn }' }],
     tests: [CONTROLS],
   },
 ];

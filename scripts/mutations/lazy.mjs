@@ -12,22 +12,22 @@ const CORE = 'tests/e2e/core-chunks.spec.ts';
 export default [
   {
     name: 'Z1 camera-source\'s chunk arrives but is never connected (camera-src never loads its file)',
-    edits: [{ file: RIG, find: '      if (this.connected) this.source.hostConnected();\n', replace: '' }],
+    edits: [{ file: 'src/element/camera-rig.ts', find: '    if (this.connected) this.source.hostConnected();\n', replace: '' }],
     tests: [CHUNK],
   },
   {
-    name: 'Z2 no frame asked for once camera-source\'s chunk settles (a failed chunk: ready never fires)',
-    edits: [{ file: RIG, find: '      this.sourceLoading = false;\n      this.host.requestRender();', replace: '      this.sourceLoading = false;' }],
+    name: 'Z2 ready fired while a lazy part (camera-src\'s reader) is still on its way',
+    edits: [{ file: 'src/element/glass-plane-scene.ts', find: ' && !this.parts.loading) {', replace: ') {' }],
     tests: [CHUNK],
   },
   {
     name: 'Z3 the course projection loads but FrameSetup is never given it',
-    edits: [{ file: 'src/render/setup-parts.ts', find: '      setup.course = new this.coursePart.value!.CourseProjection();\n', replace: '' }],
+    edits: [{ file: 'src/render/parts.ts', find: '    h.ctx.setup.course ??= new m.CourseProjection();\n', replace: '' }],
     tests: [CHUNK],
   },
   {
     name: 'Z4 Renderer.load never asks for the course projection',
-    edits: [{ file: 'src/render/renderer.ts', find: 'w[2] = this.setupParts.course(state);', replace: 'w[2] = null;' }],
+    edits: [{ file: 'src/render/parts.ts', find: 'needed: (h) => !!h.ctx.state.courseCamera,', replace: 'needed: () => false,' }],
     tests: [CHUNK],
   },
   {
@@ -42,17 +42,17 @@ export default [
   },
   {
     name: 'Z7 the element\'s WebGL backend does not hand the scene to Renderer.load (reflections never clustered)',
-    edits: [{ file: 'src/element/webgl-backend.ts', find: 'const loading = this.renderer.load(state, scene);', replace: 'const loading = this.renderer.load(state);' }],
+    edits: [{ file: 'src/element/webgl-backend.ts', find: 'return this.renderer.load(state, scene) !== null;', replace: 'return this.renderer.load(state) !== null;' }],
     tests: [LOD],
   },
   {
     name: 'Z8 only meshes, not Gaussians, ask for the mesh extras (a Gaussian never drawn)',
-    edits: [{ file: 'src/render/object-meshes.ts', find: "if (k === 'gaussian' || (k === 'mesh' && state.tessellation === 'auto')) return true;", replace: "if (k === 'mesh' && state.tessellation === 'auto') return true;" }],
+    edits: [{ file: 'src/render/parts.ts', find: 'if (k === \'gaussian\' || (k === \'mesh\' && state.tessellation === \'auto\')) return true;', replace: 'if (k === \'mesh\' && state.tessellation === \'auto\') return true;' }],
     tests: [LOD],
   },
   {
     name: 'Z9 a lazy part that failed is asked for again (a warning every frame)',
-    edits: [{ file: 'src/render/lazy-part.ts', find: '        this.failed = true;\n', replace: '' }],
+    edits: [{ file: 'src/frame/lazy-parts.ts', find: '      this.status[i] = FAILED;\n', replace: '      this.status[i] = ABSENT;\n' }],
     tests: [LOD],
   },
   {
@@ -67,17 +67,17 @@ export default [
   },
   {
     name: 'Z12 flat shading does not ask for the mesh extras (drawn smooth)',
-    edits: [{ file: 'src/render/object-meshes.ts', find: "  if (state.shading === 'flat') return true;\n", replace: '' }],
+    edits: [{ file: 'src/render/parts.ts', find: '  if (state.shading === \'flat\') return true;\n', replace: '' }],
     tests: [LOD],
   },
   {
     name: 'Z13 the renderer\'s checks are never loaded (frames go unchecked)',
-    edits: [{ file: 'src/render/renderer.ts', find: 'w[0] = this.checks.load(this.options.checks === true);', replace: 'w[0] = null;' }],
+    edits: [{ file: 'src/render/parts.ts', find: 'needed: (h) => h.checks,', replace: 'needed: () => false,' }],
     tests: ['tests/e2e/frame-checks.spec.ts'],
   },
   {
     name: 'Z14 two parts loading at once: only the first waited for (a course frame drawn before its projection)',
-    edits: [{ file: 'src/render/lazy-part.ts', find: '  return Promise.allSettled(parts.slice())', replace: '  return Promise.allSettled([parts.find((p) => p)])' }],
+    edits: [{ file: 'src/frame/lazy-parts.ts', find: 'if (p && this.specs[i].holds) held.push(p);', replace: 'if (p && this.specs[i].holds && !held.length) held.push(p);' }],
     tests: [CHUNK],
   },
   {
@@ -97,12 +97,12 @@ export default [
   },
   {
     name: 'Z18 a frame with a turn is drawn without waiting for the group rotation (about the origin)',
-    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '|| this.rig.controlsLoading || this.scenes.waiting) return;', replace: '|| this.rig.controlsLoading) return;\n    void this.scenes.waiting;' }],
+    edits: [{ file: 'src/element/parts.ts', find: 'needed: (h) => h.scenes.turnSet(), holds: true,', replace: 'needed: (h) => h.scenes.turnSet(), holds: false,' }],
     tests: [CHUNKS],
   },
   {
     name: 'Z19 the controls\' chunk does not hand the group rotation on (`scene` unturned after a trackball turn)',
-    edits: [{ file: RIG, find: '      this.host.rotationArrived(chunk.groupRotation);\n', replace: '' }],
+    edits: [{ file: 'src/element/parts.ts', find: '    h.provideRotation(chunk.groupRotation);\n', replace: '' }],
     tests: [CHUNKS],
   },
   {
@@ -116,18 +116,18 @@ export default [
     tests: [CHUNKS],
   },
   {
-    name: 'Z22 a failed group rotation is not warned about',
-    edits: [{ file: 'src/element/scene-value.ts', find: 'loading.catch((e: Error) => warn(e.message))', replace: 'loading.catch(() => {})' }],
+    name: 'Z22 a lazy part that fails is not warned about',
+    edits: [{ file: 'src/frame/lazy-parts.ts', find: 'this.listener.warn(loadFailed(', replace: 'void (loadFailed(' }],
     tests: [CHUNKS],
   },
   {
     name: 'Z23 Renderer.load never asks for the debug views (the final image in their place)',
-    edits: [{ file: 'src/render/renderer.ts', find: "w[5] = this.views.load(state.view !== 'final' && state.view !== 'scene');", replace: 'w[5] = null;' }],
+    edits: [{ file: 'src/render/parts.ts', find: 'needed: (h) => h.ctx.state.view !== \'final\' && h.ctx.state.view !== \'scene\',', replace: 'needed: () => false,' }],
     tests: [CHUNKS],
   },
   {
     name: 'Z24 the debug views\' chunk asked for in the final view too (fetched by every page)',
-    edits: [{ file: 'src/render/renderer.ts', find: "w[5] = this.views.load(state.view !== 'final' && state.view !== 'scene');", replace: "w[5] = this.views.load(state.view !== 'scene');" }],
+    edits: [{ file: 'src/render/parts.ts', find: 'needed: (h) => h.ctx.state.view !== \'final\' && h.ctx.state.view !== \'scene\',', replace: 'needed: (h) => h.ctx.state.view !== \'scene\',' }],
     tests: [CHUNKS],
   },
   {
@@ -142,7 +142,7 @@ export default [
   },
   {
     name: 'Z27 Renderer.load never asks for the orthographic projection (drawn in perspective)',
-    edits: [{ file: 'src/render/setup-parts.ts', find: "this.orthoPart.load(state.projection === 'orthographic')", replace: 'this.orthoPart.load(false)' }],
+    edits: [{ file: 'src/render/parts.ts', find: 'needed: (h) => h.ctx.state.projection === \'orthographic\',', replace: 'needed: () => false,' }],
     tests: [CORE],
   },
   {
@@ -152,32 +152,32 @@ export default [
   },
   {
     name: 'Z29 a child found but what gathers the parts never fetched (the default scene for ever)',
-    edits: [{ file: 'src/element/scene-source.ts', find: "        this.fetch(import('./children/gather-parts').then((m) => { gatherer = m; }), 'the children\\'s parts');\n", replace: '' }],
+    edits: [{ file: 'src/element/parts.ts', find: 'needed: (h) => h.source.hasChild(),', replace: 'needed: () => false,' }],
     tests: ['tests/e2e/children.spec.ts'],
   },
   {
     name: 'Z30 the gatherer\'s arrival not waited for (the default scene shown first)',
-    edits: [{ file: 'src/element/scene-source.ts', find: '    return this.fetching > 0;', replace: '    return false;' }],
+    edits: [{ file: 'src/element/parts.ts', find: 'needed: (h) => h.source.hasChild(), holds: true,', replace: 'needed: (h) => h.source.hasChild(), holds: false,' }],
     tests: ['tests/e2e/children-chunk.spec.ts'],
   },
   {
     name: 'Z31 a failure\'s message part left empty',
-    edits: [{ file: 'src/element/failure.ts', find: '      if (this.type === type) this.message.textContent = text;', replace: '' }],
+    edits: [{ file: 'src/element/failure.ts', find: 'this.message.textContent = m?.FAILURE_MESSAGES[type] ?? message;', replace: 'this.message.textContent = m ? \'\' : message;' }],
     tests: [CORE, 'tests/e2e/no-webgl2.spec.ts'],
   },
   {
     name: 'Z32 no message at all when the messages\' chunk cannot load',
-    edits: [{ file: 'src/element/failure.ts', find: '.then((m) => m.FAILURE_MESSAGES[type], () => message)', replace: ".then((m) => m.FAILURE_MESSAGES[type], () => '')" }],
+    edits: [{ file: 'src/element/failure.ts', find: 'm?.FAILURE_MESSAGES[type] ?? message', replace: 'm?.FAILURE_MESSAGES[type] ?? \'\'' }],
     tests: [CORE],
   },
   {
     name: 'Z33 image textures never asked for (the procedural texture for ever)',
-    edits: [{ file: 'src/element/glass-plane-scene.ts', find: "    if (!scene.objects.some((o) => o.material.texture.kind === 'image')) return;", replace: '    return;' }],
+    edits: [{ file: 'src/element/parts.ts', find: 'needed: (h) => h.namesImages(),', replace: 'needed: () => false,' }],
     tests: [CORE, 'tests/e2e/texture-images.spec.ts'],
   },
   {
-    name: 'Z34 a scene value without images makes its successors never look (a texture added later is not drawn)',
-    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '    if (this.imagesAsked || scene === this.imagesChecked) return;', replace: '    if (this.imagesAsked || this.imagesChecked) return;' }],
+    name: 'Z34 only the first scene value is looked through for images (a texture added later is never fetched)',
+    edits: [{ file: 'src/element/scene-value.ts', find: '      this.images = this.value.objects.some(', replace: '      this.images = this.builds === 0 && this.value.objects.some(' }],
     tests: [CORE],
   },
 ];

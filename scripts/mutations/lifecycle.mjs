@@ -88,17 +88,17 @@ export default [
   },
   {
     name: 'L15 frames not held while the children\'s chunk loads (the default scene shown first)',
-    edits: [{ file: ELEMENT, find: '    if (this.source.defining) return; // and the frame waits for them\n', replace: '' }],
+    edits: [{ file: 'src/element/parts.ts', find: 'needed: (h) => h.source.hasUndefinedChild(), holds: true,', replace: 'needed: (h) => h.source.hasUndefinedChild(), holds: false,' }],
     tests: ['tests/e2e/children-chunk.spec.ts'],
   },
   {
     name: 'L16 the scene element never loads its children (they stay undefined)',
-    edits: [{ file: 'src/element/scene-source.ts', find: '    if (this.awaiting.size === 1) this.fetch(defineChildren(), `<${name}>`);', replace: '' }],
+    edits: [{ file: 'src/element/parts.ts', find: 'needed: (h) => h.source.hasUndefinedChild(),', replace: 'needed: () => false,' }],
     tests: ['tests/e2e/children-chunk.spec.ts'],
   },
   {
-    name: 'L17 a children\'s chunk that failed leaves the frames held (nothing asks for a frame)',
-    edits: [{ file: 'src/element/scene-source.ts', find: '      this.fetching--;\n      this.invalidate();', replace: '      this.fetching--;' }],
+    name: 'L17 a part that failed still holds the frames (nothing asks for a frame again)',
+    edits: [{ file: 'src/frame/lazy-parts.ts', find: 'if (s === IN || s === FAILED || !specs[i].needed(this.host)) continue;', replace: 'if (s === IN || !specs[i].needed(this.host)) continue;' }],
     tests: ['tests/e2e/children-chunk.spec.ts'],
   },
   {

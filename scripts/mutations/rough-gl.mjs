@@ -63,7 +63,7 @@ export default [
   },
   {
     name: 'W11 the renderer\'s dispose forgets the rough targets',
-    edits: [{ file: 'src/render/rough-loader.ts', find: '    this.targets?.dispose();\n', replace: '' }],
+    edits: [{ file: 'src/render/rough-glass.ts', find: '    this.targets?.dispose();\n', replace: '' }],
     tests: [ROUGH],
   },
   {
@@ -88,22 +88,22 @@ export default [
   },
   {
     name: 'W16 the element draws its first rough frame before rough glass\'s chunk is in (polished, then rough)',
-    edits: [{ file: 'src/element/webgl-backend.ts', find: '      return;\n    }\n    const { width, height } = this.host.canvas;', replace: '    }\n    const { width, height } = this.host.canvas;' }],
+    edits: [{ file: 'src/render/parts.ts', find: 'needed: (h) => isRough(h.ctx.state), holds: true,', replace: 'needed: (h) => isRough(h.ctx.state), holds: false,' }],
     tests: [ELEMENT],
   },
   {
     name: 'W17 no frame asked for once the chunk is in (the element waits for ever)',
-    edits: [{ file: 'src/element/webgl-backend.ts', find: '        if (!this.disposed) this.host.requestRender();\n', replace: '' }],
+    edits: [{ file: 'src/element/webgl-backend.ts', find: '          if (!this.disposed) host.requestRender();', replace: '          void this.disposed;' }],
     tests: [ELEMENT],
   },
   {
     name: 'W18 a chunk that fails to load goes unreported',
-    edits: [{ file: 'src/element/webgl-backend.ts', find: 'loading.catch((e: unknown) => warn(e instanceof Error ? e.message : String(e)))', replace: 'loading.catch(() => undefined)' }],
+    edits: [{ file: 'src/element/webgl-backend.ts', find: '        warn,\n', replace: '        warn: () => {},\n' }],
     tests: [ELEMENT],
   },
   {
     name: 'W19 the renderer takes a rough frame as rough before its chunk is in',
-    edits: [{ file: 'src/render/rough-loader.ts', find: 'return isRough(state) && this.part.value !== null;', replace: 'return isRough(state);' }],
+    edits: [{ file: 'src/render/rough-glass.ts', find: 'return isRough(state) && this.chunk !== null;', replace: 'return isRough(state);' }],
     tests: [ROUGH],
   },
 ];

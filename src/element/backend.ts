@@ -30,6 +30,11 @@ export interface Backend extends ImageSink {
   readonly thread?: 'worker' | 'main';
   /** A frame is still being drawn: the next one waits for it. */
   readonly busy: boolean;
+  /**
+   * Starts loading the lazy parts a frame of `state` and `scene` needs of this renderer; true when
+   * the frame must wait for them (a frame is asked for when they settle).
+   */
+  waitsFor(state: FrameState, scene: Scene): boolean;
   /** Draws `state` of `scene` on the canvas; `drawn` tells when it is there (perhaps later). */
   draw(state: FrameState, scene: Scene): void;
   /** One pass, or the final image, drawn now off screen from `state`; null if that failed. */

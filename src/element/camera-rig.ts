@@ -8,11 +8,8 @@ import type { SceneAttributes } from './attributes';
 import type { CameraSource } from './camera-source';
 import type { Controller } from './controller';
 import type { ControlsInput } from './controls/controls-input';
-import type { GroupRotation } from './scene-value';
 import { setPose, type CameraPose } from '../math/camera';
 import type { CameraChangeDetail } from './types';
-import { warn } from './warnings';
-import { loadFailed } from '../render/lazy-part';
 
 const DEG = 180 / Math.PI;
 
@@ -32,8 +29,6 @@ export interface CameraRigHost {
   flybyMoved(): void;
   /** The scene as drawn (turned): orbit turns about the centre of its objects without `camera-target`. */
   scene(): Scene;
-  /** The controls' chunk carries the group rotation (the trackball turns the scene): handed on with it. */
-  rotationArrived(code: GroupRotation): void;
   /** The debug-view key (F) was pressed. */
   cycleDebugView(): void;
 }
@@ -42,28 +37,24 @@ export class CameraRig implements Controller {
   /** The camera's pose: the camera attributes', moved by the flyby and orbit. */
   readonly pose: CameraPose = { position: [0, 0, 0], yaw: -90, pitch: 0 };
   /**
-   * `camera-src`: the course camera, when one is in force (SPEC §11). A chunk of its own
-   * (camera-source.ts), loaded the first time camera-src is set; null until then.
+   * `camera-src`: the course camera, when one is in force (SPEC §11). Its reader is a lazy part
+   * (element/parts.ts, CAMERA_SOURCE); null until it is in.
    */
   private source: CameraSource | null = null;
-  private sourceLoading = false;
   /** The trackball's rotation of the objects, a unit quaternion [x, y, z, w]. */
   readonly objectRotation = new Float64Array([0, 0, 0, 1]);
   /** The trackball's rotation of the first light about the objects' centre. */
   readonly lightRotation = new Float64Array([0, 0, 0, 1]);
   /**
    * The flyby's keys and mouse, orbit and trackball pointers, the end of a gesture
-   * (controls/controls-input.ts): a chunk of their own, loaded the first time `controls` asks
-   * for any; null until then.
+   * (controls/controls-input.ts): a lazy part (element/parts.ts, CONTROLS); null until it is in.
    */
   private controls: ControlsInput | null = null;
-  /** The controls' chunk is on its way: frames wait for it (see controlsLoading). */
-  private controlsPending = false;
   private connected = false;
   /** A camera attribute set by the page: one camera-change after the current task. */
   private cameraChangeQueued = false;
 
-  constructor(readonly host: CameraRigHost) {
+  constructor(private readonly host: CameraRigHost) {
     const values = host.values;
     setPose(this.pose, values.cameraPosition, values.cameraRotation[0], values.cameraRotation[1]);
   }
@@ -71,9 +62,7 @@ export class CameraRig implements Controller {
   hostConnected(): void {
     this.connected = true;
     this.controls?.hostConnected();
-    this.loadControls();
-    if (this.source) this.source.hostConnected();
-    else this.cameraSrcChanged();
+    this.source?.hostConnected();
   }
 
   hostDisconnected(): void {
@@ -82,26 +71,22 @@ export class CameraRig implements Controller {
     this.source?.hostDisconnected();
   }
 
-  /** Controls asked for and their chunk not yet in: it is fetched, then a frame drawn. */
-  private loadControls(): void {
-    const c = this.host.values.controls;
-    if (this.controls || this.controlsPending || c === null) return;
-    this.controlsPending = true;
-    import('./controls/controls').then((chunk) => {
-      this.host.rotationArrived(chunk.groupRotation);
-      this.controls = new chunk.ControlsInput(this);
-      if (this.connected) this.controls.hostConnected();
-    }, (e: unknown) => {
-      warn(loadFailed(`controls="${c}"`, e, 'the scene does not respond to input'));
-    }).finally(() => {
-      this.controlsPending = false;
-      this.host.requestRender();
+  /** The controls' chunk is in: input is taken from now on. */
+  controlsArrived(chunk: typeof import('./controls/controls')): void {
+    const h = this.host;
+    this.controls = new chunk.ControlsInput({
+      element: h.element, canvas: h.canvas, values: h.values,
+      pose: this.pose, objectRotation: this.objectRotation, lightRotation: this.lightRotation,
+      requestRender: () => h.requestRender(), turned: () => h.turned(), flybyMoved: () => h.flybyMoved(),
+      scene: () => h.scene(), cycleDebugView: () => h.cycleDebugView(), cameraDetail: () => this.cameraDetail(),
     });
+    if (this.connected) this.controls.hostConnected();
   }
 
-  /** The controls' chunk is loading: the element holds its frames until it is in (a drag then finds it ready). */
-  get controlsLoading(): boolean {
-    return this.controlsPending;
+  /** camera-src's reader is in: its file loads. */
+  sourceArrived(chunk: typeof import('./camera-source')): void {
+    this.source = new chunk.CameraSource({ element: this.host.element, src: () => this.host.values.cameraSrc, changed: () => this.host.requestRender() });
+    if (this.connected) this.source.hostConnected();
   }
 
   /** True while the pose is written back to the attributes (their changes are not news). */
@@ -122,26 +107,14 @@ export class CameraRig implements Controller {
     return undefined;
   }
 
-  /** A course camera file (or its chunk) is loading (`ready` waits for it; for the controls' chunk frames wait). */
+  /** A course camera file is loading (`ready` waits for it). */
   get loading(): boolean {
-    return this.sourceLoading || (this.source?.loading ?? false);
+    return this.source?.loading ?? false;
   }
 
-  /** `camera-src` changed (or the element connected): its file loads, through the chunk the first time. */
+  /** `camera-src` changed: its file loads (the reader, the first time, with the next frame's parts). */
   cameraSrcChanged(): void {
-    if (this.source) return this.source.srcChanged();
-    if (this.host.values.cameraSrc === null || this.sourceLoading || !this.connected) return;
-    this.sourceLoading = true;
-    const element = this.host.element;
-    import('./camera-source').then((chunk) => {
-      this.source = new chunk.CameraSource({ element, src: () => this.host.values.cameraSrc, changed: () => this.host.requestRender() });
-      if (this.connected) this.source.hostConnected();
-    }, (e: unknown) => {
-      warn(loadFailed('camera-src', e, 'the camera attributes stay the view'));
-    }).finally(() => {
-      this.sourceLoading = false;
-      this.host.requestRender();
-    });
+    this.source?.srcChanged();
   }
 
   /** The page set camera-position, -rotation or -target: the pose follows, one camera-change. */
@@ -167,10 +140,9 @@ export class CameraRig implements Controller {
     return true;
   }
 
-  /** `controls` changed: a gesture and a motion under way stop. */
+  /** `controls` changed: a gesture and a motion under way stop (the chunk, if needed, comes with the next frame). */
   controlsChanged(): void {
     this.controls?.cancel();
-    this.loadControls();
   }
 
   /** A frame begins: the flyby and the motion after release advance. */

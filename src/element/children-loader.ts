@@ -1,11 +1,7 @@
-// Loads and defines <glass-object> and <glass-light> (children/child-elements.ts) once per page: the first
-// scene that finds such a child asks for it, or a page that wants the classes calls defineChildren().
-let loading: Promise<void> | null = null;
+// <glass-object> and <glass-light> for a page that wants them defined before any scene finds one
+// (a scene defines them itself, through its lazy part CHILD_ELEMENTS, element/parts.ts).
 
-/** Resolves once both child elements are defined; a failed load may be asked again. */
+/** Resolves once both child elements are defined. */
 export function defineChildren(): Promise<void> {
-  return (loading ??= import('./children/child-elements').then((chunk) => chunk.defineChildren(), (e: unknown) => {
-    loading = null;
-    throw e;
-  }));
+  return import('./children/child-elements').then((chunk) => chunk.defineChildren());
 }

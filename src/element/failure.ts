@@ -1,7 +1,7 @@
 // Why the element cannot draw (SPEC §2): shown in its `message` part, fired as `error`. A missing
 // WebGL2 hides the canvas; a lost context waits for the context to come back; a shader that
 // failed waits for a change that may select a variant that compiles. The message part's texts are
-// a chunk of their own (failure-messages.ts, issue 22): a page that never fails never loads them.
+// a lazy part (FAILURE_MESSAGES, element/parts.ts): a page that never fails never loads them.
 import type { ErrorType } from './types';
 import { PREFIX } from './warnings';
 
@@ -13,7 +13,11 @@ export class Failure {
   /** The shader error last reported: the same one again (the same broken variant) is not news. */
   private reported: unknown = null;
 
-  constructor(private readonly element: HTMLElement, private readonly canvas: HTMLCanvasElement) {
+  /** `messages`: fetches the message part's texts (null if they cannot load). */
+  constructor(
+    private readonly element: HTMLElement, private readonly canvas: HTMLCanvasElement,
+    private readonly messages: () => Promise<typeof import('./failure-messages') | null>,
+  ) {
     this.message = document.createElement('div');
     this.message.setAttribute('part', 'message');
     this.message.setAttribute('role', 'alert');
@@ -25,8 +29,8 @@ export class Failure {
     this.type = type;
     this.message.textContent = '';
     // The texts come with their chunk; without it, the error's own message.
-    void import('./failure-messages').then((m) => m.FAILURE_MESSAGES[type], () => message).then((text) => {
-      if (this.type === type) this.message.textContent = text;
+    void this.messages().then((m) => {
+      if (this.type === type) this.message.textContent = m?.FAILURE_MESSAGES[type] ?? message;
     });
     this.message.hidden = false;
     this.canvas.hidden = type === 'webgl2-unavailable';

@@ -14,7 +14,8 @@ import type { Controller } from './controller';
 import { ElementBase } from './element-base';
 import { SceneSource } from './scene-source';
 import type { TextureImages } from './texture-images';
-import { loadFailed } from '../render/lazy-part';
+import { LazyParts } from '../frame/lazy-parts';
+import { ELEMENT_PARTS, FAILURE_MESSAGES, GROUP_ROTATION, type ElementPartsHost } from './parts';
 import { sceneSpins } from './compose-scene';
 import { SceneValue } from './scene-value';
 import { FrameStates } from './frame-state';
@@ -81,13 +82,12 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
   /** The light-DOM children (<glass-object>, <glass-light>) as parts of the scene. */
   private readonly source = new SceneSource({ element: this, partsChanged: () => this.sceneChanged() });
   /**
-   * Image textures the scene names, decoded once per URL per page, given to the renderer: a chunk
-   * (texture-images.ts) fetched by the first scene value that names one; null before.
+   * Image textures the scene names, decoded once per URL per page, given to the renderer: a lazy
+   * part (TEXTURE_IMAGES); null before it is in.
    */
   private images: TextureImages | null = null;
-  /** The scene value last looked through for image textures while their chunk was not asked for. */
-  private imagesChecked: Scene | null = null;
-  private imagesAsked = false;
+  /** What only some pages need (element/parts.ts), asked for with the renderer's once per frame. */
+  private readonly parts: LazyParts<ElementPartsHost>;
   /** The camera, its controls, the trackball and the course camera. */
   private readonly rig: CameraRig;
   /** The scene value, built when its content changes; the trackball's turn travels apart. */
@@ -108,7 +108,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     applyStyle(root);
     const canvas = (this.canvas = document.createElement('canvas'));
     canvas.setAttribute('part', 'canvas');
-    this.failure = new Failure(this, canvas);
+    this.failure = new Failure(this, canvas, () => this.parts.fetch(FAILURE_MESSAGES));
     root.append(canvas, this.failure.message);
     const requestRender = () => this.requestRender();
     this.rig = new CameraRig({
@@ -116,7 +116,6 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
       turned: () => this.scenes.turnChanged(),
       flybyMoved: () => { this.loop.dirty = true; },
       scene: () => this.scene,
-      rotationArrived: (code) => this.scenes.rotationArrived(code),
       cycleDebugView: () => { this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length]; },
     });
     const { objectRotation, lightRotation } = this.rig;
@@ -124,8 +123,16 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
       inputs: () => ({ ...this.values, spin: this.effectiveSpin() }),
       parts: () => this.source.current(),
       objectRotation, lightRotation,
-      turnLoaded: requestRender,
     });
+    const parts: ElementPartsHost = {
+      values: this.values, rig: this.rig, scenes: this.scenes, source: this.source,
+      namesImages: () => this.scenes.namesImages(),
+      imagesArrived: (chunk) => {
+        this.images = new chunk.TextureImages({ sink: () => this.backend.current, loaded: requestRender });
+      },
+      provideRotation: (code) => this.parts.provide(GROUP_ROTATION, code),
+    };
+    this.parts = new LazyParts(ELEMENT_PARTS, parts, { settled: requestRender, warn });
     this.states.current.turn = this.scenes.turn;
     this.loop = new FrameLoop({
       element: this, canvas,
@@ -260,32 +267,26 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
 
   // ---- frames ------------------------------------------------------------------------------
 
-  /** One frame: the controls advance, then the backend draws (unless its last frame is still on its way). */
+  /**
+   * One frame: the controls advance, then the backend draws, unless its last frame is still on its
+   * way or a lazy part the frame needs is (dirty stays set: a frame is asked for when it lands).
+   */
   private drawFrame(now: number): void {
     this.rig.step();
     const backend = this.backend.current!;
-    // Dirty stays set: drawn when the last frame is back, or a chunk (controls, turn, children) is in.
-    if (backend.busy || this.rig.controlsLoading || this.scenes.waiting) return;
-    const scene = this.scenes.current; // finding children not yet defined starts loading them
-    if (this.source.defining) return; // and the frame waits for them
-    this.loop.dirty = false;
-    if (this.clientWidth === 0 || this.clientHeight === 0) return; // nothing to show
+    if (backend.busy) return;
+    const scene = this.scenes.current;
+    if (this.clientWidth === 0 || this.clientHeight === 0) {
+      this.loop.dirty = false; // nothing to show
+      return;
+    }
     const state = this.frameState(now);
-    this.syncImages(scene);
+    // The frame's one question, to the element's parts and the renderer's: both start what they lack.
+    const held = this.parts.request() !== null;
+    if (backend.waitsFor(state, scene) || held) return;
+    this.loop.dirty = false;
+    this.images?.sync(scene);
     backend.draw(state, scene);
-  }
-
-  /** Asks for the images `scene` names; the first value that names one fetches their chunk (frames go on, procedurally textured). */
-  private syncImages(scene: Scene): void {
-    if (this.images) return this.images.sync(scene);
-    if (this.imagesAsked || scene === this.imagesChecked) return;
-    this.imagesChecked = scene;
-    if (!scene.objects.some((o) => o.material.texture.kind === 'image')) return;
-    this.imagesAsked = true;
-    import('./texture-images').then((chunk) => {
-      this.images = new chunk.TextureImages({ sink: () => this.backend.current, loaded: () => this.requestRender() });
-      this.requestRender();
-    }, (e: unknown) => warn(loadFailed('image textures', e, 'using the procedural texture')));
   }
 
   /** The attributes' part of the frame, then the camera's (which reads the scene for a course camera). */
@@ -306,7 +307,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     const { time, width, height, drawCalls, passes } = report;
     const detail: FrameReport = Object.freeze({ frame: this.frames, time, width, height, drawCalls, passes });
     // `ready` waits for the models of the children: loaded or failed (SPEC §2).
-    if (!this.readyFired && !this.source.loading && !this.rig.loading) {
+    if (!this.readyFired && !this.source.loading && !this.rig.loading && !this.parts.loading) {
       this.readyFired = true;
       this.dispatchEvent(new CustomEvent('ready', { detail }));
     }

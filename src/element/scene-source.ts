@@ -1,23 +1,19 @@
 // Watches the scene element's light-DOM children and gathers their parts of the scene:
 // a MutationObserver for children added, removed or reordered, the children's own change
 // notices for their attributes and loads, and whenDefined for children upgraded later. The
-// children's own chunk (children/child-elements.ts) is fetched when the first of them is found
-// undefined, and what gathers their parts (children/gather-parts.ts, a chunk of its own: children
-// defined by another copy of the package need it too) when the first is found: frames wait for both.
+// children's own elements (children/child-elements.ts) and what gathers their parts
+// (children/gather-parts.ts: children defined by another copy of the package need it too) are
+// lazy parts (element/parts.ts), which read hasUndefinedChild() and hasChild().
 import type { ChildParts } from './compose-scene';
 import { CHILD_CHANGE, LIGHT_TAG, OBJECT_TAG } from './children/tags';
 import type { GlassLight } from './children/glass-light';
 import type { GlassObject } from './children/glass-object';
-import { defineChildren } from './children-loader';
 import type { GatherHost } from './children/gather-parts';
-import { warn } from './warnings';
-import { loadFailed } from '../render/lazy-part';
 import type { Controller } from './controller';
 
 const NO_PARTS: ChildParts = { objects: null, lights: null };
 
-/** children/gather-parts.ts once it is in (page-wide). */
-let gatherer: typeof import('./children/gather-parts') | null = null;
+const isOurs = (name: string): boolean => name === OBJECT_TAG || name === LIGHT_TAG;
 
 /** What SceneSource needs of the scene element. */
 export interface SceneSourceHost {
@@ -33,10 +29,8 @@ export class SceneSource implements Controller, GatherHost {
   /** @internal GatherHost */
   warnedLights = false;
   private readonly awaiting = new Set<string>();
-  /** Chunks on their way (the children's, the gatherer): frames wait for them (the scene is not drawn without them). */
-  private fetching = 0;
-  /** The gatherer was asked for (once per scene; after a failure, the scene is drawn without its children). */
-  private gathererAsked = false;
+  /** children/gather-parts.ts once it is in. */
+  private gatherer: typeof import('./children/gather-parts') | null = null;
   readonly element: HTMLElement;
 
   constructor(private readonly host: SceneSourceHost) {
@@ -61,7 +55,7 @@ export class SceneSource implements Controller, GatherHost {
   get loading(): boolean {
     for (const child of this.element.children) {
       const name = child.localName;
-      if ((name === OBJECT_TAG || name === LIGHT_TAG) && (child as GlassObject | GlassLight).loading === true) return true;
+      if (isOurs(name) && (child as GlassObject | GlassLight).loading === true) return true;
     }
     return false;
   }
@@ -71,46 +65,43 @@ export class SceneSource implements Controller, GatherHost {
     return (this.parts ??= this.gather());
   }
 
-  /** A chunk is on its way: the frame waits. */
-  get defining(): boolean {
-    return this.fetching > 0;
+  /** A direct child is a <glass-object> or <glass-light> (defined or not). */
+  hasChild(): boolean {
+    const children = this.element.children;
+    for (let i = 0; i < children.length; i++) if (isOurs(children[i].localName)) return true;
+    return false;
   }
 
-  /** The children's parts, by the gatherer; before it is in, a child of ours starts loading it (and defining them). */
-  private gather(): ChildParts {
-    if (gatherer) return gatherer.gatherParts(this);
-    for (const child of this.element.children) {
-      const name = child.localName;
-      if (name !== OBJECT_TAG && name !== LIGHT_TAG) continue;
-      if (!this.gathererAsked) {
-        this.gathererAsked = true;
-        this.fetch(import('./children/gather-parts').then((m) => { gatherer = m; }), 'the children\'s parts');
-      }
-      this.awaitDefinition(name);
+  /** A direct child is a <glass-object> or <glass-light> whose element is not defined yet. */
+  hasUndefinedChild(): boolean {
+    if (typeof customElements === 'undefined') return false;
+    const children = this.element.children;
+    for (let i = 0; i < children.length; i++) {
+      const name = children[i].localName;
+      if (isOurs(name) && !customElements.get(name)) return true;
     }
-    return NO_PARTS;
+    return false;
   }
 
-  /** @internal GatherHost: `name` is not defined yet; its chunk is fetched, and the scene gathered again once it is. */
+  /** What gathers the children's parts is in: they are gathered again. */
+  gathererArrived(gatherer: typeof import('./children/gather-parts')): void {
+    this.gatherer = gatherer;
+    this.invalidate();
+  }
+
+  /** The children's parts, by the gatherer; none before it is in. */
+  private gather(): ChildParts {
+    return this.gatherer ? this.gatherer.gatherParts(this) : NO_PARTS;
+  }
+
+  /** @internal GatherHost: `name` is not defined yet; the scene is gathered again once it is (by whichever copy defines it). */
   awaitDefinition(name: string): void {
     if (this.awaiting.has(name) || typeof customElements === 'undefined' || customElements.get(name)) return;
     this.awaiting.add(name);
-    if (this.awaiting.size === 1) this.fetch(defineChildren(), `<${name}>`);
     customElements.whenDefined(name).then(() => {
       this.awaiting.delete(name);
       this.invalidate();
     }, () => {});
-  }
-
-  /** Frames wait for `loading`; if it fails, one warning naming `what`, and the scene without the children. */
-  private fetch(loading: Promise<void>, what: string): void {
-    this.fetching++;
-    loading.catch((e: unknown) => {
-      warn(loadFailed(what, e, 'the scene is drawn without its children'));
-    }).finally(() => {
-      this.fetching--;
-      this.invalidate();
-    });
   }
 
   private readonly invalidate = (): void => {

@@ -3,15 +3,14 @@
 // it: the turn travels in each frame's state (FrameState.turn), so a turn or a camera move builds
 // nothing and the frame loop allocates no scene while things move. The page's `scene` is the
 // value with the turn applied, built when read. What applies a turn and finds the centre it turns
-// about (scene/group-rotation.ts) is a chunk, fetched when a turn is first set (or brought by
-// the controls' chunk): frames wait for it, and until it is in, `scene` is the value unturned.
+// about (scene/group-rotation.ts) is a lazy part (element/parts.ts, GROUP_ROTATION), fetched when
+// a turn is first set (or brought by the controls' chunk): frames wait for it, and until it is
+// in, `scene` is the value unturned.
 import type { ReadonlyQuat } from 'gl-matrix';
-import { LazyPart } from '../render/lazy-part';
 import { isIdentity, type SceneTurn } from '../scene/turn';
 import type { Scene } from '../scene/scene';
 import { composeScene, SCENE_ATTRIBUTES, type ChildParts, type SceneInputs } from './compose-scene';
 import type { SceneAttributes } from './attributes';
-import { warn } from './warnings';
 
 /** The group rotation's chunk: what turns the scene value and finds the objects' centre. */
 export type GroupRotation = typeof import('../scene/group-rotation');
@@ -25,8 +24,6 @@ export interface SceneValueHost {
   /** The trackball's rotations of the objects and of the first light (live: changed in place). */
   readonly objectRotation: ReadonlyQuat;
   readonly lightRotation: ReadonlyQuat;
-  /** The group rotation's chunk settled (in or failed): draw the frame that waited for it. */
-  turnLoaded(): void;
 }
 
 const SHAPING: ReadonlySet<keyof SceneAttributes> = new Set(SCENE_ATTRIBUTES);
@@ -40,11 +37,11 @@ export class SceneValue {
   /** `center` is this value's (false after a build until the group rotation is in). */
   private centered = false;
   private value: Scene | null = null;
+  /** The value names an image texture (found when it is built). */
+  private images = false;
   private turnedValue: Scene | null = null;
-  private readonly rotation = new LazyPart<GroupRotation>(
-    () => import('../scene/group-rotation'), 'the trackball\'s turn', 'the objects turn about the origin, and `scene` leaves the turn out',
-  );
-  private fetching = false;
+  /** What applies a turn, once in. */
+  private rotation: GroupRotation | null = null;
 
   constructor(private readonly host: SceneValueHost) {
     this.turn = { objects: host.objectRotation, light: host.lightRotation, center: this.center };
@@ -54,10 +51,11 @@ export class SceneValue {
   get current(): Scene {
     if (!this.value) {
       this.value = composeScene(this.host.inputs(), this.host.parts());
+      this.images = this.value.objects.some((o) => o.material.texture.kind === 'image');
       this.centered = false;
       this.builds++;
     }
-    const code = this.rotation.value;
+    const code = this.rotation;
     if (!this.centered && code) {
       this.center.set(code.boundsCenter(this.value.objects));
       this.centered = true;
@@ -70,27 +68,26 @@ export class SceneValue {
    * changes); `current` while no turn is set, or before the group rotation's chunk is in.
    */
   get turned(): Scene {
-    const code = this.rotation.value;
+    const code = this.rotation;
     if (!code) return this.current;
     return (this.turnedValue ??= code.rotateScene(this.current, this.host.objectRotation, this.host.lightRotation));
   }
 
-  /** True while a turn is set and the group rotation's chunk is on its way (fetched the first time): the frame waits for it. */
-  get waiting(): boolean {
-    const h = this.host, loading = this.rotation.load(!isIdentity(h.objectRotation) || !isIdentity(h.lightRotation));
-    if (loading && !this.fetching) {
-      this.fetching = true;
-      loading.catch((e: Error) => warn(e.message)).finally(() => {
-        this.fetching = false;
-        h.turnLoaded();
-      });
-    }
-    return loading !== null;
+  /** The value last built names an image texture. */
+  namesImages(): boolean {
+    return this.value !== null && this.images;
   }
 
-  /** The controls' chunk brought the group rotation with the trackball: no fetch of its own. */
+  /** A turn is set (the objects' or the light's rotation is not the identity). */
+  turnSet(): boolean {
+    return !isIdentity(this.host.objectRotation) || !isIdentity(this.host.lightRotation);
+  }
+
+  /** The group rotation is in (its own chunk, or the controls'): the next read applies the turn. */
   rotationArrived(code: GroupRotation): void {
-    this.rotation.provide(code);
+    this.rotation = code;
+    this.centered = false;
+    this.turnedValue = null;
   }
 
   /** An attribute changed: the value is built again only if it shapes the scene. */

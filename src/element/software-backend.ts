@@ -31,6 +31,11 @@ export class SoftwareBackend implements Backend {
     this.software.setImage(url, image);
   }
 
+  /** The CPU renderer's chunk carries all it draws with: nothing to wait for. */
+  waitsFor(): boolean {
+    return false;
+  }
+
   draw(state: FrameState, scene: Scene): void {
     const canvas = this.host.canvas;
     const { width, height } = canvas;

@@ -13,14 +13,26 @@ function checksEnabled(): boolean {
 
 export class WebGLBackend implements Backend {
   readonly kind = 'webgl';
-  /** Waiting for a part of the renderer a frame needs (rough glass's chunk): that frame is drawn once it is in. */
-  busy = false;
+  /** Frames are drawn at once: none is ever on its way. */
+  readonly busy = false;
   private disposed = false;
   private readonly renderer: Renderer;
 
   /** Throws what the renderer's constructor throws (a shader that fails, a lost context). */
   constructor(private readonly host: BackendHost, private readonly shared: SharedContext, private readonly presenter: Presenter) {
-    this.renderer = new Renderer(shared.gl, { checks: checksEnabled() });
+    this.renderer = new Renderer(shared.gl, {
+      checks: checksEnabled(),
+      parts: {
+        settled: () => {
+          if (!this.disposed) host.requestRender();
+        },
+        warn,
+      },
+    });
+  }
+
+  waitsFor(state: FrameState, scene: Scene): boolean {
+    return this.renderer.load(state, scene) !== null;
   }
 
   setImage(url: string, image: TexImageSource | null): void {
@@ -28,16 +40,6 @@ export class WebGLBackend implements Backend {
   }
 
   draw(state: FrameState, scene: Scene): void {
-    // The first frame that needs a lazy part waits for it rather than show the glass polished.
-    const loading = this.renderer.load(state, scene);
-    if (loading) {
-      this.busy = true;
-      loading.catch((e: unknown) => warn(e instanceof Error ? e.message : String(e))).finally(() => {
-        this.busy = false;
-        if (!this.disposed) this.host.requestRender();
-      });
-      return;
-    }
     const { width, height } = this.host.canvas;
     let report;
     try {

@@ -9,11 +9,10 @@ import type { ResourceCounter } from './gl/resource-counter';
 import type { SharedResources } from './gl/shared-resources';
 import { SphereLod } from './sphere-lod';
 import { REFLECTION_MAX_FRACTION, reflectionGrid } from '../frame/reflection-lod';
-import type { Geometry, Scene } from '../scene/scene';
+import type { Geometry } from '../scene/scene';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import type { ObjectMatrices } from '../frame/frame-setup';
 import { buildMesh, meshKey } from '../frame/mesh-choice';
-import { LazyPart } from './lazy-part';
 import type { FrameState } from '../frame/types';
 
 const NO_TRIANGLES: MeshData = { positions: new Float32Array(0), normals: new Float32Array(0), uvs: new Float32Array(0), indices: new Uint32Array(0) };
@@ -45,19 +44,6 @@ function extentOf(g: Geometry, c: Extras): number {
   return e;
 }
 
-/**
- * Whether a frame needs the mesh extras: flat shading, a Gaussian, or (tessellation auto) a mesh
- * whose reflection may be clustered.
- */
-function needsExtras(state: FrameState, scene: Scene): boolean {
-  if (state.shading === 'flat') return true;
-  for (const o of scene.objects) {
-    const k = o.geometry.kind;
-    if (k === 'gaussian' || (k === 'mesh' && state.tessellation === 'auto')) return true;
-  }
-  return false;
-}
-
 /** Largest scale of a model matrix's linear part (column lengths). */
 function maxScale(m: Float64Array): number {
   return Math.sqrt(Math.max(
@@ -75,16 +61,13 @@ export class ObjectMeshes {
    * by load() the first time a frame needs one. Until then (or if it cannot load) meshes are drawn
    * smooth, Gaussians not at all, reflections with the full meshes.
    */
-  private readonly extras = new LazyPart(
-    () => import('./mesh-extras'), "flat shading, the Gaussian and the reflection's clustering",
-    'drawing smooth meshes, no Gaussian, full meshes in the reflection',
-  );
+  private extras: Extras | null = null;
   /** What a Gaussian draws while its generator is not in: nothing. */
   private empty: Mesh | null = null;
 
-  /** See Renderer.load: the mesh extras, when this frame needs them and they are not in. */
-  load(state: FrameState, scene: Scene): Promise<void> | null {
-    return this.extras.value ? null : this.extras.load(needsExtras(state, scene));
+  /** The mesh extras' chunk is in (render/parts.ts). */
+  setExtras(extras: Extras): void {
+    this.extras = extras;
   }
 
   /**
@@ -109,7 +92,7 @@ export class ObjectMeshes {
   /** The mesh object `i` (geometry `g`, world bounds in `m`) draws with this frame. */
   get(i: number, g: Geometry, m: ObjectMatrices, state: FrameState): Mesh {
     const slot = (this.slots[i] ??= { geometry: null, flat: false, key: null, mesh: null, lod: null, lodFrame: -1, reflection: new Map() });
-    const ex = this.extras.value, flat = state.shading === 'flat' && ex !== null;
+    const ex = this.extras, flat = state.shading === 'flat' && ex !== null;
     if (g.kind === 'sphere') {
       this.release(slot);
       slot.geometry = g;
@@ -143,7 +126,7 @@ export class ObjectMeshes {
    * (reflection-lod.ts); anything else draws what `get` gives the scene pass.
    */
   mirrored(i: number, g: Geometry, m: ObjectMatrices, state: FrameState, pixelsPerUnit: number): Mesh {
-    const full = this.get(i, g, m, state), c = this.extras.value;
+    const full = this.get(i, g, m, state), c = this.extras;
     if (!c || state.tessellation !== 'auto' || (g.kind !== 'mesh' && g.kind !== 'gaussian')) return full;
     const grid = reflectionGrid(extentOf(g, c) * maxScale(m.model), pixelsPerUnit);
     if (grid === 0) return full;

@@ -8,7 +8,8 @@ import { glassScreenRect, type ScreenRect } from '../frame/glass-bounds';
 import { reflectionScissor, reflectionTargetSide } from '../frame/reflection-scissor';
 import { glassSkipReason, PASSES, passesFor } from '../frame/pass-reports';
 import { maxTargetSize } from './gl/limits';
-import { LazyPart, loadAll } from './lazy-part';
+import { LazyParts, type PartListener } from '../frame/lazy-parts';
+import { DEBUG_VIEWS, FRAME_CHECKS, RENDER_PARTS, type RenderPartsHost } from './parts';
 import { ResourceCounter } from './gl/resource-counter';
 import { TextureCache } from './texture-cache';
 import { LinearFrame } from './linear-frame';
@@ -22,8 +23,7 @@ import { beginTarget, type PassContext } from './passes/pass-context';
 import { reflectionPass } from './passes/reflection-pass';
 import { scenePass } from './passes/scene-pass';
 import { glassPass } from './passes/glass-pass';
-import { RoughLoader } from './rough-loader';
-import { SetupParts } from './setup-parts';
+import { RoughGlass } from './rough-glass';
 import { glassMesh } from '../scene/geometry/rectangle';
 import { DefaultSceneCache } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
@@ -34,9 +34,16 @@ import type { DebugViewFrame } from './debug-views';
 export { passesFor }; // the element's software frames report their passes the same way
 
 export interface RendererOptions {
-  /** Check gl.getError() after every frame and report through `onError` (tests and debugging). */
+  /** Check gl.getError() and the uniforms after every frame (tests and debugging). */
   checks?: boolean;
+  /** Told when a lazy part settles and when one fails (default: failures on the console). */
+  parts?: PartListener;
 }
+
+const CONSOLE_PARTS: PartListener = {
+  settled: () => {},
+  warn: (message) => console.warn(`glass-plane-scene: ${message}`),
+};
 
 export type { Pixels };
 
@@ -72,8 +79,8 @@ export class Renderer implements DebugViewFrame {
   /** Multisampled stand-ins, created only when `samples` > 0. */
   private reflectionMsaa: MultisampleTarget | null = null;
   private mainMsaa: MultisampleTarget | null = null;
-  /** Rough glass (SPEC §14): its chunk, loaded by load(), and its mip-mapped images. */
-  private readonly rough: RoughLoader;
+  /** Rough glass (SPEC §14): its chunk, once loaded, and its mip-mapped images. */
+  private readonly rough: RoughGlass;
   private readonly maxSamples: number;
   /** Can the context render to RGBA16F (EXT_color_buffer_float)? */
   private readonly canHalfFloat: boolean;
@@ -82,13 +89,8 @@ export class Renderer implements DebugViewFrame {
   /** @internal */
   readonly blitVao: WebGLVertexArrayObject;
   private readonly setup = new FrameSetup();
-  /** The course camera's and the orthographic projection, loaded by load(). */
-  private readonly setupParts = new SetupParts(this.setup);
-  private readonly checks = new LazyPart(() => import('./frame-checks'), 'the frame checks', 'frames go unchecked');
-  /** This frame's waits in load(), one per lazy part (refilled: nothing allocated per frame). */
-  private readonly waiting: (Promise<void> | null)[] = [null, null, null, null, null, null];
-  /** debug-view reflection, fresnel and passes (render/debug-views.ts): a chunk, loaded by load(). */
-  private readonly views = new LazyPart(() => import('./debug-views'), 'debug-view', 'the final image is drawn');
+  /** What only some frames need (render/parts.ts), loaded by load(). */
+  private readonly parts: LazyParts<RenderPartsHost>;
   /** @internal */
   readonly ctx: PassContext;
   private readonly report: FrameReport = {
@@ -112,7 +114,7 @@ export class Renderer implements DebugViewFrame {
     passesSkipped: { reflection: 0, scene: 0, glass: 0 },
   };
 
-  constructor(readonly gl: WebGL2RenderingContext, private readonly options: RendererOptions = {}) {
+  constructor(readonly gl: WebGL2RenderingContext, options: RendererOptions = {}) {
     const c = this.counter;
     this.shared = SharedResources.acquire(gl);
     this.programs = new ProgramCache(gl, this.shared);
@@ -126,7 +128,7 @@ export class Renderer implements DebugViewFrame {
     this.reflection = new RenderTarget(gl, c, 'srgb8'); // the default color-space's; prepare() remakes it for another
     this.blitVao = gl.createVertexArray()!;
     c.add('vertexArrays');
-    this.rough = new RoughLoader(gl, c, this.programs, this.blitVao, this.maxTargetSize, this.canHalfFloat);
+    this.rough = new RoughGlass(gl, c, this.programs, this.blitVao, this.maxTargetSize, this.canHalfFloat);
     this.linearFrame = new LinearFrame(gl, c, this.programs, this.blitVao);
     this.ctx = {
       gl, programs: this.programs, objectMeshes: this.objectMeshes, glassMesh: this.glassMesh, textures: this.textures, background: this.background,
@@ -136,6 +138,7 @@ export class Renderer implements DebugViewFrame {
       scissor: null,
       triangles: { scene: 0, reflection: 0 },
     };
+    this.parts = new LazyParts(RENDER_PARTS, { ctx: this.ctx, checks: options.checks === true, rough: this.rough }, options.parts ?? CONSOLE_PARTS);
   }
 
   /** Draws one frame of `state.view` to the canvas and returns its report (reused object; its `passes` are frozen and shared). */
@@ -155,27 +158,20 @@ export class Renderer implements DebugViewFrame {
       if (passes[p].ran) this.counts.passesRun[p]++;
       else this.counts.passesSkipped[p]++;
     }
-    this.checks.value?.reportGlErrors(this.gl, this.counts.frames);
+    this.parts.get(FRAME_CHECKS)?.reportGlErrors(this.gl, this.counts.frames);
     return r;
   }
 
   /**
-   * Loads what `state` and `scene` (default: the default scene) need that the core leaves out —
-   * the checks, rough glass (SPEC §14), the course camera's (§11) and the orthographic (§10)
-   * projections, the mesh extras, the debug views — or null. Until it resolves, render() and
-   * read() draw polished glass, in perspective from the camera attributes, with full meshes in
-   * the reflection, the final image for a debug view. A chunk that fails rejects (an Error
-   * saying what is drawn instead) and is not asked for again.
+   * Starts loading what a frame of `state` and `scene` (default: the default scene) needs that
+   * the core leaves out (render/parts.ts); a promise settled when all of it has (it never
+   * rejects: a part that fails is warned about through RendererOptions.parts and drawn without),
+   * or null when the frame needs nothing more. Until then render() and read() draw without it.
    */
   load(state: FrameState, scene?: Scene): Promise<void> | null {
-    const w = this.waiting;
-    w[0] = this.checks.load(this.options.checks === true);
-    w[1] = this.rough.load(state);
-    w[2] = this.setupParts.course(state);
-    w[3] = this.setupParts.ortho(state);
-    w[4] = scene ? this.objectMeshes.load(state, scene) : null;
-    w[5] = this.views.load(state.view !== 'final' && state.view !== 'scene');
-    return loadAll(w);
+    this.ctx.state = state;
+    this.ctx.scene = scene ?? this.defaultScene.get(state.cubeDistance, state.spin);
+    return this.parts.request();
   }
 
   /**
@@ -260,7 +256,7 @@ export class Renderer implements DebugViewFrame {
       this.glassMesh = this.ctx.glassMesh = new Mesh(this.gl, this.counter, glassMesh(this.setup.glass));
       this.glassMeshFrame = this.setup.glass;
     }
-    if (this.checks.value) this.checkFinite(state);
+    if (this.parts.get(FRAME_CHECKS)) this.checkFinite(state);
     const rect = glassScreenRect(this.setup.viewProjection, this.setup.eye, state.width, state.height, this.glassRect, this.setup.glass.corners);
     this.glassSkipReason = glassSkipReason(this.setup, rect, this.optimize);
     this.ctx.cull = this.optimize;
@@ -343,7 +339,7 @@ export class Renderer implements DebugViewFrame {
   /** Draws `state.view` into `framebuffer` (a debug view whose chunk is not in: the final image); returns the draw calls. */
   private drawView(state: FrameState, framebuffer: WebGLFramebuffer | null): number {
     const full = setViewport(this.full, 0, 0, state.width, state.height);
-    const view = state.view, views = this.views.value;
+    const view = state.view, views = this.parts.get(DEBUG_VIEWS);
     if (view !== 'final' && view !== 'scene' && views) return views.drawDebugView(this, view, framebuffer, full);
     if (view === 'scene' || this.glassSkipReason !== undefined) {
       beginTarget(this.gl, framebuffer, full, this.background);
@@ -355,7 +351,7 @@ export class Renderer implements DebugViewFrame {
     return n + this.sceneAndGlass(rough);
   }
 
-  /** @internal DebugViewFrame: passes 2 and 3; rough (after RoughLoader.draw), the opaque glass then the transparent objects, which it erased drawn first. */
+  /** @internal DebugViewFrame: passes 2 and 3; rough (after RoughGlass.draw), the opaque glass then the transparent objects, which it erased drawn first. */
   sceneAndGlass(rough: boolean): number {
     const ctx = this.ctx, r = this.rough.current;
     if (!rough || !r) return scenePass(ctx) + glassPass(ctx, this.reflection.color);
@@ -363,7 +359,7 @@ export class Renderer implements DebugViewFrame {
   }
 
   private checkFinite(state: FrameState): void {
-    const bad = this.checks.value!.findNonFinite(this.setup, state, this.ctx.scene.objects.length);
+    const bad = this.parts.get(FRAME_CHECKS)!.findNonFinite(this.setup, state, this.ctx.scene.objects.length);
     if (bad) console.error(`glass-plane-scene: non-finite uniform ${bad} in frame ${this.counts.frames + 1}`);
   }
 }

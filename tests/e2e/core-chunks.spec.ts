@@ -96,6 +96,8 @@ test('a failure\'s message comes with its chunk; without it, the error\'s own te
     if (!blocked) expect(text.shown).toBe('WebGL2 is not available here, so the glass scene cannot be shown.');
     else expect(text.shown).toBe(text.event);
     expect(text.shown).toContain('WebGL2');
+    // The parts' one policy: a chunk that cannot load is warned about once.
+    if (blocked) expectOneWarning(consoleLog, 'the failure messages could not load');
     consoleLog.take('error'); // the blocked fetch
   }
 });

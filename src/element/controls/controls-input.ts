@@ -4,7 +4,8 @@
 // it the first time `controls` asks for any of them and hands it the pose it moves.
 import type { quat } from 'gl-matrix';
 import type { CameraPose } from '../../math/camera';
-import type { CameraRigHost } from '../camera-rig';
+import type { SceneAttributes } from '../attributes';
+import type { Scene } from '../../scene/scene';
 import type { Controller } from '../controller';
 import type { CameraChangeDetail } from '../types';
 import { FlybyController } from './flyby-controller';
@@ -15,12 +16,29 @@ import { boundsCenter } from '../../scene/group-rotation';
 /** The flyby's mouse look ends this long after its last movement, ms. */
 const LOOK_END_MS = 150;
 
-/** What ControlsInput needs of the rig: its host, the pose and rotations it moves, the event detail. */
-export interface ControlsRig {
-  readonly host: CameraRigHost;
+/** What ControlsInput needs of the camera rig and the element: where input comes from, what it moves, whom it tells. */
+export interface ControlsHost {
+  /** Takes the keys; the camera attributes are written back to it, and camera-change fired on it. */
+  readonly element: HTMLElement;
+  /** Takes the pointers. */
+  readonly canvas: HTMLCanvasElement;
+  /** The parsed attributes (controls, camera-target, fov). */
+  readonly values: Readonly<SceneAttributes>;
+  /** The camera's pose and the trackball's rotations (quaternions), moved in place. */
   readonly pose: CameraPose;
   readonly objectRotation: Float64Array;
   readonly lightRotation: Float64Array;
+  /** Draw again. */
+  requestRender(): void;
+  /** The trackball turned the objects or the first light (the camera did not move). */
+  turned(): void;
+  /** The flyby moved during a frame: that frame must be drawn even if another is on its way. */
+  flybyMoved(): void;
+  /** The scene as drawn (turned): orbit turns about the centre of its objects without `camera-target`. */
+  scene(): Scene;
+  /** The debug-view key (F) was pressed. */
+  cycleDebugView(): void;
+  /** camera-change's detail: the pose now. */
   cameraDetail(): CameraChangeDetail;
 }
 
@@ -38,9 +56,9 @@ export class ControlsInput implements Controller {
   /** performance.now() of the flyby's last step; 0: no motion under way. */
   private lastNow = 0;
 
-  constructor(private readonly rig: ControlsRig) {
-    const host = rig.host, { element, canvas } = host;
-    this.flyby = new FlybyController({}, rig.pose);
+  constructor(private readonly host: ControlsHost) {
+    const { element, canvas } = host;
+    this.flyby = new FlybyController({}, host.pose);
     this.input = new FlybyInput({
       element, canvas, flyby: this.flyby,
       enabled: () => host.values.controls === 'flyby',
@@ -63,9 +81,9 @@ export class ControlsInput implements Controller {
     });
     this.pointer = new PointerControls({
       element, canvas,
-      objectRotation: rig.objectRotation as unknown as quat, lightRotation: rig.lightRotation as unknown as quat,
+      objectRotation: host.objectRotation as unknown as quat, lightRotation: host.lightRotation as unknown as quat,
       mode: () => (host.values.controls === 'orbit' || host.values.controls === 'trackball' ? host.values.controls as PointerMode : null),
-      pose: () => rig.pose,
+      pose: () => host.pose,
       target: () => host.values.cameraTarget ?? boundsCenter(host.scene().objects),
       fov: () => host.values.fov,
       changed: (camera) => {
@@ -104,8 +122,8 @@ export class ControlsInput implements Controller {
     this.advanceFlyby();
     // The motion after release, by the wall clock (SPEC §10), not the frame's timestamp.
     if (!this.pointer.update(performance.now())) return;
-    if (this.rig.host.values.controls === 'orbit') this.cameraDirty = true; // a trackball's spin turns objects, not the camera
-    else this.rig.host.turned();
+    if (this.host.values.controls === 'orbit') this.cameraDirty = true; // a trackball's spin turns objects, not the camera
+    else this.host.turned();
   }
 
   /** Frames stopped: the next flyby step starts from rest. */
@@ -131,7 +149,7 @@ export class ControlsInput implements Controller {
     if (!this.flyby.update(dt)) return;
     this.cameraDirty = true;
     this.keysMoved = true;
-    this.rig.host.flybyMoved();
+    this.host.flybyMoved();
   }
 
   /**
@@ -144,20 +162,20 @@ export class ControlsInput implements Controller {
     this.keysMoved = false;
     if (!this.cameraDirty) return;
     this.cameraDirty = false;
-    const { position, yaw, pitch } = this.rig.pose;
-    const element = this.rig.host.element;
+    const { position, yaw, pitch } = this.host.pose;
+    const element = this.host.element;
     this.writing = true;
     try {
       element.setAttribute('camera-position', `${position[0]} ${position[1]} ${position[2]}`);
       element.setAttribute('camera-rotation', `${yaw} ${pitch}`);
       // A pan moves what the camera looks at: with camera-target set, the target moves with it.
-      if (this.pointer.takePanned() && this.rig.host.values.cameraTarget) {
+      if (this.pointer.takePanned() && this.host.values.cameraTarget) {
         const t = this.pointer.orbitTarget;
         element.setAttribute('camera-target', `${t[0]} ${t[1]} ${t[2]}`);
       }
     } finally {
       this.writing = false;
     }
-    element.dispatchEvent(new CustomEvent('camera-change', { detail: this.rig.cameraDetail() }));
+    element.dispatchEvent(new CustomEvent('camera-change', { detail: this.host.cameraDetail() }));
   }
 }

@@ -1,8 +1,7 @@
-// Rough glass (SPEC §14) for one renderer, from the core's side: its chunk (rough-glass-gl.ts:
-// passes, targets, shaders) loaded the first time a frame asks for roughness, its targets made
-// on the first rough frame. Until the chunk is in, rough glass is drawn polished.
+// Rough glass (docs/rough-glass.md) for one renderer, from the core's side: its chunk
+// (rough-glass-gl.ts: passes, targets, shaders; the part ROUGH_GLASS of render/parts.ts) and
+// the targets made from it on the first rough frame. Until the chunk is in, rough glass is drawn polished.
 import { isRough } from '../frame/roughness';
-import { LazyPart } from './lazy-part';
 import type { ResourceCounter } from './gl/resource-counter';
 import type { MultisampleTarget } from './gl/multisample-target';
 import type { RenderTarget } from './gl/render-target';
@@ -11,15 +10,9 @@ import type { ProgramCache } from './programs';
 import type { RoughTargets } from './rough-targets';
 import type { FrameState } from '../frame/types';
 
-export class RoughLoader {
-  /** The chunk, its shader sources handed to the program cache as it arrives. */
-  private readonly part = new LazyPart(
-    () => import('./rough-glass-gl').then((chunk) => {
-      this.programs.setRoughSources(chunk.ROUGH_SOURCES);
-      return chunk;
-    }),
-    'rough glass', 'drawing the glass polished',
-  );
+type RoughChunk = typeof import('./rough-glass-gl');
+
+export class RoughGlass {
   private targets: RoughTargets | null = null;
 
   constructor(
@@ -29,20 +22,18 @@ export class RoughLoader {
     private readonly maxSize: number, private readonly halfFloat: boolean,
   ) {}
 
-  /** See Renderer.load. */
-  load(state: FrameState): Promise<void> | null {
-    return this.part.load(isRough(state));
-  }
+  /** The chunk, once in (render/parts.ts's ROUGH_GLASS hands it over). */
+  chunk: RoughChunk | null = null;
 
   /** Is the glass rough this frame? Roughness > 0 and the chunk in. */
   active(state: FrameState): boolean {
-    return isRough(state) && this.part.value !== null;
+    return isRough(state) && this.chunk !== null;
   }
 
   /** RoughTargets.draw (after active() said yes), the targets made on first use. */
   draw(ctx: PassContext, sharp: RenderTarget, msaa: MultisampleTarget | null): number {
     const { gl, counter, programs, vao, maxSize, halfFloat } = this;
-    this.targets ??= new this.part.value!.RoughTargets(gl, counter, programs, vao, maxSize, halfFloat);
+    this.targets ??= new this.chunk!.RoughTargets(gl, counter, programs, vao, maxSize, halfFloat);
     return this.targets.draw(ctx, sharp, msaa);
   }
 

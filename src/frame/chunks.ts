@@ -1,0 +1,66 @@
+// The package's chunks: what the self-contained build is split into, each with its size budget
+// (bytes, min+gzip; `npm run size` checks them). A lazy part (frame/lazy-parts.ts) names the chunk
+// its module is built into. Where `modules` is given, vite.config.ts makes it one chunk group: the
+// small parts needed at the same moments share one file instead of one request each. The other
+// chunks take the name of their entry module (rough-glass-gl.ts → rough-glass-gl). A group takes
+// what its modules import too, unless an earlier group has it: shared modules' groups come first.
+// Plain data, no imports: vite.config.ts and scripts/size.mjs read it too.
+
+export interface Chunk {
+  /** Largest size allowed, bytes of min+gzip. */
+  readonly budget: number;
+  /** Source files (from the repository's root) gathered into this chunk. */
+  readonly modules?: readonly string[];
+  /** When it is fetched, for the size table. */
+  readonly when: string;
+}
+
+export const CHUNKS = {
+  core: { budget: 30300, when: 'with the element' },
+  // Checks, debug views and the texts of failures: for developers, or when something went wrong.
+  diagnostics: {
+    budget: 1400, when: 'debug-view, frame checks, or a failure',
+    modules: ['src/render/frame-checks.ts', 'src/render/debug-views.ts', 'src/element/failure-messages.ts'],
+  },
+  // The children's parts, their files (loaded once per page) and image textures.
+  'scene-extras': {
+    budget: 1700, when: 'a child element, a file or an image',
+    modules: [
+      'src/element/children/gather-parts.ts', 'src/element/texture-images.ts', 'src/element/absolute-url.ts',
+      'src/element/children/model-cache.ts', 'src/loaders/load-error.ts',
+    ],
+  },
+  // Flat shading, the Gaussian, the reflection's clustering and the GGX maths: shared by the
+  // software renderer, WebGL's rough glass and its mesh extras.
+  'render-extras': {
+    budget: 2400, when: 'shading="flat", a Gaussian, a dense mesh, roughness, or the CPU renderer',
+    modules: [
+      'src/render/mesh-extras.ts', 'src/scene/geometry/flat.ts', 'src/scene/geometry/gaussian.ts',
+      'src/scene/geometry/cluster.ts', 'src/math/ggx.ts', 'src/math/invert.ts', 'src/frame/rough-glass.ts',
+    ],
+  },
+  // What turns the scene value (the trackball's, or objectRotation's, first turn).
+  'group-rotation': { budget: 1300, when: 'a turn', modules: ['src/scene/group-rotation.ts'] },
+  // camera-src (the element's reader, the renderer's projection) and projection="orthographic".
+  'camera-extras': {
+    budget: 2900, when: 'camera-src, or projection="orthographic"',
+    modules: [
+      'src/element/camera-source.ts', 'src/frame/course-projection.ts', 'src/scene/course-depth.ts',
+      'src/math/course-camera.ts', 'src/frame/orthographic-view.ts',
+    ],
+  },
+  controls: { budget: 5800, when: 'controls' },
+  'rough-glass-gl': { budget: 5200, when: 'roughness > 0 (WebGL)' },
+  'child-elements': { budget: 4700, when: 'a child element' },
+  'model-loader': { budget: 14800, when: 'a model file' },
+  'model-fetch': { budget: 2400, when: 'a model file' },
+  'assets/obj-worker': { budget: 13800, when: 'a model file' },
+  'course-files': { budget: 1200, when: 'a course file' },
+  'software-start': { budget: 2150, when: 'the CPU renderer' },
+  'software-renderer': { budget: 15400, when: 'the CPU renderer' },
+  'assets/worker': { budget: 23850, when: 'the CPU renderer' },
+  // The bundler's glue for lazy chunks that share modules: written by rolldown, not by us.
+  'rolldown-runtime': { budget: 200, when: 'with the first lazy chunk' },
+} as const satisfies Record<string, Chunk>;
+
+export type ChunkName = keyof typeof CHUNKS;

@@ -1,0 +1,219 @@
+// The one mechanism for lazy parts (src/frame/lazy-parts.ts, ARCHITECTURE.md#lazy-parts): what a
+// frame's one question starts and waits for, the failure policy, and no allocation when nothing
+// is pending. The declarations themselves: render/parts.ts, element/parts.ts, and their chunks.
+import fs from 'node:fs';
+import { PerformanceObserver } from 'node:perf_hooks';
+import { describe, expect, it } from 'vitest';
+import { LazyParts, type LazyPartSpec, type PartListener } from '../../src/frame/lazy-parts';
+import { CHUNKS } from '../../src/frame/chunks';
+import { RENDER_PARTS, needsExtras } from '../../src/render/parts';
+import { ELEMENT_PARTS } from '../../src/element/parts';
+import { defaultScene } from '../../src/scene/default-scene';
+import { defaultFrameState } from './helpers/frame-state';
+
+interface Host { wants: boolean; got: string[] }
+
+function deferred<T>() {
+  let resolve!: (v: T) => void, reject!: (e: unknown) => void;
+  const promise = new Promise<T>((res, rej) => { resolve = res; reject = rej; });
+  return { promise, resolve, reject };
+}
+
+function recorder(): PartListener & { warnings: string[]; settles: number } {
+  const r = { warnings: [] as string[], settles: 0, warn: (m: string) => r.warnings.push(m), settled: () => { r.settles++; } };
+  return r;
+}
+
+function part(name: string, holds: boolean, load: () => Promise<string>): LazyPartSpec<Host, string> {
+  return {
+    name, chunk: 'diagnostics', load, holds, instead: `drawn without ${name}`,
+    needed: (h) => h.wants, arrived: (h, v) => h.got.push(v),
+  };
+}
+
+describe('LazyParts', () => {
+  it('starts nothing and answers null while no part is needed', () => {
+    let fetches = 0;
+    const host = { wants: false, got: [] };
+    const parts = new LazyParts([part('a', true, () => { fetches++; return Promise.resolve('A'); })], host, recorder());
+    expect(parts.request()).toBeNull();
+    expect(fetches).toBe(0);
+    expect(parts.loading).toBe(false);
+  });
+
+  it('a needed part that holds: one fetch, the same promise while it comes, handed over once, then null', async () => {
+    let fetches = 0;
+    const d = deferred<string>();
+    const host = { wants: true, got: [] as string[] };
+    const listener = recorder();
+    const spec = part('a', true, () => { fetches++; return d.promise; });
+    const parts = new LazyParts([spec], host, listener);
+    const first = parts.request();
+    expect(first).not.toBeNull();
+    expect(parts.request()).toBe(first);
+    expect(parts.loading).toBe(true);
+    expect(parts.get(spec)).toBeNull();
+    d.resolve('A');
+    await first;
+    expect(fetches).toBe(1);
+    expect(host.got).toEqual(['A']);
+    expect(parts.get(spec)).toBe('A');
+    expect(parts.request()).toBeNull();
+    expect(parts.loading).toBe(false);
+    expect(listener.settles).toBe(1);
+  });
+
+  it('a part that does not hold starts loading, and the frame is drawn meanwhile', async () => {
+    const d = deferred<string>();
+    const host = { wants: true, got: [] as string[] };
+    const spec = part('b', false, () => d.promise);
+    const parts = new LazyParts([spec], host, recorder());
+    expect(parts.request()).toBeNull();
+    expect(parts.loading).toBe(true);
+    d.resolve('B');
+    await parts.fetch(spec);
+    expect(host.got).toEqual(['B']);
+  });
+
+  it('waits for every held part at once, and a part started later makes a new promise', async () => {
+    const da = deferred<string>(), db = deferred<string>();
+    const host = { wants: true, got: [] as string[] };
+    const a = part('a', true, () => da.promise);
+    const b: LazyPartSpec<Host, string> = { ...part('b', true, () => db.promise), needed: (h) => h.got.length > 0 || h.wants };
+    const parts = new LazyParts([a, b], host, recorder());
+    const both = parts.request()!;
+    let settled = false;
+    void both.then(() => { settled = true; });
+    da.resolve('A');
+    await da.promise;
+    await Promise.resolve();
+    expect(settled).toBe(false); // b is still on its way
+    db.resolve('B');
+    await both;
+    expect(host.got.sort()).toEqual(['A', 'B']);
+  });
+
+  it('a part that fails: one warning naming it and what is drawn instead, never asked for again', async () => {
+    let fetches = 0;
+    const host = { wants: true, got: [] as string[] };
+    const listener = recorder();
+    const spec = part('rough glass', true, () => { fetches++; return Promise.reject(new Error('offline')); });
+    const parts = new LazyParts([spec], host, listener);
+    const wait = parts.request()!;
+    await expect(wait).resolves.toBeUndefined(); // never rejects
+    expect(listener.warnings).toEqual(['rough glass could not load (Error: offline); drawn without rough glass']);
+    expect(parts.request()).toBeNull();
+    expect(parts.get(spec)).toBeNull();
+    expect(await parts.fetch(spec)).toBeNull();
+    expect(fetches).toBe(1);
+    expect(listener.settles).toBe(1);
+  });
+
+  it('an owner that cannot take the module: the same policy as a failed fetch', async () => {
+    const host = { wants: true, got: [] as string[] };
+    const listener = recorder();
+    const spec: LazyPartSpec<Host, string> = { ...part('c', true, () => Promise.resolve('C')), arrived: () => { throw new Error('bad'); } };
+    const parts = new LazyParts([spec], host, listener);
+    await parts.request();
+    expect(listener.warnings).toHaveLength(1);
+    expect(listener.warnings[0]).toContain('c could not load (Error: bad)');
+    expect(parts.get(spec)).toBeNull();
+  });
+
+  it('a name read from the owner', async () => {
+    const host = { wants: true, got: [] as string[] };
+    const listener = recorder();
+    const spec: LazyPartSpec<Host, string> = { ...part('x', true, () => Promise.reject(new Error('no'))), name: (h) => `wants=${h.wants}` };
+    await new LazyParts([spec], host, listener).request();
+    expect(listener.warnings[0]).toMatch(/^wants=true could not load/);
+  });
+
+  it('a module provided by another chunk: in at once, handed over, no fetch, and a fetch under way is not handed over twice', async () => {
+    let fetches = 0;
+    const host = { wants: true, got: [] as string[] };
+    const spec = part('d', true, () => { fetches++; return Promise.resolve('fetched'); });
+    const parts = new LazyParts([spec], host, recorder());
+    parts.provide(spec, 'given');
+    expect(parts.request()).toBeNull();
+    expect(fetches).toBe(0);
+    expect(host.got).toEqual(['given']);
+
+    const late = new LazyParts([spec], { wants: true, got: [] as string[] }, recorder());
+    const wait = late.request();
+    late.provide(spec, 'given');
+    await wait;
+    expect(late.get(spec)).toBe('given');
+  });
+});
+
+/** Runs `body` and counts the garbage collections it caused (node's 'gc' performance entries). */
+async function collections(body: () => void): Promise<number> {
+  let count = 0;
+  const observer = new PerformanceObserver((list) => { count += list.getEntries().length; });
+  observer.observe({ entryTypes: ['gc'] });
+  body();
+  await new Promise((r) => setTimeout(r, 50));
+  observer.disconnect();
+  return count;
+}
+
+describe('the frame\'s one question allocates nothing when nothing is pending', () => {
+  const CALLS = 2_000_000;
+
+  it('the check itself sees allocation: the same loop with 32 bytes a call collects', async () => {
+    const sink: unknown[] = [null];
+    expect(await collections(() => {
+      for (let i = 0; i < CALLS; i++) sink[0] = { i, j: i };
+    })).toBeGreaterThan(0);
+  });
+
+  it('the renderer\'s parts, none needed (the default scene, the default state)', async () => {
+    const state = defaultFrameState(), scene = defaultScene(state.cubeDistance, state.spin);
+    const host = { ctx: { state, scene } as never, checks: false, rough: null as never };
+    const parts = new LazyParts(RENDER_PARTS, host, recorder());
+    let answers = 0;
+    expect(await collections(() => {
+      for (let i = 0; i < CALLS; i++) if (parts.request() !== null) answers++;
+    })).toBe(0);
+    expect(answers).toBe(0);
+  });
+
+  it('the element\'s parts, none needed (no controls, no turn, no children, no images, no camera-src)', async () => {
+    const host = {
+      values: { controls: null, cameraSrc: null },
+      scenes: { turnSet: () => false },
+      source: { hasChild: () => false, hasUndefinedChild: () => false },
+      namesImages: () => false,
+    } as never;
+    const parts = new LazyParts(ELEMENT_PARTS, host, recorder());
+    expect(await collections(() => {
+      for (let i = 0; i < CALLS; i++) parts.request();
+    })).toBe(0);
+  });
+});
+
+describe('the declarations', () => {
+  const all = [...RENDER_PARTS, ...ELEMENT_PARTS];
+
+  it('every part names a chunk of the table, and every grouped chunk\'s files exist', () => {
+    for (const p of all) expect(Object.keys(CHUNKS)).toContain(p.chunk);
+    for (const [name, c] of Object.entries(CHUNKS)) {
+      for (const m of 'modules' in c ? c.modules : []) expect(fs.existsSync(m), `${name}: ${m}`).toBe(true);
+    }
+  });
+
+  it('each part says what is drawn without it', () => {
+    for (const p of all) expect(p.instead.length).toBeGreaterThan(10);
+  });
+
+  it('the mesh extras are needed for flat shading, a Gaussian, or a mesh at tessellation auto; not for the default scene', () => {
+    const s = defaultFrameState(), scene = defaultScene(s.cubeDistance, s.spin);
+    expect(needsExtras(s, scene)).toBe(false);
+    expect(needsExtras({ ...s, shading: 'flat' }, scene)).toBe(true);
+    const gaussian = { ...scene, objects: [{ ...scene.objects[0], geometry: { kind: 'gaussian' } }] } as never;
+    expect(needsExtras(s, gaussian)).toBe(true);
+    const mesh = { ...scene, objects: [{ ...scene.objects[0], geometry: { kind: 'mesh' } }] } as never;
+    expect(needsExtras(s, mesh)).toBe(true);
+    expect(needsExtras({ ...s, tessellation: 64 }, mesh)).toBe(false);
+  });
+});
