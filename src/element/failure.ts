@@ -1,7 +1,7 @@
-// Why the element cannot draw (SPEC §2): shown in its `message` part, fired as `error`. A missing
+// Why the element cannot draw (docs/element.md#failure-behaviour): shown in its `message` part, fired as `error`. A missing
 // WebGL2 hides the canvas; a lost context waits for the context to come back; a shader that
 // failed waits for a change that may select a variant that compiles. The message part's texts are
-// a chunk of their own (failure-messages.ts, issue 22): a page that never fails never loads them.
+// a chunk of their own (failure-messages.ts, docs/package.md#chunks): a page that never fails never loads them.
 import type { ErrorType } from './types';
 import { PREFIX } from './warnings';
 

@@ -1,4 +1,4 @@
-// A part of the renderer that only some frames need, in a chunk of its own (issue 22): fetched
+// A part of the renderer that only some frames need, in a chunk of its own (docs/package.md#chunks): fetched
 // the first time a frame asks for it (Renderer.load), the same promise while it comes; if it
 // cannot load, the promise rejects once with an Error saying what is drawn instead, and the part
 // is not asked for again.

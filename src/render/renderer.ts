@@ -58,12 +58,12 @@ export class Renderer implements DebugViewFrame {
   private glassMesh: Mesh;
   /** The glass frame `glassMesh` was built for. */
   private glassMeshFrame: GlassFrame | null = null;
-  /** SPEC §3's scene for callers that pass none (the bench, tests), rebuilt only when it changes. */
+  /** The default scene (docs/default-scene.md) for callers that pass none (the bench, tests), rebuilt only when it changes. */
   private readonly defaultScene = new DefaultSceneCache();
   /** Programs, the procedural texture and meshes, shared with every renderer on this context. */
   private readonly shared: SharedResources;
   private readonly textures: TextureCache;
-  /** The frame in linear light and its final encode (SPEC §13, `color-space="srgb"`). */
+  /** The frame in linear light and its final encode (docs/colour.md#the-transfer-curve, `color-space="srgb"`). */
   private readonly linearFrame: LinearFrame;
   /** The clear colour in the frame's colour space. */
   private readonly background = [0, 0, 0];
@@ -72,7 +72,7 @@ export class Renderer implements DebugViewFrame {
   /** Multisampled stand-ins, created only when `samples` > 0. */
   private reflectionMsaa: MultisampleTarget | null = null;
   private mainMsaa: MultisampleTarget | null = null;
-  /** Rough glass (SPEC §14): its chunk, loaded by load(), and its mip-mapped images. */
+  /** Rough glass (docs/rough-glass.md#the-gather): its chunk, loaded by load(), and its mip-mapped images. */
   private readonly rough: RoughLoader;
   private readonly maxSamples: number;
   /** Can the context render to RGBA16F (EXT_color_buffer_float)? */
@@ -103,7 +103,7 @@ export class Renderer implements DebugViewFrame {
   private readonly full: Viewport = { x: 0, y: 0, width: 0, height: 0 };
   /**
    * Skip the reflection and glass when the glass is not on screen, cull objects beyond the
-   * glass from the reflection, scissor it to the glass (SPEC §7). Off only to measure savings.
+   * glass from the reflection, scissor it to the glass (docs/knobs.md#reflection-skips). Off only to measure savings.
    */
   optimize = true;
   private readonly counts = {
@@ -161,7 +161,7 @@ export class Renderer implements DebugViewFrame {
 
   /**
    * Loads what `state` and `scene` (default: the default scene) need that the core leaves out —
-   * the checks, rough glass (SPEC §14), the course camera's (§11) and the orthographic (§10)
+   * the checks, rough glass (docs/rough-glass.md#roughness), the course camera's (docs/course-files.md#the-course-camera) and the orthographic (docs/interaction.md#orthographic-projection)
    * projections, the mesh extras, the debug views — or null. Until it resolves, render() and
    * read() draw polished glass, in perspective from the camera attributes, with full meshes in
    * the reflection, the final image for a debug view. A chunk that fails rejects (an Error
@@ -247,7 +247,7 @@ export class Renderer implements DebugViewFrame {
   private prepare(state: FrameState): void {
     this.ctx.state = state;
     const scene = this.ctx.scene;
-    // SPEC §13: colour data (textures, the background) decoded in srgb; light is mixed linearly.
+    // docs/colour.md#srgb: colour data (textures, the background) decoded in srgb; light is mixed linearly.
     const srgb = state.colorSpace === 'srgb';
     this.textures.setColorSpace(srgb);
     for (let k = 0; k < 3; k++) this.background[k] = srgb ? srgbToLinear(scene.background[k]) : scene.background[k];
@@ -327,7 +327,7 @@ export class Renderer implements DebugViewFrame {
   private draw(state: FrameState, destination: WebGLFramebuffer | null): number {
     this.prepare(state);
     const samples = this.samplesFor(state);
-    // The fresnel view is a number, not a picture: drawn as stored in either space (SPEC §13).
+    // The fresnel view is a number, not a picture: drawn as stored in either space (docs/colour.md#debug-views).
     if (encodesAtEnd(state)) {
       const n = this.drawView(state, this.linearFrame.begin(state.width, state.height, samples));
       return n + this.linearFrame.end(destination);

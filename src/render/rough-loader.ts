@@ -1,4 +1,4 @@
-// Rough glass (SPEC §14) for one renderer, from the core's side: its chunk (rough-glass-gl.ts:
+// Rough glass (docs/rough-glass.md#roughness) for one renderer, from the core's side: its chunk (rough-glass-gl.ts:
 // passes, targets, shaders) loaded the first time a frame asks for roughness, its targets made
 // on the first rough frame. Until the chunk is in, rough glass is drawn polished.
 import { isRough } from '../frame/roughness';
