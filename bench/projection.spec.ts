@@ -57,7 +57,7 @@ test('bench: perspective and orthographic', async ({ page }) => {
   const f = (x: number, d = 2) => (Number.isFinite(x) ? x.toFixed(d) : '—');
   const lines = [
     '# Bench: perspective and orthographic', '',
-    `The element's defaults (tessellation auto, samples 4, reflection-scale 1, color-space ${DEFAULTS.colorSpace}) at ${SCENE.width}×${SCENE.height}, time ${SCENE.time} s, in each bench view (bench/views.ts), drawn with projection perspective and orthographic (sized at the glass centre, docs/interaction.md#orthographic-projection).`,
+    `The element's defaults (tessellation auto, samples 4, reflection-scale 1, color-space ${DEFAULTS.colorSpace}) at ${SCENE.width}×${SCENE.height}, time ${SCENE.time} s, in each bench view (bench/views.ts), drawn with projection perspective and orthographic (sized at the glass centre: [orthographic size](../docs/interaction.md#orthographic-size)).`,
     `ms/frame: median [IQR] of ${REPETITIONS} repetitions × ${FRAMES} frames, shuffled round-robin, wall clock. PSNR: against the float64 reference of the same projection and colour space at ${SPP_AXIS ** 2} samples per pixel (all / glass / dark; dark: pixels whose reference, as displayed, is below 32/255 in every channel).`, '',
     '| view | perspective ms | perspective PSNR dB | orthographic ms | orthographic PSNR dB |',
     '|---|---|---|---|---|',
