@@ -146,7 +146,7 @@ const api = {
   },
 
   /**
-   * Issue 9's scenes (bench/scenes.ts) at the default knobs with `shading`: ms per frame over
+   * The scenes beyond the default one (bench/scenes.ts) at the default knobs with `shading`: ms per frame over
    * `frames` frames ('final', or 'scene' for the scene pass alone), after `warmup` frames.
    */
   async sceneTime(index: number, shading: Shading, size: Scene, mode: 'final' | 'scene', frames: number, warmup: number, knobs: Partial<Knobs> = {}): Promise<number> {
@@ -171,7 +171,7 @@ const api = {
     return { width: px.width, height: px.height, data: toBase64(px.data) };
   },
 
-  /** Issue 21's rough floor (bench/rough-scene.ts) in frame state `s`: ms per frame over `frames` after `warmup`. */
+  /** The rough floor (bench/rough-scene.ts) in frame state `s`: ms per frame over `frames` after `warmup`. */
   async roughTime(s: FrameState, frames: number, warmup: number): Promise<number> {
     await renderer.load(s);
     resize(oursCanvas, s);

@@ -1,5 +1,5 @@
 // The benchmark: every configuration × view, timed in shuffled round-robin, scored against
-// the float64 reference (SPEC §5), with the three.js peer in the same run. Writes
+// the float64 reference (docs/knobs.md#measuring-accuracy), with the three.js peer in the same run. Writes
 // bench/results.md and bench/results.json and prints the table. Asserts no timings.
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
@@ -107,7 +107,7 @@ test('bench', async ({ page }) => {
   const front = paretoFront(srgbRows.map(aggregate));
   srgbRows.forEach((r, i) => { r.pareto = front[i]; });
 
-  // What SPEC §7's skips save: the defaults with and without them, same views, interleaved.
+  // What the skips of docs/knobs.md#reflection-skips save: the defaults with and without them, same views, interleaved.
   const savings: { view: string; on: number; off: number }[] = [];
   const savingViews = SMOKE ? [] : [VIEWS[0], VIEWS[3], ...SKIP_VIEWS];
   const saved = new Map<string, number[]>();

@@ -64,7 +64,7 @@ function build(): BenchConfig[] {
   for (const reflectionScale of [0.25, 0.5, 1]) {
     for (const samples of [0, 2, 4] as const) list.push({ ...BASELINE, reflectionScale, samples, tessellation: 'auto' });
   }
-  // Values as stored (the course's convention, and every row before issue 20), scored against the none reference.
+  // Values as stored (the course's convention, and every row before color-space existed), scored against the none reference.
   list.push({ ...BASELINE, colorSpace: 'none' }, { ...DEFAULTS, colorSpace: 'none' });
   const seen = new Map<string, BenchConfig>();
   for (const k of list) {

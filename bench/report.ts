@@ -51,16 +51,16 @@ export interface ResultsInput {
   views: string[];
   rows: Row[];
   sizes: { ours: number | null; three: number | null };
-  /** The defaults timed with and without SPEC §7's skips (culling, scissor, off-screen/edge-on glass). */
+  /** The defaults timed with and without the skips of docs/knobs.md#reflection-skips (culling, scissor, off-screen/edge-on glass). */
   savings: { view: string; on: number; off: number }[];
   /** srgb rows drawn at pixel-ratio ≠ 1, scored again after a downscale in linear light (resample 'srgb'). */
   linearResampled?: Row[];
 }
 
-/** The regions every PSNR column reports, in this order (SPEC §13's dark region last). */
+/** The regions every PSNR column reports, in this order (the dark region, docs/colour.md#eight-bit-targets, last). */
 export const PSNR_REGIONS = ['all', 'glass', 'objects', 'edges', 'dark'] as const;
 
-/** Issue 20's bars for color-space srgb on every bench view: overall, and in the dark region. */
+/** The bars for color-space srgb (docs/knobs.md#bars-the-tests-hold) on every bench view: overall, and in the dark region. */
 export const BAR_ALL_DB = 45;
 export const BAR_DARK_DB = 40;
 
@@ -87,9 +87,9 @@ export function formatResults(input: ResultsInput): { markdown: string; json: un
   lines.push(`${input.scene.width}×${input.scene.height}, time ${input.scene.time} s, ${input.views.length} views (${input.views.join('; ')}).`);
   lines.push(`${input.repetitions} repetitions × ${input.frames} frames per configuration and view, shuffled round-robin; each batch closed by a 1-pixel readback (ms/frame, wall clock: what a page pays, CPU submission included).`);
   lines.push(`GPU ms: median of ${input.frames} EXT_disjoint_timer_query_webgl2 intervals per view (${input.info.timerQuery ? 'available here' : 'not available here'}); on SwiftShader the "GPU" is the CPU rasterizer. The Pareto front uses the wall clock.`);
-  lines.push(`Error against the float64 reference at ${input.referenceSpp} samples per pixel (exact Fresnel) in the row's own colour space (SPEC §13): ` +
+  lines.push(`Error against the float64 reference at ${input.referenceSpp} samples per pixel (exact Fresnel) in the row's own colour space ([colour](../docs/colour.md#srgb)): ` +
     'every row is drawn in linear light with sRGB output (color-space srgb, the element\'s default) and scored against the srgb reference, but those named "color-space none", ' +
-    'drawn with values as stored (every row before issue 20) and scored against the none reference. ' +
+    'drawn with values as stored (every row before color-space existed) and scored against the none reference. ' +
     `PSNR regions: all, glass, objects, edges, and dark (pixels whose reference, as displayed, is below 32/255 in every channel; they count in their own region too). Each is the mean over the views that have the region. GPU: ${input.info.renderer}.`);
   lines.push('The Pareto front is taken over the srgb rows only (three.js included): a none row is scored against another reference, so its PSNR is not comparable with theirs and it is on no front ("n/a").', '');
   lines.push(`| config | ms/frame median [IQR] | GPU ms (timer query) | PSNR dB ${PSNR_REGIONS.join(' / ')} | max err | Pareto (srgb) |`);
@@ -112,13 +112,13 @@ export function formatResults(input: ResultsInput): { markdown: string; json: un
   }
   // The peer against our rows of its own colour space: srgb (three.js's default pipeline) first.
   const peers = scored.filter((r) => r.kind === 'three');
-  for (const [space, name] of [['srgb', 'In linear light (srgb)'], ['none', 'As stored (color-space none, as the runs before issue 20)']] as const) {
+  for (const [space, name] of [['srgb', 'In linear light (srgb)'], ['none', 'As stored (color-space none, as the runs before color-space existed)']] as const) {
     const line = peerLine(scored, peers.find((p) => p.knobs.colorSpace === space), name);
     if (line) lines.push(line);
   }
   lines.push(`Size, min+gzip: ours (standalone, gl-matrix included) ${kb(input.sizes.ours)}; three.js peer (three + Reflector + scene) ${kb(input.sizes.three)}.`, '');
   if (input.savings.length) {
-    lines.push('## What the skips save (defaults, SPEC §7)', '');
+    lines.push('## What the skips save (defaults)', '');
     lines.push('Culling objects beyond the glass from the reflection, scissoring it to the glass, and skipping reflection and glass when the glass is off screen or edge-on; the same frames timed with all of it off.', '');
     lines.push('| view | with skips, ms | without, ms | saved |');
     lines.push('|---|---|---|---|');
@@ -127,7 +127,7 @@ export function formatResults(input: ResultsInput): { markdown: string; json: un
   }
   const bars = scored.filter((r) => r.label.startsWith('**defaults**') || r.key === 'baseline' || r.key === 'color-space none' || r.kind === 'three');
   if (bars.length) {
-    lines.push(`## Per view: every region (issue 20's bars for srgb: ≥ ${BAR_ALL_DB} dB overall, ≥ ${BAR_DARK_DB} dB dark)`, '');
+    lines.push(`## Per view: every region (the bars for srgb: ≥ ${BAR_ALL_DB} dB overall, ≥ ${BAR_DARK_DB} dB dark)`, '');
     lines.push(`PSNR dB ${PSNR_REGIONS.join(' / ')} per view ("—": the view has no pixel of that region). Marked ✗: an srgb figure under its bar.`, '');
     lines.push(`| config | ${input.views.join(' | ')} |`);
     lines.push(`|---|${input.views.map(() => '---').join('|')}|`);

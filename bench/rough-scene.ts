@@ -1,4 +1,4 @@
-// Issue 21's bench scene for rough glass (SPEC §14): a glass floor with a cube resting on it
+// The bench scene for rough glass (docs/rough-glass.md#roughness): a glass floor with a cube resting on it
 // (contact: its reflection should stay sharp where it touches) and a sphere whose lowest point
 // is 1.5 above it (far: its reflection blurs), seen from above at a slant.
 import { DEFAULT_LIGHT, defaultMaterial } from '../src/scene/default-scene';

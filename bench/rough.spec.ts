@@ -1,4 +1,4 @@
-// `npm run bench`, issue 21's rows: rough glass (SPEC §14) on a glass floor with a cube resting on
+// `npm run bench`, the rough glass rows (docs/rough-glass.md#roughness) on a glass floor with a cube resting on
 // it and a sphere 1.5 above it (bench/rough-scene.ts), at roughness 0.1, 0.3 and 0.6 and ior 1.5
 // and 10 (where F ≥ 0.67: the glass shows mostly the reflection). For each renderer (WebGL in the
 // page, the software renderer in Node) and each setting of `roughness-quality`: ms per frame and
@@ -121,7 +121,7 @@ test('rough glass', async ({ page }) => {
   await page.goto('/bench/page.html');
   const info = await page.evaluate(() => (window as unknown as Bench).bench.info());
   const out: string[] = [
-    '# Rough glass (issue 21, SPEC §14)', '',
+    '# Rough glass ([the model](../docs/rough-glass.md#the-model))', '',
     `Written by \`npm run bench\` (bench/rough.spec.ts) on ${new Date().toISOString().slice(0, 10)}; WebGL: ${info.renderer}; software: Node ${process.version}.`,
     `Scene: bench/rough-scene.ts — a glass floor, a cube resting on it, a sphere ${SPHERE_HEIGHT} above it; ${SIZE.width}×${SIZE.height},`,
     'color-space srgb, samples 4, transparency 0.5. PSNR (dB) on the glass against the float64 reference',

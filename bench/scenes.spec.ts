@@ -1,4 +1,4 @@
-// `npm run bench`, issue 9's rows: seed 004's Gaussian at 40² and 400² under flat, Gouraud and
+// `npm run bench`, the scene rows: the Gaussian at 40² and 400² under flat, Gouraud and
 // Phong (ms/frame and PSNR against the float64 reference), and a ~100k-triangle mesh over a glass
 // floor, full frame against the scene pass alone (the reflection's overhead). In linear light
 // (color-space srgb, the default), with one row as stored (none) against its own reference. Writes
@@ -50,7 +50,7 @@ async function time(page: Page, i: number, shading: Shading, mode: 'final' | 'sc
     (window as unknown as SceneBench).bench.sceneTime(i, shading, size, mode, frames, warmup, knobs), [i, shading, SIZE, mode, FRAMES, WARMUP, v.knobs] as const);
 }
 
-test('bench: scenes of issue 9', async ({ page }) => {
+test('bench: scenes beyond the default one', async ({ page }) => {
   test.setTimeout(30 * 60_000);
   await page.goto('/bench/page.html');
   await page.waitForFunction(() => 'bench' in window);
@@ -73,7 +73,7 @@ test('bench: scenes of issue 9', async ({ page }) => {
     }
   }
   const lines = [
-    '# Bench: scenes of issue 9', '',
+    '# Bench: scenes beyond the default one', '',
     `${SIZE.width}×${SIZE.height}, default knobs (samples 4, reflection-scale 1, tessellation auto: the reflection of a dense mesh from a clustered copy) but for shading and where the row says; ${REPETITIONS} repetitions × ${FRAMES} frames, shuffled; ` +
       `PSNR against the float64 reference (renderScene) at ${SPP_AXIS ** 2} spp, per-pixel Phong: the ideal each shading mode approximates. ` +
       'Every row in linear light (color-space srgb, the default) against the srgb reference, but the one marked color-space none (values as stored) against the none reference. ' +

@@ -1,4 +1,4 @@
-// Scenes beyond the default one for `npm run bench` (issue 9): seed 004's Gaussian at 40² and
+// Scenes beyond the default one for `npm run bench`: the Gaussian at 40² and
 // 400² (the lecture's trade: flat, Gouraud, Phong), and a ~100k-triangle mesh over a glass floor
 // (the Gaussian at 225²: 2·224² = 100,352 triangles). Built the same way in Node (the reference)
 // and in the page (the renderer).

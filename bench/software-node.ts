@@ -1,4 +1,4 @@
-// Issue 22's timing harness: SoftwareRenderer.render() in plain Node (no worker, no copy), the
+// The timing harness: SoftwareRenderer.render() in plain Node (no worker, no copy), the
 // default scene at 640×360 with the clock moving so the cube turns, samples 0 and 4 × srgb and
 // none, and with the camera turning too (nothing as in the frame before: no glass cache), as
 // bench/software.spec.ts's Node rows (same state, same medians), without Playwright, so

@@ -1,4 +1,4 @@
-// `npm run bench`, issue 11's rows: the software renderer. The default scene at 640×360 in the
+// `npm run bench`, the software renderer's rows. The default scene at 640×360 in the
 // element's worker (round trip and the worker's own time) next to the WebGL renderer, with PSNR
 // against the float64 reference, and in Node by shading mode; a ~100k-triangle mesh with its
 // frame split into transform, raster and shading; a bicubic Bézier patch's evaluation time and
@@ -279,7 +279,7 @@ async function bezier(page: Page): Promise<string[]> {
 
 /**
  * The default scene in every bench view (bench/views.ts), software renderer in Node (the pixels
- * the worker returns), both colour spaces, each against its own float64 reference: issue 20's
+ * the worker returns), both colour spaces, each against its own float64 reference: the
  * bars (srgb ≥ 45 dB overall and ≥ 40 dB in the dark region) for the software renderer.
  */
 function views(): string[] {
@@ -291,7 +291,7 @@ function views(): string[] {
     `## 5. Default scene in every bench view, ${SIZE.width}×${SIZE.height}`, '',
     `bench/views.ts's ${views.length} views at t = ${PIXEL_TIME} s (those of bench/results.md), SoftwareRenderer.render() in Node, ${modes.map((m) => m.label).join('; ')}, ` +
       `against the float64 reference of the same view and colour space at ${VIEWS_REF_SPP ** 2} spp (bench.spec.ts's, cached). PSNR dB ${REGIONS.join(' / ')} ("—": no pixel of that region). ` +
-      `Marked ✗: an srgb figure under issue 20's bars (≥ ${BAR_ALL_DB} dB overall, ≥ ${BAR_DARK_DB} dB dark).`, '',
+      `Marked ✗: an srgb figure under the bars (≥ ${BAR_ALL_DB} dB overall, ≥ ${BAR_DARK_DB} dB dark).`, '',
     `| view | ${modes.flatMap((m) => [`srgb, ${m.label}`, `none, ${m.label}`]).join(' | ')} |`,
     `|---|${modes.flatMap(() => ['---', '---']).join('|')}|`,
   ];
@@ -361,7 +361,7 @@ async function probe(page: Page, samples: number | null = null, workers: number 
       if (running) setTimeout(timer, 1);
     };
     setTimeout(timer, 1);
-    // The time between `frame` events (issue 22: a new frame every ≤ 16 ms).
+    // The time between `frame` events (the bar: a new frame every ≤ 16 ms).
     const frameTimes: number[] = [];
     const onFrame = () => frameTimes.push(performance.now());
     el.addEventListener('frame', onFrame);
@@ -412,13 +412,13 @@ async function responsiveness(page: Page): Promise<string[]> {
     `## 4. Responsiveness: main-thread long tasks while the element draws continuously`, '',
     `\`<glass-plane-scene renderer="software">\` at ${SIZE.width}×${SIZE.height} CSS px (DPR 1), spin on and no \`time\` attribute, so it draws continuously (the next frame is asked for when the last is back). ` +
       `After its first frames, ${PROBE_MS / 1000} s of PerformanceObserver 'longtask' entries (tasks over 50 ms; their time inside the window summed) a setTimeout(1) chain (the time in gaps between its ticks over ${BLOCKED_GAP_MS} ms: the main thread held long enough to miss a 60 Hz frame, which catches frames under the long-task threshold too) and a requestAnimationFrame probe on the main thread. ` +
-      'The second row makes `window.Worker` undefined (an init script), so the element draws on the main thread as where no worker may start. SPEC §11: long tasks under 10 % of the time.', '',
+      'The second row makes `window.Worker` undefined (an init script), so the element draws on the main thread as where no worker may start. The bar ([worker](../docs/software-renderer.md#worker)): long tasks under 10 % of the time.', '',
     '| | thread | window, s | element frames | long tasks | long-task ms | long tasks\' share of the time | longest, ms | held > 16 ms (setTimeout probe) | rAF callbacks | longest rAF gap, ms |',
     '|---|---|---|---|---|---|---|---|---|---|---|',
     row('worker', withWorker),
     row('no Worker (main thread)', mainThread),
     '',
-    `**Frame interval** (issue 22's bar: a new frame every ≤ 16 ms at ${SIZE.width}×${SIZE.height}, 1 sample per pixel, while the cube spins): the median time between the element's \`frame\` events in the window — ` +
+    `**Frame interval** (the bar: a new frame every ≤ 16 ms at ${SIZE.width}×${SIZE.height}, 1 sample per pixel, while the cube spins): the median time between the element's \`frame\` events in the window — ` +
       `samples 0 (1 spp), worker: **${median(oneSample.intervals).toFixed(1)} ms** (${oneSample.intervals.length} intervals; ${oneSample.thread}); samples 4 (the default), worker: ${median(withWorker.intervals).toFixed(1)} ms; ` +
       `samples 4 on the main thread: ${median(mainThread.intervals).toFixed(1)} ms. In a worker the next frame is asked for as the last one lands (while the scene moves); on the main thread it waits for requestAnimationFrame, so there no interval is shorter than one display frame.`,
     '',
@@ -432,7 +432,7 @@ async function responsiveness(page: Page): Promise<string[]> {
 }
 
 /**
- * Issue 22: the frame split into bands across 1, 2 and all workers (SoftwareHost, one per core up
+ * The frame split into bands across 1, 2 and all workers (SoftwareHost, one per core up
  * to 4): the element's frame interval and long tasks (probe), the host's round trip and its slowest
  * band's own time for the default scene and the 100k-triangle floor, WebGL beside them; the pixels
  * of every count are the same bytes (asserted), so one PSNR per scene.
@@ -486,7 +486,7 @@ async function workerRows(page: Page): Promise<string[]> {
     return `${k.samples === 0 ? `**${m.toFixed(1)}**` : m.toFixed(1)} (${p.intervals.length}); long tasks ${share(p.longMs, p)}`;
   };
   return [
-    `## 6. The frame split across workers (issue 22), ${SIZE.width}×${SIZE.height}`, '',
+    `## 6. The frame split across workers, ${SIZE.width}×${SIZE.height}`, '',
     'SoftwareHost cuts each frame into bands of rows, one per worker, each drawn as in the whole frame (the bytes of every worker count below are the same: asserted), ' +
       'its rows weighted by each worker\'s speed in the frames before; rough glass and the `passes` view go whole to one worker. ' +
       `This machine reports ${all} cores (navigator.hardwareConcurrency), so "all" is ${all} workers. ` +
@@ -504,7 +504,7 @@ async function workerRows(page: Page): Promise<string[]> {
   ];
 }
 
-test('bench: software renderer (issue 11)', async ({ page }) => {
+test('bench: software renderer', async ({ page }) => {
   test.setTimeout(40 * 60_000);
   const loadBefore = loadavg()[0];
   await page.goto('/bench/software.html');
@@ -518,7 +518,7 @@ test('bench: software renderer (issue 11)', async ({ page }) => {
     ...(await workerRows(page)),
   ];
   const md = [
-    '# Bench: the software renderer (issue 11)', '',
+    '# Bench: the software renderer', '',
     `Headless Chromium (the pinned SwiftShader build of the test suite) for the browser rows, Node ${process.version} for the software renderer's own time in section 1, the Bézier evaluation and its software images. ` +
       '2 cores; the load averages say whether anything else ran (above 1, other work shared the machine and the times are pessimistic); IQRs show the spread. ' +
       `1-minute load average ${loadBefore.toFixed(1)} when this run started, ${loadavg()[0].toFixed(1)} when it ended. ` +

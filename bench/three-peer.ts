@@ -1,4 +1,4 @@
-// The benchmark's peer: the default scene of SPEC §3–§4 built with three.js and its stock
+// The benchmark's peer: the default scene (docs/default-scene.md, docs/rendering.md) built with three.js and its stock
 // `Reflector` (planar reflection by rendering the scene from a mirrored camera into a render
 // target, near plane replaced by the mirror plane with Lengyel's oblique projection).
 //
@@ -8,7 +8,7 @@
 // not unrelated differences:
 //  - geometry and UVs: our own MeshData builders (boxMesh, sphereMesh, glassMesh);
 //  - the texture: proceduralTexture(), row 0 first (flipY false), repeat, trilinear mips;
-//  - colour (SPEC §13), from state.colorSpace. 'srgb': three.js's own default pipeline — linear
+//  - colour (docs/colour.md#srgb), from state.colorSpace. 'srgb': three.js's own default pipeline — linear
 //    light, sRGB output (renderer.outputColorSpace SRGBColorSpace, ColorManagement on), the texture
 //    tagged SRGBColorSpace (three stores it SRGB8_ALPHA8: decoded on read, filtered in linear
 //    light) and read anisotropically up to 16 taps as ours is, the background set as an sRGB
@@ -16,12 +16,12 @@
 //    targets tagged SRGBColorSpace (SRGB8_ALPHA8: blended and resolved in linear light), and every
 //    fragment shader ending in three's <colorspace_fragment> (linearToOutputTexel: sRGB's OETF
 //    when drawing to the canvas, nothing when drawing into a render target). 'none': values as
-//    stored, as before issue 20 — RGBA8 texture and targets with no colour space, linear output,
+//    stored, as before color-space existed — RGBA8 texture and targets with no colour space, linear output,
 //    ColorManagement off, isotropic reads (linearToOutputTexel is then the identity: measured,
 //    the frames are bit for bit those of the peer before it had <colorspace_fragment>);
 //  - no tone mapping;
-//  - shading: ShaderMaterials that evaluate our Blinn-Phong (SPEC §3) per fragment, and the
-//    glass equation of SPEC §4 (exact / Schlick / classic Fresnel, premultiplied blending);
+//  - shading: ShaderMaterials that evaluate our Blinn-Phong (docs/default-scene.md#material-and-lighting) per fragment, and the
+//    glass equation of docs/rendering.md#the-glass-equation (exact / Schlick / classic Fresnel, premultiplied blending);
 //  - camera: same fov, near/far, position and lookAt(position + forward, +Y).
 //
 // Measured (bench/check-peer.mjs, SwiftShader, 640×360): off the glass the peer's pixels equal
@@ -47,7 +47,7 @@
 //    the reflection texture is ours flipped left-right. The flip maps texel centres onto texel
 //    centres, so projective lookups sample the same values (measured: no difference).
 //  - Two-sided glass: stock Reflector renders nothing when the camera is behind its plane (it
-//    returns early and the glass shows whatever the texture last held). SPEC §3 wants the
+//    returns early and the glass shows whatever the texture last held). docs/default-scene.md#the-glass wants the
 //    reflection of the camera's side, so the Reflector is turned to face the camera each frame (scale
 //    (−1, 1, −1), a rotation by π about Y: what a three.js user would do for a two-sided
 //    mirror). The glass UVs are computed from world x, y so the body texture does not flip.
@@ -58,7 +58,7 @@
 //    the peer pays one extra full-screen pass there. With samples 0 both draw straight into
 //    the canvas.
 //  - The reflection pass renders the whole scene (no culling of objects wholly behind the glass,
-//    no scissor to the glass's screen rectangle, unlike SPEC §7). It is skipped only when three's
+//    no scissor to the glass's screen rectangle, unlike docs/knobs.md#reflection-skips). It is skipped only when three's
 //    frustum culling drops the Reflector mesh (onBeforeRender runs for visible meshes only).
 //  - sRGB at samples 0: the objects and the glass encode as they draw into the canvas, so the
 //    glass's premultiplied blend mixes encoded values (three's default without a render target).
@@ -157,7 +157,7 @@ void main() {
   vec4 world = modelMatrix * vec4(position, 1.0);
   vWorldPosition = world.xyz;
   vNormal = mat3(modelMatrix) * normal;
-  // SPEC §3 glass UVs from world x, y: unchanged when the Reflector is turned to face the camera.
+  // docs/default-scene.md#texture-coordinates glass UVs from world x, y: unchanged when the Reflector is turned to face the camera.
   vUv = (world.xy - uGlassRect.xy) * uGlassRect.zw;
   gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0);
 }
@@ -348,7 +348,7 @@ export class ThreePeer {
     }
     this.configure(state, options, w, h);
 
-    // Camera (SPEC §3): lookAt(position, position + forward, +Y).
+    // Camera (docs/default-scene.md#the-camera): lookAt(position, position + forward, +Y).
     const cam = this.camera;
     cam.fov = state.fov;
     cam.aspect = w / h;
@@ -541,7 +541,7 @@ export class ThreePeer {
     m.uniforms.uGlassRect.value = new THREE.Vector4(
       GLASS.xMin, GLASS.yMin, 1 / (GLASS.xMax - GLASS.xMin), 1 / (GLASS.yMax - GLASS.yMin));
     m.defines = fresnelDefines('exact');
-    // Premultiplied "over" (SPEC §4): src.rgb + (1 − src.a)·dst.
+    // Premultiplied "over" (docs/rendering.md#the-glass-equation): src.rgb + (1 − src.a)·dst.
     m.transparent = true;
     m.blending = THREE.CustomBlending;
     m.blendEquation = THREE.AddEquation;

@@ -38,7 +38,7 @@ export const VIEWS: readonly BenchView[] = [
   lookingAt('far away', [45, 30, 60]),
 ];
 
-/** Extra views for what SPEC §7's skips save: the glass behind the camera, and edge-on. */
+/** Extra views for what the skips of docs/knobs.md#reflection-skips save: the glass behind the camera, and edge-on. */
 export const SKIP_VIEWS: readonly BenchView[] = [
   { name: 'glass behind the camera', cameraPosition: [...DEFAULT_CAMERA_POSITION], yaw: DEFAULT_CAMERA_ROTATION[0] + 180, pitch: 0 },
   { name: 'glass edge-on', cameraPosition: [6, 1, 0], yaw: 180, pitch: 0 },

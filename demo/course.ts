@@ -1,4 +1,4 @@
-// The course page: a scene read from seed 002's files, drawn by either renderer, and the
+// The course page: a scene read from the course's files (docs/course-files.md), drawn by either renderer, and the
 // difference image between them (|WebGL − software| × 8, from capture() of each).
 import '../src/index';
 import type { GlassPlaneScene } from '../src/index';

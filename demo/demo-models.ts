@@ -61,7 +61,7 @@ function torusObj(): string {
 const TORUS_MTL = '# torus material\nnewmtl striped\nKa 0.2 0.2 0.2\nKd 0.9 0.9 0.9\nKs 0.6 0.6 0.6\nNs 64\nmap_Kd stripes.png\n';
 
 /**
- * The course page's files (seed 002's formats, SPEC §11), written the way the course's own files
+ * The course page's files (docs/course-files.md), written the way the course's own files
  * are: CRLF, exponent forms, a bicubic Bézier bump of E = 24.
  */
 function bezierBump(): string {

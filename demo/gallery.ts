@@ -1,4 +1,4 @@
-// Model gallery (seed 001, issue 9): switch models, and change Ka, Kd, Ks, shininess, Ia, Id, Is
+// Model gallery, a model viewer over a glass floor: switch models, and change Ka, Kd, Ks, shininess, Ia, Id, Is
 // and the mapping mode. Each control writes one attribute of the element's children; the
 // controls follow the attributes back when something else changes them.
 import '../src/index';

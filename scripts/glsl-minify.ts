@@ -1,4 +1,4 @@
-// The build's shader text (SPEC §12's small core): comments, indentation, blank lines and the
+// The build's shader text (the small core, docs/package.md#size-budget): comments, indentation, blank lines and the
 // spaces around = ( ) { } ; , ? : * dropped from shaders/*.{vert,frag,glsl} imported with ?raw.
 // Lines stay lines (the preprocessor reads them); + - < > & | keep their spaces, so no two
 // operators can fuse into another (`a - -b` must not become `a--b`). The dev server serves them

@@ -1,4 +1,4 @@
-// Mutation check for the tests (issue 14 §2): each mutation (scripts/mutations/*.mjs) breaks one pass on purpose in a
+// Mutation check for the tests: each mutation (scripts/mutations/*.mjs) breaks one pass on purpose in a
 // temporary copy of the repository and runs the tests meant to catch it. A mutation is "caught"
 // when at least one of those tests fails, "missed" when they all pass, "stale" when its search
 // text is no longer in the file exactly once (the code moved: fix the table, never skip it), and

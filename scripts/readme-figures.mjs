@@ -1,4 +1,4 @@
-// The README's figures, from the files that hold them, never typed by hand (issue 12 §6):
+// The README's figures, from the files that hold them, never typed by hand:
 // between <!-- figures:NAME --> and <!-- /figures:NAME --> the README holds what this script
 // writes. `size` comes from scripts/size.mjs on the current dist/, `bench` from the last
 // `npm run bench` (bench/results.json, bench/software.md).

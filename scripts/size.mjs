@@ -1,4 +1,4 @@
-// Size check (SPEC §12, issue 12 §5): the gzip size of every chunk of the self-contained build
+// Size check (docs/package.md#size-budget): the gzip size of every chunk of the self-contained build
 // (dist/glass-plane-scene.standalone.js, minified, and what it imports statically or lazily)
 // against the budget of each chunk in src/frame/chunks.ts (bytes, min+gzip); and the core as a
 // bundler's app gets it: `import 'glass-plane-scene'` (dist/glass-plane-scene.js, gl-matrix from

@@ -1,5 +1,5 @@
 #version 300 es
-// Rough glass (SPEC §14): two layers per texel (frame/rough-glass.ts), from a pass's depth —
+// Rough glass (docs/rough-glass.md#the-gather): two layers per texel (frame/rough-glass.ts), from a pass's depth —
 // the coverage c (1 where the pass drew a surface, 0 where only the background) into the alpha
 // of its target (colour masked off), and c·u into the alpha of the codes beside it, u = h/(1 + h)
 // the distance code, h = how far beyond the glass what the pass drew at this texel lies — the

@@ -1,5 +1,5 @@
 #version 300 es
-// The last step of a frame in linear light (SPEC §13): the frame, held in an SRGB8_ALPHA8 target
+// The last step of a frame in linear light (docs/colour.md#eight-bit-targets): the frame, held in an SRGB8_ALPHA8 target
 // (read back as linear), encoded once with the IEC 61966-2-1 curve (src/math/srgb.ts) into the
 // canvas. Values above 1 clip first (no tone mapping).
 precision highp float;

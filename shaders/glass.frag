@@ -1,7 +1,7 @@
 #version 300 es
-// Dark glass of SPEC §4: out = F·R + (1 − F)·(T·B + (1 − T)·D), premultiplied over pass 2.
+// Dark glass of docs/rendering.md#the-glass-equation: out = F·R + (1 − F)·(T·B + (1 − T)·D), premultiplied over pass 2.
 // One of FRESNEL_EXACT / FRESNEL_SCHLICK / FRESNEL_CLASSIC; OUTPUT_FRESNEL writes F as grey.
-// ROUGH (SPEC §14): R and B become R̃ and B̃, gathered from mip-mapped images of the reflection
+// ROUGH (docs/rough-glass.md#the-gather): R and B become R̃ and B̃, gathered from mip-mapped images of the reflection
 // and of the frame beyond the glass (rough-glass.glsl), and the glass is written opaque.
 precision highp float;
 
@@ -11,7 +11,7 @@ uniform float uTransparency;
 uniform float uIor;
 uniform vec3 uBodyTint;         // tint ⊙ darkness
 uniform vec4 uViewVector;       // V = normalize(xyz − w·relPos): perspective (0,0,0,1), orthographic (−forward, 0)
-uniform float uLinearFrame;     // 1: the frame is in linear light, encoded at the end (SPEC §13)
+uniform float uLinearFrame;     // 1: the frame is in linear light, encoded at the end (docs/colour.md#the-transfer-curve)
 
 in highp vec3 vRelPos;
 in vec3 vNormal;
@@ -64,7 +64,7 @@ void main() {
 #endif
   vec3 d = texture(uTexture, vUv).rgb * uBodyTint;
 #ifdef FRESNEL_CLASSIC
-  // Seed 000 verbatim: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha.
+  // Classic, the original prototype's glass verbatim: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha.
   float a = (1.0 - uTransparency) * (0.2 + 0.8 * f);
 #ifdef ROUGH
   outColor = vec4(mix(d, r, f) * a + (1.0 - a) * b, 1.0);

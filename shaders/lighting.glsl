@@ -1,4 +1,4 @@
-// Blinn-Phong of SPEC §9 (seed 001's names), shared by both stages (prepended after the #defines):
+// Blinn-Phong of docs/scene-model.md#lights (Ka, Kd, Ks; Ia, Id, Is), shared by both stages (prepended after the #defines):
 // for each light, Ka⊙Ia + Kd⊙Id·max(N·L, 0) (which the texture multiplies) and
 // Ks⊙Is·max(N·H, 0)^n (specular only where N·L > 0). Positions are eye-relative.
 precision highp float;
@@ -15,7 +15,7 @@ uniform vec3 uKd;
 uniform vec3 uKs;
 uniform float uShininess;
 // V = normalize(xyz − w·relPos): (0, 0, 0, 1) for a perspective eye (towards the eye), or
-// (towards the viewer, 0) for an orthographic one, whose view vector is constant (SPEC §10).
+// (towards the viewer, 0) for an orthographic one, whose view vector is constant (docs/interaction.md#orthographic-projection).
 uniform vec4 uViewVector;
 
 vec3 viewVector(vec3 relPos) {

@@ -1,4 +1,4 @@
-// Rough glass (SPEC §14), put into glass.frag for its ROUGH variant: R̃ and B̃ gathered as
+// Rough glass (docs/rough-glass.md#the-gather), put into glass.frag for its ROUGH variant: R̃ and B̃ gathered as
 // frame/rough-glass.ts says ("scatter as gather"), the same steps as software/rough-gather.ts.
 // At the glass point P: the lobe's 2×2 map A = M·J from microfacet slope to texels of an image
 // (M: texels per radian of the eye ray's turn along e1, e2; J: the ray's turn per unit slope),
@@ -180,7 +180,7 @@ vec4 roughGather(sampler2D image, sampler2D codes, vec4 sizes, vec4 J, bool clam
         if (!(part > 1e-6)) continue;
         float g = 1.0;
         if (layer == 0) g = roughScale(cu / cover);
-        // A ray turned toward the background must still leave on the far side (SPEC §14 drops
+        // A ray turned toward the background must still leave on the far side (docs/rough-glass.md#the-gather drops
         // the rest): at grazing incidence much of the lobe would go beyond the horizon.
         else if (!roughLeaves(q + delta, size)) continue;
         if (ring >= 0 && g > ROUGH_FARTHER * gq) {

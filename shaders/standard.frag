@@ -38,7 +38,7 @@ vec3 tex(vec2 uv) {
   return texture(uTexture, uImageTexture > 0.5 ? vec2(uv.x, 1.0 - uv.y) : uv).rgb;
 }
 
-/** Seed 001's mappings (one per variant), formula for formula as src/scene/mapping.ts writes them. */
+/** The texture mappings (one per variant, docs/scene-model.md#texture-mappings), formula for formula as src/scene/mapping.ts writes them. */
 vec3 surfaceTexture() {
 #if defined(MAPPING_UV)
   return tex(vUv);

@@ -1,4 +1,4 @@
-// Linear light on the GPU (SPEC §13, issue 20): decoding colour data, the one encode at the end,
+// Linear light on the GPU (docs/colour.md#srgb): decoding colour data, the one encode at the end,
 // the targets that hold linear colour, and the anisotropic reads that come with it.
 // Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
 const COLOR = 'tests/e2e/color-space.spec.ts';

@@ -78,7 +78,7 @@ export default [
     edits: [{ file: 'shaders/glass.frag', find: 'float f = fresnel(c);', replace: 'float f = 0.0;' }],
     tests: [PASSES],
   },
-  // A face in the glass plane (issue 21): the glass covers what lies on it or beyond it.
+  // A face in the glass plane: the glass covers what lies on it or beyond it.
   {
     name: 'G1 WebGL: objects on the glass or beyond it not pushed back (a face in its plane wins the depth test)',
     edits: [{ file: 'src/render/passes/draw-objects.ts', find: 'gl.polygonOffset(0, 2);', replace: 'gl.polygonOffset(0, 0);' }],

@@ -1,4 +1,4 @@
-// What the core leaves out and loads when a scene asks (issue 22): camera-src's two chunks (the
+// What the core leaves out and loads when a scene asks (docs/package.md#chunks): camera-src's two chunks (the
 // element's camera-source, the renderer's course-projection), the group rotation, the debug
 // views, the orthographic projection, the children's gatherer, the failure messages and image
 // textures, and how frames wait for them.

@@ -1,4 +1,4 @@
-// Material and attribute precedence (SPEC §9, §11): attribute over MTL over lighting file over
+// Material and attribute precedence (docs/scene-model.md#material-precedence, docs/course-files.md#lighting-file): attribute over MTL over lighting file over
 // default, for <glass-object>; a <glass-light>'s attributes over its lighting file.
 // Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
 const LOADING = 'tests/e2e/children-loading.spec.ts';

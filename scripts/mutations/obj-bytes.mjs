@@ -1,4 +1,4 @@
-// The OBJ parser over bytes (issue 22): byte-scanner.ts's numbers, line ends, continuations and
+// The OBJ parser over bytes: byte-scanner.ts's numbers, line ends, continuations and
 // decoded names, and parseObjBytes's BOM. Each is caught by the comparison with the text parser
 // (obj-bytes.test.ts) or by the million tokens against parseFloat (obj-bytes-numbers.test.ts).
 // B14 on: the speed line's fast paths (plain lines, the weld by position, the line end added

@@ -6,7 +6,7 @@ const PIXELS = 'tests/unit/reference-pixels.test.ts';
 const ANY = 'tests/unit/reference-any-scene.test.ts';
 const SRGB = 'tests/unit/reference-srgb.test.ts';
 const METRICS = 'tests/unit/reference-metrics.test.ts';
-// The rough-glass reference and the microfacet maths it shares with the renderers (SPEC §14).
+// The rough-glass reference and the microfacet maths it shares with the renderers (docs/rough-glass.md#reference-monte-carlo).
 const ROUGH = ['tests/unit/reference-rough.test.ts', 'tests/unit/ggx.test.ts'];
 const unit = (name) => `tests/unit/${name}.test.ts`;
 

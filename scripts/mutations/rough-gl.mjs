@@ -1,4 +1,4 @@
-// Rough glass in the WebGL renderer (SPEC §14): the gather of shaders/rough-glass.glsl and the
+// Rough glass in the WebGL renderer (docs/rough-glass.md#the-gather): the gather of shaders/rough-glass.glsl and the
 // mip-mapped images render/rough-targets.ts draws for it, in a chunk loaded when a frame first
 // asks for roughness (render/rough-loader.ts, element/webgl-backend.ts).
 // Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.

@@ -1,4 +1,4 @@
-// Rough glass (SPEC §14) in the software renderer: the gather of R̃ and B̃ (software/rough-gather.ts).
+// Rough glass (docs/rough-glass.md#the-gather) in the software renderer: the gather of R̃ and B̃ (software/rough-gather.ts).
 // Each: { name, edits: [{ file, find, replace }], tests }.
 const ROUGH = 'tests/unit/software-rough.test.ts';
 

@@ -1,4 +1,4 @@
-// THE attribute table: name, type, default, range and fallback of every attribute (SPEC §2).
+// THE attribute table: name, type, default, range and fallback of every attribute (docs/element.md#attribute-table).
 // Parsing, property reflection, README and fuzz tests all read it; nothing here throws.
 import { FRESNEL_MODELS, type FresnelModel } from '../math/fresnel';
 import { COLOR_SPACES, type ColorSpace } from '../math/srgb';
@@ -17,11 +17,11 @@ export const PROJECTIONS: readonly Projection[] = ['perspective', 'orthographic'
 export type Vec3Tuple = [number, number, number];
 
 export const RENDERERS = ['auto', 'webgl', 'software'] as const;
-/** SPEC §11: `auto` = WebGL2 where it is available, else the software renderer. */
+/** docs/element.md#attribute-table: `auto` = WebGL2 where it is available, else the software renderer. */
 export type RendererChoice = (typeof RENDERERS)[number];
 
 export const CONTROLS_MODES = ['flyby', 'orbit', 'trackball'] as const;
-/** Which input the element listens to (SPEC §10); the bare `controls` attribute means flyby. */
+/** Which input the element listens to (docs/interaction.md#controls); the bare `controls` attribute means flyby. */
 export type ControlsMode = (typeof CONTROLS_MODES)[number];
 export type YawPitch = [number, number];
 
@@ -34,7 +34,7 @@ export interface SceneAttributes {
   cameraPosition: Vec3Tuple;
   cameraRotation: YawPitch;
   fov: number;
-  /** Perspective, or orthographic sized at the target or glass centre (SPEC §10). */
+  /** Perspective, or orthographic sized at the target or glass centre (docs/interaction.md#orthographic-size). */
   projection: Projection;
   /** The input mode, or null without the attribute (no input). */
   controls: ControlsMode | null;
@@ -42,7 +42,7 @@ export interface SceneAttributes {
   renderer: RendererChoice;
   /** The point the camera looks at (overriding camera-rotation) and orbit turns about, or null. */
   cameraTarget: Vec3Tuple | null;
-  /** URL of a course camera file (SPEC §11); while its camera is in force it is the view. */
+  /** URL of a course camera file (docs/course-files.md#camera-cfg); while its camera is in force it is the view. */
   cameraSrc: string | null;
   spin: number;
   /** Fixed scene clock in seconds, or null for the live clock. */
@@ -59,9 +59,9 @@ export interface SceneAttributes {
   pixelRatio: number | 'auto';
   /** Storage of the reflection framebuffer. */
   reflectionFormat: 'rgba8' | 'rgba16f';
-  /** Linear light with sRGB in and out, or values used as stored (SPEC §13). */
+  /** Linear light with sRGB in and out, or values used as stored (docs/colour.md#srgb). */
   colorSpace: ColorSpace;
-  /** The glass's roughness, 0..1 (SPEC §14): 0 polished. */
+  /** The glass's roughness, 0..1 (docs/rough-glass.md#roughness): 0 polished. */
   roughness: number;
   /** How many neighbours rough glass gathers per pixel (frame/rough-glass.ts). */
   roughnessQuality: RoughnessQuality;
@@ -94,8 +94,8 @@ export interface AttributeSpec<K extends AttributeName = AttributeName> {
 /**
  * Default view: the glass at grazing incidence (it passes 0.2 in front of the plane, where the
  * exact Fresnel term climbs towards 1), the cube's reflection standing beside the cube, the
- * whole sphere through the glass. From the seed's 2.5 the reflection can only be seen at
- * θ ≤ 72° (F ≤ 0.19): hence also the default cube-distance of 0.75 (SPEC §2).
+ * whole sphere through the glass. From the first design's 2.5 the reflection can only be seen at
+ * θ ≤ 72° (F ≤ 0.19): hence also the default cube-distance of 0.75 (docs/element.md#the-default-view).
  */
 export const DEFAULT_CAMERA_POSITION: Vec3Tuple = [3.6, 2.4, 0.2];
 export const DEFAULT_CAMERA_ROTATION: YawPitch = [-169, -23.6];
@@ -211,7 +211,7 @@ const clampCoords = (xs: number[]): Parsed<number[]> => {
   return c.some((x, i) => x !== xs[i]) ? { value: c, problem: `coordinates clamped to ±${MAX_COORD}` } : { value: c };
 };
 
-/** "rgb(25.5 25.5 25.5)": exactly the 0.1 grey of SPEC §3. */
+/** "rgb(25.5 25.5 25.5)": exactly the 0.1 grey of docs/default-scene.md#background. */
 export const DEFAULT_BACKGROUND = 'rgb(25.5 25.5 25.5)';
 
 export const ATTRIBUTES: readonly AttributeSpec[] = [

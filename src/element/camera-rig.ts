@@ -1,4 +1,4 @@
-// The camera and the trackball (SPEC §10, §11): the pose the camera attributes give, the course
+// The camera and the trackball (docs/interaction.md#trackball, docs/course-files.md#the-course-camera): the pose the camera attributes give, the course
 // camera of `camera-src`, and the input that moves them — the flyby keys and mouse, orbit and
 // trackball pointers, the write-back at a gesture's end (controls/controls-input.ts, a chunk
 // loaded when `controls` first asks). Fills the camera's part of each frame's state; no GL.
@@ -37,7 +37,7 @@ export class CameraRig implements Controller {
   /** The camera's pose: the camera attributes', moved by the flyby and orbit. */
   readonly pose: CameraPose = { position: [0, 0, 0], yaw: -90, pitch: 0 };
   /**
-   * `camera-src`: the course camera, when one is in force (SPEC §11). Its reader is a lazy part
+   * `camera-src`: the course camera, when one is in force (docs/course-files.md#camera-cfg). Its reader is a lazy part
    * (element/parts.ts, CAMERA_SOURCE); null until it is in.
    */
   private source: CameraSource | null = null;
@@ -182,7 +182,7 @@ export class CameraRig implements Controller {
     source.checkLooksAway(scene, s.time, s.turn ?? null);
   }
 
-  /** With `camera-target`, the camera looks at it (SPEC §2): yaw and pitch from position → target. */
+  /** With `camera-target`, the camera looks at it (docs/element.md#attribute-table): yaw and pitch from position → target. */
   private aimAtTarget(): void {
     const t = this.host.values.cameraTarget;
     if (!t) return;

@@ -1,4 +1,4 @@
-// `camera-src` (SPEC §2, §11): the course's camera file for the scene element, a chunk of its own
+// `camera-src` (docs/element.md#attribute-table, docs/course-files.md#camera-cfg): the course's camera file for the scene element, a chunk of its own
 // (CameraRig loads it the first time camera-src is set). Each file is loaded once per
 // URL per page like a model; while one is in force it is the view (camera-position, -rotation,
 // -target, fov, projection and the camera controls wait until camera-src is removed). A file
@@ -94,7 +94,7 @@ export class CameraSource implements Controller {
   }
 
   /**
-   * A camera that looks away from everything (SPEC §11: vader.cfg, maca.cfg) is drawn as the
+   * A camera that looks away from everything (docs/course-files.md#cameras-that-look-away: vader.cfg, maca.cfg) is drawn as the
    * course's programs drew it, with one warning per camera. Checked when camera or scene change
    * (with the trackball's turn of that moment).
    */

@@ -1,6 +1,6 @@
-// The scene value from the scene element's attributes and its children's parts (SPEC §9):
+// The scene value from the scene element's attributes and its children's parts (docs/scene-model.md#children):
 // children's objects replace the default cube and sphere, children's lights the default light,
-// and with neither it is SPEC §3's default scene exactly. Pure: no DOM.
+// and with neither it is the default scene exactly (docs/default-scene.md). Pure: no DOM.
 import { defaultScene } from '../scene/default-scene';
 import type { Glass, Light, Scene, SceneObject } from '../scene/scene';
 import type { SceneAttributes } from './attributes';
@@ -31,7 +31,7 @@ export function composeScene(v: SceneInputs, parts: ChildParts): Scene {
 
 /**
  * True when something in the scene turns by the clock (an object with a spin): only then do
- * frames come without a change (SPEC §7). `spin` turns the default cube alone, so a scene of
+ * frames come without a change (docs/knobs.md#idle-elements). `spin` turns the default cube alone, so a scene of
  * children, which has no such cube, is still once its models are drawn.
  */
 export function sceneSpins(scene: Scene): boolean {

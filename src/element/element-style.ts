@@ -1,5 +1,5 @@
 // The shadow root's styles: a constructable sheet (allowed under a strict CSP), <style> as fallback.
-// The page scrolls through the element unless a controls mode takes the fingers (SPEC §10):
+// The page scrolls through the element unless a controls mode takes the fingers (docs/interaction.md#touch-and-keys):
 // touch-action none with [controls]. Written compact: this text ships as it is.
 const CSS = `:host{display:inline-block;position:relative;width:300px;height:150px;contain:content}
 :host([hidden]){display:none}

@@ -1,4 +1,4 @@
-// What the element's message part says for each failure (SPEC §2), in a chunk of its own that
+// What the element's message part says for each failure (docs/element.md#failure-behaviour), in a chunk of its own that
 // Failure fetches when something fails: a page that draws never loads it.
 import type { ErrorType } from './types';
 

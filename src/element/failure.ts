@@ -1,4 +1,4 @@
-// Why the element cannot draw (SPEC §2): shown in its `message` part, fired as `error`. A missing
+// Why the element cannot draw (docs/element.md#failure-behaviour): shown in its `message` part, fired as `error`. A missing
 // WebGL2 hides the canvas; a lost context waits for the context to come back; a shader that
 // failed waits for a change that may select a variant that compiles. The message part's texts are
 // a lazy part (FAILURE_MESSAGES, element/parts.ts): a page that never fails never loads them.

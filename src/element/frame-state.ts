@@ -1,4 +1,4 @@
-// Each frame's state (FrameState, SPEC §2's inputs of a frame) from the parsed attributes, filled
+// Each frame's state (FrameState, the inputs of a frame, docs/element.md#attribute-table) from the parsed attributes, filled
 // in place so a frame allocates none; the camera's part is the CameraRig's. Also keeps a copy of
 // the last state drawn, which capture(pass) draws a pass of.
 import type { FrameState } from '../render/types';

@@ -30,8 +30,8 @@ export interface GlassPlaneScene extends SceneAttributes {}
 
 /**
  * A plane of dark glass that reflects the viewer's side and lets through what is behind it,
- * with Fresnel (SPEC §1–§3); `<glass-object>` and `<glass-light>` children replace the default
- * objects and light (SPEC §9). Every attribute is also a camelCase property.
+ * with Fresnel (docs/element.md, docs/default-scene.md); `<glass-object>` and `<glass-light>` children replace the default
+ * objects and light (docs/scene-model.md#children). Every attribute is also a camelCase property.
  *
  * @tagname glass-plane-scene
  * @attr {number} [transparency=0.5] - T in the glass equation, 0..1; 1 = clear glass
@@ -213,8 +213,8 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
   }
 
   /**
-   * The scene as one value (SPEC §9): the glass and background from the attributes, the
-   * children's objects and lights, or SPEC §3's defaults where there are none, turned by the
+   * The scene as one value (docs/scene-model.md#one-scene-value): the glass and background from the attributes, the
+   * children's objects and lights, or the default scene's (docs/default-scene.md) where there are none, turned by the
    * trackball. Read-only; a new value after every change (the same object until then). A turn
    * set without `controls` shows in it from the next `frame` on (its code is fetched first).
    */
@@ -306,7 +306,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     // (structuredClone) is what it replaces.
     const { time, width, height, drawCalls, passes } = report;
     const detail: FrameReport = Object.freeze({ frame: this.frames, time, width, height, drawCalls, passes });
-    // `ready` waits for the models of the children: loaded or failed (SPEC §2).
+    // `ready` waits for the models of the children: loaded or failed (docs/element.md#events).
     if (!this.readyFired && !this.source.loading && !this.rig.loading && !this.parts.loading) {
       this.readyFired = true;
       this.dispatchEvent(new CustomEvent('ready', { detail }));

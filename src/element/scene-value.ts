@@ -1,4 +1,4 @@
-// The scene value (SPEC §9) the renderers draw: built from the attributes that shape it and the
+// The scene value (docs/scene-model.md#one-scene-value) the renderers draw: built from the attributes that shape it and the
 // children's parts when one of them changes, and kept until then. The trackball's turn is not in
 // it: the turn travels in each frame's state (FrameState.turn), so a turn or a camera move builds
 // nothing and the frame loop allocates no scene while things move. The page's `scene` is the

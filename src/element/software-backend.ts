@@ -1,4 +1,4 @@
-// Frames drawn by the CPU renderer (SPEC §11), in its worker while the page goes on; one at a time
+// Frames drawn by the CPU renderer (docs/software-renderer.md#worker), in its worker while the page goes on; one at a time
 // (a change while it draws is drawn next). The pixels reach the canvas in one piece when the
 // frame is complete: by a 2D context, or by a bitmap renderer when WebGL had the canvas first.
 import { passesFor, type ReadbackSource } from '../render/renderer';

@@ -1,4 +1,4 @@
-// The element's side of the software renderer (SPEC §11): frames drawn in workers, so the page
+// The element's side of the software renderer (docs/software-renderer.md#worker): frames drawn in workers, so the page
 // stays responsive, and on the main thread where no worker can start (a strict CSP without
 // worker-src, a failed worker script). The renderer's code is a chunk of its own, fetched only
 // when a page uses it. One frame in flight at a time; the element asks again when it is back.

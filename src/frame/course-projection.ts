@@ -1,4 +1,4 @@
-// The course camera's projection (SPEC §11) for FrameSetup: a part of its own, loaded only by a
+// The course camera's projection (docs/course-files.md#the-course-camera) for FrameSetup: a part of its own, loaded only by a
 // renderer whose frames have a course camera (`camera-src`), with what it needs — the course's
 // maths and the scene's depth range (a walk over every vertex, kept while nothing it reads moves).
 import { courseViewProjection, type CourseCamera } from '../math/course-camera';

@@ -1,6 +1,6 @@
 // Per-frame matrices, composed in float64 on the CPU and stored as float32 for upload.
 // Positions are relative to the eye (camera-relative rendering) so far cameras keep precision.
-// Reads the scene value (SPEC §9): any number of objects, any glass placement, up to 4 lights.
+// Reads the scene value (docs/scene-model.md#one-scene-value): any number of objects, any glass placement, up to 4 lights.
 import { mat3, mat4 } from 'gl-matrix';
 import { forwardFromYawPitch, projectionMatrix, rotationOnlyView, viewerSide } from '../math/camera';
 import { eyeRelativePlane, MIRROR_CONTACT, reflectPoint, reflectionMatrix, signedDistance } from '../math/mirror';
@@ -53,7 +53,7 @@ export class FrameSetup {
    * in perspective, the side the view direction comes from in orthographic (viewerSide).
    */
   side = 1;
-  /** Whether this frame's projection is orthographic (SPEC §10). */
+  /** Whether this frame's projection is orthographic (docs/interaction.md#orthographic-projection). */
   orthographic = false;
   /** Orthographic half-height in world units (orthoHalfHeight); 0 in perspective. */
   halfHeight = 0;
@@ -76,7 +76,7 @@ export class FrameSetup {
   hasGlass = true;
   /**
    * True when the projection mirrors the picture (a course camera with one negative half-size,
-   * or looking away from everything, SPEC §11): a triangle counter-clockwise as seen from the
+   * or looking away from everything, docs/course-files.md#cameras-that-look-away): a triangle counter-clockwise as seen from the
    * eye is clockwise on screen, so whoever culls back faces swaps its front face.
    */
   mirrorsWinding = false;
@@ -175,7 +175,7 @@ export class FrameSetup {
    * perspective one), the orthographic half-height and each eye's view vector.
    */
   private viewAndProjection(s: FrameState, scene: Scene, forward: Float64Array, course: CourseCamera | null): void {
-    // Same near and far for both projections (SPEC §2): the orthographic eye is a point on the
+    // Same near and far for both projections (docs/default-scene.md#the-camera): the orthographic eye is a point on the
     // view plane's centre like the perspective one, and draws depths near..far ahead of it.
     const aspect = s.width / Math.max(1, s.height);
     this.mirrorsWinding = false;

@@ -1,4 +1,4 @@
-// The orthographic projection (SPEC §10) for FrameSetup: a part of its own (issue 22), loaded
+// The orthographic projection (docs/interaction.md#orthographic-projection) for FrameSetup: a part of its own (docs/package.md#chunks), loaded
 // only by a renderer whose frames ask for `projection="orthographic"` (the software renderer's
 // chunk has it always). Without it FrameSetup draws in perspective; the element holds such a
 // frame until it is in (Renderer.load).

@@ -1,4 +1,4 @@
-// Rough glass (SPEC §14) as both renderers approximate it: R̃ and B̃ at a glass pixel gathered
+// Rough glass (docs/rough-glass.md#the-gather) as both renderers approximate it: R̃ and B̃ at a glass pixel gathered
 // from the sharp reflection (and the frame beyond the glass) around the pixel, each neighbour
 // weighted by the share of the pixel's GGX lobe that lands on it at that neighbour's own distance
 // from the glass ("scatter as gather"). The neighbours lie on rings doubling in radius, each ring

@@ -1,4 +1,4 @@
-// Is a frame's glass rough (SPEC §14)? Roughness absent, 0 or not a number: polished, and every
+// Is a frame's glass rough (docs/rough-glass.md#roughness-zero)? Roughness absent, 0 or not a number: polished, and every
 // renderer draws today's glass exactly. Kept apart from rough-glass.ts, whose numbers only rough
 // frames load.
 import type { FrameState } from './types';

@@ -4,7 +4,7 @@ import type { FrameState } from './types';
 import { focalPixels, orthoPixelsPerUnit } from './reflection-lod';
 
 /**
- * Silhouette error 'auto' aims for, in pixels. Half a pixel (SPEC §5's bound) left the
+ * Silhouette error 'auto' aims for, in pixels. Half a pixel (the first bound tried, docs/knobs.md#level-of-detail) left the
  * interpolated shading visibly coarse: in the bench, auto at 0.5 px scored 0.6 dB below 32
  * fixed segments at the same cost; a quarter pixel closes that gap.
  */

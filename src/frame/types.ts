@@ -37,12 +37,12 @@ export interface FrameState {
   /** Storage of the reflection: 8-bit, or half float (where the context can render to it). */
   reflectionFormat: ReflectionFormat;
   /**
-   * SPEC §13: `srgb` decodes colour data (images, the procedural texture, the background), mixes
+   * docs/colour.md#srgb: `srgb` decodes colour data (images, the procedural texture, the background), mixes
    * light linearly and encodes the image once; `none` uses every value as stored.
    */
   colorSpace: ColorSpace;
   /**
-   * SPEC §14: the glass's roughness, 0..1 (GGX α = roughness²); absent or 0: polished, today's
+   * docs/rough-glass.md#ggx-microfacets: the glass's roughness, 0..1 (GGX α = roughness²); absent or 0: polished, today's
    * glass exactly.
    */
   roughness?: number;
@@ -53,19 +53,19 @@ export interface FrameState {
    * reflection read at this one mip level over the whole glass, what is behind it left sharp.
    */
   fixedBlurLevel?: number;
-  /** Absent: perspective. Orthographic keeps the reflection (SPEC §10). */
+  /** Absent: perspective. Orthographic keeps the reflection (docs/interaction.md#orthographic-projection). */
   projection?: Projection;
   /** The camera target, if any: only the orthographic size reads it (depth of this point). */
   target?: readonly [number, number, number] | null;
   /**
-   * A course camera (SPEC §11, `camera-src`): when set it is the view, in place of
+   * A course camera (docs/course-files.md#camera-cfg, `camera-src`): when set it is the view, in place of
    * cameraPosition/yaw/pitch/fov/projection; near and far come from the scene's geometry.
    * The element then sets cameraPosition to C and fov to 2·atan(|hy/d|), which only the
    * level-of-detail choices (sphere segments, reflection meshes) read.
    */
   courseCamera?: CourseCamera | null;
   /**
-   * The trackball's turn of the objects and the first light (SPEC §10), applied as the frame is
+   * The trackball's turn of the objects and the first light (docs/interaction.md#trackball), applied as the frame is
    * set up. It travels here, not in the scene value, so a turn rebuilds nothing. Absent or
    * identity: the scene as it is.
    */

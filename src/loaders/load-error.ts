@@ -6,7 +6,7 @@ export interface LoadWarning {
   message: string;
 }
 
-/** What the element puts in its `error` event's detail (SPEC §9 "Loading"). */
+/** What the element puts in its `error` event's detail (docs/scene-model.md#loading). */
 export interface LoadErrorDetail {
   type: 'load';
   url: string;

@@ -1,4 +1,4 @@
-// The MTL loader (SPEC §9): material values and texture paths by material name. Pure, like
+// The MTL loader (docs/scene-model.md#obj-and-mtl): material values and texture paths by material name. Pure, like
 // the OBJ loader; a value the file does not give is left out, so attributes and defaults
 // can take precedence over what is missing.
 import { isNumberToken } from './number-token';

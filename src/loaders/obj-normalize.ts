@@ -1,8 +1,8 @@
-// seed 001's "standardize", apart from the parser so the element can use it without loading it.
+// `normalize` (docs/scene-model.md#glass-object), apart from the parser so the element can use it without loading it.
 import type { ObjResult } from './obj/types';
 
 /**
- * Centres the bounds on the origin and scales the longest side to 2 (seed 001's "standardize").
+ * Centres the bounds on the origin and scales the longest side to 2 (the `normalize` attribute).
  * Returns a new result; only positions and bounds change (normals survive a uniform scale).
  */
 export function normalizeObj(result: ObjResult): ObjResult {

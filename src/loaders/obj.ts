@@ -1,4 +1,4 @@
-// The OBJ loader (SPEC §9): text or bytes in, typed arrays out. Pure — no DOM, no GL — so the
+// The OBJ loader (docs/scene-model.md#obj-and-mtl): text or bytes in, typed arrays out. Pure — no DOM, no GL — so the
 // worker, the main thread and the tests all call this same function.
 import { asUint8, bomOf, decodeText, type Bytes } from './decode-text';
 import { LoadError } from './load-error';

@@ -1,4 +1,4 @@
-// Tells the model formats apart by content (SPEC §9: "sniffed from the content, not only the
+// Tells the model formats apart by content (docs/scene-model.md#loading: "sniffed from the content, not only the
 // extension"), from the first few KB: an OBJ, a course .byu, or something that is no model.
 import { decodeText, type Bytes } from './decode-text';
 

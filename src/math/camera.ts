@@ -1,4 +1,4 @@
-// Flyby camera pose → forward vector, view and projection matrices (float64, SPEC §3, §10).
+// Flyby camera pose → forward vector, view and projection matrices (float64, docs/default-scene.md#the-camera, docs/interaction.md#flyby).
 // Shared by the reference (reference/view-camera.ts: the view basis, the projections' scale,
 // orthoHalfHeight; sample-tracer.ts: viewerSide) and both renderers (frame/frame-setup.ts): tied
 // down by tests/unit/camera.test.ts and orthographic.test.ts with values worked out by hand
@@ -8,7 +8,7 @@ import { mat4 } from 'gl-matrix';
 import type { ReadonlyVec3 } from 'gl-matrix';
 import { signedDistance, type Plane } from './mirror';
 
-/** Near and far planes of every projection (SPEC §3); scene/default-scene.ts re-exports them. */
+/** Near and far planes of every projection (docs/default-scene.md#the-camera); scene/default-scene.ts re-exports them. */
 export const CAMERA = { near: 0.1, far: 100 } as const;
 
 export const PITCH_LIMIT = 89.9;

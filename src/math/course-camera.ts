@@ -1,4 +1,4 @@
-// The course's camera (SPEC §11, seed 002): its basis, its pixel projection exactly as the
+// The course's camera (docs/course-files.md#the-course-camera): its basis, its pixel projection exactly as the
 // course's programs compute it, and the same projection as a 4×4 matrix for a GPU.
 // courseBasis makes the camera that both renderers and the reference take, and courseDepthRange
 // gives all three their near and far (through scene/course-depth.ts): tied down by

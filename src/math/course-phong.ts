@@ -1,6 +1,6 @@
-// The course's Phong equation (SPEC §11, seed 002), on the 0..255 scale of its files.
+// The course's Phong equation (docs/course-files.md#course-phong), on the 0..255 scale of its files.
 // Not shared with the renderers or the reference: none calls it (the element turns the course's
-// light and material into SPEC §9's Blinn-Phong, element/children/course-lighting.ts). Tied down
+// light and material into the scene's Blinn-Phong (docs/scene-model.md#lights), element/children/course-lighting.ts). Tied down
 // by tests/unit/course-lighting.test.ts's values worked out by hand.
 import type { Vec3 } from './course-camera';
 

@@ -1,4 +1,4 @@
-// Fresnel reflectance models of SPEC §4; the GLSL in shaders/glass.frag mirrors these.
+// Fresnel reflectance models of docs/rendering.md#fresnel-models; the GLSL in shaders/glass.frag mirrors these.
 // Shared by the float64 reference (reference/shade.ts) and the software renderer
 // (software/glass-shader.ts), so comparing those two cannot see a fault here: tied down by
 // tests/unit/fresnel.test.ts's hand-computed values (normal incidence, Brewster's angle, 45°,
@@ -27,7 +27,7 @@ export function fresnelSchlick(cosTheta: number, ior: number): number {
   return r0 + (1 - r0) * (1 - clamp01(cosTheta)) ** 5;
 }
 
-/** Seed 000's term, verbatim: (1 − cosθ)^3 (ignores ior). */
+/** The original prototype's term, verbatim: (1 − cosθ)^3 (ignores ior). */
 export function fresnelClassic(cosTheta: number): number {
   return (1 - clamp01(cosTheta)) ** 3;
 }

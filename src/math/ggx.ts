@@ -1,4 +1,4 @@
-// Rough glass (SPEC §14): GGX microfacet normals and the directions a view ray takes off one —
+// Rough glass (docs/rough-glass.md#ggx-microfacets): GGX microfacet normals and the directions a view ray takes off one —
 // reflected about it, or refracted through it into thin glass and out of a smooth face parallel
 // to the plane. Shared by the float64 reference and the renderers' approximations: tied down by
 // tests/unit/ggx.test.ts (the sampled density against D(m)·cosθm integrated by quadrature,
@@ -7,7 +7,7 @@
 type Out3 = Float64Array | number[];
 type In3 = ArrayLike<number>;
 
-/** α = roughness², clamped to [0, 1]: the GGX width of SPEC §14. */
+/** α = roughness², clamped to [0, 1]: the GGX width of docs/rough-glass.md#ggx-microfacets. */
 export function ggxAlpha(roughness: number): number {
   const r = roughness > 0 ? (roughness < 1 ? roughness : 1) : 0;
   return r * r;
@@ -69,7 +69,7 @@ function refract(out: Out3, d: In3, nf: In3, eta: number): boolean {
 }
 
 /**
- * SPEC §14's transmission direction through thin rough glass: the unit view direction `d`
+ * The transmission direction through thin rough glass (docs/rough-glass.md#transmission): the unit view direction `d`
  * refracted into the glass (index `ior`) through the microfacet normal `m`, then out again
  * through a smooth face parallel to the plane (unit normal `n`, both on the viewer's side).
  * Returns false when the sample is lost: `m` faces away from `d` (d·m ≥ 0, the facet is not

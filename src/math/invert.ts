@@ -1,7 +1,7 @@
 // The inverse of a 4×4 matrix (column-major, float64), for rough glass: the gather unprojects its
 // neighbours by the inverse of the eye-relative view-projection. Written here rather than taken
 // from gl-matrix's mat4 module, whose functions all sit in the core's copy of that module as soon
-// as any chunk uses one (issue 22): the core has no use for an inverse.
+// as any chunk uses one: the core has no use for an inverse (docs/package.md#chunks).
 
 /**
  * out = m⁻¹ by Laplace expansion over the 2×2 minors of the top two and bottom two rows

@@ -1,4 +1,4 @@
-// The orthographic camera's size and projection (SPEC §10), shared by the float64 reference
+// The orthographic camera's size and projection (docs/interaction.md#orthographic-projection), shared by the float64 reference
 // (reference/view-camera.ts) and the renderers' orthographic part (frame/orthographic-view.ts,
 // a chunk loaded by frames that ask for it): tied down by tests/unit/orthographic.test.ts with
 // sizes and clip coordinates worked out by hand.
@@ -18,14 +18,14 @@ export interface OrthoView {
 }
 
 /**
- * Smallest depth the orthographic size is taken at: the near distance (SPEC §3), the nearest
+ * Smallest depth the orthographic size is taken at: the near distance (docs/default-scene.md#the-camera), the nearest
  * slice the perspective view draws. A target at or behind the eye would otherwise give a
  * zero or negative size (a singular projection).
  */
 export const MIN_ORTHO_DEPTH = CAMERA.near;
 
 /**
- * Half-height of the orthographic view (SPEC §10): depth·tan(fov/2), the depth of the target
+ * Half-height of the orthographic view (docs/interaction.md#orthographic-size): depth·tan(fov/2), the depth of the target
  * (or else the glass centre, or else the origin) measured along the view direction, so the
  * orthographic view keeps there the size the perspective view had.
  */

@@ -1,4 +1,4 @@
-// The sRGB transfer curve of SPEC §13 (IEC 61966-2-1, piecewise: not a 2.2 power), and the
+// The sRGB transfer curve of docs/colour.md#the-transfer-curve (IEC 61966-2-1, piecewise: not a 2.2 power), and the
 // colour space a frame is drawn in. shaders/encode.frag and the texture formats of the GL path
 // mirror it. Shared by the float64 reference and the software renderer, so comparing those two
 // cannot see a fault here: tied down by tests/unit/srgb.test.ts's published values (8-bit

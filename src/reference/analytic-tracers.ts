@@ -87,7 +87,7 @@ export class BoxTracer implements ObjectTracer {
   }
 }
 
-/** Sphere of `radius` about the object origin (an ellipsoid under non-uniform scale), SPEC §3's UVs. */
+/** Sphere of `radius` about the object origin (an ellipsoid under non-uniform scale), with the default sphere's UVs (docs/default-scene.md#texture-coordinates). */
 export class SphereTracer implements ObjectTracer {
   private readonly o = new Float64Array(3);
   private readonly d = new Float64Array(3);
@@ -125,7 +125,7 @@ export class SphereTracer implements ObjectTracer {
     if (frame.unitScale) frame.gradientToWorld(hit.n, nq);
     else frame.normalToWorld(hit.n, nq);
     hit.ng[0] = hit.n[0]; hit.ng[1] = hit.n[1]; hit.ng[2] = hit.n[2];
-    // SPEC §3: u = ½ + atan2(n.x, n.z)/2π, v = acos(−n.y)/π on the object-space normal.
+    // docs/default-scene.md#texture-coordinates: u = ½ + atan2(n.x, n.z)/2π, v = acos(−n.y)/π on the object-space normal.
     hit.u = 0.5 + Math.atan2(nq[0], nq[2]) / TWO_PI;
     hit.v = Math.acos(Math.max(-1, Math.min(1, -nq[1]))) / Math.PI;
     // ∂u/∂q and ∂v/∂q along the surface; singular at the poles (bounded by the sampler's cap).

@@ -5,7 +5,7 @@ import type { Ray } from './ray';
 import type { SurfaceHit } from './surface-hit';
 
 /**
- * The view depths kept: SPEC §3's near and far, or a course camera's (SPEC §11, from the
+ * The view depths kept: the near and far of docs/default-scene.md#the-camera, or a course camera's (docs/course-files.md#near-and-far, from the
  * scene's geometry). Set by the sample tracer before it traces (one image at a time).
  */
 export const clipRange = { near: CAMERA.near as number, far: CAMERA.far as number };

@@ -11,9 +11,9 @@ export interface ChannelTexture {
 }
 
 /**
- * An image as three bilinear channels. OBJ convention (SPEC §9): v = 0 is the bottom row of
+ * An image as three bilinear channels. OBJ convention (docs/scene-model.md#image-textures): v = 0 is the bottom row of
  * the image, so texture row j (v = (j + ½)/H) is image row H − 1 − j. Texels are decoded to
- * linear light with `srgb` (SPEC §13: an image is colour data), used as stored with `none`.
+ * linear light with `srgb` (docs/colour.md#srgb: an image is colour data), used as stored with `none`.
  * Null when the pixels do not match the size (the caller falls back to the procedural texture).
  */
 export function imageTexture(image: DecodedImage, colorSpace: ColorSpace): ChannelTexture | null {

@@ -26,7 +26,7 @@ export function bvhOf(mesh: MeshData): Bvh {
 /**
  * Nearest triangle in the kept interval, both faces (user meshes are not back-face culled).
  * Normals and UVs are interpolated with the barycentric weights; the shading normal is then
- * turned towards the viewer (two-sided lighting, SPEC §9): it faces against the ray.
+ * turned towards the viewer (two-sided lighting, docs/scene-model.md#two-sided-lighting): it faces against the ray.
  */
 export class MeshTracer implements ObjectTracer {
   private readonly bvh: Bvh;

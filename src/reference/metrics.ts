@@ -5,7 +5,7 @@ import type { ReferenceImage } from './reference-renderer';
 /**
  * 'all' and the region map's classes (glass, objects, background, edges: each pixel in one), plus
  * 'dark' across them (a dark pixel counts in its own class too): pixels whose reference is
- * below DARK_LEVEL in every channel, where colour held linearly in 8 bits would band (SPEC §13).
+ * below DARK_LEVEL in every channel, where colour held linearly in 8 bits would band (docs/colour.md#eight-bit-targets).
  */
 export type RegionName = 'all' | 'glass' | 'objects' | 'background' | 'edges' | 'dark';
 export const REGION_NAMES: readonly RegionName[] = ['all', 'glass', 'objects', 'background', 'edges', 'dark'];

@@ -1,4 +1,4 @@
-// SPEC §14's Monte Carlo over microfacet normals: per pixel, M pairs (ξ1, ξ2) stratified in each
+// The Monte Carlo over microfacet normals (docs/rough-glass.md#reference-monte-carlo): per pixel, M pairs (ξ1, ξ2) stratified in each
 // dimension (N-rooks: one sample in each of M strata of ξ1 and of ξ2, paired by a shuffle and
 // jittered inside its stratum), from a hash of the pixel, so every frame is the same frame.
 

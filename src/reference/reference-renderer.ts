@@ -30,7 +30,7 @@ export interface ReferenceOptions {
    */
   images?: ReadonlyMap<string, DecodedImage>;
   /**
-   * Rough glass (SPEC §14): microfacet normals per pixel for its Monte Carlo, rounded up to a
+   * Rough glass (docs/rough-glass.md#reference-monte-carlo): microfacet normals per pixel for its Monte Carlo, rounded up to a
    * whole number per sample (each sample averages its share). Default 256. Unused when the
    * state's roughness is 0.
    */
@@ -38,7 +38,7 @@ export interface ReferenceOptions {
 }
 
 /**
- * SPEC §14's default. Measured on issue 21's floor scene (cube on the glass, sphere 1.5 above,
+ * The default of docs/rough-glass.md#reference-monte-carlo. Measured on the bench's rough floor (cube on the glass, sphere 1.5 above,
  * ior 10, 160×90, 4×4 samples per pixel), glass PSNR of the reference against itself at 4096:
  * roughness 0.3: 56.8 dB at 256, 57.6 at 512; roughness 0.6: 54.2 and 55.8 (at 64: 51.4 and
  * 46.3). Its noise then sits ≥ 54 dB down, so doubling it moves a renderer's figure under
@@ -56,7 +56,7 @@ export interface ReferenceImage {
   rgba: Uint8ClampedArray;
   /**
    * RGB in 0..1, float64, top row first: the reference itself, before quantisation. What the
-   * page shows: sRGB-encoded with colorSpace 'srgb' (SPEC §13; the fresnel view excepted), as
+   * page shows: sRGB-encoded with colorSpace 'srgb' (docs/colour.md#debug-views; the fresnel view excepted), as
    * computed with 'none'.
    */
   rgb: Float64Array;
@@ -73,11 +73,11 @@ export interface ReferenceImage {
   keys: Int32Array;
   /** The surface codes the keys are written in: which object each code names (renderScene sets it). */
   codes?: SurfaceCodes;
-  /** Microfacet normals averaged per pixel for rough glass (SPEC §14); 0 when the glass is polished. */
+  /** Microfacet normals averaged per pixel for rough glass (docs/rough-glass.md#reference-monte-carlo); 0 when the glass is polished. */
   microfacetSamples?: number;
 }
 
-/** renderScene of SPEC §3's default scene with the cube at `state.cubeDistance`, turning at `state.spin`. */
+/** renderScene of the default scene (docs/default-scene.md) with the cube at `state.cubeDistance`, turning at `state.spin`. */
 export function renderReference(state: ReferenceState, options: ReferenceOptions = {}): ReferenceImage {
   return renderScene(defaultScene(state.cubeDistance, state.spin), state, options);
 }
@@ -96,7 +96,7 @@ export function renderScene(scene: Scene, state: ViewState, options: ReferenceOp
   const width = Math.max(0, Math.floor(state.width));
   const height = Math.max(0, Math.floor(state.height));
   const tracer = new SampleTracer(scene, state, textureFilter, options.images);
-  // SPEC §14: each sample takes `perSample` of the pixel's stratified microfacet normals.
+  // docs/rough-glass.md#reference-monte-carlo: each sample takes `perSample` of the pixel's stratified microfacet normals.
   const rough = (state.roughness ?? 0) > 0;
   const perSample = rough ? Math.max(1, Math.ceil((options.microfacetSamples ?? DEFAULT_MICROFACET_SAMPLES) / (n * n))) : 0;
   const facets = rough ? new MicrofacetSamples(perSample * n * n) : null;
@@ -108,7 +108,7 @@ export function renderScene(scene: Scene, state: ViewState, options: ReferenceOp
   const mixed = new Uint8Array(width * height);
   const colour = new Float64Array(3);
   const sum = new Float64Array(3);
-  // SPEC §13: samples are linear light with srgb, averaged as light, then encoded once; the
+  // docs/colour.md#srgb: samples are linear light with srgb, averaged as light, then encoded once; the
   // fresnel view shows its number F unencoded.
   const encode = state.colorSpace === 'srgb' && state.view !== 'fresnel';
   // NDC size of one stratum; NDC y points up while rows go down (the camera accounts for it).

@@ -12,5 +12,5 @@ export type ViewState = Pick<
   | 'projection' | 'target' | 'courseCamera' | 'colorSpace' | 'roughness'
 >;
 
-/** A view of the default scene (SPEC §3): the view plus the cube's distance and spin. */
+/** A view of the default scene (docs/default-scene.md): the view plus the cube's distance and spin. */
 export type ReferenceState = ViewState & Pick<FrameState, 'spin' | 'cubeDistance'>;

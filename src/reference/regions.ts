@@ -11,7 +11,7 @@ export const REGION_EDGE = 4;
 
 export type Region = 0 | 1 | 2 | 3 | 4;
 
-/** The default scene's codes (SurfaceCodes of SPEC §3's scene): cube faces 1..6, sphere 7, glass 8. */
+/** The default scene's codes (SurfaceCodes of the default scene, docs/default-scene.md): cube faces 1..6, sphere 7, glass 8. */
 const SURFACE_SPHERE = 7;
 const SURFACE_GLASS = 8;
 const isCube = (surface: number): boolean => surface >= 1 && surface <= 6;

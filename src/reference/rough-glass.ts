@@ -1,4 +1,4 @@
-// SPEC §14 in the reference: at a glass hit, R̃ and B̃ as means over the sample's microfacet
+// docs/rough-glass.md#reference-monte-carlo in the reference: at a glass hit, R̃ and B̃ as means over the sample's microfacet
 // normals of what arrives at P along each reflected and each transmitted direction.
 import { ggxNormal, reflectAbout, refractThin } from '../math/ggx';
 import type { Plane } from '../math/mirror';

@@ -42,7 +42,7 @@ export const MAX_LAYERS = 16;
  * Order of transparency: an object of opacity α < 1 gives colour·α + behind·(1 − α), behind =
  * the colour along the same ray past it (the next surface: another object, the glass, or the
  * background), each step clamped as an 8-bit target holds it — the sorted back-to-front blend
- * of SPEC §11's formula, whatever the draw order. The glass takes part in that order too: a
+ * of the formula of docs/software-renderer.md#transparency, whatever the draw order. The glass takes part in that order too: a
  * transparent object in front of the glass is blended over the glass's result.
  */
 export class SampleTracer {
@@ -67,7 +67,7 @@ export class SampleTracer {
   private reflected = SURFACE_NONE;
   /** The scene's background in the frame's colour space: a CSS colour, decoded to linear light with srgb. */
   private readonly backgroundColour = new Float64Array(3);
-  /** SPEC §14: the glass's GGX α (0: polished, the smooth path exactly). */
+  /** docs/rough-glass.md#ggx-microfacets: the glass's GGX α (0: polished, the smooth path exactly). */
   private readonly alpha: number;
   /**
    * The microfacet normals of the current sample: (xi1[i], xi2[i]) for i in [first, first +
@@ -80,7 +80,7 @@ export class SampleTracer {
     scene: Scene, private readonly view: ViewState, filter: TextureFilter,
     images?: ReadonlyMap<string, DecodedImage>,
   ) {
-    // A course camera's near and far come from the scene (SPEC §11), as in the frame setup.
+    // A course camera's near and far come from the scene (docs/course-files.md#near-and-far), as in the frame setup.
     const range = view.courseCamera ? courseSceneRange(view.courseCamera, scene, view.time) : null;
     setClipRange(range?.near ?? CAMERA.near, range?.far ?? CAMERA.far);
     this.camera = new ViewCamera(view, scene.glass?.center ?? null, range);
@@ -102,8 +102,8 @@ export class SampleTracer {
   }
 
   /**
-   * Colour (0..1 per channel, clamped as the 8-bit target holds it; linear light with srgb, SPEC
-   * §13, encoded once per pixel by the renderer) of the sample at NDC
+   * Colour (0..1 per channel, clamped as the 8-bit target holds it; linear light with srgb,
+   * docs/colour.md#srgb, encoded once per pixel by the renderer) of the sample at NDC
    * (x, y) whose footprint is fx × fy NDC units, into `out`; returns its key.
    */
   sample(x: number, y: number, fx: number, fy: number, out: Float64Array): number {

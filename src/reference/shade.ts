@@ -1,4 +1,4 @@
-// Per-sample shading in float64: Blinn-Phong for the objects (SPEC §3, §9) and the glass equation (SPEC §4).
+// Per-sample shading in float64: Blinn-Phong for the objects (docs/default-scene.md#material-and-lighting, docs/scene-model.md#lights) and the glass equation (docs/rendering.md#the-glass-equation).
 import { fresnel, type FresnelModel } from '../math/fresnel';
 import { GLASS_BODY as BODY } from '../scene/default-scene';
 import type { Light, Material } from '../scene/scene';
@@ -31,10 +31,10 @@ const sums = new Float64Array(9);
 /**
  * out = Σ over lights of Ka⊙tex⊙Ia + Kd⊙tex⊙Id·max(N·L, 0) + (N·L > 0 ? Ks⊙Is·max(N·H, 0)^n : 0),
  * unclamped, with V = normalize(eye − p), H = normalize(L + V), L the unit vector towards a
- * directional light or normalize(P − p) for a point light (no distance attenuation: SPEC §9
+ * directional light or normalize(P − p) for a point light (no distance attenuation: docs/scene-model.md#lights
  * names none): the GPU's per-fragment (phong) shading. `eye` is the real eye for direct views
  * and the mirrored eye for what the glass reflects; `towardsViewer`, when given, is V instead
- * (an orthographic camera's constant view vector, SPEC §10). Where Ka = Kd (SPEC §3's objects) the sum
+ * (an orthographic camera's constant view vector, docs/interaction.md#orthographic-projection). Where Ka = Kd (the default objects, docs/default-scene.md#material-and-lighting) the sum
  * is formed as Kd⊙tex⊙(ΣIa + ΣId·max): the same value with fewer roundings.
  */
 export function shadeObject(
@@ -92,7 +92,7 @@ export function glassFresnel(model: FresnelModel, ior: number, hit: SurfaceHit, 
 }
 
 /**
- * The glass over what is behind it, SPEC §4, given R (reflection) and B (behind) already
+ * The glass over what is behind it, docs/rendering.md#the-glass-equation, given R (reflection) and B (behind) already
  * clamped as the GPU's 8-bit targets hold them and the glass texture value `tex`:
  * exact/schlick: out = F·R + (1 − F)(T·B + (1 − T)·D);
  * classic: a = (1 − T)(0.2 + 0.8F), out = mix(D, R, F)·a + B·(1 − a).

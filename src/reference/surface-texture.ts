@@ -115,7 +115,7 @@ export class SurfaceTexture {
     }
   }
 
-  /** The procedural grey at the glass's own UV (SPEC §3: the glass is textured too). */
+  /** The procedural grey at the glass's own UV (docs/default-scene.md#texture-coordinates: the glass is textured too). */
   glassTexture(hit: SurfaceHit, ray: Ray): number {
     return this.sample(this.procedural, hit.u, hit.v, hit.gu, hit.gv, hit, ray, this.part)[0];
   }

@@ -7,7 +7,7 @@ import { SRGB_BYTE_TO_LINEAR, type ColorSpace } from '../math/srgb';
 const AS_STORED: Float64Array = Float64Array.from({ length: 256 }, (_, b) => b / 255);
 
 /**
- * What a stored 8-bit level means in `colorSpace` (SPEC §13), by level: linear light decoded
+ * What a stored 8-bit level means in `colorSpace` (docs/colour.md#srgb), by level: linear light decoded
  * from sRGB, or b / 255 as stored. Texels are looked up here before any filtering, so bilinear
  * and box filtering sum light, not encoded numbers.
  */
@@ -15,7 +15,7 @@ export function byteLevels(colorSpace: ColorSpace): Float64Array {
   return colorSpace === 'srgb' ? SRGB_BYTE_TO_LINEAR : AS_STORED;
 }
 
-/** The procedural texture's grey levels (SPEC §3: 200/255, 100/255 and noise are encoded levels). */
+/** The procedural texture's grey levels (docs/default-scene.md#the-procedural-texture: 200/255, 100/255 and noise are encoded levels). */
 export function proceduralGrey(colorSpace: ColorSpace): Float64Array {
   const rgba = proceduralTexture();
   const levels = byteLevels(colorSpace);
@@ -26,7 +26,7 @@ export function proceduralGrey(colorSpace: ColorSpace): Float64Array {
 
 /**
  * The texture is the bilinear reconstruction of its W×H texels (what GL LINEAR shows when
- * magnified), repeating; by default the 512×512 procedural texture of SPEC §3. Coordinates
+ * magnified), repeating; by default the 512×512 procedural texture of docs/default-scene.md#the-procedural-texture. Coordinates
  * here are "texel-centre space": σ = u·W − ½, τ = v·H − ½, so texel (i, j) sits at (i, j) and
  * each unit cell [i, i+1]×[j, j+1] holds one bilinear patch a + b·x + c·y + d·xy of its four
  * corner texels. Row j = 0 is the first row uploaded (v = 0).

@@ -1,6 +1,6 @@
 // The GPU camera as rays: pixel (px, py), top row first, → a ray through NDC with its differentials.
 // Perspective: rays from the eye through the view plane; orthographic: parallel rays along forward
-// from origins spread over the view rectangle (SPEC §10).
+// from origins spread over the view rectangle (docs/interaction.md#orthographic-size).
 import { projectionMatrix, rotationOnlyView } from '../math/camera';
 import { orthoHalfHeight, orthographicMatrix } from '../math/orthographic';
 import type { ReadonlyVec3 } from 'gl-matrix';
@@ -36,7 +36,7 @@ export class ViewCamera {
   constructor(state: ViewState, glassCenter: ReadonlyVec3 | null = null, courseRange: CourseDepthRange | null = null) {
     const cam = state.courseCamera;
     if (cam) {
-      // The course's projection (SPEC §11): NDC (x, y) = ((d/hx)·x/z, (d/hy)·y/z) along
+      // The course's projection (docs/course-files.md#the-course-camera): NDC (x, y) = ((d/hx)·x/z, (d/hy)·y/z) along
       // N + x·(hx/d)·U + y·(hy/d)·V, t = z. Looking away (`behind`), the same NDC along the
       // opposite direction, t = −z: the nearest to the eye wins, as the GPU's depth says.
       const s = courseRange?.behind ? -1 : 1;

@@ -1,5 +1,5 @@
-// The debug views of `debug-view` (SPEC §2): the reflection pass alone, F as grey, and the four
-// passes in quadrants. A chunk of its own (issue 22), fetched by Renderer.load the first time a
+// The debug views of `debug-view` (docs/element.md#debug-views): the reflection pass alone, F as grey, and the four
+// passes in quadrants. A chunk of its own (docs/package.md#chunks), fetched by Renderer.load the first time a
 // frame asks for one of them; the final image and the `scene` view (which capture draws) are
 // the core's. The software renderer draws its own.
 import blitFrag from '../../shaders/blit.frag?raw';
@@ -45,7 +45,7 @@ export function drawDebugView(f: DebugViewFrame, view: Exclude<RenderView, 'fina
   return tiles(f, framebuffer, full.width, full.height);
 }
 
-/** F as grey: the scene for depth, then the glass writing F (SPEC §13: a number, unencoded). */
+/** F as grey: the scene for depth, then the glass writing F (docs/colour.md#debug-views: a number, unencoded). */
 function fresnel(f: DebugViewFrame, framebuffer: WebGLFramebuffer | null, vp: Viewport): number {
   beginTarget(f.gl, framebuffer, vp, BLACK);
   return scenePass(f.ctx, true) + glassPass(f.ctx, f.reflectionColor(), true);

@@ -1,4 +1,4 @@
-// SPEC §13 on the GPU: a frame in linear light is drawn into an SRGB8_ALPHA8 target (multisampled
+// docs/colour.md#eight-bit-targets on the GPU: a frame in linear light is drawn into an SRGB8_ALPHA8 target (multisampled
 // when asked), where the GPU blends and resolves linear values and holds them encoded, so the
 // darks do not band; shaders/encode.frag then encodes it once into its destination. Used only
 // with `color-space="srgb"`; `none` draws straight into the destination as before.

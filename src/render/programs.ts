@@ -1,4 +1,4 @@
-// Shader variants, compiled on first use only (SPEC §7), keyed by their #define header.
+// Shader variants, compiled on first use only (docs/knobs.md#shader-variants), keyed by their #define header.
 import standardVert from '../../shaders/standard.vert?raw';
 import standardFrag from '../../shaders/standard.frag?raw';
 import glassVert from '../../shaders/glass.vert?raw';
@@ -14,9 +14,9 @@ import type { SharedResources } from './gl/shared-resources';
 
 export type ClipMode = 'none' | 'clip-distance' | 'discard';
 
-/** What an object's draw needs beyond clip and shading; each a #define (SPEC §7: only what is in use). */
+/** What an object's draw needs beyond clip and shading; each a #define (docs/knobs.md#shader-variants: only what is in use). */
 export interface ObjectVariant {
-  /** Lit on the side facing the viewer (meshes from files, SPEC §9). */
+  /** Lit on the side facing the viewer (meshes from files, docs/scene-model.md#two-sided-lighting). */
   twoSided: boolean;
   /** 1..MAX_LIGHTS. */
   lights: number;
@@ -46,7 +46,7 @@ function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant): str
 const ROUGH_MARKER = /^ROUGH_GATHER_SOURCE$/m;
 
 /**
- * Rough glass's shader parts (SPEC §14). They live in rough glass's own chunk
+ * Rough glass's shader parts (docs/rough-glass.md#roughness). They live in rough glass's own chunk
  * (rough-glass-gl.ts), which the renderer loads the first time a frame's glass is rough.
  */
 export interface RoughSources {
@@ -115,7 +115,7 @@ export class ProgramCache {
     return this.rough;
   }
 
-  /** `rough`: SPEC §14's gather (the colour variant only; roughness 0 never asks for it). */
+  /** `rough`: rough glass's gather (docs/rough-glass.md#the-gather) (the colour variant only; roughness 0 never asks for it). */
   glass(model: FresnelModel, outputFresnel: boolean, rough = false): Program {
     const variants = (this.glasses[model] ??= {});
     if (rough && !outputFresnel) {
@@ -140,7 +140,7 @@ export class ProgramCache {
     return p;
   }
 
-  /** The frame's one sRGB encode (SPEC §13). */
+  /** The frame's one sRGB encode (docs/colour.md#the-transfer-curve). */
   encode(): Program {
     return this.fullScreen('encode', encodeFrag);
   }

@@ -65,12 +65,12 @@ export class Renderer implements DebugViewFrame {
   private glassMesh: Mesh;
   /** The glass frame `glassMesh` was built for. */
   private glassMeshFrame: GlassFrame | null = null;
-  /** SPEC §3's scene for callers that pass none (the bench, tests), rebuilt only when it changes. */
+  /** The default scene (docs/default-scene.md) for callers that pass none (the bench, tests), rebuilt only when it changes. */
   private readonly defaultScene = new DefaultSceneCache();
   /** Programs, the procedural texture and meshes, shared with every renderer on this context. */
   private readonly shared: SharedResources;
   private readonly textures: TextureCache;
-  /** The frame in linear light and its final encode (SPEC §13, `color-space="srgb"`). */
+  /** The frame in linear light and its final encode (docs/colour.md#the-transfer-curve, `color-space="srgb"`). */
   private readonly linearFrame: LinearFrame;
   /** The clear colour in the frame's colour space. */
   private readonly background = [0, 0, 0];
@@ -79,7 +79,7 @@ export class Renderer implements DebugViewFrame {
   /** Multisampled stand-ins, created only when `samples` > 0. */
   private reflectionMsaa: MultisampleTarget | null = null;
   private mainMsaa: MultisampleTarget | null = null;
-  /** Rough glass (SPEC §14): its chunk, once loaded, and its mip-mapped images. */
+  /** Rough glass (docs/rough-glass.md#the-gather): its chunk, once loaded, and its mip-mapped images. */
   private readonly rough: RoughGlass;
   private readonly maxSamples: number;
   /** Can the context render to RGBA16F (EXT_color_buffer_float)? */
@@ -105,7 +105,7 @@ export class Renderer implements DebugViewFrame {
   private readonly full: Viewport = { x: 0, y: 0, width: 0, height: 0 };
   /**
    * Skip the reflection and glass when the glass is not on screen, cull objects beyond the
-   * glass from the reflection, scissor it to the glass (SPEC §7). Off only to measure savings.
+   * glass from the reflection, scissor it to the glass (docs/knobs.md#reflection-skips). Off only to measure savings.
    */
   optimize = true;
   private readonly counts = {
@@ -243,7 +243,7 @@ export class Renderer implements DebugViewFrame {
   private prepare(state: FrameState): void {
     this.ctx.state = state;
     const scene = this.ctx.scene;
-    // SPEC §13: colour data (textures, the background) decoded in srgb; light is mixed linearly.
+    // docs/colour.md#srgb: colour data (textures, the background) decoded in srgb; light is mixed linearly.
     const srgb = state.colorSpace === 'srgb';
     this.textures.setColorSpace(srgb);
     for (let k = 0; k < 3; k++) this.background[k] = srgb ? srgbToLinear(scene.background[k]) : scene.background[k];
@@ -323,7 +323,7 @@ export class Renderer implements DebugViewFrame {
   private draw(state: FrameState, destination: WebGLFramebuffer | null): number {
     this.prepare(state);
     const samples = this.samplesFor(state);
-    // The fresnel view is a number, not a picture: drawn as stored in either space (SPEC §13).
+    // The fresnel view is a number, not a picture: drawn as stored in either space (docs/colour.md#debug-views).
     if (encodesAtEnd(state)) {
       const n = this.drawView(state, this.linearFrame.begin(state.width, state.height, samples));
       return n + this.linearFrame.end(destination);

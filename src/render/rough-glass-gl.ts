@@ -1,4 +1,4 @@
-// Rough glass in WebGL (SPEC §14) in a chunk of its own: its passes, targets and shaders load
+// Rough glass in WebGL (docs/rough-glass.md#roughness) in a chunk of its own: its passes, targets and shaders load
 // the first time a frame's glass is rough (Renderer.loadRough), so a polished scene never
 // downloads them.
 import gather from '../../shaders/rough-glass.glsl?raw';

@@ -1,4 +1,4 @@
-// Rough glass (SPEC §14) before the glass pass: the reflection, unscissored (the lobe reads
+// Rough glass (docs/rough-glass.md#roughness) before the glass pass: the reflection, unscissored (the lobe reads
 // beyond the glass's rectangle), and — when the glass lets light through — the frame beyond the
 // glass, each into a mip-mapped target whose alpha holds the coverage c (1 where a surface was
 // drawn) and whose codes hold c·u, u = h/(1 + h) frame/rough-glass.ts's distance code
@@ -114,7 +114,7 @@ export class RoughTargets implements RoughBinding {
     this.inputs.reflectionTextureHeight = reflection.textureHeight;
     this.inputs.reflectionCodes = reflection.codes;
 
-    // SPEC §4: exact and Schlick let through T; the classic blend 1 − (1 − T)(0.2 + 0.8F) > 0 always.
+    // docs/rendering.md#fresnel-models: exact and Schlick let through T; the classic blend 1 − (1 − T)(0.2 + 0.8F) > 0 always.
     this.inputs.transmission = this.inputs.transmissionCodes = null;
     if (state.transparency > 0 || state.fresnel === 'classic') {
       const format = state.colorSpace === 'srgb' ? 'srgb8' : 'rgba8';

@@ -1,6 +1,6 @@
-// The textures objects draw with: the procedural one of SPEC §3, and images by URL once their
+// The textures objects draw with: the procedural one of docs/default-scene.md#the-procedural-texture, and images by URL once their
 // owner (the element) has decoded them. An object whose image is not there yet, or failed,
-// draws with the procedural texture. Each is held in the frame's colour space (SPEC §13:
+// draws with the procedural texture. Each is held in the frame's colour space (docs/colour.md#srgb:
 // SRGB8_ALPHA8 for `srgb`, so the GPU filters linear light, anisotropically as the procedural
 // texture is read there), uploaded again only when the space
 // changes, and always before any pass: creating a texture binds it, which would unbind the one

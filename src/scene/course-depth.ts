@@ -1,4 +1,4 @@
-// Near and far for a course camera (SPEC §11), which the course's programs do not have: from the
+// Near and far for a course camera (docs/course-files.md#near-and-far), which the course's programs do not have: from the
 // scene's geometry, so that nothing in front of the camera is clipped. Shared by the frame setup
 // (WebGL and software renderers) and the float64 reference, so all three clip alike: tied down
 // by tests/unit/course-depth.test.ts's ranges worked out by hand (mirrored far, scaled sphere,
@@ -14,7 +14,7 @@ import type { Scene, SceneObject } from './scene';
 export interface CourseDepthRange {
   near: number;
   far: number;
-  /** Every point behind the eye (z < 0): the course's formula applied as it stands (SPEC §11). */
+  /** Every point behind the eye (z < 0): the course's formula applied as it stands (docs/course-files.md#cameras-that-look-away). */
   behind: boolean;
 }
 
@@ -25,7 +25,7 @@ const DEG = Math.PI / 180;
  * faces use, a box's corners, a sphere's nearest and farthest points along N, a Gaussian's
  * bounding box, the glass's corners. With a glass, `far` also covers those points mirrored
  * across it (the reflection pass draws them at their mirror images' depth). `turn`: the
- * trackball's turn of the objects (SPEC §10), when the scene value does not hold it already.
+ * trackball's turn of the objects (docs/interaction.md#trackball), when the scene value does not hold it already.
  */
 export function courseSceneRange(cam: CourseCamera, scene: Scene, time: number, turn: SceneTurn | null = null): CourseDepthRange {
   const points: number[] = [];

@@ -1,5 +1,5 @@
-// The normative numbers of SPEC §3, in one place: renderer, reference and tests read them here.
-// Shared by the reference and both renderers, so each number is tied to SPEC §3 by tests that
+// The normative numbers of docs/default-scene.md, in one place: renderer, reference and tests read them here.
+// Shared by the reference and both renderers, so each number is tied to docs/default-scene.md by tests that
 // write it out: reference-pixels.test.ts (albedos, light, Ka/Kd/Ks, shininess, tint, darkness,
 // background, positions), texture.test.ts (512), orthographic.test.ts and reference-scene.test.ts
 // (near, far).
@@ -46,12 +46,12 @@ export const LIGHT = {
 
 export const MATERIAL = { ks: 0.5, shininess: 32 } as const;
 
-/** Near and far (SPEC §3): defined with the camera maths, which needs them (math imports no scene). */
+/** Near and far (docs/default-scene.md#the-camera): defined with the camera maths, which needs them (math imports no scene). */
 export { CAMERA } from '../math/camera';
 
 export const TEXTURE_SIZE = 512;
 
-/** The material of SPEC §3's objects: Ka = Kd = albedo (⊙ tex), Ks = 0.5, shininess 32. */
+/** The material of the default objects (docs/default-scene.md#material-and-lighting): Ka = Kd = albedo (⊙ tex), Ks = 0.5, shininess 32. */
 export function defaultMaterial(albedo: Vec3): Material {
   const ks = MATERIAL.ks;
   return {
@@ -63,14 +63,14 @@ export function defaultMaterial(albedo: Vec3): Material {
 const NO_ROTATION: Vec3 = [0, 0, 0];
 const UNIT_SCALE: Vec3 = [1, 1, 1];
 
-/** The glass of SPEC §3 as a scene value. */
+/** The glass of docs/default-scene.md#the-glass as a scene value. */
 export const DEFAULT_GLASS: Glass = {
   center: [(GLASS.xMin + GLASS.xMax) / 2, (GLASS.yMin + GLASS.yMax) / 2, 0],
   normal: [GLASS.plane[0], GLASS.plane[1], GLASS.plane[2]],
   size: [GLASS.xMax - GLASS.xMin, GLASS.yMax - GLASS.yMin],
 };
 
-/** The light of SPEC §3 as a scene value. */
+/** The light of docs/default-scene.md#the-light as a scene value. */
 export const DEFAULT_LIGHT: Light = {
   kind: 'directional', vector: LIGHT.direction,
   ambient: [LIGHT.ambient, LIGHT.ambient, LIGHT.ambient],
@@ -79,7 +79,7 @@ export const DEFAULT_LIGHT: Light = {
 };
 
 /**
- * SPEC §3's scene as one value of the scene model: the cube at `cubeDistance` turning at
+ * The default scene as one value of the scene model (docs/scene-model.md#one-scene-value): the cube at `cubeDistance` turning at
  * `spin` rad/s, the sphere behind the glass, one directional light. With no children the
  * element renders exactly this.
  */
@@ -107,7 +107,7 @@ export function defaultScene(cubeDistance: number, spin: number): Scene {
 }
 
 /**
- * SPEC §3's scene for renderers called without one (the bench, tests): the same value while the
+ * The default scene for renderers called without one (the bench, tests): the same value while the
  * cube distance and spin stay, a new one when either changes.
  */
 export class DefaultSceneCache {

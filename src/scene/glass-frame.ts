@@ -1,4 +1,4 @@
-// The glass rectangle's frame: its plane and the axes its width and height run along (SPEC §2).
+// The glass rectangle's frame: its plane and the axes its width and height run along (docs/element.md#glass-placement).
 // Shared by the reference (reference/ray-scene.ts) and both renderers (frame/frame-setup.ts):
 // tied down by tests/unit/glass-frame.test.ts's frames worked out by hand (oblique and off the
 // origin, floor, ceiling) and geometry.test.ts's glass mesh.

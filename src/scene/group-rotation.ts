@@ -1,8 +1,8 @@
-// The trackball's rotation of the scene (SPEC §10): every object turned as a group about the
+// The trackball's rotation of the scene (docs/interaction.md#trackball): every object turned as a group about the
 // centre of their bounds, and the first light turned about the same centre. The page's `scene`
 // and the reference see it applied to the scene value as ordinary transforms (rotateScene); the
 // renderers get it with each frame (FrameState.turn, turn.ts) and compose it as one more matrix,
-// so a turn builds no new scene value. Pure math, in a chunk of its own (issue 22): the element
+// so a turn builds no new scene value. Pure math, in a chunk of its own (docs/package.md#chunks): the element
 // fetches it when a turn is first set, and the `controls` chunk brings it with the trackball.
 import type { quat, ReadonlyQuat } from 'gl-matrix';
 import type { Light, Scene, SceneObject, Vec3 } from './scene';
@@ -13,7 +13,7 @@ const DEG = Math.PI / 180;
 /**
  * out = a·b (Hamilton product, [x, y, z, w]): the rotation b, then a. Written here rather than
  * taken from gl-matrix's quat module, whose load-time helpers (rotationTo, setAxes) a bundler
- * cannot drop: the core stays without that module (issue 22).
+ * cannot drop: the core stays without that module.
  */
 function multiply(out: quat, a: ArrayLike<number>, b: ArrayLike<number>): quat {
   const ax = a[0], ay = a[1], az = a[2], aw = a[3], bx = b[0], by = b[1], bz = b[2], bw = b[3];

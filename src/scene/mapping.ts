@@ -1,4 +1,4 @@
-// Texture-coordinate mappings of seed 001, written once: object-space position and normal in, UV out.
+// Texture-coordinate mappings (docs/scene-model.md#texture-mappings), written once: object-space position and normal in, UV out.
 // The reference renderer calls these; the GPU shader mirrors them formula for formula.
 // Shared by the reference (reference/surface-texture.ts) and the software renderer
 // (software/object-shader.ts), the triplanar projections' axes and scale included (both take
@@ -45,7 +45,7 @@ export function cylindricalUV(out: Out, q: V3, bounds: Bounds): Out {
 }
 
 /**
- * Spherical: SPEC §3's sphere UV applied to the unit direction d = (q − c)/|q − c| from the
+ * Spherical: the default sphere's UV (docs/default-scene.md#texture-coordinates) applied to the unit direction d = (q − c)/|q − c| from the
  * bounds' centre c:
  *   u = ½ + atan2(d.x, d.z) / 2π,   v = acos(−d.y) / π   (v = 0 at the bottom pole)
  * A built-in sphere centred on the origin gets exactly its own UVs. At q = c, d = (0, 0, 0)

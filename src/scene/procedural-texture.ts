@@ -1,4 +1,4 @@
-// The seeded checker-plus-noise texture of SPEC §3 (never Math.random: frames are reproducible).
+// The seeded checker-plus-noise texture of docs/default-scene.md#the-procedural-texture (never Math.random: frames are reproducible).
 // Shared by the reference (reference/texture-sampler.ts) and both renderers
 // (software/mip-texture.ts, render/gl/shared-resources.ts): tied down by
 // tests/unit/texture.test.ts's texels worked out by hand and its BigInt re-implementation of the hash.

@@ -1,27 +1,27 @@
-// The scene model of SPEC §9: one plain value (no DOM, no GL) that every renderer and the
+// The scene model of docs/scene-model.md#one-scene-value: one plain value (no DOM, no GL) that every renderer and the
 // float64 reference read. The element builds it from its attributes and children; nothing
 // downstream knows what an object is called, only its geometry, transform and material.
 import type { MeshData } from './geometry/mesh-data';
 
 export type Vec3 = readonly [number, number, number];
 
-/** How texture coordinates are made (seed 001). */
+/** How texture coordinates are made (docs/scene-model.md#texture-mappings). */
 export type Mapping = 'uv' | 'triplanar' | 'cylindrical' | 'spherical';
 export const MAPPINGS: readonly Mapping[] = ['uv', 'triplanar', 'cylindrical', 'spherical'];
 
 /**
- * The seeded checker of SPEC §3, an image (by URL, decoded by whoever draws it), or none: a
- * plain material, tex = 1 (the course's `.byu` objects, SPEC §11).
+ * The seeded checker of docs/default-scene.md#the-procedural-texture, an image (by URL, decoded by whoever draws it), or none: a
+ * plain material, tex = 1 (the course's `.byu` objects, docs/course-files.md#mesh-byu).
  */
 export type TextureSource = { kind: 'procedural' } | { kind: 'image'; url: string } | { kind: 'none' };
 
-/** Blinn-Phong with seed 001's names; the texture multiplies Ka and Kd. */
+/** Blinn-Phong with the names Ka, Kd, Ks and shininess; the texture multiplies Ka and Kd. */
 export interface Material {
   ambient: Vec3;
   diffuse: Vec3;
   specular: Vec3;
   shininess: number;
-  /** 1 − kt; below 1 the object is blended over what lies behind it (SPEC §9, §11). */
+  /** 1 − kt; below 1 the object is blended over what lies behind it (docs/scene-model.md#glass-object, docs/software-renderer.md#transparency). */
   opacity: number;
   texture: TextureSource;
   mapping: Mapping;
@@ -33,7 +33,7 @@ export type Geometry =
   | { kind: 'box'; size: number }
   /** Sphere of `radius`, tessellated by whoever draws it (the GPU by its size on screen). */
   | { kind: 'sphere'; radius: number }
-  /** Seed 004's y = e^(−x²)·e^(−z²) on x, z ∈ [−2, 2], `resolution` × `resolution` vertices. */
+  /** The Gaussian y = e^(−x²)·e^(−z²) on x, z ∈ [−2, 2], `resolution` × `resolution` vertices. */
   | { kind: 'gaussian'; resolution: number }
   /** A loaded triangle mesh; `key` names its content (URL + options) for sharing. */
   | { kind: 'mesh'; key: string; data: MeshData };

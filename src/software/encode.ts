@@ -1,4 +1,4 @@
-// The resolve's sRGB encode (SPEC §13): round(encode(l)·255) for a linear value, the same byte as
+// The resolve's sRGB encode (docs/colour.md#the-transfer-curve): round(encode(l)·255) for a linear value, the same byte as
 // math/srgb.ts's linearToSrgbByte, by one table read and one comparison instead of its 8-step
 // search (8.4 ms of a 30 ms frame at 640×360 and 1 sample per pixel; this takes 2.4).
 // Also the resolve itself: n×n samples per pixel averaged (in linear light when encoding) to RGBA8.

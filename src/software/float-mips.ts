@@ -1,6 +1,6 @@
 // A mip chain of an RGBA Float32 buffer (colour in linear light, and rough glass's distance code
 // in the fourth channel), read trilinearly: what rough glass gathers its reflection and
-// transmission from (SPEC §14), as the GL path reads a mipmapped texture with textureLod.
+// transmission from (docs/rough-glass.md#transmission), as the GL path reads a mipmapped texture with textureLod.
 
 export class FloatMips {
   constructor(readonly channels = 4) {}

@@ -1,4 +1,4 @@
-// The glass's per-pixel F and texel kept from one frame to the next (issue 22). With the camera
+// The glass's per-pixel F and texel kept from one frame to the next (docs/software-renderer.md#frame-to-frame-caches). With the camera
 // and the glass still — the element spinning its objects — each glass pixel shades to the same
 // two doubles as in the frame before, bit for bit (the same vertices, snapped the same way, give
 // the same barycentrics), so they are read back instead of computed again: Fresnel and the

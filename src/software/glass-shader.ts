@@ -1,5 +1,5 @@
 // The glass rectangle on the CPU (shaders/glass.vert + glass.frag): its footprint (which pixels
-// the reflection pass must fill), the glass equation of SPEC §4 over what is behind it, or F.
+// the reflection pass must fill), the glass equation of docs/rendering.md#the-glass-equation over what is behind it, or F.
 import { fresnel, type FresnelModel } from '../math/fresnel';
 import { GLASS_BODY as BODY } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
@@ -28,7 +28,7 @@ export class GlassShader implements FragmentShader {
   ior = 1.5;
   transparency = 0.5;
   texture!: MipTexture;
-  /** Rough glass (SPEC §14): R̃ (and B̃ with `roughTransmission`) gathered once per pixel; null: polished. */
+  /** Rough glass (docs/rough-glass.md#the-gather): R̃ (and B̃ with `roughTransmission`) gathered once per pixel; null: polished. */
   rough: RoughGather | null = null;
   roughTransmission = false;
   private readonly rel = new Float64Array(3);
@@ -202,7 +202,7 @@ export class GlassShader implements FragmentShader {
     }
     const tex = this.tex[0], t = this.transparency, refl = this.reflection;
     if (this.model === 'classic') {
-      // Seed 000 verbatim: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha.
+      // Classic, the original prototype's glass verbatim: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha.
       const a = (1 - t) * (0.2 + 0.8 * f);
       for (let k = 0; k < 3; k++) {
         const d = tex * BODY[k], rk = Math.min(refl[o + k], 1);

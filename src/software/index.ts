@@ -1,4 +1,4 @@
-// The CPU renderer of SPEC §11: pure (no DOM, no GL), for a worker or Node.
+// The CPU renderer of docs/software-renderer.md: pure (no DOM, no GL), for a worker or Node.
 export { SoftwareRenderer, type SoftwareRendererOptions } from './software-renderer';
 export type { SoftwareTiming } from './object-shader';
 export { Rasterizer, type FragmentShader, type CullMode } from './raster';

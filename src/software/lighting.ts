@@ -1,4 +1,4 @@
-// Blinn-Phong of SPEC §9 for the CPU, term for term as shaders/lighting.glsl writes it: per
+// Blinn-Phong of docs/scene-model.md#lights for the CPU, term for term as shaders/lighting.glsl writes it: per
 // light Ka⊙Ia + Kd⊙Id·max(N·L, 0) into `a` (which the texture multiplies) and
 // Ks⊙Is·max(N·H, 0)^n into `s` where N·L > 0. Positions are relative to the eye drawn from.
 import { MAX_LIGHTS, type Material, type Scene } from '../scene/scene';
@@ -43,7 +43,7 @@ export class Lights {
  * The two light sums into out[0..2] (a) and out[3..5] (s), for g = [eye-relative point p, unit
  * normal n, unit view vector v towards the eye] (9 values in an array: doubles passed to a
  * call that is not inlined are boxed, once per pixel). `twoSided` turns n towards the viewer
- * first (meshes from files, SPEC §9).
+ * first (meshes from files, docs/scene-model.md#two-sided-lighting).
  */
 export function blinnPhong(lights: Lights, m: Material, twoSided: boolean, g: Float64Array, out: Float64Array): void {
   const px = g[0], py = g[1], pz = g[2], vx = g[6], vy = g[7], vz = g[8];

@@ -1,6 +1,6 @@
 // A texture as the GPU samples it, in float: a 2×2-box mip chain, REPEAT, trilinear
 // (LINEAR_MIPMAP_LINEAR) with the isotropic LOD of the GL spec, from UV derivatives per pixel.
-// With `srgb` (SPEC §13) the 8-bit texels are decoded to linear light before the chain is built,
+// With `srgb` (docs/colour.md#srgb) the 8-bit texels are decoded to linear light before the chain is built,
 // as an SRGB8_ALPHA8 texture is on the GPU: mips and filtering then average light; and reads are
 // anisotropic, as the WebGL renderer's srgb textures are (EXT_texture_filter_anisotropic, up to
 // 16 taps): closer to the mean over each pixel's footprint that the reference takes than one
@@ -139,7 +139,7 @@ const AS_STORED = Float64Array.from({ length: 256 }, (_, b) => b / 255);
 
 const procedural: { srgb?: MipTexture; none?: MipTexture } = {};
 
-/** SPEC §3's checker-plus-noise, grey, built once per colour space and shared (read-only). */
+/** The checker-plus-noise (docs/default-scene.md#the-procedural-texture), grey, built once per colour space and shared (read-only). */
 export function proceduralMipTexture(space: ColorSpace): MipTexture {
   const built = procedural[space];
   if (built) return built;
@@ -151,7 +151,7 @@ export function proceduralMipTexture(space: ColorSpace): MipTexture {
 }
 
 /**
- * A decoded image (RGBA8, top row first) as RGB with OBJ's convention (SPEC §9): v = 0 is the
+ * A decoded image (RGBA8, top row first) as RGB with OBJ's convention (docs/scene-model.md#image-textures): v = 0 is the
  * image's bottom row, so texture row j is image row H − 1 − j (what the GL path gets by reading
  * at (u, 1 − v)). Its bytes are decoded to linear light with `srgb`. Null when the pixels do not
  * match the size.

@@ -1,7 +1,7 @@
-// An opaque object's shaded colour per pixel kept from one frame to the next (issue 22). Drawn
+// An opaque object's shaded colour per pixel kept from one frame to the next (docs/software-renderer.md#frame-to-frame-caches). Drawn
 // exactly as in the last frame — the same mesh, matrices, eye, clip plane, lights, material,
 // texture and grid — an object shades each of its pixels to the same colour, bit for bit (the
-// same vertices give the same clipped triangles and barycentrics): SPEC §3's sphere while the cube
+// same vertices give the same clipped triangles and barycentrics): the default scene's sphere while the cube
 // turns. One cache per target grid (the scene's, the reflection's); an entry is read back only by
 // the draw and the triangle that wrote it, in a later frame with that draw's key unchanged. A draw
 // whose key changed since the last frame neither reads nor keeps entries (the turning cube pays

@@ -76,7 +76,7 @@ export class ObjectShader implements FragmentShader {
   private draw!: ObjectDraw;
   private readonly sums = new Float64Array(6);
   /**
-   * Rough glass (SPEC §14): per sample, the distance code h/(1 + h) of the opaque surface drawn
+   * Rough glass (docs/rough-glass.md#the-gather): per sample, the distance code h/(1 + h) of the opaque surface drawn
    * there (frame/rough-glass.ts), h its distance from the plane `codePlane` (positive on the side
    * the pass draws); null: not kept.
    */
@@ -281,7 +281,7 @@ export class ObjectShader implements FragmentShader {
       c[o] = this.cr; c[o + 1] = this.cg; c[o + 2] = this.cb;
       if (this.codes !== null) this.codes[sample] = this.code;
     } else {
-      // colour·(1 − kt) + framebuffer·kt (SPEC §11), kt = 1 − opacity.
+      // colour·(1 − kt) + framebuffer·kt (docs/software-renderer.md#transparency), kt = 1 − opacity.
       const a = alpha > 0 ? alpha : 0;
       c[o] = this.cr * a + c[o] * (1 - a);
       c[o + 1] = this.cg * a + c[o + 1] * (1 - a);

@@ -1,4 +1,4 @@
-// Rough glass on the CPU (SPEC §14), as shaders/glass.frag gathers it (frame/rough-glass.ts has
+// Rough glass on the CPU (docs/rough-glass.md#the-gather), as shaders/glass.frag gathers it (frame/rough-glass.ts has
 // the method and its numbers): R̃ or B̃ at a glass pixel is a weighted mean of the sharp image
 // (the reflection, or the frame beyond the glass) on rings around the pixel, each neighbour
 // weighted by the share of the pixel's GGX lobe that reaches it at that neighbour's own distance
@@ -182,7 +182,7 @@ export class RoughGather {
           let gs: number;
           if (layer === 0) gs = this.scaleOf(t[4] / cover, c, L);
           else {
-            // A ray turned toward the background must still leave on the far side (SPEC §14
+            // A ray turned toward the background must still leave on the far side (docs/rough-glass.md#the-gather
             // drops the rest): at grazing incidence much of the lobe would go beyond the horizon
             // (a long floor at roughness 0.3: 39.2 dB with the test, 36.2 without). On the bench
             // floor it measures the other way (roughness 0.5: 40.6 with, 42.5 without), which

@@ -1,6 +1,6 @@
-// SPEC §11's CPU renderer: the GL path's passes and equations (reflection into a second frame
+// The CPU renderer (docs/software-renderer.md): the GL path's passes and equations (reflection into a second frame
 // buffer, scene, glass) without DOM or GL, for a worker; RGBA8 out, top row first. In 'srgb'
-// (SPEC §13) textures and background are decoded, the Float32 buffers sum linear light and the
+// (docs/colour.md#srgb) textures and background are decoded, the Float32 buffers sum linear light and the
 // resolve encodes once; 'none' uses every value as stored.
 import { isRough } from '../frame/roughness';
 import { eyeRelativePlane } from '../math/mirror';
@@ -88,7 +88,7 @@ export class SoftwareRenderer {
   private readonly defaultScene = new DefaultSceneCache();
   /** Shaded samples per pixel along an axis (supersampling's n; 1 when multisampled). */
   private pixelScale = 1;
-  /** Rough glass (SPEC §14). */
+  /** Rough glass (docs/rough-glass.md#roughness). */
   private readonly rough = new RoughGather();
   private readonly roughBuffers = new RoughBuffers();
   private readonly forward = new Float64Array(3);
@@ -112,7 +112,7 @@ export class SoftwareRenderer {
   }
 
   /**
-   * Draws `state.view` of `scene` (SPEC §3's default scene when absent) and returns its pixels:
+   * Draws `state.view` of `scene` (the default scene, docs/default-scene.md, when absent) and returns its pixels:
    * RGBA8, top row first. The array is the renderer's own and is overwritten by the next call.
    * `images`: decoded pixels of the scene's image textures by URL (RGBA8, top row first); a
    * material whose image is missing draws with the procedural texture.
@@ -192,14 +192,14 @@ export class SoftwareRenderer {
         }
         this.drawObjects(this.main, state, scene, images, false, 'transparent', 'eye');
     }
-    // F is a number, shown unencoded in either space (SPEC §13); every other view is a picture.
+    // F is a number, shown unencoded in either space (docs/colour.md#debug-views); every other view is a picture.
     const out = this.output.subarray(4 * top * width, 4 * bottom * width);
     resolveSamples(out, source.subarray(3 * this.from, 3 * this.to), width, bottom - top, n, encodesAtEnd(state));
     return this.output;
   }
 
   /**
-   * The glass passes when rough (SPEC §14): the frame beyond the glass alone (when T > 0) and
+   * The glass passes when rough (docs/rough-glass.md#roughness): the frame beyond the glass alone (when T > 0) and
    * the whole reflection, each with its distance codes and mips, then the scene and the glass
    * gathering R̃ and B̃ from them (rough-gather.ts).
    */
@@ -354,7 +354,7 @@ export class SoftwareRenderer {
       const o: SceneObject = objects[i];
       if (selection === 'opaque' && o.material.opacity < 1) continue;
       const m = s.objects[i];
-      // Culling, not selection (SPEC §4): bounds wholly beyond the glass cannot be reflected.
+      // Culling, not selection (docs/rendering.md#what-is-skipped): bounds wholly beyond the glass cannot be reflected.
       if (mirrored && m.viewerDistance <= -m.radius) continue;
       d.mesh = this.meshes.get(o.geometry, state, m.center, m.radius, s.halfHeight, this.pixelScale);
       d.model = m.model;

@@ -1,4 +1,4 @@
-// The software renderer's worker (SPEC §11): draws each requested frame, or its band of rows when
+// The software renderer's worker (docs/software-renderer.md#worker): draws each requested frame, or its band of rows when
 // the frame is split across workers, off the main thread and sends the pixels back (transferred,
 // not copied). Meshes and images arrive once and are kept.
 /// <reference lib="webworker" />

@@ -1,4 +1,4 @@
-// Issue 6: the element is focusable, has a role and an accessible name from `alt` (as <img> and
+// The element is focusable, has a role and an accessible name from `alt` (as <img> and
 // <model-viewer> do), the flyby works from the keyboard alone, and prefers-reduced-motion stops
 // the cube's spin unless `spin` is set explicitly.
 import { test, expect, mount, openPage, capture, type SceneElement } from './fixtures';

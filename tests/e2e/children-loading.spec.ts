@@ -1,4 +1,4 @@
-// Issue 9 §3 (loading): <glass-object src> fetches with progress, sniffs, parses (in a worker
+// Loading (docs/scene-model.md#loading): <glass-object src> fetches with progress, sniffs, parses (in a worker
 // for big files), applies its MTL, and reports load / error; a changed src aborts the old load;
 // one fetch per URL; `ready` waits for the models present at connection.
 import fs from 'node:fs';
@@ -61,7 +61,7 @@ test('a model: progress, then load; its MTL materials, one part per material, at
   expect(n.objects[0].bounds.center.map((x) => Math.abs(x) < 1e-6)).toEqual([true, true, true]);
 });
 
-// SPEC §9: attribute over MTL over default, nothing written back. tetra.mtl's `red` has Ka, Kd,
+// docs/scene-model.md#material-precedence: attribute over MTL over default, nothing written back. tetra.mtl's `red` has Ka, Kd,
 // Ks, Ns 64 and d 0.75; `textured` only Kd and map_Kd checker.png.
 test('attributes win over the MTL (opacity, diffuse, texture), and the MTL over the defaults', async ({ page }) => {
   await openPage(page);

@@ -1,4 +1,4 @@
-// Issue 9 §2: <glass-object> and <glass-light> children become the element's scene value.
+// <glass-object> and <glass-light> children (docs/scene-model.md#children) become the element's scene value.
 // Attributes parse, reflect and fall back with one warning; adding, removing, reordering and
 // changing children updates el.scene and draws a frame; late and never-upgraded children.
 import { test, expect, openPage, nextFrame, type SceneElement } from './fixtures';

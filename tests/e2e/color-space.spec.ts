@@ -1,5 +1,5 @@
-// SPEC §13 in the element: `color-space="srgb"` (the default) decodes colour data, mixes light
-// linearly and encodes the frame once; `none` uses values as stored. Issue 20's Done-when case:
+// docs/colour.md#srgb in the element: `color-space="srgb"` (the default) decodes colour data, mixes light
+// linearly and encodes the frame once; `none` uses values as stored. The case worked out in docs/colour.md#the-transfer-curve:
 // a white image under Ka 0.2159 and Ia 1 is encode(0.2159) = 128/255 in srgb, 0.2159·255 = 55 in
 // none, in both renderers.
 import { test, expect, openPage, capture } from './fixtures';

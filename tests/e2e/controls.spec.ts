@@ -1,4 +1,4 @@
-// SPEC §10 with real input: mouse and wheel through CDP Input.dispatchMouseEvent (with explicit
+// docs/interaction.md#controls with real input: mouse and wheel through CDP Input.dispatchMouseEvent (with explicit
 // timestamps, which become the events' timeStamps, so a release velocity is the same run after
 // run), touch through CDP's synthesized gestures, keys through the keyboard. Checked numerically
 // (camera pose, objectRotation), with direction: content follows the pointer (the trackball's

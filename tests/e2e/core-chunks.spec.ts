@@ -1,4 +1,4 @@
-// Four more parts the core leaves out (issue 22), each fetched when a page first needs it: the
+// Four more parts the core leaves out (docs/package.md#chunks), each fetched when a page first needs it: the
 // orthographic projection (frame/orthographic-view.ts), what gathers the children's parts
 // (element/children/gather-parts.ts), image textures (element/texture-images.ts) and the
 // failure messages (element/failure-messages.ts). The default scene fetches none of them; a

@@ -1,4 +1,4 @@
-// camera-src's code is two chunks of its own (issue 22): the element's (element/camera-source.ts,
+// camera-src's code is two chunks of its own (docs/package.md#chunks): the element's (element/camera-source.ts,
 // which loads the file) and the renderer's (frame/course-projection.ts: the course's maths and
 // the scene's depth range). A page without camera-src fetches neither; a page with it draws
 // from the course camera once both are in, however slow; a chunk that cannot load leaves the

@@ -1,4 +1,4 @@
-// Issue 11 §4: the course's files in the element (SPEC §11). Mesh and Bézier `.byu` through
+// The course's files in the element (docs/course-files.md). Mesh and Bézier `.byu` through
 // <glass-object src>, iluminacao.txt through <glass-light src>, the camera `.cfg` through
 // camera-src; pixels checked where courseProject says, and against the float64 reference.
 import fs from 'node:fs';
@@ -177,7 +177,7 @@ test('iluminacao.txt: a point light at Pl and the material of every object, attr
   expect(d.objects[0].material.diffuse).toEqual([0.8, 0.8, 0.8]);
 });
 
-// SPEC §9/§11: attribute over MTL over lighting file over default, for an OBJ with its MTL in an
+// docs/scene-model.md#material-precedence: attribute over MTL over lighting file over default, for an OBJ with its MTL in an
 // element with a lighting file; a light's own position over the file's Pl; with two lighting
 // files the first in document order gives the material, and each adds its light.
 test('an MTL wins over the lighting file, a light\'s position over Pl, and the first of two files gives the material', async ({ page }) => {

@@ -1,4 +1,4 @@
-// Issue 4 §5: the element works in a page served with a strict Content-Security-Policy
+// The element works in a page served with a strict Content-Security-Policy
 // (`default-src 'self'`: no eval, no new Function, no inline script or style, no blob: or data:
 // workers), and attribute values are never written as HTML.
 //
@@ -198,7 +198,7 @@ test.describe('attribute values are text, never HTML', () => {
     expect(r.imgs, '<img> elements').toBe(0);
     expect(r.shadowHtmlHasImg).toBe(false);
     expect(r.ariaLabel, 'aria-label mirrors alt, as text').toBe(PAYLOAD);
-    // Bad values fall back with one warning each (SPEC §2); the warnings quote the value as text.
+    // Bad values fall back with one warning each (docs/element.md#bad-values); the warnings quote the value as text.
     const warnings = consoleLog.take('warning');
     expect(warnings.length).toBeGreaterThan(0);
     for (const w of warnings) expect(w).toMatch(/^glass-plane-scene:/);

@@ -1,4 +1,4 @@
-// The demo's course page (issue 11 §5): a scene read from seed 002's files, a switch between the
+// The demo's course page (demo/course.html): a scene read from the course's files (docs/course-files.md), a switch between the
 // two renderers, and the difference image between them.
 import { test, expect, capture } from './fixtures';
 import { MARGIN_DB, note } from './helpers/bounds';

@@ -1,4 +1,4 @@
-// The demo's model gallery (issue 9): three textured models over a glass floor, switchable, each
+// The demo's model gallery (demo/gallery.html): three textured models over a glass floor, switchable, each
 // control writing an attribute of the children, the controls following attribute changes.
 import { test, expect, capture } from './fixtures';
 import { note } from './helpers/bounds';

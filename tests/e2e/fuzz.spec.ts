@@ -1,4 +1,4 @@
-// Bad input (SPEC §2, §8): a seeded storm of > 1000 random values — numbers, NaN, ±Infinity,
+// Bad input (docs/element.md#bad-values, docs/element.md#failure-behaviour): a seeded storm of > 1000 random values — numbers, NaN, ±Infinity,
 // ±1e308, negatives, empty and 100 k-character strings, unicode, arrays, objects, symbols —
 // over every attribute and its property, in random order, while the element keeps drawing.
 // Required: no exception; every warning prefixed, naming the attribute, caused by an unusable
@@ -331,7 +331,7 @@ test('1100 random values over every attribute and property: no exception, warnin
 
 test('finite but huge values keep every uniform finite: cube-distance ±1e308, spin × time past float64', async ({ page, consoleLog }) => {
   // What the storm above found, pinned one input at a time so a failure names its input.
-  // cube-distance takes any finite number (SPEC §2), and spin and time any finite number each,
+  // cube-distance takes any finite number (docs/element.md#attribute-table), and spin and time any finite number each,
   // but the cube's translation must survive float32 (max 3.4e38) and spin·time float64.
   const { selector } = await mount(page, { time: 1.25, 'cube-distance': 1000 }, SIZE);
   const cubeFar = await capture(page, undefined, selector);

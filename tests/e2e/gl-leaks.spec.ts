@@ -1,4 +1,4 @@
-// GL objects freed on removal (SPEC §8), counted from the context itself: every create*/delete*
+// GL objects freed on removal (docs/element.md#failure-behaviour), counted from the context itself: every create*/delete*
 // call goes through a wrapped WebGL2RenderingContext (helpers/gl-census.ts). The element's own
 // `stats.resources` are zeroed when it disposes its renderer, so a resource its dispose() forgets
 // would still read 0 there; the census sees the object that was never deleted.
@@ -75,7 +75,7 @@ test('elements on one context share programs, the procedural texture and meshes:
   const b = (await mount(page, { time: 1.5 }, SIZE)).selector;
   const two = (await glCensus(page)).created;
   // Per element: framebuffers, renderbuffers, its sphere LOD's buffers and VAO, and two textures:
-  // the reflection and the frame in linear light (SPEC §13). Shared: the 4 programs (8 shaders;
+  // the reflection and the frame in linear light (docs/colour.md#srgb). Shared: the 4 programs (8 shaders;
   // the 4th encodes the frame), the 512² texture (~1.4 MB with mipmaps), the cube's and glass's meshes.
   expect(two.programs - one.programs, 'programs compiled for the second element').toBe(0);
   expect(two.shaders - one.shaders, 'shaders compiled for the second element').toBe(0);

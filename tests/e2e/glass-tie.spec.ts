@@ -1,4 +1,4 @@
-// A face lying in the glass plane (issue 21: "a picture behind a glass wall"): the cube at
+// A face lying in the glass plane ("a picture behind a glass wall"): the cube at
 // cube-distance −0.5 with spin 0 has its front face exactly in the glass plane. The glass covers
 // it — WebGL pulls the glass forward a hair (objects on the viewer's side further) and leaves
 // what touches the glass out of the reflection — as the float64 reference draws it.

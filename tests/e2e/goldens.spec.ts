@@ -58,7 +58,7 @@ test('README picture with color-space none: the frame before color-space, byte f
   expect(bytesDifferingFromNone('readme-default-view', await capture(page))).toBe(0);
 });
 
-// The README's rough glass (SPEC §14): the bench's floor — a cube resting on the glass, a sphere
+// The README's rough glass (docs/rough-glass.md#roughness): the bench's floor — a cube resting on the glass, a sphere
 // 1.5 above it — at roughness 0.3 and ior 10, where the glass shows mostly the reflection: sharp
 // at the cube's contact, the sphere's light spread wide.
 test('README picture: a rough glass floor at 640×360', async ({ page }) => {

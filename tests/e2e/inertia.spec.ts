@@ -1,4 +1,4 @@
-// SPEC §10: the motion after a release is timed by the wall clock. Frames come at 13, 30 and 144
+// docs/interaction.md#inertia: the motion after a release is timed by the wall clock. Frames come at 13, 30 and 144
 // per second from a paced requestAnimationFrame (setTimeout on the wall clock; each frame is
 // handed the time it was due, as a display's vsync would be), and the decay is measured in real
 // time, performance.now() at each frame, from objectRotation (trackball) and from the camera's

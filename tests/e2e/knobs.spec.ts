@@ -1,4 +1,4 @@
-// Each quality knob (SPEC §5) changes what it should, and only that.
+// Each quality knob (docs/knobs.md#the-knobs) changes what it should, and only that.
 import { test, expect, openPage, mount, capture, setAttributes, type SceneElement } from './fixtures';
 import { note } from './helpers/bounds';
 import { compareImages } from './helpers/golden';

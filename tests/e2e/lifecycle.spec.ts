@@ -1,4 +1,4 @@
-// Issue 5 / SPEC §8: faults and lifecycle. Adding and removing an element many times leaves no
+// Faults and lifecycle (docs/element.md#failure-behaviour). Adding and removing an element many times leaves no
 // GL resource, listener, observer or animation-frame loop behind; an element moved in the DOM
 // carries on; a lost (shared) WebGL context stops every element, and after the restore each one
 // draws the same frame as before the loss.
@@ -305,7 +305,7 @@ test.describe('context loss', () => {
         }),
       [a, b],
     );
-    // SPEC §8 asks for the error event only; a console error about the loss is allowed (at most
+    // docs/element.md#failure-behaviour asks for the error event only; a console error about the loss is allowed (at most
     // one per element, with the prefix).
     const logged = consoleLog.take('error');
     expect(logged.length).toBeLessThanOrEqual(2);

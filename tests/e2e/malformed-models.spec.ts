@@ -1,4 +1,4 @@
-// Files from the wild through the element (issue 9): each malformed model gives `load` with a
+// Files from the wild through the element (docs/scene-model.md#obj-and-mtl): each malformed model gives `load` with a
 // warning naming the line, or `error` naming the URL — never a hang, never an exception out of
 // the element — and the rest of the scene keeps drawing.
 import { test, expect, openPage, capture } from './fixtures';
@@ -41,7 +41,7 @@ for (const c of CASES) {
   });
 }
 
-// Issue 18: one `f` line of 5 million corners (10 MB) over 4 collinear vertices: every triangle a
+// One `f` line of 5 million corners (10 MB) over 4 collinear vertices: every triangle a
 // fan or an ear-clip makes of it has zero area. It used to become 5 million triangles and stop
 // the page for good. It must end in `load` (with a warning naming line 5) or `error` (naming
 // it), while the page keeps answering scripts and the sphere beside it stays drawn. No `time` or

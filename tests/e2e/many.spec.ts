@@ -1,4 +1,4 @@
-// Issue 4 / SPEC §7: many elements on one page (more than Chromium's ~16 live WebGL contexts).
+// docs/knobs.md#many-elements: many elements on one page (more than Chromium's ~16 live WebGL contexts).
 // 40 elements with different attributes in a scrolling grid (tests/e2e/pages/many.html): each
 // renders what it would render alone, none loses its context, scrolling brings the rest in, and
 // keys go to the focused element only.

@@ -1,4 +1,4 @@
-// Without WebGL2 (SPEC §8): the element says so in its own box and fires `error`, and throws
+// Without WebGL2 (docs/element.md#failure-behaviour): the element says so in its own box and fires `error`, and throws
 // nothing. The browser here has WebGL2, so getContext('webgl2') is stubbed to return null.
 import { test, expect, openPage, type SceneElement } from './fixtures';
 import type { GlassPlaneSceneErrorDetail } from '../../src/element/types';

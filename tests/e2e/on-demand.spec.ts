@@ -1,4 +1,4 @@
-// SPEC §7 / issue 3, the parts a page can observe: frames are drawn only when something changed,
+// docs/knobs.md#model-only-what-a-scene-requires, the parts a page can observe: frames are drawn only when something changed,
 // the reflection pass is skipped (and says why) when it would show nothing, objects wholly on the
 // far side of the glass are not drawn into it, off-screen elements and hidden documents draw
 // nothing, and only the shader variants in use are compiled (stats.programs).
@@ -103,7 +103,7 @@ test.describe('a scene of children goes idle', () => {
       document.body.append(el);
     }), { attrs, children });
 
-  // SPEC §7: `spin` turns only the default scene's cube. A scene of <glass-object> children has
+  // docs/knobs.md#idle-elements: `spin` turns only the default scene's cube. A scene of <glass-object> children has
   // nothing that turns, so with the live clock, with or without a `spin` attribute, it draws
   // nothing once its models are on screen; the default scene beside it keeps spinning.
   test('built-in and loaded children: no frame once ready and loaded, with and without spin; the default scene still spins', async ({ page }) => {
@@ -181,12 +181,10 @@ test.describe('reflection pass', () => {
     expect(end.passesSkipped.reflection - start.passesSkipped.reflection, 'off screen, edge-on, debug-view scene').toBeGreaterThanOrEqual(3);
   });
 
-  // Issue 3 asks for this skip too. (Commit 758eeff chose not to: at grazing angles glass beyond
-  // the near plane is still visible, with F near 1.)
-  // SPEC §7 also lists "the camera within the near distance of the plane" as a reason to skip
-  // the reflection. We deliberately keep it: glass beyond the near plane is still visible at
-  // grazing incidence there, where F is largest (the float64 reference shows it), so skipping
-  // would drop a visible reflection. This test pins that choice.
+  // A camera within the near distance of the glass plane is not a reason to skip the reflection
+  // (docs/knobs.md#reflection-skips): glass beyond the near plane is still visible at grazing
+  // incidence there, where F is largest (the float64 reference shows it), so skipping would drop
+  // a visible reflection. This test pins that choice.
   test('within the near distance of the glass plane the reflection and glass passes still run', async ({ page }) => {
     const { selector } = await mount(page, { time: 1.25, 'cube-distance': 0.6, ior: 10 }, SIZE);
     for (const z of ['0.05', '-0.05']) {

@@ -1,4 +1,4 @@
-// projection="orthographic" (SPEC §10): the default view drawn orthographically matches the
+// projection="orthographic" (docs/interaction.md#orthographic-projection): the default view drawn orthographically matches the
 // float64 reference, its reflection is still there for a viewer to see, switching back leaves
 // perspective exactly as it was, and a bad value warns once and falls back.
 import type { Page } from '@playwright/test';
@@ -90,7 +90,7 @@ async function pair(page: Page, selector: string, time: number): Promise<[RgbaIm
 }
 
 test('orthographic default view at 640×360: the reflection differs plainly from no reflection where it shows the cube', async ({ page }) => {
-  // Issue 14's bar for the perspective view at 640×360 (reflection-visibility.spec.ts): max ≥ 40
+  // The visibility bar for the perspective view at 640×360 (reflection-visibility.spec.ts): max ≥ 40
   // levels, ≥ 1,000 px ≥ 15 overall and ≥ 500 px ≥ 15 where the glass reflects the cube. The
   // orthographic view shows the cube's reflection over a different area, so the pixel counts
   // are scaled by the ratio of the two areas (from the reference's geometry, per clock): the
@@ -166,7 +166,7 @@ test('a bad projection warns once, falls back to perspective, and rendering goes
 });
 
 // Broken on purpose (edge-on judged by the eye's distance from the plane in orthographic too): fails.
-test('skip rules (SPEC §7) in orthographic: edge-on is the view direction in the glass plane, not the eye on it', async ({ page }) => {
+test('skip rules (docs/knobs.md#reflection-skips) in orthographic: edge-on is the view direction in the glass plane, not the eye on it', async ({ page }) => {
   // The eye exactly on the glass plane, looking at the glass 80° off its normal: a perspective
   // eye sees the glass as a line (edge-on); an orthographic camera sees it at that angle.
   const onPlane = { 'camera-position': '3.6 2.4 0', 'camera-rotation': DEFAULT_CAMERA_ROTATION.join(' '), time: TIME };

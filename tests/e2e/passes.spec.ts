@@ -1,5 +1,5 @@
 // Each pass checked against the float64 reference renderer, tightly enough that a wrong pass
-// fails (issue 14 §2): the reflection in the final image, the glass seen from the −Z side, the
+// fails: the reflection in the final image, the glass seen from the −Z side, the
 // clip of an object straddling the glass, the `discard` clip fallback, the `classic` composite.
 // Masks come from the reference's geometry (keys, regions), never from colours.
 //

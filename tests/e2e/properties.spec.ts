@@ -1,5 +1,5 @@
 // Property checks that need no golden: what each pass may and may not contain, how the image
-// responds to attributes, sizes, events, and the attribute/property contract (SPEC §2–§4).
+// responds to attributes, sizes, events, and the attribute/property contract (docs/element.md, docs/rendering.md).
 // Every test runs with the renderer's GL error checks on and fails on any console error or
 // warning it did not expect (fixtures.ts).
 import { PNG } from 'pngjs';
@@ -224,7 +224,7 @@ test.describe('glass', () => {
 });
 
 test.describe('size', () => {
-  // reflection-scale 1 (SPEC §5): the reflection FBO is then the drawing buffer's size too.
+  // reflection-scale 1 (docs/knobs.md#the-knobs): the reflection FBO is then the drawing buffer's size too.
   test('captures are the drawing buffer, which follows the CSS size', async ({ page }) => {
     const { selector } = await mount(page, { time: 1.25, 'reflection-scale': 1 }, SIZE);
     expect(await canvasSize(page, selector)).toEqual(SIZE);
@@ -395,7 +395,7 @@ test.describe('events', () => {
 });
 
 test.describe('lifecycle', () => {
-  test('an idle element draws nothing (SPEC §7)', async ({ page }) => {
+  test('an idle element draws nothing (docs/knobs.md#idle-elements)', async ({ page }) => {
     const { selector } = await mount(page, { time: 1.25 }, SIZE);
     const frames = () => page.evaluate((s) => (document.querySelector(s) as SceneElement).stats.frames, selector);
     const before = await frames();
@@ -403,7 +403,7 @@ test.describe('lifecycle', () => {
     expect(await frames()).toBe(before);
   });
 
-  test('removed from the DOM, it frees every GL resource (SPEC §8)', async ({ page }) => {
+  test('removed from the DOM, it frees every GL resource (docs/element.md#failure-behaviour)', async ({ page }) => {
     const { selector } = await mount(page, { time: 1.25 }, SIZE);
     const resources = await page.evaluate((s) => {
       const el = document.querySelector(s) as SceneElement;
@@ -417,7 +417,7 @@ test.describe('lifecycle', () => {
     });
   });
 
-  test('after a lost context it reports the loss, then rebuilds and draws the same frame (SPEC §8)', async ({ page, consoleLog }) => {
+  test('after a lost context it reports the loss, then rebuilds and draws the same frame (docs/element.md#failure-behaviour)', async ({ page, consoleLog }) => {
     const { selector } = await mount(page, { time: 1.25 }, SIZE);
     const before = await capture(page, undefined, selector);
     const resourcesBefore = await page.evaluate((s) => (document.querySelector(s) as SceneElement).stats.resources, selector);
@@ -437,7 +437,7 @@ test.describe('lifecycle', () => {
     );
     expect(lost.type).toBe('context-lost');
     await nextFrame(page, selector, () => (window as unknown as { __loseContext: WEBGL_lose_context }).__loseContext.restoreContext());
-    // SPEC §8 asks for the error event only; a console error about the loss is allowed (at most
+    // docs/element.md#failure-behaviour asks for the error event only; a console error about the loss is allowed (at most
     // one, with the prefix). The element currently logs none.
     const logged = consoleLog.take('error');
     expect(logged.length).toBeLessThanOrEqual(1);

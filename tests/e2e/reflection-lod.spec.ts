@@ -1,4 +1,4 @@
-// The reflection's level of detail in the element (SPEC §7, reflection-lod.ts): with tessellation
+// The reflection's level of detail in the element (docs/knobs.md#level-of-detail, reflection-lod.ts): with tessellation
 // 'auto' a dense mesh is drawn into the reflection as the clustered copy whose cells span at most
 // REFLECTION_CELL_PX pixels of the reflection target at the object's centre, seen from the
 // MIRRORED eye. The triangle counts the frame reports are checked against that rule computed here,

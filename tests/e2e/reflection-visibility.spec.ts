@@ -1,4 +1,4 @@
-// The point of the element is a reflection a viewer sees (issue 14): in the default view the
+// The point of the element is a reflection a viewer sees (docs/knobs.md#bars-the-tests-hold): in the default view the
 // final image must differ plainly from the same view without any reflection (ior 1, where the
 // Fresnel term is 0), and most of that difference must sit where the glass reflects the cube.
 // Which pixels those are is decided from the geometry: the float64 reference traces each pixel's
@@ -8,7 +8,7 @@ import { test, expect, mount, openPage, capture, setAttributes, type RgbaImage }
 import { renderReference, glassReflectsCube } from '../../src/reference';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 
-/** The bar of issue 14, at 640×360 with defaults: max ≥ 40 levels and ≥ 1,000 pixels ≥ 15 … */
+/** The visibility bar, at 640×360 with defaults: max ≥ 40 levels and ≥ 1,000 pixels ≥ 15 … */
 const BAR = { max: 40, pixels: 1000 };
 /** … and within the pixels where the glass reflects the cube, max ≥ 40 and ≥ 500 pixels ≥ 15. */
 const CUBE_BAR = { max: 40, pixels: 500 };
@@ -18,7 +18,7 @@ const TIMES = [0, 1.25, 2.5, 3.75];
 
 /**
  * What is measured here (SwiftShader, deterministic), per view: the largest difference and the
- * pixels ≥ 15 levels, overall and where the glass reflects the cube. Beyond issue 14's bar, each
+ * pixels ≥ 15 levels, overall and where the glass reflects the cube. Beyond that bar, each
  * figure must stay near it: the largest difference within 3 levels, the counts within 10 % (the
  * reflection's edge pixels may flip on a harmless change; a dimmer or misplaced reflection loses
  * far more).

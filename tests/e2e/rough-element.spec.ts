@@ -1,4 +1,4 @@
-// SPEC §14 in the element: `roughness` reaches both renderers — the glass floor of the bench at
+// docs/rough-glass.md#roughness in the element: `roughness` reaches both renderers — the glass floor of the bench at
 // roughness 0.5 against the float64 reference (the element's frame, not the renderer's alone),
 // `roughness="0"` as the frame without the attribute bit for bit, a bad value falling back with
 // one warning — and the demo's roughness slider writes the attribute.

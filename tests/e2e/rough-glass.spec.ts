@@ -1,4 +1,4 @@
-// Rough glass in the WebGL renderer (SPEC §14, issue 21): R̃ and B̃ gathered as
+// Rough glass in the WebGL renderer (docs/rough-glass.md#the-gather): R̃ and B̃ gathered as
 // frame/rough-glass.ts says, against the float64 reference's Monte Carlo over GGX microfacets
 // (a floor and a wall, perspective, orthographic and the course's camera); roughness 0 is
 // today's frame exactly; a contact stays sharp while a far object's reflection blurs; every GL
@@ -54,7 +54,7 @@ interface Case {
   measured: number;
 }
 
-/** The floor through the course's camera (SPEC §11) looking as floorState does. */
+/** The floor through the course's camera (docs/course-files.md#the-course-camera) looking as floorState does. */
 function courseFloor(v: RoughView): FrameState {
   const s = floorState(v), target: Vec3 = [0, 0.6, 0], c = s.cameraPosition as Vec3;
   const basis = courseBasis([target[0] - c[0], target[1] - c[1], target[2] - c[2]], [0, 1, 0]);

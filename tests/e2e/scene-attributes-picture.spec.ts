@@ -1,4 +1,4 @@
-// Issue 9: each attribute of SPEC §9's tables (and the scene element's glass and background)
+// Each attribute of the children's tables (docs/scene-model.md#glass-object, docs/scene-model.md#glass-light) (and the scene element's glass and background)
 // changes the picture. One base scene; each change is applied alone, drawn, captured, compared
 // with the base frame, and undone.
 import { test, expect, openPage, capture } from './fixtures';
@@ -32,7 +32,7 @@ const CHANGES: [string, string, string, number][] = [
   ['scene', 'background', '#335', 14008],
 ];
 
-test('every attribute of SPEC §9 changes the picture', async ({ page, consoleLog }) => {
+test('every attribute of the children (docs/scene-model.md#glass-object) changes the picture', async ({ page, consoleLog }) => {
   test.setTimeout(120_000);
   await openPage(page);
   await mountHtml(page, BASE);
@@ -62,11 +62,11 @@ test('every attribute of SPEC §9 changes the picture', async ({ page, consoleLo
   expect(unchanged, 'attributes whose change left the frame as it was, or changed it less than measured').toEqual([]);
   // Back to the base: the frame is the base frame again (nothing stuck).
   expect(compareImages(base, await capture(page)).differing).toBe(0);
-  // position with direction set: a point light, and one warning saying so (SPEC §2's rule).
+  // position with direction set: a point light, and one warning saying so (docs/element.md#bad-values).
   expect(consoleLog.take('warning').filter((w) => !w.includes('position is set too'))).toEqual([]);
 });
 
-test('SPEC §7 skips hold for any glass placement: a glass floor out of view, seen edge-on, or absent', async ({ page }) => {
+test('the reflection skips (docs/knobs.md#reflection-skips) hold for any glass placement: a glass floor out of view, seen edge-on, or absent', async ({ page }) => {
   await openPage(page);
   await mountHtml(page, `<glass-plane-scene time="0" spin="0" glass-normal="0 1 0" glass-center="0 0 0" glass-size="6 6"
       camera-position="0 2 5" camera-rotation="-90 -20"><glass-object shape="cube" position="0 1 0"></glass-object></glass-plane-scene>`);

@@ -1,4 +1,4 @@
-// The WebGL renderer drawing scene values (SPEC §9) other than the default one, through the
+// The WebGL renderer drawing scene values (docs/scene-model.md#one-scene-value) other than the default one, through the
 // renderer page (no element): glass anywhere, objects placed by transforms, point lights,
 // materials, opacity, image textures, no glass. Properties checked from geometry, not goldens.
 import { test, expect, mount, openPage, capture } from './fixtures';

@@ -1,4 +1,4 @@
-// No allocation in the frame loop during motion (issue 19): the scene value is built when its
+// No allocation in the frame loop during motion: the scene value is built when its
 // content changes (an attribute that shapes it, a child, a model), never because a pose moved.
 // The trackball's turn and the orbit camera travel in the frame state, so 60 and more frames of
 // trackball inertia, and of an orbit drag with its write-back at the end, build it zero times.

@@ -1,9 +1,9 @@
-// Issue 9's accuracy bar: for scenes beyond the default one, the WebGL renderer's image matches
+// The accuracy bar (docs/knobs.md#bars-the-tests-hold): for scenes beyond the default one, the WebGL renderer's image matches
 // the float64 reference's (renderScene) at ≥ 35 dB PSNR. Each scene is drawn by the Renderer
 // (renderer page) at samples 4 and reflection-scale 1, against the reference at 4×4 samples per
 // pixel; the figure of each is printed and annotated. Each case's bounds sit MARGIN_DB (2 dB)
 // under the figures measured here (SwiftShader, 320×180, the same to 0.1 dB from run to run),
-// over the whole image and each region; issue 9's 35 dB is below all of them. Measured in linear
+// over the whole image and each region; the bar's 35 dB is below all of them. Measured in linear
 // light (color-space srgb), where textures are read anisotropically: 1.5–4 dB under the figures
 // as stored (48.3 → 44.9 on the Gaussian; 43.9 with isotropic reads), since encoding steepens
 // the GPU's errors in the darks (×12.92 at black): edges (MSAA 4 against 16 samples) most.
@@ -66,7 +66,7 @@ const CASES: Case[] = [
     measured: { all: 45.9, objects: 44.2, glass: 51.6, edges: 35.7 },
   },
   {
-    // Seed 002's Bézier surface: a bicubic bump at E = 40, as the course's .byu loader makes it.
+    // A Bézier surface (docs/software-renderer.md#bezier-surfaces): a bicubic bump at E = 40, as the course's .byu loader makes it.
     name: 'a bicubic Bézier surface (E = 40) over a glass floor',
     scene: {
       glass: floor, lights: [DEFAULT_LIGHT], background: grey(0.1),
@@ -125,7 +125,7 @@ for (const resolution of [40, 400]) {
   }
 }
 
-// Seed 001's texture mappings with the procedural checker (src/scene/mapping.ts on both sides).
+// The texture mappings (docs/scene-model.md#texture-mappings) with the procedural checker (src/scene/mapping.ts on both sides).
 const sphere = (position: Vec3, material: Material): SceneObject =>
   ({ geometry: { kind: 'sphere', radius: 0.8 }, transform: at(position), material, bounds: { center: [0, 0, 0], radius: 0.8 } });
 CASES.push({

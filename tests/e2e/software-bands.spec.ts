@@ -1,4 +1,4 @@
-// Issue 22: the software renderer's frame split across workers, a band of rows each
+// The software renderer's frame split across workers, a band of rows each
 // (element/software-host.ts). The element drawing with 2 or 3 workers puts on its canvas the
 // pixels it puts there with one, which are the main thread's whole frame (capture()); rough glass
 // (drawn whole by one worker) too; every worker is terminated when the element goes.

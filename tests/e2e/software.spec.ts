@@ -1,4 +1,4 @@
-// The software renderer in the element (issue 11 §1–2): renderer="software" draws in a worker,
+// The software renderer in the element (docs/software-renderer.md): renderer="software" draws in a worker,
 // falls back to the main thread where no worker may start (CSP worker-src 'none'), and
 // renderer="auto" draws with it where WebGL2 is missing, firing no error. Pixels against the
 // float64 reference.
@@ -13,7 +13,7 @@ import type { FrameState } from '../../src/frame/types';
 import { expectPsnr } from './helpers/bounds';
 
 const SIZE = { width: 320, height: 180 };
-/** Issue 11's bar for either renderer against the reference. */
+/** The bar for either renderer against the reference (docs/knobs.md#bars-the-tests-hold). */
 const BOUND_DB = 40;
 /**
  * The default scene at 320×180 against the reference (4×4 samples per pixel), PSNR measured here
@@ -127,7 +127,7 @@ test('where a worker may not start (CSP worker-src \'none\') the software render
   expect(errors.every((e) => /worker|Content Security Policy/i.test(e)), errors.join('\n')).toBe(true);
 });
 
-// Issue 22: a spinning scene drawn in a worker asks for its next frame as the last one lands,
+// A spinning scene drawn in a worker asks for its next frame as the last one lands,
 // not at the next animation frame (a 16 ms frame would otherwise show at 30 Hz); on the main
 // thread it still waits for the animation frame, so the page runs between frames. Checked with
 // requestAnimationFrame silenced after the first frames: the worker's frames keep coming, the

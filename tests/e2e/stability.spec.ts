@@ -1,4 +1,4 @@
-// Numerical stability at the extremes (SPEC §6), in the browser. For each extreme the element
+// Numerical stability at the extremes (docs/rendering.md#numerical-stability), in the browser. For each extreme the element
 // draws a frame there (a `frame` event after the change, time fixed), and
 //  - no exception, no GL error and no non-finite uniform: the fixture runs the renderer with
 //    __GLASS_PLANE_SCENE_CHECKS__ (gl.getError() after every frame, Number.isFinite on every
@@ -20,7 +20,7 @@ const SIZE = { width: 160, height: 90 };
 // Fixed clock (deterministic pixels, a frame only on change); the knobs explicit so that a change
 // of their defaults does not move the thresholds below.
 // Values as stored (color-space none), as the figures below were measured: these tests guard the
-// geometry at SPEC §6's extremes, which the colour space does not touch.
+// geometry at the extremes (docs/rendering.md#numerical-stability), which the colour space does not touch.
 const BASE: Attrs = { time: 1.25, 'reflection-scale': 1, samples: 0, shading: 'phong', 'color-space': 'none' };
 const NEAR = 0.1;
 
@@ -86,7 +86,7 @@ function expectContinuous(a: RgbaImage, b: RgbaImage, what: string, bound: Bound
 // change, a matrix's last ulp, scissoring or culling, may flip).
 const near = (mean: number, fraction: number): Bound => ({ mean: 1.5 * mean + 0.02, fraction: fraction + 0.002 });
 
-test.describe('SPEC §6 extremes', () => {
+test.describe('extremes (docs/rendering.md#numerical-stability)', () => {
   test('camera exactly on the glass plane and 1e-7 off it on either side', async ({ page }) => {
     const { selector } = await mount(page, { ...BASE, ...ALONG_PLANE(1e-3) }, SIZE);
     const zs = [1e-3, 1e-7, 0, -1e-7, -1e-3];
@@ -106,9 +106,9 @@ test.describe('SPEC §6 extremes', () => {
     for (let i = 1; i < zs.length; i++) expectContinuous(shots[i - 1].image, shots[i].image, `z ${zs[i - 1]} → ${zs[i]}`, measured[i - 1]);
   });
 
-  test('on the plane or 1e-7 off it the glass is edge-on: reflection pass skipped, with a reason (SPEC §7)', async ({ page }) => {
-    // SPEC §7 also asks for the skip whenever the camera is within the near distance (0.1) of
-    // the plane. Not asserted: from 0.05 off the plane the glass still fills a wedge ~27° wide at
+  test('on the plane or 1e-7 off it the glass is edge-on: reflection pass skipped, with a reason (docs/knobs.md#reflection-skips)', async ({ page }) => {
+    // Only on the plane itself: a camera merely within the near distance (0.1) of the plane keeps
+    // its reflection (docs/knobs.md#reflection-skips). From 0.05 off the plane the glass still fills a wedge ~27° wide at
     // grazing incidence (F ≈ 0.75–1), where skipping would drop a visible reflection; the
     // reference comparison below checks that frame instead ('camera 0.05 off the plane').
     const { selector } = await mount(page, { ...BASE, ...ALONG_PLANE(0.5) }, SIZE);
@@ -346,7 +346,7 @@ test.describe('SPEC §6 extremes', () => {
   });
 });
 
-test.describe('SPEC §6 canvas sizes', () => {
+test.describe('canvas sizes at the extremes (docs/rendering.md#numerical-stability)', () => {
   test('a 0×0 element neither throws nor logs, and draws once it has a size', async ({ page }) => {
     const result = await page.evaluate(async () => {
       const el = document.createElement('glass-plane-scene') as SceneElement;
@@ -419,7 +419,7 @@ test.describe('SPEC §6 canvas sizes', () => {
   });
 });
 
-test.describe('SPEC §6 error against the float64 reference', () => {
+test.describe('error against the float64 reference at the extremes (docs/rendering.md#numerical-stability)', () => {
   // PSNR of capture() against renderReference at 4×4 samples per pixel, over the whole image and
   // each region. The element runs at samples 4 and reflection-scale 1, the closest it gets.
   // Measured (SwiftShader, 160×90) beside each case; the bounds sit 2 dB under each figure, and

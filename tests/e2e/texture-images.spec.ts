@@ -1,4 +1,4 @@
-// Image textures in the element (SPEC §9 `texture`, MTL map_Kd): decoded once per URL, drawn when
+// Image textures in the element (`texture` in docs/scene-model.md#glass-object, MTL map_Kd): decoded once per URL, drawn when
 // ready; a missing image warns once and the object keeps the procedural texture.
 import { test, expect, openPage, capture } from './fixtures';
 import { note } from './helpers/bounds';

@@ -1,4 +1,4 @@
-// Two more parts the core leaves out (issue 22), each a chunk fetched when a scene first asks:
+// Two more parts the core leaves out (docs/package.md#chunks), each a chunk fetched when a scene first asks:
 // the group rotation (scene/group-rotation.ts: what applies a turn to `scene` and finds the
 // centre it turns about), wanted once `objectRotation` turns the objects or the trackball is in
 // use; and the debug views (render/debug-views.ts) of debug-view reflection, fresnel and passes.

@@ -1,4 +1,4 @@
-// THE attribute table (SPEC §2): defaults, fallbacks with a problem, reflection, fuzz.
+// THE attribute table (docs/element.md#attribute-table): defaults, fallbacks with a problem, reflection, fuzz.
 import { describe, expect, it } from 'vitest';
 import {
   ATTRIBUTE_BY_NAME, ATTRIBUTES, DEBUG_VIEWS, defaultAttributes, propertyToRaw,
@@ -34,7 +34,7 @@ function expectFallback(attribute: string, raw: string, value: unknown): void {
 }
 
 describe('defaults', () => {
-  it('has the SPEC §2 default for every attribute', () => {
+  it('has the documented default for every attribute (docs/element.md#attribute-table)', () => {
     const d = defaultAttributes();
     expect(d.transparency).toBe(0.5);
     expect(d.cubeDistance).toBe(0.75);
@@ -322,8 +322,8 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
   });
 });
 
-describe('glass and background (SPEC §2)', () => {
-  it('defaults to the glass and background of SPEC §3', () => {
+describe('glass and background (docs/element.md#attribute-table)', () => {
+  it('defaults to the glass and background of the default scene (docs/default-scene.md)', () => {
     const d = defaultAttributes();
     expect(d.glassCenter).toEqual([0, 1, 0]);
     expect(d.glassNormal).toEqual([0, 0, 1]);

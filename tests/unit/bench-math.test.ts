@@ -47,7 +47,7 @@ describe('resample', () => {
   it("mixes as stored by default, in linear light with 'srgb' (alpha as stored either way)", () => {
     const blackWhite = new Uint8ClampedArray([0, 0, 0, 255, 255, 255, 255, 0]);
     expect([...resample(blackWhite, 2, 1, 1, 1)]).toEqual([128, 128, 128, 128]); // 127.5, rounded up
-    // Half-way between black and white in light: encode(0.5) = 0.7354, level 188 (issue 20).
+    // Half-way between black and white in light: encode(0.5) = 0.7354, level 188 (docs/colour.md#the-transfer-curve).
     expect([...resample(blackWhite, 2, 1, 1, 1, 'srgb')]).toEqual([188, 188, 188, 128]);
     const grey = new Uint8ClampedArray(4 * 4).fill(77);
     expect(new Set(resample(grey, 2, 2, 3, 3, 'srgb'))).toEqual(new Set([77])); // bilinear, decoded and encoded again

@@ -1,4 +1,4 @@
-// Bézier patches (SPEC §11): de Casteljau against the Bernstein closed form, normals against
+// Bézier patches (docs/software-renderer.md#bezier-surfaces): de Casteljau against the Bernstein closed form, normals against
 // finite differences, the degenerate edge, and the grid mesh's layout and winding.
 import { describe, expect, it } from 'vitest';
 import {

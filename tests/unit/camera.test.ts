@@ -1,4 +1,4 @@
-// Camera pose → forward, view and projection (SPEC §3).
+// Camera pose → forward, view and projection (docs/default-scene.md#the-camera).
 import { describe, expect, it } from 'vitest';
 import { apply, expectClose } from './helpers';
 import { clampPitch, forwardFromYawPitch, PITCH_LIMIT, projectionMatrix, rotationOnlyView, tanHalfFov, wrapYaw } from '../../src/math/camera';

@@ -1,5 +1,5 @@
 // The children's attribute tables (<glass-object>, <glass-light>) and what they turn into:
-// defaults of SPEC §9, fallbacks with a problem, never a throw; materials by precedence.
+// defaults of docs/scene-model.md#glass-object, fallbacks with a problem, never a throw; materials by precedence.
 import { describe, expect, it } from 'vitest';
 import { OBJECT_ATTRIBUTES, OBJECT_DEFAULTS, defaultObjectAttributes } from '../../src/element/children/object-attributes';
 import { LIGHT_ATTRIBUTES, defaultLightAttributes } from '../../src/element/children/light-attributes';
@@ -20,14 +20,14 @@ const obj = (a: string) => row(OBJECT_ATTRIBUTES as readonly ChildAttributeSpec[
 const light = (a: string) => row(LIGHT_ATTRIBUTES as readonly ChildAttributeSpec[], a);
 
 describe('<glass-object> table', () => {
-  it('declares exactly the attributes of SPEC §9', () => {
+  it('declares exactly the attributes of docs/scene-model.md#glass-object', () => {
     expect(OBJECT_ATTRIBUTES.map((r) => r.attribute).sort()).toEqual([
       'ambient', 'diffuse', 'mapping', 'normalize', 'opacity', 'position', 'resolution', 'rotation', 'scale',
       'shape', 'shininess', 'specular', 'src', 'texture',
     ]);
   });
 
-  it('has the defaults of SPEC §9', () => {
+  it('has the defaults of docs/scene-model.md#glass-object', () => {
     const d = defaultObjectAttributes();
     expect(d).toMatchObject({ src: null, shape: null, resolution: 40, position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], normalizeModel: false });
     // Material rows are null: the MTL's value, else OBJECT_DEFAULTS.
@@ -138,7 +138,7 @@ describe('built-in shapes', () => {
   });
 });
 
-describe('the course lighting file in the scene terms (SPEC §11)', () => {
+describe('the course lighting file in the scene terms (docs/course-files.md#lighting-file)', () => {
   it('maps ka, kd·Od, ks, n onto Ka, Kd, Ks and a Blinn exponent 4n; Ia/255 and Il/255 onto the point light', async () => {
     const { courseMaterialValues, courseLight } = await import('../../src/element/children/course-lighting');
     const m = courseMaterialValues({ ka: 0.2, kd: 0.5, ks: 0.3, od: [0.7, 0.5, 0.8], n: 2 });

@@ -1,4 +1,4 @@
-// The scene value from attributes and children: with no children it is SPEC §3's default
+// The scene value from attributes and children: with no children it is the default
 // scene exactly; children's objects and lights replace the defaults; "0 0" removes the glass.
 import { describe, expect, it } from 'vitest';
 import { composeScene, sceneSpins, type SceneInputs } from '../../src/element/compose-scene';
@@ -31,7 +31,7 @@ describe('composeScene', () => {
     expect(composeScene(inputs({ glassSize: [3, 0] }), { objects: null, lights: null }).glass).toBeNull();
   });
 
-  it('spins only where the default cube is: spin is its alone (SPEC §7)', () => {
+  it('spins only where the default cube is: spin is its alone (docs/knobs.md#idle-elements)', () => {
     const none = { objects: null, lights: null };
     expect(sceneSpins(composeScene(inputs({ spin: 0.8 }), none)), 'default scene, spin 0.8').toBe(true);
     expect(sceneSpins(composeScene(inputs({ spin: 0 }), none)), 'default scene, spin 0').toBe(false);

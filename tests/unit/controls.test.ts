@@ -1,4 +1,4 @@
-// SPEC §10's pure parts: Shoemake's arcball with Bell's sheet, inertia exact for any frame time,
+// The pure parts of docs/interaction.md: Shoemake's arcball with Bell's sheet, inertia exact for any frame time,
 // the release velocity, the orbit camera, and the trackball's rotation of the scene value.
 import { describe, expect, it } from 'vitest';
 import { mat3, mat4, quat, vec3 } from 'gl-matrix';

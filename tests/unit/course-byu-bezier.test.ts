@@ -1,4 +1,4 @@
-// The course's Bézier .byu (SPEC §11): header, E and its override, the index order chosen by
+// The course's Bézier .byu (docs/course-files.md#bezier-byu): header, E and its override, the index order chosen by
 // the shorter control net, the degenerate edge, and the load errors.
 import { describe, expect, it } from 'vitest';
 import { netLength, parseByuBezier } from '../../src/loaders/course/byu-bezier';

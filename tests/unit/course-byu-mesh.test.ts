@@ -1,4 +1,4 @@
-// The course's mesh .byu (SPEC §11): header counts, trailing content, faces out of range,
+// The course's mesh .byu (docs/course-files.md#mesh-byu): header counts, trailing content, faces out of range,
 // load errors with their lines, and the course's vertex normals.
 import { describe, expect, it } from 'vitest';
 import { courseVertexNormals, parseByuMesh } from '../../src/loaders/course/byu-mesh';

@@ -1,4 +1,4 @@
-// The course's camera (SPEC §11): the .cfg loader, the pixel projection against hand-computed
+// The course's camera (docs/course-files.md#camera-cfg): the .cfg loader, the pixel projection against hand-computed
 // values, and the 4×4 matrix against the pixel formula.
 import { describe, expect, it } from 'vitest';
 import { parseCameraCfg } from '../../src/loaders/course/camera-cfg';

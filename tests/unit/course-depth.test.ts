@@ -50,7 +50,7 @@ describe('courseSceneRange', () => {
     expect(range.far).toBeCloseTo(11 * 1.001, 12);
   });
 
-  it('a long box rotated (0°, 90°, 90°): rotations applied X, then Y, then Z (SPEC §9)', () => {
+  it('a long box rotated (0°, 90°, 90°): rotations applied X, then Y, then Z (docs/scene-model.md#glass-object)', () => {
     // Edge 1, scale (1, 1, 3): x, y ∈ ±0.5, z ∈ ±1.5. Ry(90°) takes z to x, then Rz(90°) takes x
     // to y: the long side ends up along Y and x stays within ±0.5. Camera at (6, 1, 0) looking
     // down −X: depth = 6 − x ∈ [5.5, 6.5]. (Z before Y would leave the long side along X: 4.5..7.5.)

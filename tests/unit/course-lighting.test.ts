@@ -1,4 +1,4 @@
-// The course's iluminacao.txt and Phong equation (SPEC §11), against hand-computed values.
+// The course's iluminacao.txt and Phong equation (docs/course-files.md#course-phong), against hand-computed values.
 import { describe, expect, it } from 'vitest';
 import { parseLightingTxt } from '../../src/loaders/course/lighting-txt';
 import { coursePhong, type CourseLight, type CourseMaterial } from '../../src/math/course-phong';

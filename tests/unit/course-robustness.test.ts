@@ -1,4 +1,4 @@
-// The course's files as found in the wild (SPEC §11): sniffing, HTML pages and binary bytes,
+// The course's files as found in the wild (docs/course-files.md#text-conventions): sniffing, HTML pages and binary bytes,
 // number forms, 10 MB lines, and random input that must end in a result or a LoadError.
 import fs from 'node:fs';
 import path from 'node:path';

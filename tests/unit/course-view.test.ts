@@ -1,4 +1,4 @@
-// A course camera (SPEC §11, `camera-src`) in the frame setup that both renderers use, and in
+// A course camera (docs/course-files.md#camera-cfg, `camera-src`) in the frame setup that both renderers use, and in
 // the float64 reference: the projection is the course's pixel formula, near and far hold the
 // scene, a mirroring camera swaps the front face, and the software image matches the reference.
 import { describe, expect, it } from 'vitest';

@@ -1,4 +1,4 @@
-// Flyby controller: keys and mouse → camera pose, frame-rate independent (seed 000's updateCamera).
+// Flyby controller: keys and mouse → camera pose, frame-rate independent (docs/interaction.md#flyby).
 import { describe, expect, it } from 'vitest';
 import { FlybyController, MAX_LOOK_STEP } from '../../src/element/controls/flyby-controller';
 import { wrapYaw } from '../../src/math/camera';
@@ -167,7 +167,7 @@ describe('looking', () => {
     expect(SENS).toBeCloseTo(0.11459, 5);
   });
 
-  it('look() turns at most 5° per event, in the direction of the movement (SPEC §10)', () => {
+  it('look() turns at most 5° per event, in the direction of the movement (docs/interaction.md#no-jumps)', () => {
     const c = at([0, 0, 0], -90, 0);
     c.look(-528, -377); // what Chromium reported once on entering pointer lock
     const yaw = c.pose.yaw + 90, pitch = c.pose.pitch;

@@ -1,4 +1,4 @@
-// Fresnel models of SPEC §4: exact (Brewster, 0°, 90°), Schlick, classic (seed 000).
+// Fresnel models of docs/rendering.md#fresnel-models: exact (Brewster, 0°, 90°), Schlick, classic (the original prototype's).
 import { describe, expect, it } from 'vitest';
 import { fresnel, fresnelClassic, fresnelExact, fresnelSchlick, FRESNEL_MODELS } from '../../src/math/fresnel';
 

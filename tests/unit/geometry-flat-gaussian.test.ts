@@ -1,4 +1,4 @@
-// Seed 004's surface and truly per-face flat meshes (issue 9 §5).
+// The Gaussian surface and truly per-face flat meshes (docs/scene-model.md#built-in-shapes, docs/scene-model.md#shading-modes).
 import { describe, expect, it } from 'vitest';
 import { gaussianHeight, gaussianMesh } from '../../src/scene/geometry/gaussian';
 import { flatMesh } from '../../src/scene/geometry/flat';

@@ -1,4 +1,4 @@
-// Box, sphere and glass meshes of SPEC §3: winding, normals, UVs, index width.
+// Box, sphere and glass meshes of the default scene (docs/default-scene.md): winding, normals, UVs, index width.
 import { describe, expect, it } from 'vitest';
 import { boxMesh } from '../../src/scene/geometry/box';
 import { MAX_SEGMENTS, MIN_SEGMENTS, segmentsForScreenRadius, sphereMesh } from '../../src/scene/geometry/sphere';

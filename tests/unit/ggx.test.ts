@@ -1,4 +1,4 @@
-// SPEC §14's microfacet maths (src/math/ggx.ts), which the reference shares with the renderers:
+// Rough glass's microfacet maths (docs/rough-glass.md#ggx-microfacets, src/math/ggx.ts), which the reference shares with the renderers:
 // the sampled normals against D(m)·cosθm integrated by an independent quadrature, and the
 // reflected and refracted directions against Snell's law worked by hand in one plane.
 import { describe, expect, it } from 'vitest';

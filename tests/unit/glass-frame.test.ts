@@ -5,7 +5,7 @@ import { glassFrame } from '../../src/scene/glass-frame';
 import { expectClose } from './helpers';
 
 describe('glassFrame', () => {
-  it('SPEC §3\'s glass: the plane z = 0, a = +X, b = +Y, corners (∓4, −1 | 3, 0)', () => {
+  it('the default glass (docs/default-scene.md#the-glass): the plane z = 0, a = +X, b = +Y, corners (∓4, −1 | 3, 0)', () => {
     const f = glassFrame({ center: [0, 1, 0], normal: [0, 0, 1], size: [8, 4] });
     expectClose(f.plane, [0, 0, 1, 0]);
     expectClose(f.a, [1, 0, 0]);

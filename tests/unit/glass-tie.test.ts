@@ -1,4 +1,4 @@
-// A face lying in the glass plane (issue 21: a picture behind a glass wall): the glass covers it
+// A face lying in the glass plane (a picture behind a glass wall): the glass covers it
 // when its object is on the plane or beyond it, and an object on the viewer's side stays in front
 // — in the float64 reference and the software renderer alike, against values worked by hand.
 import { describe, expect, it } from 'vitest';

@@ -18,7 +18,7 @@ export function apply(m: ArrayLike<number>, p: ArrayLike<number>): Float64Array 
   return out;
 }
 
-/** SPEC §3's view matrix, lookAt(position, position + forward, +Y), for tests that need a whole camera. */
+/** The default camera's view matrix (docs/default-scene.md#the-camera), lookAt(position, position + forward, +Y), for tests that need a whole camera. */
 export function lookAtView(position: readonly [number, number, number] | ArrayLike<number>, yaw: number, pitch: number): Float64Array {
   const d = Math.PI / 180;
   const f = [Math.cos(pitch * d) * Math.cos(yaw * d), Math.sin(pitch * d), Math.cos(pitch * d) * Math.sin(yaw * d)];

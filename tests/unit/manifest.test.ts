@@ -1,4 +1,4 @@
-// custom-elements.json against the attribute tables: every attribute of SPEC §2 and §9 with its
+// custom-elements.json against the attribute tables: every attribute of docs/element.md#attribute-table and docs/scene-model.md#glass-object with its
 // type and default, every event and the public methods and properties, so the JSDoc the
 // manifest is made from cannot fall behind the tables. The manifest is generated afresh here.
 import { execFileSync } from 'node:child_process';

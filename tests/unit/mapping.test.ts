@@ -19,7 +19,7 @@ describe('cylindrical', () => {
 });
 
 describe('spherical', () => {
-  it('SPEC §3 sphere UV on the direction from the bounds centre', () => {
+  it('the default sphere UV (docs/default-scene.md#texture-coordinates) on the direction from the bounds centre', () => {
     expectClose(sphericalUV(uv(), [0, -3, 0], UNIT), [0.5, 0]); // bottom pole, any distance
     expectClose(sphericalUV(uv(), [0, 0, 2], UNIT), [0.5, 0.5]);
     expectClose(sphericalUV(uv(), [1, 1, 0], UNIT), [0.75, 0.75]); // acos(−1/√2)/π = ¾

@@ -1,4 +1,4 @@
-// Mirror math: points, directions, the reflection matrix and the mirrored view (SPEC §4 pass 1).
+// Mirror math: points, directions, the reflection matrix and the mirrored view (docs/rendering.md#pass-1-reflection).
 import { describe, expect, it } from 'vitest';
 import { apply, expectClose } from './helpers';
 import { mat4, vec4 } from 'gl-matrix';

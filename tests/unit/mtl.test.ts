@@ -1,4 +1,4 @@
-// MTL materials as found in the wild (SPEC §9): values, texture options, faults.
+// MTL materials as found in the wild (docs/scene-model.md#obj-and-mtl): values, texture options, faults.
 import { describe, expect, it } from 'vitest';
 import { LoadError } from '../../src/loaders/load-error';
 import { parseMtl, parseMtlBytes } from '../../src/loaders/mtl';

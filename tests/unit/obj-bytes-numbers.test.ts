@@ -1,4 +1,4 @@
-// The byte scanner's numbers (issue 22): a million varied tokens read from bytes, each exactly
+// The byte scanner's numbers: a million varied tokens read from bytes, each exactly
 // what parseFloat gives on the token (Object.is: −0 and all), and NaN where the text scanner
 // refuses the token ("1e", ".", "inf"). Tokens are made deterministically: integers, decimals,
 // exponents, signs and leading dots, mantissas past 17 digits, huge and tiny exponents,

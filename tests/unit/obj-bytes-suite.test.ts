@@ -1,4 +1,4 @@
-// Every OBJ the loader tests parse, parsed both ways (issue 22): the tests below run again with
+// Every OBJ the loader tests parse, parsed both ways (text and bytes): the tests below run again with
 // parseObj and parseObjBytes wrapped so that each call also runs the other path and expects
 // the same result bit for bit, or the same LoadError — text as UTF-8 bytes, bytes as the
 // text the whole file decodes to (what parseObjBytes did before it read bytes).

@@ -1,4 +1,4 @@
-// parseObjBytes reads UTF-8 bytes without decoding the file (issue 22): the same result, bit for
+// parseObjBytes reads UTF-8 bytes without decoding the file: the same result, bit for
 // bit, as decoding the whole file and parsing the text (what it did before), on the models the
 // tests and pages use, on messy files written by hand and on random ones.
 import fs from 'node:fs';
@@ -13,7 +13,7 @@ import { expectSameOutcome, outcomeOf, type Outcome } from './obj-same';
 
 const utf8 = (text: string): Uint8Array => new TextEncoder().encode(text);
 
-/** parseObjBytes before issue 22: the whole file decoded, then the text parser. */
+/** The plain way to read bytes, as a baseline: the whole file decoded, then the text parser. */
 function viaText(bytes: Uint8Array, options: ObjOptions = {}): ObjResult {
   const sniffed = options.sniffed ?? sniffModel(bytes);
   if (sniffed === 'binary') throw new LoadError(options.url ?? '', 'binary content, not an OBJ file');

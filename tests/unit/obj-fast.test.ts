@@ -1,4 +1,4 @@
-// The OBJ parser's fast paths (issue 22's speed line): plain `v` and `f` lines read straight
+// The OBJ parser's fast paths: plain `v` and `f` lines read straight
 // into the lists, the weld by position alone for a file of one smoothing group with neither uvs
 // nor normals, and the byte scanner's reads past a file that ends without a line end. Each must
 // give exactly what the general way gives: the bytes against the text (which never takes a fast

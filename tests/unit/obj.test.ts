@@ -1,4 +1,4 @@
-// OBJ statements and syntax as found in the wild (SPEC §9): one `it` per item, exact numbers.
+// OBJ statements and syntax as found in the wild (docs/scene-model.md#obj-and-mtl): one `it` per item, exact numbers.
 import { describe, expect, it } from 'vitest';
 import { normalizeObj, parseObj, parseObjBytes } from '../../src/loaders/obj';
 import { normal, position } from './obj-helpers';

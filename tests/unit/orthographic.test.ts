@@ -1,4 +1,4 @@
-// Orthographic projection (SPEC §10): its size, its matrix, the mirrored orthographic camera,
+// Orthographic projection (docs/interaction.md#orthographic-projection): its size, its matrix, the mirrored orthographic camera,
 // the side it sees, and the sizes on screen the level-of-detail rules read.
 // Each broken on purpose once and seen red: FrameSetup's side by the eye's position (the clip
 // test), the mirrored view vector left unmirrored (the view-vector test; no e2e figure moves

@@ -1,4 +1,4 @@
-// The quality knobs of SPEC §5 in the attribute table, and the sphere's auto tessellation.
+// The quality knobs of docs/knobs.md#the-knobs in the attribute table, and the sphere's auto tessellation.
 import { describe, expect, it } from 'vitest';
 import { ATTRIBUTE_BY_NAME } from '../../src/element/attributes';
 import { segmentsForScreenRadius, MAX_SEGMENTS, MIN_SEGMENTS } from '../../src/scene/geometry/sphere';
@@ -9,7 +9,7 @@ import type { FrameState } from '../../src/frame/types';
 const parse = (attr: string, raw: string | null) => ATTRIBUTE_BY_NAME.get(attr)!.parse(raw);
 
 describe('reflection-scale', () => {
-  it('defaults to 1 (from the bench, in the default view of issue 14) and clamps to 0.125..2 with a problem', () => {
+  it('defaults to 1 (from the bench, in the default view) and clamps to 0.125..2 with a problem', () => {
     expect(parse('reflection-scale', null)).toEqual({ value: 1 });
     expect(parse('reflection-scale', '0.5')).toEqual({ value: 0.5 });
     expect(parse('reflection-scale', '0.01').value).toBe(0.125);

@@ -254,7 +254,7 @@ describe('textures', () => {
       render(scene([object({ kind: 'sphere', radius: 1 }, { rotation: [0, 30, 0] }, { mapping, texture: { kind: 'image', url: 'grad.png' } })]), FRONT, { images, samplesPerAxis: 2 }).rgb;
     const maxDiff = (a: Float64Array, b: Float64Array): number => a.reduce((m, x, i) => Math.max(m, Math.abs(x - b[i])), 0);
     const uv = draw('uv');
-    // The sphere's own UVs are SPEC §3's spherical mapping (up to rounding and the seam's pixels).
+    // The sphere's own UVs are the spherical mapping (docs/scene-model.md#texture-mappings) (up to rounding and the seam's pixels).
     const spherical = draw('spherical');
     let off = 0;
     for (let i = 0; i < uv.length; i++) if (Math.abs(uv[i] - spherical[i]) > 1e-9) off++;

@@ -1,4 +1,4 @@
-// Supersampling convergence of the reference: 16, 64 and 256 spp agree away from edges (issue 3 §1).
+// Supersampling convergence of the reference: 16, 64 and 256 spp agree away from edges (docs/knobs.md#measuring-accuracy).
 import { describe, expect, it } from 'vitest';
 import { renderReference, REGION_EDGE, type ReferenceImage, type ReferenceState } from '../../src/reference';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
@@ -37,8 +37,8 @@ describe('16 vs 64 vs 256 spp, away from edges', () => {
   // (shininess 32), about one pixel wide at 64×36. Stratum-centre sampling integrates a smooth
   // feature with an O(1/n²) error, so the bounds are per sample count: 16 spp within 0.75 of a
   // level of 256 spp, 64 spp within 0.15, and the first at least 3× the second (5× for an exact
-  // C/n² law). In the seed's view the highlight was ~7 px of sphere away, through the glass at
-  // an angle that dimmed it, and every pair sat under 0.1; the default view since issue 14 sees
+  // C/n² law). In the first design's view the highlight was ~7 px of sphere away, through the glass at
+  // an angle that dimmed it, and every pair sat under 0.1; the default view (docs/element.md#the-default-view) sees
   // the sphere 2.4× closer through the glass: 0.61 and 0.13 at the highlight, < 0.02 elsewhere.
   for (const [name, state] of [['default', DEFAULT_VIEW], ['oblique', OBLIQUE_VIEW]] as const) {
     it(`${name} view, final image: 16 and 64 spp converge on 256 as 1/n², the mean within 0.01 of a level`, () => {

@@ -1,5 +1,5 @@
 // The reference renderer against pixels computed by hand: shading, camera rays, glass, Fresnel anchors.
-// Expected values use SPEC §3–§4 numbers written out here, not the modules under test.
+// Expected values use the numbers of docs/default-scene.md and docs/rendering.md written out here, not the modules under test.
 import { describe, expect, it } from 'vitest';
 import { renderReference, REGION_BACKGROUND, REGION_CUBE, REGION_GLASS, REGION_SPHERE, type ReferenceState } from '../../src/reference';
 import { texel } from '../../src/scene/procedural-texture';
@@ -12,7 +12,7 @@ const BG = 0.1;
 const L = [0.4, 1, 0.6].map((c) => c / Math.hypot(0.4, 1, 0.6));
 const TINT_DARK = [0.7 * 0.35, 0.9 * 0.35, 1.0 * 0.35];
 
-/** SPEC §3 Blinn-Phong for a surface with normal n seen head-on (V = N = n, default +Z). */
+/** The default Blinn-Phong (docs/default-scene.md#material-and-lighting) for a surface with normal n seen head-on (V = N = n, default +Z). */
 function facingShade(albedo: number[], tex: number, n = [0, 0, 1]): number[] {
   const nl = n[0] * L[0] + n[1] * L[1] + n[2] * L[2];
   const h = [L[0] + n[0], L[1] + n[1], L[2] + n[2]];

@@ -1,4 +1,4 @@
-// The float64 reference's rough glass (SPEC §14) against values worked out independently here:
+// The float64 reference's rough glass (docs/rough-glass.md#reference-monte-carlo) against values worked out independently here:
 // a white half-plane seen in (and through) a rough glass wall, head-on and orthographic, whose
 // share of the GGX lobe is integrated by quadrature over θm, φm with D written out again and
 // Snell's law applied by angles, not through src/math/ggx.ts; roughness 0 as the polished path
@@ -64,7 +64,7 @@ function lobeShare(alpha: number, keep: (th: number, ph: number) => boolean, whi
 const xOf = (i: number) => -1 + (2 * (i + 0.5)) / W;
 const row = (rgb: Float64Array, y: number) => Array.from({ length: W }, (_, i) => rgb[3 * (y * W + i)]);
 
-describe('reference rough glass (SPEC §14)', () => {
+describe('reference rough glass (docs/rough-glass.md#reference-monte-carlo)', () => {
   const F = fresnel('exact', 1, 1.5);
 
   for (const roughness of [0.3, 0.6]) {

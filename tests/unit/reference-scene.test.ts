@@ -120,7 +120,7 @@ describe('regions', () => {
   });
 });
 
-describe('robustness (SPEC §6 extremes)', () => {
+describe('robustness at the extremes (docs/rendering.md#numerical-stability)', () => {
   const extremes: [string, Partial<ReferenceState>][] = [
     ['eye on the glass plane', { cameraPosition: [0, 1, 0], yaw: -90 }],
     ['eye 1e-7 in front', { cameraPosition: [0, 1, 1e-7], yaw: -90 }],

@@ -1,4 +1,4 @@
-// The reference in linear light (SPEC §13, colour-space 'srgb'): colour data decoded, light summed,
+// The reference in linear light (docs/colour.md#srgb, colour-space 'srgb'): colour data decoded, light summed,
 // one encode per pixel; 'none' as stored. Expected values are written out here: the curve in its
 // two IEC 61966-2-1 segments by hand, and the figures it gives (to 7 digits, as published).
 import { describe, expect, it } from 'vitest';
@@ -74,7 +74,7 @@ describe('the hand-written curve these tests use', () => {
 });
 
 describe('colour data are decoded, coefficients are not', () => {
-  it('issue 20: a white image under Ka = 0.2159 and an ambient light 1 shows 128 with srgb, 55 with none', () => {
+  it('a white image under Ka = 0.2159 and an ambient light 1 shows 128 with srgb, 55 with none', () => {
     const s = scene([object(quad(8, 8), plain(0.2159))]);
     const srgb = render(s, 'srgb');
     expectRgb(rgbAt(srgb, 4, 4), [0.5020032, 0.5020032, 0.5020032], 5e-8); // encode(0.2159)

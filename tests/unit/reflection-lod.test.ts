@@ -1,4 +1,4 @@
-// The reflection's coarser mesh (issue 9: a 100k-triangle model's reflection within 1.25× of the
+// The reflection's coarser mesh (docs/knobs.md#level-of-detail: a 100k-triangle model's reflection within 1.25× of the
 // scene pass): vertex clustering and the grid chosen for a size on screen.
 import { describe, expect, it } from 'vitest';
 import { clusterMesh, meshExtent } from '../../src/scene/geometry/cluster';

@@ -1,5 +1,5 @@
 // The trackball's turn travels in the frame state (FrameState.turn), not in a new scene value
-// (issue 19): the frame setup that both renderers share composes it as one matrix before each
+// (a turn builds nothing): the frame setup that both renderers share composes it as one matrix before each
 // model matrix (turnMatrix). It must give what the turned scene value gives (rotateScene: each
 // object's position and Euler rotation rewritten, as the page's `scene` and the reference see it)
 // to rounding, in matrices, light vectors, the course camera's depth range, and pixels.

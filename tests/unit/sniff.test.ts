@@ -1,4 +1,4 @@
-// Format sniffing from content (SPEC §9): OBJ, .byu mesh or Bézier, HTML, binary.
+// Format sniffing from content (docs/scene-model.md#loading): OBJ, .byu mesh or Bézier, HTML, binary.
 import { describe, expect, it } from 'vitest';
 import { sniffModel } from '../../src/loaders/sniff';
 

@@ -1,4 +1,4 @@
-// A frame split into bands of rows across renderers (issue 22: one per worker, element/
+// A frame split into bands of rows across renderers (docs/software-renderer.md#worker: one per worker, element/
 // software-host.ts) is the whole frame bit for bit: each band drawn by its own renderer
 // (renderBand, as a worker draws it) and put back (putBand) gives the bytes one renderer gives the
 // whole frame. software-reference.test.ts's scenes (a mesh, a Bézier surface, transparency,

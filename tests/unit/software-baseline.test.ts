@@ -1,4 +1,4 @@
-// The software renderer's pixels held to the bit (issue 22): its speed-ups must not move a pixel.
+// The software renderer's pixels held to the bit (docs/software-renderer.md#frame-to-frame-caches): its speed-ups must not move a pixel.
 // Each frame's RGBA8 digest against tests/unit/software-baseline.json, recorded from the renderer
 // as it stood before them: software-reference.test.ts's scenes at 160×90 with 1 and 2×2 samples
 // in both colour spaces, the default scene in each debug view, Fresnel model, shading mode,

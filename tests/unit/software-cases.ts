@@ -1,4 +1,4 @@
-// The software renderer's test scenes (SPEC §11): the cases software-reference.test.ts compares
+// The software renderer's test scenes (docs/software-renderer.md): the cases software-reference.test.ts compares
 // with the float64 reference (with the figures measured there) and software-baseline.test.ts
 // holds to the bit, at 160×90.
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION } from '../../src/element/attributes';
@@ -8,7 +8,7 @@ import type { FrameState } from '../../src/frame/types';
 import type { DecodedImage } from '../../src/reference';
 import { bezierPatchMesh } from '../../src/scene/geometry/bezier';
 
-/** A bicubic Bézier bump (seed 002's geometry) at E = 40, as the course's .byu loader makes it. */
+/** A bicubic Bézier bump (docs/software-renderer.md#bezier-surfaces) at E = 40, as the course's .byu loader makes it. */
 function bezierBump() {
   const points: number[] = [];
   for (let i = 0; i <= 3; i++) for (let j = 0; j <= 3; j++) {
@@ -25,7 +25,7 @@ export interface Figures {
   glass: number | null;
   background: number;
   edges: number;
-  /** Pixels whose reference is below 32/255 in every channel (SPEC §13's banding region), in any class. */
+  /** Pixels whose reference is below 32/255 in every channel (the banding region, docs/colour.md#eight-bit-targets), in any class. */
   dark?: number | null;
 }
 
@@ -96,7 +96,7 @@ const glassScene = (objects: SceneObject[], lights = [DEFAULT_LIGHT]): Scene => 
 
 export const CASES: Case[] = [
   { name: 'default scene', scene: defaultScene(0.75, 0.8), measured: { all: 55.1, objects: 58.0, glass: 58.3, background: 54.2, edges: 51.5 } },
-  // Orthographic (SPEC §10): F and the highlights from the view's direction, not from the eye
+  // Orthographic (docs/interaction.md#orthographic-projection): F and the highlights from the view's direction, not from the eye
   // point (that way, as this renderer drew it before: objects 25.6 dB, glass 34.9).
   { name: 'default scene, orthographic', scene: defaultScene(0.75, 0.8), state: { projection: 'orthographic' }, measured: { all: 53.8, objects: 53.1, glass: 58.4, background: 54.2, edges: 51.5 } },
   {

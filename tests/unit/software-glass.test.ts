@@ -1,5 +1,5 @@
-// The software renderer's glass (SPEC §4) pixel by pixel against colours worked out here: the
-// glass equation F·R + (1 − F)·(T·B + (1 − T)·D), and seed 000's classic blend, at
+// The software renderer's glass (docs/rendering.md#the-glass-equation) pixel by pixel against colours worked out here: the
+// glass equation F·R + (1 − F)·(T·B + (1 − T)·D), and the classic blend, at
 // transparencies where T and 1 − T differ, with each Fresnel model written out in this file
 // (never src/math/fresnel.ts), from both sides of the glass.
 import { describe, expect, it } from 'vitest';
@@ -63,13 +63,13 @@ function fresnelByHand(model: FresnelModel, c: number, n: number): number {
 const B = [0.6, 0.3, 0.1];
 const R = [0.2, 0.5, 0.9];
 const GREY = 0.8;
-/** D = tex ⊙ (0.7, 0.9, 1.0) ⊙ 0.35 (SPEC §4). */
+/** D = tex ⊙ (0.7, 0.9, 1.0) ⊙ 0.35 (docs/rendering.md#the-glass-equation). */
 const D = [0.7, 0.9, 1.0].map((k) => GREY * k * 0.35);
 
 function glassEquation(model: FresnelModel, c: number, ior: number, t: number): number[] {
   const f = fresnelByHand(model, c, ior);
   if (model === 'classic') {
-    // Seed 000: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha blending.
+    // Classic: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha blending.
     const a = (1 - t) * (0.2 + 0.8 * f);
     return D.map((d, k) => (d + (R[k] - d) * f) * a + B[k] * (1 - a));
   }

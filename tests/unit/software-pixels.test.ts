@@ -1,6 +1,6 @@
 // The software renderer's pixels against values worked out here, independent of the reference:
-// Blinn-Phong (SPEC §9) on a quad seen head-on and off-axis, with a directional and a point
-// light, and a transparent quad blended as colour·(1 − kt) + framebuffer·kt (SPEC §11) at kt
+// Blinn-Phong (docs/scene-model.md#lights) on a quad seen head-on and off-axis, with a directional and a point
+// light, and a transparent quad blended as colour·(1 − kt) + framebuffer·kt (docs/software-renderer.md#transparency) at kt
 // where kt and 1 − kt differ.
 import { describe, expect, it } from 'vitest';
 import { SoftwareRenderer } from '../../src/software';

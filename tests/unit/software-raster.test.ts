@@ -1,4 +1,4 @@
-// The software rasterizer (SPEC §11): top-left fill rule pixel for pixel, shared edges drawn
+// The software rasterizer (docs/software-renderer.md#rasterisation): top-left fill rule pixel for pixel, shared edges drawn
 // exactly once, perspective-correct interpolation, z-buffer order, near-plane clipping.
 import { describe, expect, it } from 'vitest';
 import { projectionMatrix } from '../../src/math/camera';

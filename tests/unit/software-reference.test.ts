@@ -1,4 +1,4 @@
-// The software renderer (SPEC §11) against the float64 reference, at 160×90 with 4×4 samples per
+// The software renderer (docs/software-renderer.md) against the float64 reference, at 160×90 with 4×4 samples per
 // pixel on both sides (the same sample positions): PSNR per scene and per region, each bound
 // MARGIN_DB below the figure measured (both renderers are deterministic: the figures repeat to
 // the last digit run after run), figures printed. The reference shares fresnel.ts, mapping.ts and
@@ -95,7 +95,7 @@ describe(`software renderer against the reference (${STATE.width}×${STATE.heigh
 });
 
 /**
- * SPEC §13's linear light: the same comparison with colorSpace 'srgb' on both sides (textures and
+ * Linear light (docs/colour.md#srgb): the same comparison with colorSpace 'srgb' on both sides (textures and
  * background decoded, light summed and averaged linearly, one encode), the dark region included
  * (the background, 0.1, is dark). srgb textures are read anisotropically (mip-texture.ts), as the
  * WebGL renderer reads them; with isotropic reads these figures were lower — default scene 52.8

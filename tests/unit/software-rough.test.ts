@@ -1,6 +1,6 @@
-// Rough glass in the software renderer (SPEC §14) against the float64 reference, which computes
+// Rough glass in the software renderer (docs/rough-glass.md#the-gather) against the float64 reference, which computes
 // it by Monte Carlo over GGX normals (reference-rough.test.ts ties that down by quadrature): the
-// bench's glass floor (a cube resting on it, a sphere 1.5 above) and SPEC §3's glass wall (the
+// bench's glass floor (a cube resting on it, a sphere 1.5 above) and the default glass wall (the
 // cube in front, the sphere seen through it), at roughness 0.1 and 0.5; roughness 0 as the
 // polished frame bit for bit; and contact hardening: the blur of a reflection's edge grows with
 // the height of what it reflects.
@@ -36,7 +36,7 @@ function wallState(roughness: number, transparency = 0.5): FrameState {
 /** 2×2 strata per pixel, 64 microfacet normals each (its noise: ≥ 51 dB against 4096 at 0.3). */
 const REFERENCE = { samplesPerAxis: 2, microfacetSamples: 64 };
 
-describe('software renderer: rough glass against the reference (SPEC §14)', () => {
+describe('software renderer: rough glass against the reference (docs/rough-glass.md#reference-monte-carlo)', () => {
   const cases: [string, () => Scene, (r: number) => FrameState, number, number][] = [
     // [name, scene, state, roughness, bound (dB)]: the figure measured (the polished frame's in brackets)
     // less 0.5 dB — frames are deterministic; the margin covers other CPUs' rounding, not changes.
@@ -46,7 +46,7 @@ describe('software renderer: rough glass against the reference (SPEC §14)', () 
     ['wall', () => defaultScene(DEFAULT_CUBE_DISTANCE, 0), wallState, 0.5, 39.8], // 40.29 (33.71)
     // A bright sky: what the lobe drops past the horizon, and the sky's light around the objects, show.
     ['bright floor', () => ({ ...roughFloorScene(), background: [0.9, 0.9, 0.9] as Vec3 }), floorState, 0.5, 43.0], // 43.50 (37.78)
-    // Orthographic (SPEC §10): the lobe's scale as in perspective, from the camera's point.
+    // Orthographic (docs/interaction.md#orthographic-projection): the lobe's scale as in perspective, from the camera's point.
     ['orthographic floor', roughFloorScene, (r) => ({ ...floorState(r), projection: 'orthographic', target: [0, 0.6, 0] }), 0.3, 50.2], // 50.69 (44.15)
     // A long floor at grazing incidence: much of the lobe would leave beyond the horizon (dropped).
     ['long floor at grazing incidence', () => HORIZON_SCENE, (r) => horizonState({ width: W, height: H, roughness: r, ior: 10 }), 0.3, 36.6], // 37.07 (26.95)

@@ -1,4 +1,4 @@
-// The software renderer's colour spaces (SPEC §13) against values worked out here: with 'srgb'
+// The software renderer's colour spaces (docs/colour.md#srgb) against values worked out here: with 'srgb'
 // colour data (image texels, the procedural texture's texels, the background) are decoded, light
 // is summed, filtered, blended and averaged linearly, and the frame is encoded once at the end;
 // 'fresnel' shows F unencoded. Each case is drawn in 'none' too, where values are used as stored.
@@ -44,8 +44,8 @@ function expectPixel(rgba: ArrayLike<number>, width: number, i: number, j: numbe
 const INSIDE: [number, number][] = [];
 for (let j = 5; j <= 11; j++) for (let i = 5; i <= 11; i++) INSIDE.push([i, j]);
 
-describe('software renderer, color-space srgb against none (SPEC §13)', () => {
-  it("issue 20's case: a white image, Ka = 0.2159, Ia = 1 shows 128 with srgb (encode(0.2159) = 0.50196), 55 with none", () => {
+describe('software renderer, color-space srgb against none (docs/colour.md#none)', () => {
+  it("a white image, Ka = 0.2159, Ia = 1 shows 128 with srgb (encode(0.2159) = 0.50196), 55 with none", () => {
     const s = scene([quad(-1, -1, 1, 1, 0, material([0.2159, 0.2159, 0.2159], { kind: 'image', url: 'white' }))], [0, 0, 0]);
     const expected: Record<ColorSpace, number> = { srgb: 128, none: 55 };
     for (const space of SPACES) {
@@ -137,7 +137,7 @@ describe('software renderer, color-space srgb against none (SPEC §13)', () => {
   });
 });
 
-describe('software renderer, the glass in linear light (SPEC §4, §13)', () => {
+describe('software renderer, the glass in linear light (docs/rendering.md#the-glass-equation, docs/colour.md#srgb)', () => {
   // 32×32 pixels, fov 90°, the eye 2 from the glass z = 0 on its axis: a pixel is 1/8 unit there.
   // The glass, 64×64 with its u = 0, v = 0 corner at the view's bottom-left (−2, −2), spans the
   // procedural texture's 512 texels over 512 pixels, so pixel (i, j) reads exactly texel
@@ -221,7 +221,7 @@ function nextDouble(x: number, up: boolean): number {
 }
 
 describe("the resolve's encode (a table read) gives linearToSrgbByte's byte", () => {
-  /** Where the byte steps from b − 1 to b: decode((b − ½)/255), b = 1..255, written out from SPEC §13's curve. */
+  /** Where the byte steps from b − 1 to b: decode((b − ½)/255), b = 1..255, written out from the curve of docs/colour.md#the-transfer-curve. */
   const steps: number[] = [];
   for (let b = 1; b < 256; b++) {
     const c = (b - 0.5) / 255;

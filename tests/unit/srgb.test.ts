@@ -1,4 +1,4 @@
-// SPEC §13's transfer curve against published values (IEC 61966-2-1's piecewise curve; the 8-bit
+// The sRGB transfer curve (docs/colour.md#the-transfer-curve) against published values (IEC 61966-2-1's piecewise curve; the 8-bit
 // levels below in linear light are the values every colour-management table lists), and the
 // byte encoder the software renderer uses against the formula.
 import { describe, expect, it } from 'vitest';
@@ -32,7 +32,7 @@ describe('srgbToLinear', () => {
 });
 
 describe('linearToSrgb', () => {
-  it('encodes 0.2159 to 128/255 (0.50196): issue 20’s white texture under ambient 0.2159', () => {
+  it('encodes 0.2159 to 128/255 (0.50196): a white texture under ambient 0.2159', () => {
     // 1.055·0.2159^(1/2.4) − 0.055 = 0.502003, within 0.1 of a level of 128.
     expect(Math.abs(linearToSrgb(0.2159) - 0.5020032)).toBeLessThan(5e-7);
     expect(Math.round(linearToSrgb(0.2159) * 255)).toBe(128);

@@ -1,4 +1,4 @@
-// Numerical stability at the extremes (SPEC §6), the parts that need no GL: the per-frame
+// Numerical stability at the extremes (docs/rendering.md#numerical-stability), the parts that need no GL: the per-frame
 // matrices (FrameSetup), the projection, the camera's look direction, the Fresnel terms, the
 // sphere's tessellation bounds and the reference renderer. The browser side of the same matrix
 // (GL errors, non-finite uniforms, NaN pixels, continuity) is tests/e2e/stability.spec.ts.
@@ -426,7 +426,7 @@ describe('the reference renderer at the extremes', () => {
 });
 
 describe('finite but huge attribute values reach FrameSetup finite', () => {
-  // SPEC §2 accepts any finite cube-distance, spin and time; §6 wants every uniform finite. The
+  // docs/element.md#attribute-table accepts any finite cube-distance, spin and time; docs/rendering.md#numerical-stability wants every uniform finite. The
   // value goes through the attribute parser first, as in the element, so either place may fix
   // it (clamp in the parser, or keep the matrices finite): the test only asks for the outcome.
   const parse = (attribute: string, raw: string) => ATTRIBUTE_BY_NAME.get(attribute)!.parse(raw).value as number;

@@ -1,4 +1,4 @@
-// The seeded checker-plus-noise texture of SPEC §3.
+// The seeded checker-plus-noise texture of docs/default-scene.md#the-procedural-texture.
 import { describe, expect, it } from 'vitest';
 import { buildProceduralTexture, proceduralTexture, texel, textureNoise } from '../../src/scene/procedural-texture';
 import { TEXTURE_SIZE } from '../../src/scene/default-scene';

@@ -1,4 +1,4 @@
-// The course's camera `.cfg` and `iluminacao.txt` (SPEC §11) as the element loads them: fetched
+// The course's camera `.cfg` and `iluminacao.txt` (docs/course-files.md#lighting-file) as the element loads them: fetched
 // (abortable, with progress), parsed, warnings as console-ready text. Loaded on demand, in the
 // same chunk as the course's parsers.
 import { decodeText } from '../../loaders/decode-text';

@@ -1,5 +1,5 @@
-// The course's `iluminacao.txt` (SPEC §11) in the scene's terms: its point light and its
-// material mapped onto the scene's Blinn-Phong (SPEC §9). Pure.
+// The course's `iluminacao.txt` (docs/course-files.md#lighting-file) in the scene's terms: its point light and its
+// material mapped onto the scene's Blinn-Phong (docs/scene-model.md#lights). Pure.
 //
 // The course computes, on 0..255:  I = ka·Ia + Il ⊙ (kd·Od·(N·L) + ks·(R·V)^n)
 // the scene computes, on 0..1:     I = Ka⊙Ia + Kd⊙Id·(N·L) + Ks⊙Is·(N·H)^shininess

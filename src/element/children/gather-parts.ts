@@ -1,5 +1,5 @@
 // The children's parts of the scene, gathered in document order: each <glass-object>'s objects
-// (with the material of the first lighting file that has loaded, SPEC §11) and up to four
+// (with the material of the first lighting file that has loaded, docs/course-files.md#lighting-file) and up to four
 // <glass-light>s. A chunk of its own, which SceneSource fetches when it first finds a child of
 // ours: a scene without children never loads it, and children another copy of the package
 // defined are gathered too.
@@ -26,7 +26,7 @@ export function gatherParts(host: GatherHost): ChildParts {
   let lights: Light[] | null = null;
   let extra = 0;
   const children = host.element.children;
-  // The material of the first lighting file in document order that has loaded (SPEC §11).
+  // The material of the first lighting file in document order that has loaded (docs/course-files.md#lighting-file).
   let fileMaterial: MtlValues | null = null;
   for (const child of children) {
     if (child.localName !== LIGHT_TAG || typeof (child as Partial<GlassLight>).toMaterial !== 'function') continue;

@@ -1,6 +1,6 @@
-// <glass-light>: one light of the scene (SPEC §9). `position` makes a point light, `direction` a
-// directional one; with neither it is the default light of SPEC §3 (with its own intensities).
-// `src` loads the course's iluminacao.txt (SPEC §11): a point light at its Pl with its
+// <glass-light>: one light of the scene (docs/scene-model.md#glass-light). `position` makes a point light, `direction` a
+// directional one; with neither it is the default light of docs/default-scene.md#the-light (with its own intensities).
+// `src` loads the course's iluminacao.txt (docs/course-files.md#lighting-file): a point light at its Pl with its
 // intensities (the attributes win), and a material for the element's objects.
 import { DEFAULT_LIGHT } from '../../scene/default-scene';
 import type { Light, Vec3 } from '../../scene/scene';
@@ -20,8 +20,8 @@ const conflicts = new AttributeWarnings();
 export interface GlassLight extends LightAttributes {}
 
 /**
- * One light of the scene (SPEC §9), a child of `<glass-plane-scene>`: `position` makes a point
- * light, `direction` a directional one; with neither it is the default light of SPEC §3.
+ * One light of the scene (docs/scene-model.md#glass-light), a child of `<glass-plane-scene>`: `position` makes a point
+ * light, `direction` a directional one; with neither it is the default light of docs/default-scene.md#the-light.
  * Every attribute is also a property.
  *
  * @tagname glass-light
@@ -75,7 +75,7 @@ export class GlassLight extends ChildElement<LightAttributes> {
 
   /**
    * This light as a scene value; null while its `src` loads or after it failed (a lighting
-   * file that fails adds no light, SPEC §11).
+   * file that fails adds no light, docs/course-files.md#lighting-file).
    */
   toLight(): Light | null {
     const { src, position, direction, ambient, diffuse, specular } = this.values;

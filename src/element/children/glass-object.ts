@@ -1,4 +1,4 @@
-// <glass-object>: one object of the scene (SPEC §9): a built-in shape, or a model loaded from
+// <glass-object>: one object of the scene (docs/scene-model.md#glass-object): a built-in shape, or a model loaded from
 // `src`. Fires `progress`, `load` and `error` (bubbling, composed); never throws. A changed or
 // removed `src` aborts the old load, whose result is never shown.
 import { normalizeObj } from '../../loaders/obj-normalize';
@@ -41,7 +41,7 @@ function partsOf(model: LoadedModel, normalize: boolean, resolution: number | nu
 export interface GlassObject extends ObjectAttributes {}
 
 /**
- * One object of the scene (SPEC §9): a built-in shape, or a model loaded from `src`. A child of
+ * One object of the scene (docs/scene-model.md#glass-object): a built-in shape, or a model loaded from `src`. A child of
  * `<glass-plane-scene>`; every attribute is also a camelCase property (`normalize`:
  * `normalizeModel`). Material attributes win over the MTL's values, the MTL over the defaults.
  *
@@ -103,7 +103,7 @@ export class GlassObject extends ChildElement<ObjectAttributes> {
 
   /**
    * The object as scene parts: one per material of a model; none while it loads or after it
-   * failed. `fileMaterial`: the element's lighting-file material (SPEC §11), below the
+   * failed. `fileMaterial`: the element's lighting-file material (docs/course-files.md#lighting-file), below the
    * object's attributes and its MTL.
    */
   toSceneObjects(fileMaterial: MtlValues | null = null): SceneObject[] {
@@ -153,7 +153,7 @@ export class GlassObject extends ChildElement<ObjectAttributes> {
         if (this.handle !== handle) return; // superseded: never shown
         this.model = model;
         this.changed();
-        // `load` when the object can be drawn with its textures (SPEC §9): after its images
+        // `load` when the object can be drawn with its textures (docs/scene-model.md#loading): after its images
         // decode (or fail, with a warning), the scene element draws them on its next frame.
         const images = new Set<string>();
         for (const o of this.toSceneObjects()) if (o.material.texture.kind === 'image') images.add(o.material.texture.url);
@@ -161,7 +161,7 @@ export class GlassObject extends ChildElement<ObjectAttributes> {
           if (this.handle !== handle) return;
           this.pending = false;
           this.changed();
-          // A Bézier .byu says which index of its control points varies fastest (SPEC §11).
+          // A Bézier .byu says which index of its control points varies fastest (docs/course-files.md#bezier-byu).
           const order = model.bezier ? { order: model.bezier.order } : {};
           this.fire('load', { url, warnings: [...model.warnings], ...order });
         });

@@ -1,11 +1,11 @@
-// THE attribute table of <glass-light> (SPEC §9). The defaults make one child light the default
-// light of SPEC §3 exactly: directional towards normalize(0.4, 1, 0.6), Ia 0.15, Id 0.85, Is 1.
+// THE attribute table of <glass-light> (docs/scene-model.md#glass-light). The defaults make one child light the default
+// light of docs/default-scene.md#the-light exactly: directional towards normalize(0.4, 1, 0.6), Ia 0.15, Id 0.85, Is 1.
 import { DEFAULT_LIGHT } from '../../scene/default-scene';
 import type { Vec3 } from '../../scene/scene';
 import { url, vec3, type ChildAttributeSpec } from './child-attribute-spec';
 
 export interface LightAttributes {
-  /** The course's iluminacao.txt (SPEC §11): its point light and the element's material. */
+  /** The course's iluminacao.txt (docs/course-files.md#lighting-file): its point light and the element's material. */
   src: string | null;
   /** A point light here, or null. */
   position: Vec3 | null;
@@ -16,7 +16,7 @@ export interface LightAttributes {
   specular: Vec3;
 }
 
-/** Intensities above 1 are allowed (SPEC §9); this only keeps them finite in float32. */
+/** Intensities above 1 are allowed (docs/scene-model.md#lights); this only keeps them finite in float32. */
 const MAX_INTENSITY = 1e6;
 
 const intensity = (property: 'ambient' | 'diffuse' | 'specular', what: string, def: Vec3) =>

@@ -1,7 +1,7 @@
-// One fetch and parse per URL per page (SPEC §9): elements share a pending load and keep the
+// One fetch and parse per URL per page (docs/scene-model.md#loading): elements share a pending load and keep the
 // result. Each user holds a reference; when the last one lets go of a load still under way,
 // it is aborted. A failed load is forgotten, so setting the URL again later tries again.
-// Models, and the course's camera and lighting files (SPEC §11), each kind keyed apart.
+// Models, and the course's camera and lighting files (docs/course-files.md#lighting-file), each kind keyed apart.
 import { LoadError, type LoadErrorDetail } from '../../loaders/load-error';
 import type { LoadedModel } from './model-loader';
 import type { Progress } from './model-fetch';
@@ -59,12 +59,12 @@ function start<T extends { warnings: string[] }>(key: string, url: string, load:
 }
 
 export function acquireModel(url: string, onProgress: (p: Progress) => void): ModelHandle {
-  // The loaders are a chunk of their own, fetched when a page first asks for a model (SPEC §12).
+  // The loaders are a chunk of their own, fetched when a page first asks for a model (docs/package.md#chunks).
   return acquire(`model ${url}`, url, onProgress, (signal, progress) =>
     import('./model-loader').then(({ loadModel }) => loadModel(url, signal, progress)));
 }
 
-/** A camera `.cfg` or an `iluminacao.txt` (SPEC §11), once per URL per page like a model. */
+/** A camera `.cfg` or an `iluminacao.txt` (docs/course-files.md#lighting-file), once per URL per page like a model. */
 export function acquireCourseFile<K extends CourseFileKind>(kind: K, url: string, onProgress: (p: Progress) => void = () => {}): Handle<LoadedCourseFile<K>> {
   return acquire(`${kind} ${url}`, url, onProgress, (signal, progress) =>
     import('./course-files').then(({ loadCourseFile }) => loadCourseFile(kind, url, signal, progress)));

@@ -13,11 +13,11 @@ import { absoluteUrl } from '../absolute-url';
 export interface LoadedModel {
   url: string;
   obj: ObjResult;
-  /** A Bézier `.byu` (SPEC §11): re-evaluated at the object's `resolution` when it sets one. */
+  /** A Bézier `.byu` (docs/course-files.md#bezier-byu): re-evaluated at the object's `resolution` when it sets one. */
   bezier: ByuBezierInfo | null;
   /** The Bézier patch on an E×E grid (here, so that the evaluator stays in this lazy chunk). */
   bezierAt: ((resolution: number) => ObjResult) | null;
-  /** A course `.byu`: no texture unless the object's `texture` sets one (SPEC §11). */
+  /** A course `.byu`: no texture unless the object's `texture` sets one (docs/course-files.md#mesh-byu). */
   byu: boolean;
   /** By material name; the first MTL file that defines a name gives it. */
   materials: Map<string, MtlValues>;

@@ -1,5 +1,5 @@
 // Bytes → ObjResult: sniff the content once (an HTML page or binary bytes are load errors), then
-// parse the OBJ or the course's `.byu` (SPEC §11) on the main thread, or in a worker above
+// parse the OBJ or the course's `.byu` (docs/course-files.md#mesh-byu) on the main thread, or in a worker above
 // WORKER_THRESHOLD so a big file does not block the page. Where a worker cannot start, the
 // main thread parses it.
 import { LoadError } from '../../loaders/load-error';
@@ -24,7 +24,7 @@ export interface ParsedModel {
   obj: ObjResult;
   /** A Bézier `.byu`: its patch, index order and E (null for an OBJ or a mesh `.byu`). */
   bezier: ByuBezierInfo | null;
-  /** A course `.byu` (mesh or Bézier): drawn without a texture unless one is set (SPEC §11). */
+  /** A course `.byu` (mesh or Bézier): drawn without a texture unless one is set (docs/course-files.md#mesh-byu). */
   byu: boolean;
 }
 
@@ -33,7 +33,7 @@ export async function parseModelBytes(bytes: Uint8Array, url: string): Promise<P
   const problem = formatProblem(sniffed);
   if (problem) throw new LoadError(url, problem);
   // Content too broken to say (a .byu without its face count) is named by the URL, so that
-  // the .byu parser reports the faulty line (SPEC §11).
+  // the .byu parser reports the faulty line (docs/course-files.md#text-conventions).
   const byu = sniffed === 'byu-mesh' || sniffed === 'byu-bezier' || (sniffed === 'unknown' && isByuUrl(url));
   const format = byu ? 'byu' : 'obj';
   if (bytes.length >= WORKER_THRESHOLD) {

@@ -1,4 +1,4 @@
-// THE attribute table of <glass-object> (SPEC §9): every row's name, default, range and
+// THE attribute table of <glass-object> (docs/scene-model.md#glass-object): every row's name, default, range and
 // fallback. Material rows default to null, meaning "the MTL's value, else the default", so
 // that an attribute wins over the MTL and the MTL over the default (nothing is written back).
 import { MAPPINGS, type Mapping, type Vec3 } from '../../scene/scene';
@@ -26,7 +26,7 @@ export interface ObjectAttributes {
   mapping: Mapping | null;
 }
 
-/** Material values of an object with neither attribute nor MTL value (SPEC §9). */
+/** Material values of an object with neither attribute nor MTL value (docs/scene-model.md#glass-object). */
 export const OBJECT_DEFAULTS = {
   ambient: [0.2, 0.2, 0.2] as Vec3,
   diffuse: [0.8, 0.8, 0.8] as Vec3,

@@ -1,4 +1,4 @@
-// An object's Material by SPEC §9's precedence: attribute over MTL over default. Pure.
+// An object's Material by precedence (docs/scene-model.md#material-precedence): attribute over MTL over default. Pure.
 import type { Mapping, Material, TextureSource, Vec3 } from '../../scene/scene';
 import { OBJECT_DEFAULTS, type ObjectAttributes } from './object-attributes';
 
@@ -14,7 +14,7 @@ export interface MtlValues {
 
 export type MaterialAttributes = Pick<ObjectAttributes, 'ambient' | 'diffuse' | 'specular' | 'shininess' | 'opacity' | 'texture' | 'mapping'>;
 
-/** Element-wide material (the course's `iluminacao.txt`, SPEC §11) and how the object is textured. */
+/** Element-wide material (the course's `iluminacao.txt`, docs/course-files.md#lighting-file) and how the object is textured. */
 export interface MaterialContext {
   /** Below the object's attributes and its MTL, above the defaults. */
   file?: MtlValues | null;

@@ -1,4 +1,4 @@
-// Shoemake's arcball with Bell's hyperbolic sheet (SPEC §10): a pointer position maps to a point
+// Shoemake's arcball with Bell's hyperbolic sheet (docs/interaction.md#trackball): a pointer position maps to a point
 // on a unit sphere where it is near the centre (r² ≤ ½) and on the sheet z = ½/r outside, which
 // meets the sphere smoothly at r² = ½, so a drag past the rim keeps turning instead of sticking.
 // The rotation of a drag takes the first point to the second: about their cross product, by the

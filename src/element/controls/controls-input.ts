@@ -1,4 +1,4 @@
-// The element's input (SPEC §10), in the `controls` chunk: the flyby's keys and mouse look, orbit
+// The element's input (docs/interaction.md#controls), in the `controls` chunk: the flyby's keys and mouse look, orbit
 // and trackball pointers, their motion frame by frame, and the end of a gesture, when the pose
 // is written back to the camera attributes once and `camera-change` is fired. CameraRig creates
 // it the first time `controls` asks for any of them and hands it the pose it moves.
@@ -120,7 +120,7 @@ export class ControlsInput implements Controller {
   /** A frame begins: the flyby and the motion after release advance. */
   step(): void {
     this.advanceFlyby();
-    // The motion after release, by the wall clock (SPEC §10), not the frame's timestamp.
+    // The motion after release, by the wall clock (docs/interaction.md#inertia), not the frame's timestamp.
     if (!this.pointer.update(performance.now())) return;
     if (this.host.values.controls === 'orbit') this.cameraDirty = true; // a trackball's spin turns objects, not the camera
     else this.host.turned();
@@ -153,7 +153,7 @@ export class ControlsInput implements Controller {
   }
 
   /**
-   * A gesture ended (SPEC §10): the camera attributes are written once (camera-target too when
+   * A gesture ended (docs/interaction.md#write-back-and-camera-change): the camera attributes are written once (camera-target too when
    * a pan moved it) and one camera-change is fired; the write-back itself fires none.
    */
   private gestureEnd(): void {

@@ -1,18 +1,18 @@
-// Keys and mouse → flyby camera pose (seed 000's updateCamera); no DOM, no GL.
+// Keys and mouse → flyby camera pose (docs/interaction.md#flyby); no DOM, no GL.
 import { clampPitch, forwardFromYawPitch, setPose, wrapYaw, type CameraPose } from '../../math/camera';
 
 export interface FlybyOptions {
-  /** Units per second (seed 000: 3). */
+  /** Units per second (3 by default). */
   speed?: number;
-  /** Degrees per pointer-lock pixel (seed 000: 0.002 rad). */
+  /** Degrees per pointer-lock pixel (0.002 rad by default). */
   sensitivity?: number;
   /** Degrees per second for the arrow-key look. */
   turnRate?: number;
-  /** Longest step in seconds; a stalled tab must not teleport the camera (seed 000 caps at 0.1). */
+  /** Longest step in seconds; a stalled tab must not teleport the camera (0.1 by default). */
   maxDt?: number;
 }
 
-/** The most one mouse event turns the camera, degrees (SPEC §10). */
+/** The most one mouse event turns the camera, degrees (docs/interaction.md#no-jumps). */
 export const MAX_LOOK_STEP = 5;
 
 const DEFAULTS: Required<FlybyOptions> = {
@@ -86,7 +86,7 @@ export class FlybyController {
 
   /**
    * Pointer-lock movement in CSS pixels: yaw += dx·sens, pitch −= dy·sens, at most
-   * MAX_LOOK_STEP degrees per event (SPEC §10: no single event turns the camera more than 5°).
+   * MAX_LOOK_STEP degrees per event (docs/interaction.md#no-jumps: no single event turns the camera more than 5°).
    * True if the pose changed.
    */
   look(dx: number, dy: number): boolean {

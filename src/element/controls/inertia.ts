@@ -1,12 +1,12 @@
-// Motion after release (SPEC §10): rates that decay as e^(−t/τ), t the wall-clock time since
+// Motion after release (docs/interaction.md#inertia): rates that decay as e^(−t/τ), t the wall-clock time since
 // the release, advanced exactly for any frame time, so the motion after release is the same at
 // 13, 30 and 144 frames per second. Each step turns by ∫ r·e^(−s/τ) ds over the step =
 // r·τ·(1 − e^(−dt/τ)), and the rates become r·e^(−dt/τ): the steps telescope to
 // r₀·τ·(1 − e^(−T/τ)) whatever the frames were. Rates are in radians per second throughout.
 
-/** Decay time constant, seconds (SPEC: ≤ 0.5 s). */
+/** Decay time constant, seconds (docs/interaction.md#inertia: ≤ 0.5 s). */
 export const INERTIA_TAU = 0.35;
-/** Below this rate (rad/s, SPEC: 0.05°/s) the motion stops and no more frames are drawn. */
+/** Below this rate (rad/s; docs/interaction.md#inertia: 0.05°/s) the motion stops and no more frames are drawn. */
 export const INERTIA_STOP = (0.05 * Math.PI) / 180;
 /** No inertia when the pointer rested this long (ms) before release. */
 export const REST_MS = 100;

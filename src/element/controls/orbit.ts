@@ -1,4 +1,4 @@
-// The orbit camera (SPEC §10): turns about a target at a fixed distance, dollies along its view
+// The orbit camera (docs/interaction.md#orbit): turns about a target at a fixed distance, dollies along its view
 // and pans with the target. Reads and writes the element's camera pose; no DOM.
 import { clampPitch, forwardFromYawPitch, tanHalfFov, wrapYaw, type CameraPose } from '../../math/camera';
 

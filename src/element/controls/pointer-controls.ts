@@ -1,4 +1,4 @@
-// DOM input for `controls="orbit"` and `controls="trackball"` (SPEC §10): pointer drags (mouse,
+// DOM input for `controls="orbit"` and `controls="trackball"` (docs/interaction.md#trackball): pointer drags (mouse,
 // pen, one finger), two-finger pinch and pan, the wheel, and keys while the host has focus.
 // orbit: drag turns the camera about its target, right-drag (or Shift-drag, or two fingers)
 // pans, wheel and pinch dolly. trackball: drag turns the objects with the arcball, right-drag
@@ -38,11 +38,11 @@ export interface PointerControlsHost {
   readonly lightRotation: quat;
 }
 
-/** No single input event turns anything by more than this (SPEC §10), degrees. */
+/** No single input event turns anything by more than this (docs/interaction.md#no-jumps), degrees. */
 export const MAX_EVENT_TURN = 5;
 /** Dolly per wheel pixel: e^(0.0015·deltaY). */
 const WHEEL_RATE = 0.0015;
-/** The wheel's gesture ends this long after its last event (SPEC §10), ms. */
+/** The wheel's gesture ends this long after its last event (docs/interaction.md#write-back-and-camera-change), ms. */
 export const WHEEL_END_MS = 150;
 /** Keys: degrees per arrow press, dolly factor per +/−. */
 const KEY_TURN = 5, KEY_DOLLY = 1.1;

@@ -1,4 +1,4 @@
-// The course's Bézier `.byu` (SPEC §11): `m n` (degrees), E (evaluations per direction), then
+// The course's Bézier `.byu` (docs/course-files.md#bezier-byu): `m n` (degrees), E (evaluations per direction), then
 // the (m + 1)(n + 1) control points in one of the two index orders the course's files use.
 import { LoadError, type LoadWarning } from '../load-error';
 import { Warnings } from '../warnings';

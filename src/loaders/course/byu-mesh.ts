@@ -1,4 +1,4 @@
-// The course's mesh `.byu` (SPEC §11): `NV NT`, NV lines `x y z`, NT lines `i j k` (1-based),
+// The course's mesh `.byu` (docs/course-files.md#mesh-byu): `NV NT`, NV lines `x y z`, NT lines `i j k` (1-based),
 // with vertex normals as the course teaches them.
 import { LoadError, type LoadWarning } from '../load-error';
 import { Warnings } from '../warnings';

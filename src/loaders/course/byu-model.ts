@@ -1,4 +1,4 @@
-// A course `.byu` (SPEC §11) as the model the element draws: the same ObjResult shape as an OBJ
+// A course `.byu` (docs/course-files.md#mesh-byu) as the model the element draws: the same ObjResult shape as an OBJ
 // (one group, no UVs, no materials), plus the Bézier patch so that `resolution` can re-evaluate
 // it without a new fetch. Pure: the worker, the main thread and the tests call it.
 import { decodeText, type Bytes } from '../decode-text';

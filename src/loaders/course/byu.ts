@@ -1,4 +1,4 @@
-// A course `.byu` of either kind (SPEC §11): the content decides mesh or Bézier surface.
+// A course `.byu` of either kind (docs/course-files.md#bezier-byu): the content decides mesh or Bézier surface.
 import { LoadError } from '../load-error';
 import { parseByuBezier, type ByuBezierResult } from './byu-bezier';
 import { parseByuMesh, type ByuMeshResult } from './byu-mesh';

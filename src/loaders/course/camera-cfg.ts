@@ -1,4 +1,4 @@
-// The course's camera `.cfg` (SPEC §11): C, N, V and `d hx hy`, one per line.
+// The course's camera `.cfg` (docs/course-files.md#camera-cfg): C, N, V and `d hx hy`, one per line.
 import { LoadError, type LoadWarning } from '../load-error';
 import { Warnings } from '../warnings';
 import { courseBasis, type CourseCamera, type Vec3 } from '../../math/course-camera';

@@ -1,4 +1,4 @@
-// Reading the course's text files (SPEC §11): non-blank lines in order with their 1-based
+// Reading the course's text files (docs/course-files.md#text-conventions): non-blank lines in order with their 1-based
 // numbers, a few whitespace-separated numbers each, every fault a LoadError naming the line.
 // Lazy and linear: a 10 MB line is scanned once, never split into millions of tokens.
 import { LoadError } from '../load-error';

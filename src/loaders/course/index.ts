@@ -1,4 +1,4 @@
-// The course's file loaders (SPEC §11) in one import, for the element and the worker that
+// The course's file loaders (docs/course-files.md) in one import, for the element and the worker that
 // will use them: text in, typed arrays and plain data out, LoadError with url and line.
 export { parseByu, type ByuResult } from './byu';
 export { parseByuMesh, courseVertexNormals, type ByuMeshResult } from './byu-mesh';

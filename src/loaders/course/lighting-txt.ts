@@ -1,4 +1,4 @@
-// The course's `iluminacao.txt` (SPEC §11): Pl / ka / Ia / kd / Od / ks / Il / n, one per line.
+// The course's `iluminacao.txt` (docs/course-files.md#lighting-file): Pl / ka / Ia / kd / Od / ks / Il / n, one per line.
 import type { LoadWarning } from '../load-error';
 import { Warnings } from '../warnings';
 import type { CourseLight, CourseMaterial } from '../../math/course-phong';

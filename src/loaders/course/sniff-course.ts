@@ -1,4 +1,4 @@
-// Tells the course's files apart (SPEC §11), in the manner of ../sniff.ts: by content first,
+// Tells the course's files apart (docs/course-files.md), in the manner of ../sniff.ts: by content first,
 // the URL's name only when the content is too broken to say.
 import { sniffModel, type ModelFormat } from '../sniff';
 import { CourseLines, isNumber } from './course-text';

@@ -11,7 +11,7 @@ const WORK_LIMIT = 30_000_000;
  * is linear past the work limit, but a face of n corners still becomes up to n − 2 triangles
  * drawn in every frame, and an `f` line spends about 2 bytes a corner where a file of
  * triangles spends 8 a triangle: unbounded, one 10 MB line is 5 million triangles that stop
- * the page (issue 18). Real models' largest n-gons (a finely cut circle, a font outline) have
+ * the page. Real models' largest n-gons (a finely cut circle, a font outline) have
  * a few thousand corners; 65 536 leaves room for ten times that while bounding one line's
  * triangles by what a 0.5 MB file of triangles could hold anyway.
  */

@@ -1,4 +1,4 @@
-// An off-screen target for rough glass (SPEC §14): a colour texture with a full mip chain
+// An off-screen target for rough glass (docs/rough-glass.md#the-gather): a colour texture with a full mip chain
 // (trilinear reads at a per-ring level), a second one as large with as many levels (the codes:
 // coverage × distance code in its alpha), and a depth texture (read back to write each texel's
 // coverage into the colour's alpha and its code into the codes; frame/rough-glass.ts). Two

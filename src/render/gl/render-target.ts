@@ -1,6 +1,6 @@
 // An off-screen colour texture + depth renderbuffer; reallocated only when its size changes.
 // Colour as RGBA8, SRGB8_ALPHA8 (linear light held encoded: no banding in the darks, blended
-// and sampled in linear; SPEC §13) or RGBA16F (needs EXT_color_buffer_float).
+// and sampled in linear; docs/colour.md#srgb) or RGBA16F (needs EXT_color_buffer_float).
 import type { ResourceCounter } from './resource-counter';
 
 export type TargetFormat = 'rgba8' | 'srgb8' | 'rgba16f';

@@ -1,4 +1,4 @@
-// What every renderer on one WebGL2 context shares (SPEC §7, issue 9 §7): compiled programs by
+// What every renderer on one WebGL2 context shares (docs/knobs.md#many-elements): compiled programs by
 // variant, the procedural texture, and meshes by content. Reference-counted per context and per
 // entry; the last renderer to let go frees them. A lost context's renderers all let go, so a
 // restored one starts afresh.
@@ -29,8 +29,8 @@ export class SharedResources {
   private constructor(private readonly gl: WebGL2RenderingContext) {}
 
   /**
-   * SPEC §3's texture: ~1.4 MB with its mipmaps, uploaded once per context and colour space
-   * (`srgb`: its levels are encoded colour, decoded by the GPU; SPEC §13), not per element.
+   * The procedural texture (docs/default-scene.md#the-procedural-texture): ~1.4 MB with its mipmaps, uploaded once per context and colour space
+   * (`srgb`: its levels are encoded colour, decoded by the GPU; docs/colour.md#the-transfer-curve), not per element.
    * In linear light it is read anisotropically (+3 dB against the reference on the bench's
    * glass floor); `none` keeps the isotropic reads of the frames it must reproduce bit for bit.
    */

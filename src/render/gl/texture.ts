@@ -1,6 +1,6 @@
 // An RGBA8 2D texture from pixels (row 0 uploaded first) or a decoded image (its top row
 // first), optionally mipmapped and repeating; `srgb` stores it as SRGB8_ALPHA8, which the GPU
-// decodes to linear light before filtering (SPEC §13), and whose mipmaps it averages in linear.
+// decodes to linear light before filtering (docs/colour.md#srgb), and whose mipmaps it averages in linear.
 import type { ResourceCounter } from './resource-counter';
 
 export interface TextureOptions {

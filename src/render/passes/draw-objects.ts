@@ -1,6 +1,6 @@
 // The scene's objects drawn with the standard program, from the real eye (pass 2) or the
 // mirrored one (pass 1): opaque ones first, then those with opacity < 1 blended over them
-// (depth-tested, no depth write), as SPEC §9 and seed 002 ask.
+// (depth-tested, no depth write), as docs/software-renderer.md#transparency says.
 import { focalPixels, orthoPixelsPerUnit } from '../../frame/reflection-lod';
 import type { Program } from '../gl/program';
 import type { Texture } from '../gl/texture';
@@ -57,7 +57,7 @@ export function drawObjects(
       const o = objects[i];
       if ((o.material.opacity < 1) !== transparent) continue;
       const m = setup.objects[i];
-      // Culling, not selection (SPEC §4): bounds wholly beyond the glass cannot be reflected.
+      // Culling, not selection (docs/rendering.md#what-is-skipped): bounds wholly beyond the glass cannot be reflected.
       if (mirrored && ctx.cull && m.viewerDistance <= -m.radius) continue;
       if (farSide && ctx.cull && m.viewerDistance >= m.radius) continue;
       const twoSided = isTwoSided(o.geometry);

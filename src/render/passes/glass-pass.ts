@@ -1,6 +1,6 @@
 // Pass 3: the two-sided glass, depth-tested without depth writes, blended over pass 2 with
 // premultiplied alpha (ONE, ONE_MINUS_SRC_ALPHA). `outputFresnel` writes F as grey instead.
-// Rough (SPEC §14): R̃ and B̃ gathered from mip-mapped images (render/rough-targets.ts binds
+// Rough (docs/rough-glass.md#the-gather): R̃ and B̃ gathered from mip-mapped images (render/rough-targets.ts binds
 // them), written with alpha 1, so the same blend leaves the glass opaque over pass 2.
 import { GLASS_BODY } from '../../scene/default-scene';
 import { setMatrices, type PassContext } from './pass-context';

@@ -23,7 +23,7 @@ export function reflectionPass(ctx: PassContext, framebuffer: WebGLFramebuffer, 
     gl.scissor(scissor.x, scissor.y, scissor.width, scissor.height);
   }
   gl.enable(gl.DEPTH_TEST);
-  // The mirror flips winding, and so does a mirroring course camera (SPEC §11).
+  // The mirror flips winding, and so does a mirroring course camera (docs/course-files.md#the-course-camera).
   gl.frontFace(ctx.setup.mirrorsWinding ? gl.CCW : gl.CW);
   if (clipExtension) gl.enable(clipExtension.CLIP_DISTANCE0_WEBGL);
   try {

@@ -1,4 +1,4 @@
-// Rough glass's frame beyond the glass (SPEC §14: "radiance arriving at P from the far side"):
+// Rough glass's frame beyond the glass (docs/rough-glass.md#transmission: "radiance arriving at P from the far side"):
 // the objects from the real eye, clipped to the far side of the glass as pass 1 is clipped to
 // the viewer's side (the plane flipped), into an off-screen target; the background where
 // nothing is. What lies in the glass plane stays (a picture behind a glass wall is seen through it).

@@ -1,4 +1,4 @@
-// Tensor-product Bézier patches of any degree (SPEC §11, seed 002): de Casteljau evaluation of
+// Tensor-product Bézier patches of any degree (docs/software-renderer.md#bezier-surfaces): de Casteljau evaluation of
 // the point and both partial derivatives, and the E×E grid mesh a renderer draws.
 import { indexArray, type MeshData } from './mesh-data';
 

@@ -1,4 +1,4 @@
-// Unit-edge box centred at the origin; each face carries UVs over [0,1]² (SPEC §3).
+// Unit-edge box centred at the origin; each face carries UVs over [0,1]² (docs/default-scene.md#texture-coordinates).
 // BOX_FACES is shared by the reference's analytic box (reference/analytic-tracers.ts) and both
 // renderers' mesh: tied down by tests/unit/geometry.test.ts (faces, winding, UV corners) and
 // reference-pixels.test.ts's texels of the +Z and top faces worked out by hand.

@@ -1,4 +1,4 @@
-// Flat shading as seed 004 teaches it: lighting once per triangle, from its face normal at its
+// Flat shading (docs/scene-model.md#shading-modes): lighting once per triangle, from its face normal at its
 // centroid. Each triangle gets three vertices of its own carrying the face normal and the
 // centroid, so whichever vertex the GPU takes as provoking gives the same light.
 import { indexArray, type MeshData } from './mesh-data';

@@ -1,4 +1,4 @@
-// Seed 004's surface y = e^(−x²)·e^(−z²) over x, z ∈ [−2, 2], on an N×N grid of vertices
+// The Gaussian surface y = e^(−x²)·e^(−z²) (docs/scene-model.md#built-in-shapes) over x, z ∈ [−2, 2], on an N×N grid of vertices
 // (the lecture compares 40² and 400²), with normals from the surface itself, not the mesh.
 // Shared: the reference traces this same mesh (reference/ray-scene.ts), so it is tied down by
 // tests/unit/geometry-flat-gaussian.test.ts's heights, normals and UVs, not by the comparison.

@@ -1,5 +1,5 @@
 // The glass rectangle in world coordinates: corners from its frame, normal n, u along its width
-// axis and v along its height axis over [0, 1] (SPEC §3: u = (x + 4)/8, v = (y + 1)/4 by default).
+// axis and v along its height axis over [0, 1] (docs/default-scene.md#texture-coordinates: u = (x + 4)/8, v = (y + 1)/4 by default).
 import type { GlassFrame } from '../glass-frame';
 import { type MeshData } from './mesh-data';
 

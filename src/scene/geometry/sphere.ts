@@ -1,4 +1,4 @@
-// UV sphere whose vertex UVs follow SPEC §3: u = 0.5 + atan2(n.x, n.z)/2π, v = acos(−n.y)/π.
+// UV sphere whose vertex UVs follow docs/default-scene.md#texture-coordinates: u = 0.5 + atan2(n.x, n.z)/2π, v = acos(−n.y)/π.
 import { indexArray, type MeshData } from './mesh-data';
 
 export const MIN_SEGMENTS = 4;

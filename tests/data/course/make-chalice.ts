@@ -1,4 +1,4 @@
-// A chalice-like surface of revolution as a course mesh `.byu` (SPEC §11), generated at test
+// A chalice-like surface of revolution as a course mesh `.byu` (docs/course-files.md#mesh-byu), generated at test
 // time (nothing committed): one sheet from the pole under the foot, out along the foot, up
 // the stem and the cup, over the rim and down the inside to the pole at the bottom of the cup.
 // Faces are wound so that (b − a) × (c − a) points to the sheet's outer side.

@@ -1,4 +1,4 @@
-// Bounds close to what is measured (issue 18). SwiftShader is a deterministic CPU rasterizer and
+// Bounds close to what is measured. SwiftShader is a deterministic CPU rasterizer and
 // the Chromium is pinned (package-lock), so a figure measured here is the same, run after run; a
 // bound far under it would let a real regression through unseen. Each bound in the specs has the
 // figure it was set from beside it, and is one of:

@@ -1,4 +1,4 @@
-// For the specs of the chunks the core leaves out (issue 22): which were fetched, holding one
+// For the specs of the chunks the core leaves out (docs/package.md#chunks): which were fetched, holding one
 // back or blocking it, counting the frames drawn meanwhile, and the one warning a failed chunk gives.
 import type { Page } from '@playwright/test';
 import { expect, openPage, capture, type ConsoleLog, type RgbaImage } from '../fixtures';

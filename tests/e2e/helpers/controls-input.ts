@@ -68,7 +68,7 @@ export async function recordCameraChanges(page: Page, s: string): Promise<() => 
 /**
  * Where world point `p` is drawn for camera `pose` (perspective, vertical field of view `fov`
  * degrees) on an element `height` CSS px tall: CSS px right of and below its centre. The view is
- * lookAt along forwardFromYawPitch with +Y up, as SPEC §2 defines yaw and pitch.
+ * lookAt along forwardFromYawPitch with +Y up, as docs/default-scene.md#the-camera defines yaw and pitch.
  */
 export function screenOffset(pose: Pose, p: ArrayLike<number>, fov: number, height: number): { x: number; y: number } {
   const f = forwardFromYawPitch([0, 0, 0], pose.rotation[0], pose.rotation[1]);

@@ -1,4 +1,4 @@
-// SPEC §3's camera, written out again from the formulas (not imported from src/math) so the
+// The default camera (docs/default-scene.md#the-camera), written out again from the formulas (not imported from src/math) so the
 // tests check the renderer against the spec rather than against itself.
 export type Vec3 = readonly [number, number, number];
 

@@ -1,6 +1,6 @@
-// Rough glass's test scenes (SPEC §14, issue 21): a glass floor with a cube resting on it (its
+// Rough glass's test scenes (docs/rough-glass.md#roughness): a glass floor with a cube resting on it (its
 // reflection sharp at the contact) and a sphere whose lowest point is 1.5 above it (blurred), as
-// on the bench's rough floor; and SPEC §3's glass wall with the cube in front of it (reflected)
+// on the bench's rough floor; and the default glass wall with the cube in front of it (reflected)
 // and the sphere behind it (seen through it, blurred by the transmission).
 import { DEFAULT_LIGHT, defaultMaterial, defaultScene } from '../../../src/scene/default-scene';
 import { roughFloorScene, SPHERE_HEIGHT } from '../../../bench/rough-scene';
@@ -12,7 +12,7 @@ import { lookAt } from './stability';
 export { SPHERE_HEIGHT };
 export const FLOOR_SCENE: Scene = roughFloorScene();
 
-/** SPEC §3's scene: the cube 0.75 in front of the glass wall z = 0, the sphere 1.5 behind it. */
+/** The default scene (docs/default-scene.md): the cube 0.75 in front of the glass wall z = 0, the sphere 1.5 behind it. */
 export const WALL_SCENE: Scene = defaultScene(0.75, 0);
 
 export interface RoughView {
@@ -51,7 +51,7 @@ export const withoutObjects = (scene: Scene): Scene => ({ ...scene, objects: [] 
 /**
  * A long glass floor seen at grazing incidence (the camera 0.6 above it), a bright wall far off
  * on it: near the glass's far end much of each pixel's lobe would leave through the glass's far
- * side, and the reference drops those rays (SPEC §14) where keeping them would mix in the dark
+ * side, and the reference drops those rays (docs/rough-glass.md#reflection) where keeping them would mix in the dark
  * beyond the horizon.
  */
 export const HORIZON_SCENE: Scene = {

@@ -1,4 +1,4 @@
-// Helpers for the stability and fuzz tests (SPEC §6, §2): pixel differences between two frames,
+// Helpers for the stability and fuzz tests (docs/rendering.md#numerical-stability, docs/element.md#attribute-table): pixel differences between two frames,
 // a "garbage pixel" proxy for NaN, a look-at camera, and the GL limits of the page's context.
 import type { Page } from '@playwright/test';
 import path from 'node:path';
@@ -7,7 +7,7 @@ import type { Vec3 } from './projection';
 
 const DEG = 180 / Math.PI;
 
-/** yaw/pitch (degrees, SPEC §3) of a camera at `from` looking at `to`. */
+/** yaw/pitch (degrees, docs/default-scene.md#the-camera) of a camera at `from` looking at `to`. */
 export function lookAt(from: Vec3, to: Vec3): { yaw: number; pitch: number } {
   const d = [to[0] - from[0], to[1] - from[1], to[2] - from[2]];
   const len = Math.hypot(d[0], d[1], d[2]);
@@ -59,7 +59,7 @@ export const formatDiff = (d: FrameDiff): string =>
  *
  * 8-bit pixels cannot hold NaN; a NaN or ±Inf in a shader shows up as a saturated pixel (a
  * NaN written to an UNORM target becomes 0 on SwiftShader, ±Inf becomes 0 or 255). The final
- * view never produces either legitimately (SPEC §3 numbers): the background is 0.1 grey
+ * view never produces either legitimately (the default scene's numbers, docs/default-scene.md): the background is 0.1 grey
  * (26); the darkest lit colour is the cube's or sphere's ambient Ka·Ia with tex ≥ 85/255, i.e.
  * (10, 4, 4) or (4, 10, 4), never three zeros; the glass body D is ≥ (0.08, 0.10, 0.11)·(1−F)
  * and the reflection is at least the background; the brightest colour, a highlight on the
