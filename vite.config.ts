@@ -62,14 +62,14 @@ export default defineConfig(({ mode, command }) => {
         external: standalone ? [] : [/^gl-matrix/],
         // gl-matrix builds a few helpers at load (vec3.forEach, vec4.forEach, quat.sqlerp: each an
         // IIFE around its module's `create()`), which kept them, and what they use, even unused;
-        // create() only allocates (−0.3 kB of the core). quat.setAxes and rotationTo, built around
+        // create() only allocates. quat.setAxes and rotationTo, built around
         // `mat3.create()` / `vec3.create()` of another module, stay.
         treeshake: { manualPureFunctions: ['create'] },
         // Library mode keeps whitespace in ES output; the self-contained file is for <script>
         // tags and CDNs, so it is minified whole.
         // What the element needs before its first frame is one chunk (group `$initial`): split into
         // the many small chunks the automatic splitting makes where lazy chunks share a module,
-        // it gzips 3 kB larger (40.1 against 36.8 kB).
+        // it gzips larger (README.md#size).
         output: { ...(standalone ? { minify: true } : {}), codeSplitting: {
           groups: [
             { name: 'core', tags: ['$initial'] },

@@ -1,6 +1,6 @@
 // Rough glass in the WebGL renderer (docs/rough-glass.md#the-gather): the gather of shaders/rough-glass.glsl and the
 // mip-mapped images render/rough-targets.ts draws for it, in a chunk loaded when a frame first
-// asks for roughness (render/rough-loader.ts, element/webgl-backend.ts).
+// asks for roughness (render/parts.ts, render/rough-glass.ts, element/webgl-backend.ts).
 // Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
 const ROUGH = 'tests/e2e/rough-glass.spec.ts';
 const ELEMENT = 'tests/e2e/rough-element.spec.ts';

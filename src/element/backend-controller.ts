@@ -4,7 +4,7 @@
 // renderer that is gone, and frees everything on removal.
 import { ShaderError } from '../render/gl/program';
 import type { ReadbackSource } from '../render/renderer';
-import type { FrameState, RenderStats } from '../render/types';
+import type { FrameState, RenderStats } from '../frame/types';
 import type { Scene } from '../scene/scene';
 import type { CapturePass } from './types';
 import { warn } from './warnings';

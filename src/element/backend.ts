@@ -2,7 +2,7 @@
 // the `renderer` attribute (backend-controller.ts): WebGL2 in the page's shared context
 // (webgl-backend.ts) or the CPU renderer, in a worker when it can (software-backend.ts).
 import type { ReadbackSource } from '../render/renderer';
-import type { FrameReport, FrameState, RenderStats } from '../render/types';
+import type { FrameReport, FrameState, RenderStats } from '../frame/types';
 import type { Scene } from '../scene/scene';
 import type { ImageSink } from './texture-images';
 

@@ -2,7 +2,7 @@
 // camera of `camera-src`, and the input that moves them — the flyby keys and mouse, orbit and
 // trackball pointers, the write-back at a gesture's end (controls/controls-input.ts, a chunk
 // loaded when `controls` first asks). Fills the camera's part of each frame's state; no GL.
-import type { FrameState } from '../render/types';
+import type { FrameState } from '../frame/types';
 import type { Scene } from '../scene/scene';
 import type { SceneAttributes } from './attributes';
 import type { CameraSource } from './camera-source';

@@ -1,7 +1,7 @@
 // Each frame's state (FrameState, the inputs of a frame, docs/element.md#attribute-table) from the parsed attributes, filled
 // in place so a frame allocates none; the camera's part is the CameraRig's. Also keeps a copy of
 // the last state drawn, which capture(pass) draws a pass of.
-import type { FrameState } from '../render/types';
+import type { FrameState } from '../frame/types';
 import type { SceneAttributes } from './attributes';
 
 export class FrameStates {

@@ -7,7 +7,7 @@ import { defineAttributeProperties, upgradeProperties, type AttributeHost } from
 import { AttributeWarnings, warn } from './warnings';
 import { applyStyle } from './element-style';
 import { readCanvas } from './canvas-readback';
-import type { FrameReport, FrameState, RenderStats } from '../render/types';
+import type { FrameReport, FrameState, RenderStats } from '../frame/types';
 import type { Scene } from '../scene/scene';
 import type { CapturePass, GlassPlaneSceneEventMap } from './types';
 import type { Controller } from './controller';
@@ -302,8 +302,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     this.failure.drawn(); // drawn again after a shader failure
     this.states.drawn(state);
     // One small frozen object per frame (the event is one anyway), its passes shared frozen
-    // records: listeners may keep it, and nothing later changes it. A deep copy per frame
-    // (structuredClone) is what it replaces.
+    // records: listeners may keep it, and nothing later changes it.
     const { time, width, height, drawCalls, passes } = report;
     const detail: FrameReport = Object.freeze({ frame: this.frames, time, width, height, drawCalls, passes });
     // `ready` waits for the models of the children: loaded or failed (docs/element.md#events).

@@ -2,7 +2,7 @@
 // (a change while it draws is drawn next). The pixels reach the canvas in one piece when the
 // frame is complete: by a 2D context, or by a bitmap renderer when WebGL had the canvas first.
 import { passesFor, type ReadbackSource } from '../render/renderer';
-import type { FrameState } from '../render/types';
+import type { FrameState } from '../frame/types';
 import type { Scene } from '../scene/scene';
 import type { Backend, BackendHost } from './backend';
 import type { SoftwareHost } from './software-host';

@@ -1,7 +1,7 @@
 // Frames drawn with WebGL2 in the page's shared context (shared-context.ts) and handed to the
 // element's canvas. All GL work is the renderer's; this file only calls it and presents.
 import { Renderer, type ReadbackSource } from '../render/renderer';
-import type { FrameState, RenderStats } from '../render/types';
+import type { FrameState, RenderStats } from '../frame/types';
 import type { Scene } from '../scene/scene';
 import type { Backend, BackendHost } from './backend';
 import type { Presenter, SharedContext } from './shared-context';

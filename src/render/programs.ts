@@ -105,7 +105,7 @@ export class ProgramCache {
     ));
   }
 
-  /** Takes rough glass's shader parts once its chunk has loaded (Renderer.loadRough). */
+  /** Takes rough glass's shader parts once its chunk has loaded (ROUGH_GLASS, render/parts.ts). */
   setRoughSources(sources: RoughSources): void {
     this.rough = sources;
   }

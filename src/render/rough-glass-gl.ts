@@ -1,6 +1,6 @@
 // Rough glass in WebGL (docs/rough-glass.md#roughness) in a chunk of its own: its passes, targets and shaders load
-// the first time a frame's glass is rough (Renderer.loadRough), so a polished scene never
-// downloads them.
+// the first time a frame's glass is rough (the lazy part ROUGH_GLASS, render/parts.ts), so a
+// polished scene never downloads them.
 import gather from '../../shaders/rough-glass.glsl?raw';
 import distance from '../../shaders/distance.frag?raw';
 import { ROUGH_FIRST_RING, ROUGH_MAX_RINGS, ROUGH_REACH } from '../frame/rough-glass';

@@ -7,7 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { quat } from 'gl-matrix';
 import { FrameSetup } from '../../src/frame/frame-setup';
 import { CourseProjection } from '../../src/frame/course-projection';
-import type { FrameState } from '../../src/render/types';
+import type { FrameState } from '../../src/frame/types';
 import { SoftwareRenderer } from '../../src/software';
 import { courseBasis, type CourseCamera } from '../../src/math/course-camera';
 import { courseSceneRange } from '../../src/scene/course-depth';
