@@ -4,19 +4,7 @@
 import { defineConfig, type Plugin } from 'vite';
 import { demoModels } from './demo/demo-models.ts';
 import { glslMinify } from './scripts/glsl-minify.ts';
-import { CHUNKS } from './src/frame/chunks.ts';
-
-const escape = (s: string) => s.replace(/[.*+?^${}()|[\]\\]/g, '\\$&');
-
-/** One group per chunk of CHUNKS that lists its modules: a module belongs to it by its path. */
-function chunkGroups(): { name: string; test: RegExp }[] {
-  return Object.entries(CHUNKS).flatMap(([name, chunk]) => {
-    const modules: readonly string[] | undefined = 'modules' in chunk ? chunk.modules : undefined;
-    if (!modules) return [];
-    const paths = modules.map((m) => m.split('/').map(escape).join('[\\\\/]'));
-    return [{ name, test: new RegExp(`(^|[\\\\/])(${paths.join('|')})$`) }];
-  });
-}
+import { chunkGroups } from './scripts/chunk-groups.ts';
 
 /** `/` opens the demo, so `npm run demo` lands on it. */
 const demoAtRoot: Plugin = {

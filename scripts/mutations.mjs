@@ -6,8 +6,9 @@
 // An unmutated baseline runs first; if it fails, the table would mean nothing, so it stops there.
 //
 //   npm run test:mutations              every mutation
-//   npm run test:mutations -- controls  only one area (a file of scripts/mutations/), or those whose
-//                                       name contains the word (the baseline still runs)
+//   npm run test:mutations -- controls  only one area (a file of scripts/mutations/), one mutation by
+//                                       its id (Z14), or those whose name contains the word; several
+//                                       may be given (the baseline still runs)
 //   KEEP_MUTANTS=1 …                    leave the temporary copies in place
 //
 // Logs: test-results/mutations/<name>.log. Not part of `npm test`: it runs the relevant specs
@@ -159,10 +160,13 @@ function table(rows) {
 const seconds = (t0) => `${((Date.now() - t0) / 1000).toFixed(0)} s`;
 
 async function main() {
-  const filter = process.argv[2];
-  const chosen = MUTATIONS.filter((m) => !filter || m.area === filter || m.name.includes(filter));
+  // Each argument: an area, a mutation's id ("Z14": that one only), or a word of its name.
+  const filters = process.argv.slice(2);
+  const id = (m) => m.name.split(' ')[0];
+  const picks = (m, f) => m.area === f || (/^[A-Z]+\d+$/.test(f) ? id(m) === f : m.name.includes(f));
+  const chosen = MUTATIONS.filter((m) => !filters.length || filters.some((f) => picks(m, f)));
   if (!chosen.length) {
-    console.error(`mutations: no mutation name contains "${filter}"`);
+    console.error(`mutations: none matches ${filters.join(' ')}`);
     process.exit(2);
   }
   const started = Date.now();

@@ -8,6 +8,8 @@ const RIG = 'src/element/camera-rig.ts';
 const LOD = 'tests/e2e/reflection-lod.spec.ts';
 const CHUNKS = 'tests/e2e/turn-debug-chunks.spec.ts';
 const CORE = 'tests/e2e/core-chunks.spec.ts';
+const LP = 'src/frame/lazy-parts.ts';
+const PARTS = 'tests/unit/lazy-parts.test.ts';
 
 export default [
   {
@@ -179,5 +181,51 @@ export default [
     name: 'Z34 only the first scene value is looked through for images (a texture added later is never fetched)',
     edits: [{ file: 'src/element/scene-value.ts', find: '      this.images = this.value.objects.some(', replace: '      this.images = this.builds === 0 && this.value.objects.some(' }],
     tests: [CORE],
+  },
+  // The mechanism itself (src/frame/lazy-parts.ts) and the chunk groups made from the table.
+  {
+    name: 'P1 a module provided while its own fetch is under way is replaced by the fetched one when that lands',
+    edits: [{ file: LP, find: '      if (this.status[i] !== LOADING) return; // provided meanwhile\n', replace: '' }],
+    tests: [PARTS],
+  },
+  {
+    name: 'P2 a part not marked as loading is fetched again by the next frame',
+    edits: [{ file: LP, find: "    this.status[i] = LOADING;\n", replace: '' }],
+    tests: [PARTS],
+  },
+  {
+    name: 'P3 a new promise every frame while a part loads (allocation per frame)',
+    edits: [{ file: LP, find: 'if (started || !this.waiting) this.waiting = this.allHeld();', replace: 'this.waiting = this.allHeld();' }],
+    tests: [PARTS],
+  },
+  {
+    name: 'P4 a provided module is not handed to its owner',
+    edits: [{ file: LP, find: "    this.values[i] = value;\n    spec.arrived?.(this.host, value);\n  }\n\n  /** A part is on its way", replace: "    this.values[i] = value;\n  }\n\n  /** A part is on its way" }],
+    tests: [PARTS],
+  },
+  {
+    name: 'P5 a part that does not hold the frame holds it',
+    edits: [{ file: LP, find: '      if (specs[i].holds) holds = true;', replace: '      holds = true;' }],
+    tests: [PARTS],
+  },
+  {
+    name: 'P6 an owner that throws on arrival: the part counts as in',
+    edits: [{ file: LP, find: "      this.status[i] = FAILED;\n      this.values[i] = null;\n", replace: "      if (this.status[i] !== IN) this.status[i] = FAILED;\n" }],
+    tests: [PARTS],
+  },
+  {
+    name: 'P7 fetch() of a part no frame asked for never starts it (a failure shows no text)',
+    edits: [{ file: LP, find: '    if (this.status[i] === ABSENT) this.start(i);\n    return (this.loads[i]', replace: '    return (this.loads[i]' }],
+    tests: [PARTS],
+  },
+  {
+    name: 'P8 a chunk group matches any file ending in one of its names (a neighbour joins it)',
+    edits: [{ file: 'scripts/chunk-groups.ts', find: "new RegExp(`(^|[\\\\\\\\/])(${paths.join('|')})$`)", replace: "new RegExp(`(${paths.join('|')})$`)" }],
+    tests: [PARTS],
+  },
+  {
+    name: 'P9 the chunk groups leave out the table\'s order (a shared file goes to a later group)',
+    edits: [{ file: 'scripts/chunk-groups.ts', find: 'return Object.entries(table).flatMap(', replace: 'return Object.entries(table).reverse().flatMap(' }],
+    tests: [PARTS],
   },
 ];

@@ -10,6 +10,7 @@ import { RENDER_PARTS, needsExtras } from '../../src/render/parts';
 import { ELEMENT_PARTS } from '../../src/element/parts';
 import { defaultScene } from '../../src/scene/default-scene';
 import { defaultFrameState } from './helpers/frame-state';
+import { chunkGroups } from '../../scripts/chunk-groups';
 
 interface Host { wants: boolean; got: string[] }
 
@@ -143,6 +144,7 @@ describe('LazyParts', () => {
     late.provide(spec, 'given');
     await wait;
     expect(late.get(spec)).toBe('given');
+    expect(fetches).toBe(1); // the fetch went on, and what it brought was left
   });
 });
 
@@ -215,5 +217,55 @@ describe('the declarations', () => {
     const mesh = { ...scene, objects: [{ ...scene.objects[0], geometry: { kind: 'mesh' } }] } as never;
     expect(needsExtras(s, mesh)).toBe(true);
     expect(needsExtras({ ...s, tessellation: 64 }, mesh)).toBe(false);
+  });
+});
+
+describe('the chunk groups vite.config.ts makes from the table', () => {
+  const groups = chunkGroups();
+  const grouped = Object.entries(CHUNKS).flatMap(([name, c]) => ('modules' in c ? c.modules.map((m) => [name, m] as const) : []));
+
+  it('one group for each chunk that lists files, in the table\'s order', () => {
+    expect(groups.map((g) => g.name)).toEqual(Object.entries(CHUNKS).filter(([, c]) => 'modules' in c).map(([n]) => n));
+  });
+
+  it('each listed file, by its absolute id with either separator, falls in its own group only', () => {
+    for (const [name, m] of grouped) {
+      for (const id of [`/work/repo/${m}`, `C:\\repo\\${m.replaceAll('/', '\\')}`]) {
+        expect(groups.filter((g) => g.test.test(id)).map((g) => g.name), id).toEqual([name]);
+      }
+    }
+  });
+
+  it('no other file: a neighbour, a longer name, another extension, a core file', () => {
+    for (const id of ['/r/src/element/xcamera-source.ts', '/r/xsrc/element/camera-source.ts', '/r/lib-src/frame/chunks-src/math/ggx.ts', '/r/src/element/camera-source.tsx', '/r/src/element/camera-sourcets',
+      '/r/src/render/renderer.ts', '/r/src/element/children/child-elements.ts']) {
+      expect(groups.filter((g) => g.test.test(id)), id).toEqual([]);
+    }
+  });
+});
+
+describe('LazyParts, edges', () => {
+  it('fetch() starts a part no frame needs (a failure\'s texts), once', async () => {
+    let fetches = 0;
+    const host = { wants: false, got: [] as string[] };
+    const spec = part('texts', false, () => { fetches++; return Promise.resolve('T'); });
+    const parts = new LazyParts([spec], host, recorder());
+    const [a, b] = await Promise.all([parts.fetch(spec), parts.fetch(spec)]);
+    expect([a, b, fetches]).toEqual(['T', 'T', 1]);
+    expect(await parts.fetch(spec)).toBe('T');
+  });
+
+  it('a part no longer needed while it loads does not hold the frame', () => {
+    const host = { wants: true, got: [] as string[] };
+    const parts = new LazyParts([part('e', true, () => new Promise<string>(() => {}))], host, recorder());
+    expect(parts.request()).not.toBeNull();
+    host.wants = false;
+    expect(parts.request()).toBeNull();
+    expect(parts.loading).toBe(true);
+  });
+
+  it('a declaration of another owner is refused', () => {
+    const parts = new LazyParts([part('f', true, () => Promise.resolve('F'))], { wants: false, got: [] }, recorder());
+    expect(() => parts.get(part('g', true, () => Promise.resolve('G')))).toThrow(/not a part/);
   });
 });
