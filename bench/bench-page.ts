@@ -75,7 +75,7 @@ const api = {
     renderer.optimize = kind !== 'ours-unoptimized';
     const draw = kind === 'clear-only'
       ? () => { gl.bindFramebuffer(gl.FRAMEBUFFER, null); gl.viewport(0, 0, s.width, s.height); gl.clearColor(0.1, 0.1, 0.1, 1); gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT); }
-      : () => { renderer.render(s); };
+      : () => { renderer.render(null, s); };
     for (let i = 0; i < warmup; i++) draw();
     finish(gl);
     const t0 = performance.now();
@@ -103,7 +103,7 @@ const api = {
       resize(oursCanvas, s);
       draw = kind === 'clear-only'
         ? () => { gl.bindFramebuffer(gl.FRAMEBUFFER, null); gl.viewport(0, 0, s.width, s.height); gl.clearColor(0.1, 0.1, 0.1, 1); gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT); }
-        : () => { renderer.optimize = kind !== 'ours-unoptimized'; renderer.render(s); renderer.optimize = true; };
+        : () => { renderer.optimize = kind !== 'ours-unoptimized'; renderer.render(null, s); renderer.optimize = true; };
     }
     const ext = context.getExtension('EXT_disjoint_timer_query_webgl2') as
       { TIME_ELAPSED_EXT: number; GPU_DISJOINT_EXT: number } | null;
@@ -141,7 +141,7 @@ const api = {
       return { width: s.width, height: s.height, data: toBase64(peer.readPixels()) };
     }
     resize(oursCanvas, s);
-    const px = renderer.read('screen', s);
+    const px = renderer.read(null, s, null, 'screen');
     return { width: px.width, height: px.height, data: toBase64(px.data) };
   },
 
@@ -152,12 +152,12 @@ const api = {
   async sceneTime(index: number, shading: Shading, size: Scene, mode: 'final' | 'scene', frames: number, warmup: number, knobs: Partial<Knobs> = {}): Promise<number> {
     const b = BENCH_SCENES[index];
     const s = { ...frameState(size, { ...DEFAULTS, ...knobs, shading }, b.view, mode) };
-    await renderer.load(s, b.scene); // the reflection's clustering, as the element would have it
+    await renderer.load(b.scene, s); // the reflection's clustering, as the element would have it
     resize(oursCanvas, s);
-    for (let i = 0; i < warmup; i++) renderer.render(s, b.scene);
+    for (let i = 0; i < warmup; i++) renderer.render(b.scene, s);
     finish(gl);
     const t0 = performance.now();
-    for (let i = 0; i < frames; i++) renderer.render(s, b.scene);
+    for (let i = 0; i < frames; i++) renderer.render(b.scene, s);
     finish(gl);
     return (performance.now() - t0) / frames;
   },
@@ -165,29 +165,29 @@ const api = {
   async scenePixels(index: number, shading: Shading, size: Scene, knobs: Partial<Knobs> = {}): Promise<{ width: number; height: number; data: string }> {
     const b = BENCH_SCENES[index];
     const s = frameState(size, { ...DEFAULTS, ...knobs, shading }, b.view);
-    await renderer.load(s, b.scene);
+    await renderer.load(b.scene, s);
     resize(oursCanvas, s);
-    const px = renderer.read('screen', s, b.scene);
+    const px = renderer.read(b.scene, s, null, 'screen');
     return { width: px.width, height: px.height, data: toBase64(px.data) };
   },
 
   /** The rough floor (bench/rough-scene.ts) in frame state `s`: ms per frame over `frames` after `warmup`. */
   async roughTime(s: FrameState, frames: number, warmup: number): Promise<number> {
-    await renderer.load(s);
+    await renderer.load(null, s);
     resize(oursCanvas, s);
     const scene = (roughScene ??= roughFloorScene());
-    for (let i = 0; i < warmup; i++) renderer.render(s, scene);
+    for (let i = 0; i < warmup; i++) renderer.render(scene, s);
     finish(gl);
     const t0 = performance.now();
-    for (let i = 0; i < frames; i++) renderer.render(s, scene);
+    for (let i = 0; i < frames; i++) renderer.render(scene, s);
     finish(gl);
     return (performance.now() - t0) / frames;
   },
 
   async roughPixels(s: FrameState): Promise<{ width: number; height: number; data: string }> {
-    await renderer.load(s);
+    await renderer.load(null, s);
     resize(oursCanvas, s);
-    const px = renderer.read('screen', s, (roughScene ??= roughFloorScene()));
+    const px = renderer.read((roughScene ??= roughFloorScene()), s, null, 'screen');
     return { width: px.width, height: px.height, data: toBase64(px.data) };
   },
 

@@ -61,7 +61,7 @@ function reference(roughness: number, ior: number, microfacets: number): { ref: 
     return { ref, ms: null };
   }
   const t0 = performance.now();
-  const ref = renderScene(roughFloorScene(), s, { samplesPerAxis: REF_SPP, microfacetSamples: microfacets });
+  const ref = renderScene(roughFloorScene(), s, null, { samplesPerAxis: REF_SPP, microfacetSamples: microfacets });
   const ms = performance.now() - t0;
   mkdirSync(new URL('./.cache/', import.meta.url), { recursive: true });
   writeFileSync(file, JSON.stringify({
@@ -98,11 +98,11 @@ function softwareRows(roughness: number, ior: number, ref: ReferenceImage): Row[
   const scene = roughFloorScene();
   for (const config of CONFIGS) {
     const s = state(roughness, ior, config.extra), r = new SoftwareRenderer();
-    const image = r.render(s, scene).slice();
+    const image = r.render(scene, s).slice();
     const ms: number[] = [];
     for (let k = 0; k < RUNS; k++) {
       const t0 = performance.now();
-      for (let f = 0; f < FRAMES; f++) r.render(s, scene);
+      for (let f = 0; f < FRAMES; f++) r.render(scene, s);
       ms.push((performance.now() - t0) / FRAMES);
     }
     rows.push({ config, ms: summary(ms).median, noise: summary(ms).iqr, psnr: compareImages(ref, image).psnr.glass, image });

@@ -42,7 +42,7 @@ function reference(i: number, colorSpace: ColorSpace): ReferenceImage {
     fov: 60, cameraPosition: b.view.cameraPosition, yaw: b.view.yaw, pitch: b.view.pitch, colorSpace, view: 'final',
     reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
   };
-  return renderScene(b.scene, view, { samplesPerAxis: SPP_AXIS });
+  return renderScene(b.scene, view, null, { samplesPerAxis: SPP_AXIS });
 }
 
 async function time(page: Page, i: number, shading: Shading, mode: 'final' | 'scene', v: Variant): Promise<number> {

@@ -46,7 +46,7 @@ function timing(reps: number, frames: number): void {
   const before = loadavg()[0];
   for (let rep = 0; rep < reps; rep++) {
     for (const row of shuffled(ROWS, 71 + rep)) {
-      const next = () => r.render(state(START + frame++ / 60, row[1], row[0], row[2]), scene);
+      const next = () => r.render(scene, state(START + frame++ / 60, row[1], row[0], row[2]));
       for (let i = 0; i < WARMUP; i++) next();
       const xs = times.get(key(row)) ?? [], cs = cpu.get(key(row)) ?? [];
       for (let i = 0; i < frames; i++) {
@@ -74,7 +74,7 @@ function hashes(): void {
   const r = new SoftwareRenderer();
   for (const row of ROWS) {
     const h = createHash('sha256');
-    for (const t of [0, 0.4, 1.25, 2.9]) h.update(r.render(state(t, row[1], row[0], row[2]), scene));
+    for (const t of [0, 0.4, 1.25, 2.9]) h.update(r.render(scene, state(t, row[1], row[0], row[2])));
     console.log(`${key(row).padEnd(34)} ${h.digest('hex').slice(0, 16)}`);
   }
 }

@@ -7,6 +7,7 @@ import { Renderer } from '../src/render/renderer';
 import type { ColorSpace, FrameState } from '../src/frame/types';
 import type { SoftwareTiming } from '../src/software';
 import { defaultScene } from '../src/scene/default-scene';
+import type { SceneImages } from '../src/scene/decoded-image';
 import { DEFAULTS } from './configs';
 import { BENCH_SCENES } from './scenes';
 import { bezierScene, BEZIER_VIEW, WHITE, WHITE_URL } from './bezier-scene';
@@ -33,7 +34,8 @@ const gl = canvas.getContext('webgl2', {
   alpha: true, antialias: false, depth: true, stencil: false, premultipliedAlpha: true, preserveDrawingBuffer: false,
 })!;
 const renderer = new Renderer(gl, {});
-renderer.setImage(WHITE_URL, new ImageData(new Uint8ClampedArray(WHITE.data), 1, 1));
+/** The Bézier patch's image, for the WebGL renderer (the third argument of render and read). */
+const IMAGES: SceneImages = new Map([[WHITE_URL, WHITE]]);
 const pixel = new Uint8Array(4);
 /** The element's SoftwareHost by worker count (null: its own default, one per core up to 4). */
 const hosts = new Map<number | null, SoftwareHost>();
@@ -89,7 +91,7 @@ const api = {
     const view = benchScene === null ? DEFAULT_VIEW : BENCH_SCENES[benchScene].view;
     for (let i = 0; i < warmup + frames; i++) {
       const t0 = performance.now();
-      await h.render(frameState(size, 1 + i / 60, view, colorSpace, samples), scene, samplesPerAxis);
+      await h.render(scene, frameState(size, 1 + i / 60, view, colorSpace, samples), samplesPerAxis);
       if (i >= warmup) out.push({ roundTrip: performance.now() - t0, render: h.lastWorkerMs });
     }
     return out;
@@ -108,7 +110,7 @@ const api = {
     const h = await softwareHost(workers);
     const scene = benchScene === null ? defaultScene(DEFAULT_CUBE_DISTANCE, 0.8) : BENCH_SCENES[benchScene].scene;
     const view = benchScene === null ? DEFAULT_VIEW : BENCH_SCENES[benchScene].view;
-    return toBase64(await h.render(frameState(size, time, view, colorSpace, samples), scene, samplesPerAxis));
+    return toBase64(await h.render(scene, frameState(size, time, view, colorSpace, samples), samplesPerAxis));
   },
 
   /**
@@ -134,12 +136,12 @@ const api = {
   glFrames(size: Size, frames: number, warmup: number, bezier: number | null = null, colorSpace: ColorSpace = DEFAULTS.colorSpace, benchScene: number | null = null): number[] {
     if (canvas.width !== size.width) canvas.width = size.width;
     if (canvas.height !== size.height) canvas.height = size.height;
-    const scene = benchScene !== null ? BENCH_SCENES[benchScene].scene : bezier === null ? undefined : bezierScene(bezier);
+    const scene = benchScene !== null ? BENCH_SCENES[benchScene].scene : bezier === null ? null : bezierScene(bezier);
     const view = benchScene !== null ? BENCH_SCENES[benchScene].view : bezier === null ? DEFAULT_VIEW : BEZIER_VIEW;
     const out: number[] = [];
     for (let i = 0; i < warmup + frames; i++) {
       const t0 = performance.now();
-      renderer.render(frameState(size, 1 + i / 60, view, colorSpace), scene);
+      renderer.render(scene, frameState(size, 1 + i / 60, view, colorSpace), IMAGES);
       gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
       if (i >= warmup) out.push(performance.now() - t0);
     }
@@ -149,9 +151,9 @@ const api = {
   glPixels(size: Size, time: number, bezier: number | null = null, colorSpace: ColorSpace = DEFAULTS.colorSpace, benchScene: number | null = null): string {
     if (canvas.width !== size.width) canvas.width = size.width;
     if (canvas.height !== size.height) canvas.height = size.height;
-    const scene = benchScene !== null ? BENCH_SCENES[benchScene].scene : bezier === null ? undefined : bezierScene(bezier);
+    const scene = benchScene !== null ? BENCH_SCENES[benchScene].scene : bezier === null ? null : bezierScene(bezier);
     const view = benchScene !== null ? BENCH_SCENES[benchScene].view : bezier === null ? DEFAULT_VIEW : BEZIER_VIEW;
-    const px = renderer.read('screen', frameState(size, time, view, colorSpace), scene);
+    const px = renderer.read(scene, frameState(size, time, view, colorSpace), IMAGES, 'screen');
     return toBase64(px.data);
   },
 };

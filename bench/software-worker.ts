@@ -32,7 +32,7 @@ scope.onmessage = (e: MessageEvent<BenchWorkerRequest>) => {
   renderer.timing = timing;
   const t0 = performance.now();
   // Copied as the element's worker does, so the work is the same.
-  const pixels = renderer.render(r.state, r.scene === null ? undefined : BENCH_SCENES[r.scene].scene).slice();
+  const pixels = renderer.render(r.scene === null ? null : BENCH_SCENES[r.scene].scene, r.state).slice();
   const renderMs = performance.now() - t0;
   renderer.timing = null;
   const response: BenchWorkerResponse = { id: r.id, renderMs, timing };

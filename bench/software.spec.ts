@@ -113,8 +113,8 @@ async function defaultSceneRows(page: Page): Promise<string[]> {
   ];
   for (let rep = 0; rep < REPETITIONS; rep++) for (const j of shuffled(jobs, 11 + rep)) await j.run();
 
-  const ref = renderScene(defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), state(SIZE, DEFAULT_VIEW), { samplesPerAxis: REF_SPP });
-  const refNone = renderScene(defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), state(SIZE, DEFAULT_VIEW, PIXEL_TIME, 'none'), { samplesPerAxis: REF_SPP });
+  const ref = renderScene(defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), state(SIZE, DEFAULT_VIEW), null, { samplesPerAxis: REF_SPP });
+  const refNone = renderScene(defaultScene(DEFAULT_CUBE_DISTANCE, 0.8), state(SIZE, DEFAULT_VIEW, PIXEL_TIME, 'none'), null, { samplesPerAxis: REF_SPP });
   const cmp = new Map<string, ImageComparison>();
   for (const [m, cs] of hostRows) {
     const px = bytes(await b.call('hostPixels', SIZE, m.samplesPerAxis, PIXEL_TIME, cs, m.samples));
@@ -170,7 +170,7 @@ function nodeRows(): string[] {
     for (const [m, shading, colorSpace] of shuffled(rows, 71 + rep)) {
       const r = renderers.get(m.samplesPerAxis)!, key = `${m.key} ${shading} ${colorSpace}`;
       // The clock moves so the cube turns: every frame is a new one.
-      const next = () => r.render({ ...state(SIZE, DEFAULT_VIEW, PIXEL_TIME + frame++ / 60, colorSpace, m.samples), shading }, scene);
+      const next = () => r.render(scene, { ...state(SIZE, DEFAULT_VIEW, PIXEL_TIME + frame++ / 60, colorSpace, m.samples), shading });
       for (let i = 0; i < WARMUP; i++) next();
       times.set(key, [...(times.get(key) ?? []), ...timeNode(next, FRAMES)]);
     }
@@ -235,10 +235,10 @@ async function bezier(page: Page): Promise<string[]> {
   const b = api(page);
   const images = new Map([[WHITE_URL, WHITE]]);
   const s = state(SIZE, BEZIER_VIEW);
-  const ref = renderScene(bezierScene(REF_E), s, { samplesPerAxis: REF_SPP, images });
+  const ref = renderScene(bezierScene(REF_E), s, images, { samplesPerAxis: REF_SPP });
   let check = '';
   if (REF_E_CHECK !== null) {
-    const c = compareImages(ref, renderScene(bezierScene(REF_E_CHECK), s, { samplesPerAxis: REF_SPP, images }).rgba);
+    const c = compareImages(ref, renderScene(bezierScene(REF_E_CHECK), s, images, { samplesPerAxis: REF_SPP }).rgba);
     check = ` The reference at E = ${REF_E_CHECK} against the one at E = ${REF_E}: ${f1(c.psnr.all)} dB (max error ${c.maxError.toFixed(0)}), so E = ${REF_E} stands for the exact surface well beyond these rows.`;
   }
   const runs = (e: number) => (SMOKE ? 2 : Math.max(15, Math.min(400, Math.round(2e6 / (e * e)))));
@@ -260,9 +260,9 @@ async function bezier(page: Page): Promise<string[]> {
   for (const e of [...BEZIER_E, ...(SMOKE ? [] : [REF_E])]) {
     const evals = e === REF_E ? timeNode(() => bezierPatchMesh(BEZIER_PATCH, e), SMOKE ? 1 : 5) : timeNode(() => bezierPatchMesh(BEZIER_PATCH, e), runs(e));
     const scene = bezierScene(e);
-    const swMs = timeNode(() => one.render(s1, scene, images), SMOKE ? 1 : e === REF_E ? 3 : 9);
-    const c1 = compareImages(ref, one.render(s1, scene, images));
-    const c4 = compareImages(ref, fine.render(s, scene, images));
+    const swMs = timeNode(() => one.render(scene, s1, images), SMOKE ? 1 : e === REF_E ? 3 : 9);
+    const c1 = compareImages(ref, one.render(scene, s1, images));
+    const c4 = compareImages(ref, fine.render(scene, s, images));
     let glCells = '— | —';
     if (e !== REF_E) {
       const glMs = await b.call('glFrames', SIZE, SMOKE ? 1 : 10, SMOKE ? 0 : 2, e);
@@ -302,7 +302,7 @@ function views(): string[] {
     for (const m of modes) {
       for (const colorSpace of ['srgb', 'none'] as const) {
         const ref = cachedReference({ ...SIZE, time: PIXEL_TIME, view, colorSpace, samplesPerAxis: VIEWS_REF_SPP });
-        const c = compareImages(ref, renderers.get(m.samplesPerAxis)!.render(state(SIZE, view, PIXEL_TIME, colorSpace, m.samples), scene));
+        const c = compareImages(ref, renderers.get(m.samplesPerAxis)!.render(scene, state(SIZE, view, PIXEL_TIME, colorSpace, m.samples)));
         expect(Number.isFinite(c.psnr.all), `${view.name} ${colorSpace} ${m.key} PSNR`).toBe(true);
         const bad = colorSpace === 'srgb' && (c.psnr.all < BAR_ALL_DB || c.psnr.dark < BAR_DARK_DB);
         if (colorSpace === 'srgb' && c.psnr.all < BAR_ALL_DB) under.push(`${view.name}, ${m.label}: all ${f1(c.psnr.all)}`);
@@ -464,7 +464,7 @@ async function workerRows(page: Page): Promise<string[]> {
   for (const k of kinds) {
     const view = k.scene === null ? DEFAULT_VIEW : BENCH_SCENES[k.scene].view;
     const scene = k.scene === null ? defaultScene(DEFAULT_CUBE_DISTANCE, 0.8) : BENCH_SCENES[k.scene].scene;
-    const ref = renderScene(scene, state(SIZE, view, PIXEL_TIME, 'srgb', k.samples), { samplesPerAxis: REF_SPP });
+    const ref = renderScene(scene, state(SIZE, view, PIXEL_TIME, 'srgb', k.samples), null, { samplesPerAxis: REF_SPP });
     const pixels = await Promise.all(counts.map((n) => b.call('hostPixels', SIZE, 1, PIXEL_TIME, 'srgb', k.samples, n, k.scene)));
     for (const p of pixels) expect(p, `${k.label}: every worker count draws the same bytes`).toBe(pixels[0]);
     psnr.set(k.key, regionCells(compareImages(ref, bytes(pixels[0]))));

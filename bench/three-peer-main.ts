@@ -47,13 +47,13 @@ const peerGl = peer.renderer.getContext() as WebGL2RenderingContext;
 
 // ---- pixels ----------------------------------------------------------------------------------
 
-ours.render(state);
-const a = ours.read('final', state).data;
-const glassMask = ours.read('screen', { ...state, view: 'fresnel' }).data; // F as grey on visible glass, black elsewhere
+ours.render(null, state);
+const a = ours.read(null, state, null, 'final').data;
+const glassMask = ours.read(null, { ...state, view: 'fresnel' }, null, 'screen').data; // F as grey on visible glass, black elsewhere
 peer.render(state, peerOptions);
 const b = peer.readPixels();
 // Re-draw so the visible canvases show the frame (the read above redrew off screen).
-ours.render(state);
+ours.render(null, state);
 
 const n = W * H;
 const isGlass = new Uint8Array(n);
@@ -143,7 +143,7 @@ function timePair(sm: 0 | 2 | 4, frames = num('frames', 30)): { ours: Timing; pe
   for (let k = -3; k < frames; k++) {
     const s = { ...state, samples: sm, time: state.time + k / 60 };
     let t0 = performance.now();
-    ours.render(s);
+    ours.render(null, s);
     close(gl);
     if (k >= 0) msOurs.push(performance.now() - t0);
     t0 = performance.now();
@@ -161,7 +161,7 @@ if (q.get('timing') !== '0') {
     timing[`peer samples ${sm}`] = t.peer;
   }
   // Leave the visible canvases showing the checked frame.
-  ours.render(state);
+  ours.render(null, state);
   peer.render(state, peerOptions);
 }
 

@@ -44,7 +44,7 @@ export default [
   },
   {
     name: 'Z7 the element\'s WebGL backend does not hand the scene to Renderer.load (reflections never clustered)',
-    edits: [{ file: 'src/element/webgl-backend.ts', find: 'return this.renderer.load(state, scene) !== null;', replace: 'return this.renderer.load(state) !== null;' }],
+    edits: [{ file: 'src/element/webgl-backend.ts', find: 'return this.renderer.load(scene, state) !== null;', replace: 'return this.renderer.load(null, state) !== null;' }],
     tests: [LOD],
   },
   {

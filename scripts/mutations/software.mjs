@@ -367,7 +367,7 @@ export default [
   },
   {
     name: 'S62 a frame in flight when the element goes drawn again on the main thread (a whole CPU frame thrown away)',
-    edits: [{ file: 'src/element/software-host.ts', find: '.catch(() => (this.disposed ? new Uint8ClampedArray(0) : this.renderNow(state, scene, samplesPerAxis)));', replace: '.catch(() => this.renderNow(state, scene, samplesPerAxis));' }],
+    edits: [{ file: 'src/element/software-host.ts', find: '.catch(() => (this.disposed ? new Uint8ClampedArray(0) : this.renderNow(scene, state, samplesPerAxis)));', replace: '.catch(() => this.renderNow(scene, state, samplesPerAxis));' }],
     tests: ['tests/e2e/software-bands.spec.ts'],
   },
 ];

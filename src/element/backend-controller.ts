@@ -91,10 +91,10 @@ export class BackendController implements Controller, ContextClient {
   }
 
   /** `pass` of `state` drawn now, off screen (anything but a pass name: the final image, with a warning). */
-  capture(pass: CapturePass, state: FrameState, scene: Scene): ImageData | null {
+  capture(scene: Scene, state: FrameState, pass: CapturePass): ImageData | null {
     const source: ReadbackSource = CAPTURE_SOURCES[pass] ?? 'final';
     if (!(pass in CAPTURE_SOURCES)) warn(`capture("${String(pass).slice(0, 40)}") is not a pass; capturing "final"`);
-    return this.current?.capture(source, state, scene) ?? null;
+    return this.current?.capture(scene, state, source) ?? null;
   }
 
   /** Frames, passes, draw calls, programs and live GL resources; which renderer and thread. */

@@ -23,7 +23,10 @@ export interface BackendHost {
   renderError(e: unknown): void;
 }
 
-/** A renderer drawing the element's frames; it takes the scene's decoded images as they arrive. */
+/**
+ * A renderer drawing the element's frames. It takes the scene's decoded images as they arrive
+ * (setImage) and calls its renderer with them (ARCHITECTURE.md, "How a frame flows").
+ */
 export interface Backend extends ImageSink {
   readonly kind: 'webgl' | 'software';
   /** Where the software renderer draws (a worker, or the main thread). */
@@ -31,14 +34,17 @@ export interface Backend extends ImageSink {
   /** A frame is still being drawn: the next one waits for it. */
   readonly busy: boolean;
   /**
-   * Starts loading the lazy parts a frame of `state` and `scene` needs of this renderer; true when
+   * Starts loading the lazy parts a frame of `scene` and `state` needs of this renderer; true when
    * the frame must wait for them (a frame is asked for when they settle).
    */
-  waitsFor(state: FrameState, scene: Scene): boolean;
-  /** Draws `state` of `scene` on the canvas; `drawn` tells when it is there (perhaps later). */
-  draw(state: FrameState, scene: Scene): void;
+  waitsFor(scene: Scene, state: FrameState): boolean;
+  /**
+   * Draws `state` of `scene` on the canvas, with the images given so far (setImage); `drawn` tells
+   * when it is there (perhaps later).
+   */
+  draw(scene: Scene, state: FrameState): void;
   /** One pass, or the final image, drawn now off screen from `state`; null if that failed. */
-  capture(source: ReadbackSource, state: FrameState, scene: Scene): ImageData | null;
+  capture(scene: Scene, state: FrameState, source: ReadbackSource): ImageData | null;
   /** Its own counters (a new object), or null when it keeps none (the software renderer). */
   stats(): RenderStats | null;
   /** Frees what it holds; returns its last counters (or null). Nothing it started lands after this. */

@@ -249,7 +249,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
   capture(pass?: CapturePass): ImageData | null {
     if (!this.backend.current || this.failure.type) return null;
     if (pass === undefined) return this.frames > 0 ? readCanvas(this.canvas) : null;
-    return this.backend.capture(pass, this.states.last ?? this.frameState(performance.now()), this.scenes.current);
+    return this.backend.capture(this.scenes.current, this.states.last ?? this.frameState(performance.now()), pass);
   }
 
   /** Frames, passes run and skipped, draw calls, compiled programs, live GL resources and scene builds. */
@@ -283,10 +283,10 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     const state = this.frameState(now);
     // The frame's one question, to the element's parts and the renderer's: both start what they lack.
     const held = this.parts.request() !== null;
-    if (backend.waitsFor(state, scene) || held) return;
+    if (backend.waitsFor(scene, state) || held) return;
     this.loop.dirty = false;
     this.images?.sync(scene);
-    backend.draw(state, scene);
+    backend.draw(scene, state);
   }
 
   /** The attributes' part of the frame, then the camera's (which reads the scene for a course camera). */

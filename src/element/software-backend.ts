@@ -4,6 +4,7 @@
 import { passesFor, type ReadbackSource } from '../render/renderer';
 import type { FrameState } from '../frame/types';
 import type { Scene } from '../scene/scene';
+import type { DecodedImage } from '../scene/decoded-image';
 import type { Backend, BackendHost } from './backend';
 import type { SoftwareHost } from './software-host';
 
@@ -26,8 +27,8 @@ export class SoftwareBackend implements Backend {
     return this.software.thread;
   }
 
-  /** ImageSink: the CPU reads an image's pixels; each image is decoded once per page, as for WebGL. */
-  setImage(url: string, image: TexImageSource | null): void {
+  /** ImageSink: the host keeps it (and sends it to each worker once). */
+  setImage(url: string, image: DecodedImage | null): void {
     this.software.setImage(url, image);
   }
 
@@ -36,12 +37,12 @@ export class SoftwareBackend implements Backend {
     return false;
   }
 
-  draw(state: FrameState, scene: Scene): void {
+  draw(scene: Scene, state: FrameState): void {
     const canvas = this.host.canvas;
     const { width, height } = canvas;
     this.busy = true;
     const frozen: FrameState = { ...state };
-    void this.software.render(frozen, scene).then((pixels) => {
+    void this.software.render(scene, frozen).then((pixels) => {
       if (this.disposed) return;
       this.busy = false;
       if (canvas.width !== width || canvas.height !== height) {
@@ -70,9 +71,9 @@ export class SoftwareBackend implements Backend {
   }
 
   /** Drawn now, on this thread (capture is synchronous). */
-  capture(source: ReadbackSource, state: FrameState, scene: Scene): ImageData | null {
+  capture(scene: Scene, state: FrameState, source: ReadbackSource): ImageData | null {
     const s: FrameState = { ...state, view: source as FrameState['view'] };
-    const pixels = this.software.renderNow(s, scene) as Uint8ClampedArray<ArrayBuffer>;
+    const pixels = this.software.renderNow(scene, s) as Uint8ClampedArray<ArrayBuffer>;
     return new ImageData(pixels, s.width, s.height);
   }
 

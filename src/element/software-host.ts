@@ -74,24 +74,17 @@ export class SoftwareHost {
   lastWorkerMs = 0;
 
   /**
-   * Decoded pixels of the scene's image textures by URL. The host is the element's image sink
-   * (texture-images.ts) while it draws: each image is decoded once per page, as for WebGL.
+   * The decoded images the scene names, by URL (texture-images.ts decodes each once per page):
+   * the renderer's third argument, here and in the workers (each sent to a worker once).
    */
   readonly images = new Map<string, DecodedImage>();
 
   private constructor(private readonly local: SoftwareRenderer) {}
 
-  /** ImageSink: an image arrives (as pixels: the CPU reads them), or goes (null). */
-  setImage(url: string, image: TexImageSource | null): void {
-    if (!image) {
-      this.images.delete(url);
-      return;
-    }
-    const { width, height } = image as { width: number; height: number };
-    const canvas = new OffscreenCanvas(width, height);
-    const ctx = canvas.getContext('2d')!;
-    ctx.drawImage(image as CanvasImageSource, 0, 0);
-    this.images.set(url, ctx.getImageData(0, 0, width, height));
+  /** ImageSink: an image arrives, or goes (null). */
+  setImage(url: string, image: DecodedImage | null): void {
+    if (image) this.images.set(url, image);
+    else this.images.delete(url);
   }
 
   /** Loads the renderer and starts its workers (or settles for the main thread). */
@@ -144,12 +137,12 @@ export class SoftwareHost {
   }
 
   /**
-   * Draws `state` of `scene`: RGBA8, top row first, `state.width` × `state.height`. In the workers
-   * when there are some (the request is a copy: the caller may change `state` at once), else now.
-   * A worker that fails mid-way hands the frame to the main thread.
+   * Draws `state` of `scene` with the images given so far: RGBA8, top row first, `state.width` ×
+   * `state.height`. In the workers when there are some (the request is a copy: the caller may
+   * change `state` at once), else now. A worker that fails mid-way hands the frame to the main thread.
    */
-  render(state: FrameState, scene: Scene, samplesPerAxis = 1): Promise<Uint8ClampedArray> {
-    if (!this.workers.length) return Promise.resolve(this.renderNow(state, scene, samplesPerAxis));
+  render(scene: Scene, state: FrameState, samplesPerAxis = 1): Promise<Uint8ClampedArray> {
+    if (!this.workers.length) return Promise.resolve(this.renderNow(scene, state, samplesPerAxis));
     const id = ++this.nextId, bands = this.bandsOf(state);
     const drawn = bands.map((band, i) => this.workers[i].draw({ id, state, samplesPerAxis, band }, scene, this.images));
     return Promise.all(drawn).then((parts) => {
@@ -164,13 +157,13 @@ export class SoftwareHost {
         if (b.bottom > b.top && p.ms > 0) this.speeds[i] = 0.5 * this.speeds[i] + 0.5 * ((b.bottom - b.top) / p.ms);
       });
       return frame;
-    }).catch(() => (this.disposed ? new Uint8ClampedArray(0) : this.renderNow(state, scene, samplesPerAxis)));
+    }).catch(() => (this.disposed ? new Uint8ClampedArray(0) : this.renderNow(scene, state, samplesPerAxis)));
   }
 
   /** Draws on the main thread, now (capture of a pass, the fallback). A copy of the pixels. */
-  renderNow(state: FrameState, scene: Scene, samplesPerAxis = 1): Uint8ClampedArray {
+  renderNow(scene: Scene, state: FrameState, samplesPerAxis = 1): Uint8ClampedArray {
     this.local.samplesPerAxis = samplesPerAxis;
-    return this.local.render(state, scene, this.images).slice();
+    return this.local.render(scene, state, this.images).slice();
   }
 
   dispose(): void {

@@ -1,13 +1,24 @@
 // Image textures named by a scene (`texture`, an MTL's map_Kd): fetched and decoded once per URL
-// per page, handed to the element's renderer when ready. Until then, or when an image fails
-// (one warning per URL), the object keeps the procedural texture and the scene keeps drawing.
+// per page into the pixels every renderer takes (DecodedImage), handed to the element's backend
+// when ready. Until then, or when an image fails (one warning per URL), the object keeps the
+// procedural texture and the scene keeps drawing.
 import type { Scene } from '../scene/scene';
+import type { DecodedImage } from '../scene/decoded-image';
 import { warn } from './warnings';
 
-const decoded = new Map<string, Promise<ImageBitmap | null>>();
+const decoded = new Map<string, Promise<DecodedImage | null>>();
 
-/** The decoded image of `url` (null when it failed, with one warning); fetched once per page. */
-export function decodeImage(url: string): Promise<ImageBitmap | null> {
+/** A bitmap's pixels, read once through a 2D canvas (RGBA8, top row first); the bitmap is closed. */
+function pixelsOf(bitmap: ImageBitmap): DecodedImage {
+  const { width, height } = bitmap;
+  const ctx = new OffscreenCanvas(width, height).getContext('2d')!;
+  ctx.drawImage(bitmap, 0, 0);
+  bitmap.close();
+  return ctx.getImageData(0, 0, width, height);
+}
+
+/** The decoded pixels of `url` (null when it failed, with one warning); fetched once per page. */
+export function decodeImage(url: string): Promise<DecodedImage | null> {
   let p = decoded.get(url);
   if (!p) {
     p = fetch(url)
@@ -16,6 +27,7 @@ export function decodeImage(url: string): Promise<ImageBitmap | null> {
         return r.blob();
       })
       .then((blob) => createImageBitmap(blob))
+      .then(pixelsOf)
       .catch((e: unknown) => {
         warn(`texture "${url}" could not be loaded (${e instanceof Error ? e.message : String(e)}); using the procedural texture`);
         return null;
@@ -25,8 +37,10 @@ export function decodeImage(url: string): Promise<ImageBitmap | null> {
   return p;
 }
 
+/** Where the decoded images go: a backend keeps them and hands them to its renderer with each frame. */
 export interface ImageSink {
-  setImage(url: string, image: TexImageSource | null): void;
+  /** `image` for `url` (null: freed). */
+  setImage(url: string, image: DecodedImage | null): void;
 }
 
 /** What TextureImages needs of the scene element. */
@@ -42,7 +56,7 @@ export interface TextureImagesHost {
  * hooks. An image on its way lands in whichever renderer draws when it arrives, or in none.
  */
 export class TextureImages {
-  private readonly ready = new Map<string, ImageBitmap>();
+  private readonly ready = new Map<string, DecodedImage>();
   private readonly asked = new Set<string>();
   private lastScene: Scene | null = null;
 

@@ -3,6 +3,7 @@
 import { Renderer, type ReadbackSource } from '../render/renderer';
 import type { FrameState, RenderStats } from '../frame/types';
 import type { Scene } from '../scene/scene';
+import type { DecodedImage } from '../scene/decoded-image';
 import type { Backend, BackendHost } from './backend';
 import type { Presenter, SharedContext } from './shared-context';
 import { warn } from './warnings';
@@ -17,6 +18,8 @@ export class WebGLBackend implements Backend {
   readonly busy = false;
   private disposed = false;
   private readonly renderer: Renderer;
+  /** The images given so far, by URL: the renderer's third argument (it uploads each once). */
+  private readonly images = new Map<string, DecodedImage>();
 
   /** Throws what the renderer's constructor throws (a shader that fails, a lost context). */
   constructor(private readonly host: BackendHost, private readonly shared: SharedContext, private readonly presenter: Presenter) {
@@ -31,20 +34,22 @@ export class WebGLBackend implements Backend {
     });
   }
 
-  waitsFor(state: FrameState, scene: Scene): boolean {
-    return this.renderer.load(state, scene) !== null;
+  waitsFor(scene: Scene, state: FrameState): boolean {
+    return this.renderer.load(scene, state) !== null;
   }
 
-  setImage(url: string, image: TexImageSource | null): void {
-    this.renderer.setImage(url, image);
+  /** ImageSink: the next frame uploads it (null: the next frame frees it). */
+  setImage(url: string, image: DecodedImage | null): void {
+    if (image) this.images.set(url, image);
+    else this.images.delete(url);
   }
 
-  draw(state: FrameState, scene: Scene): void {
+  draw(scene: Scene, state: FrameState): void {
     const { width, height } = this.host.canvas;
     let report;
     try {
       this.shared.reserve(width, height);
-      report = this.renderer.render(state, scene);
+      report = this.renderer.render(scene, state, this.images);
       this.presenter.present(width, height);
     } catch (e) {
       this.host.renderError(e);
@@ -53,10 +58,10 @@ export class WebGLBackend implements Backend {
     this.host.drawn(state, report);
   }
 
-  capture(source: ReadbackSource, state: FrameState, scene: Scene): ImageData | null {
+  capture(scene: Scene, state: FrameState, source: ReadbackSource): ImageData | null {
     try {
       this.shared.reserve(this.host.canvas.width, this.host.canvas.height);
-      const px = this.renderer.read(source, state, scene);
+      const px = this.renderer.read(scene, state, this.images, source);
       return new ImageData(px.data, px.width, px.height);
     } catch (e) {
       this.host.renderError(e);

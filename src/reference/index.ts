@@ -6,6 +6,6 @@ export {
   regionOfKey, type Region,
 } from './regions';
 export type { ReferenceState, ViewState } from './reference-state';
-export type { DecodedImage } from '../scene/decoded-image';
+export type { DecodedImage, SceneImages } from '../scene/decoded-image';
 export { SurfaceCodes } from './surface-codes';
 export type { TextureFilter } from './sample-tracer';

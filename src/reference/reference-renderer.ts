@@ -1,7 +1,7 @@
 // The float64 CPU reference image of a frame: stratified samples per pixel, box-filtered, plus regions.
 import { defaultScene } from '../scene/default-scene';
 import type { Scene } from '../scene/scene';
-import type { DecodedImage } from '../scene/decoded-image';
+import type { SceneImages } from '../scene/decoded-image';
 import { regionMap, regionOfCodes } from './regions';
 import type { ReferenceState, ViewState } from './reference-state';
 import { SampleTracer, type TextureFilter } from './sample-tracer';
@@ -24,11 +24,6 @@ export interface ReferenceOptions {
    * 'box' when supersampling.
    */
   textureFilter?: TextureFilter;
-  /**
-   * Decoded pixels of the scene's image textures, by URL (RGBA8, top row first). A material
-   * whose image is missing here is drawn with the procedural texture.
-   */
-  images?: ReadonlyMap<string, DecodedImage>;
   /**
    * Rough glass (docs/rough-glass.md#reference-monte-carlo): microfacet normals per pixel for its Monte Carlo, rounded up to a
    * whole number per sample (each sample averages its share). Default 256. Unused when the
@@ -77,17 +72,23 @@ export interface ReferenceImage {
   microfacetSamples?: number;
 }
 
-/** renderScene of the default scene (docs/default-scene.md) with the cube at `state.cubeDistance`, turning at `state.spin`. */
+/**
+ * renderScene of the default scene (docs/default-scene.md) with the cube at `state.cubeDistance`,
+ * turning at `state.spin`, and no images: the reference's counterpart of the other renderers' null scene.
+ */
 export function renderReference(state: ReferenceState, options: ReferenceOptions = {}): ReferenceImage {
-  return renderScene(defaultScene(state.cubeDistance, state.spin), state, options);
+  return renderScene(defaultScene(state.cubeDistance, state.spin), state, null, options);
 }
 
 /**
  * Renders `state.view` ('final', 'scene', 'reflection' or 'fresnel') of `scene` as the GPU
  * path would with exact geometry, shading and texture filtering, in `state.colorSpace`. Pure:
- * no DOM, no Node APIs; runs in a browser, a worker or Node.
+ * no DOM, no Node APIs; runs in a browser, a worker or Node. The renderer contract
+ * (ARCHITECTURE.md, "How a frame flows"), then the reference's own options: `images` are the
+ * decoded images the scene names, by URL (a material whose image is missing is drawn with the
+ * procedural texture); `scene` is required (renderReference draws the default one).
  */
-export function renderScene(scene: Scene, state: ViewState, options: ReferenceOptions = {}): ReferenceImage {
+export function renderScene(scene: Scene, state: ViewState, images?: SceneImages | null, options: ReferenceOptions = {}): ReferenceImage {
   if (state.view === 'passes') {
     throw new Error('glass-plane-scene: the reference renderer draws one view at a time, not "passes"');
   }
@@ -95,7 +96,7 @@ export function renderScene(scene: Scene, state: ViewState, options: ReferenceOp
   const textureFilter = options.textureFilter ?? (n === 1 ? 'point' : 'box');
   const width = Math.max(0, Math.floor(state.width));
   const height = Math.max(0, Math.floor(state.height));
-  const tracer = new SampleTracer(scene, state, textureFilter, options.images);
+  const tracer = new SampleTracer(scene, state, textureFilter, images ?? undefined);
   // docs/rough-glass.md#reference-monte-carlo: each sample takes `perSample` of the pixel's stratified microfacet normals.
   const rough = (state.roughness ?? 0) > 0;
   const perSample = rough ? Math.max(1, Math.ceil((options.microfacetSamples ?? DEFAULT_MICROFACET_SAMPLES) / (n * n))) : 0;

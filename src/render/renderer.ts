@@ -1,5 +1,5 @@
 // Decides which passes run for a view, owns every GL resource of one scene, and reads pixels back.
-// Knows nothing of the DOM: it takes a WebGL2 context and plain FrameState.
+// Knows nothing of the DOM: it takes a WebGL2 context, then per frame a scene, a FrameState and decoded images.
 import { Mesh } from './gl/mesh';
 import { RenderTarget } from './gl/render-target';
 import { MultisampleTarget } from './gl/multisample-target';
@@ -28,6 +28,7 @@ import { glassMesh } from '../scene/geometry/rectangle';
 import { DefaultSceneCache } from '../scene/default-scene';
 import type { GlassFrame } from '../scene/glass-frame';
 import type { Scene } from '../scene/scene';
+import type { SceneImages } from '../scene/decoded-image';
 import type { FrameReport, FrameState, RenderStats, Viewport } from '../frame/types';
 import type { DebugViewFrame } from './debug-views';
 
@@ -141,10 +142,16 @@ export class Renderer implements DebugViewFrame {
     this.parts = new LazyParts(RENDER_PARTS, { ctx: this.ctx, checks: options.checks === true, rough: this.rough }, options.parts ?? CONSOLE_PARTS);
   }
 
-  /** Draws one frame of `state.view` to the canvas and returns its report (reused object; its `passes` are frozen and shared). */
-  render(state: FrameState, scene?: Scene): FrameReport {
+  /**
+   * Draws one frame of `state.view` of `scene` to the canvas and returns its report (reused object;
+   * its `passes` are frozen and shared). The renderer contract (ARCHITECTURE.md, "How a frame
+   * flows"): `scene` null is the default scene for `state` (docs/default-scene.md), kept between
+   * frames; `images` the decoded images the scene names, by URL (null: none), each uploaded when
+   * a frame's scene first names it and freed when a frame naming it finds it gone or replaced.
+   */
+  render(scene: Scene | null, state: FrameState, images?: SceneImages | null): FrameReport {
     this.ctx.scene = scene ?? this.defaultScene.get(state.cubeDistance, state.spin);
-    const drawCalls = this.draw(state, null);
+    const drawCalls = this.draw(state, images, null);
     const r = this.report;
     this.counts.frames++;
     r.frame = this.counts.frames;
@@ -163,45 +170,38 @@ export class Renderer implements DebugViewFrame {
   }
 
   /**
-   * Starts loading what a frame of `state` and `scene` (default: the default scene) needs that
+   * Starts loading what a frame of `scene` (null: the default scene) and `state` needs that
    * the core leaves out (render/parts.ts); a promise settled when all of it has (it never
    * rejects: a part that fails is warned about through RendererOptions.parts and drawn without),
    * or null when the frame needs nothing more. Until then render() and read() draw without it.
    */
-  load(state: FrameState, scene?: Scene): Promise<void> | null {
+  load(scene: Scene | null, state: FrameState): Promise<void> | null {
     this.ctx.state = state;
     this.ctx.scene = scene ?? this.defaultScene.get(state.cubeDistance, state.spin);
     return this.parts.request();
   }
 
   /**
-   * Pixels of `state` as drawn: 'screen' redraws the canvas and reads it back (the drawing
-   * buffer is not preserved between frames); the others draw one pass off screen.
+   * Pixels of a frame drawn as render() draws it (the same arguments), then `source`: 'screen'
+   * redraws the canvas and reads it back (the drawing buffer is not preserved between frames);
+   * the others draw one pass off screen.
    */
-  read(source: ReadbackSource, state: FrameState, scene?: Scene): Pixels {
+  read(scene: Scene | null, state: FrameState, images: SceneImages | null | undefined, source: ReadbackSource): Pixels {
     this.ctx.scene = scene ?? this.defaultScene.get(state.cubeDistance, state.spin);
     const gl = this.gl;
     if (source === 'screen') {
-      this.draw(state, null);
+      this.draw(state, images, null);
       return readFramebuffer(this.gl, null, state.width, state.height);
     }
-    this.prepare(state);
+    this.prepare(state, images);
     if (source === 'reflection') {
       this.runReflection();
       return readFramebuffer(this.gl, this.reflection.framebuffer, this.reflection.width, this.reflection.height, this.reflection.halfFloat, state.colorSpace === 'srgb');
     }
     const target = (this.captureTarget ??= new RenderTarget(gl, this.counter));
     target.setSize(state.width, state.height);
-    this.draw({ ...state, view: source }, target.framebuffer);
+    this.draw({ ...state, view: source }, images, target.framebuffer);
     return readFramebuffer(this.gl, target.framebuffer, target.width, target.height);
-  }
-
-  /**
-   * Gives the renderer the decoded image of a texture URL a scene names (null frees it).
-   * Until then objects naming it draw with the procedural texture.
-   */
-  setImage(url: string, image: TexImageSource | null): void {
-    this.textures.setImage(url, image);
   }
 
   get stats(): RenderStats {
@@ -240,12 +240,13 @@ export class Renderer implements DebugViewFrame {
     this.counter.add('vertexArrays', -1);
   }
 
-  private prepare(state: FrameState): void {
+  private prepare(state: FrameState, images: SceneImages | null | undefined): void {
     this.ctx.state = state;
     const scene = this.ctx.scene;
     // docs/colour.md#srgb: colour data (textures, the background) decoded in srgb; light is mixed linearly.
     const srgb = state.colorSpace === 'srgb';
     this.textures.setColorSpace(srgb);
+    this.textures.sync(scene, images);
     for (let k = 0; k < 3; k++) this.background[k] = srgb ? srgbToLinear(scene.background[k]) : scene.background[k];
     this.setup.update(state, scene);
     this.objectMeshes.trim(scene.objects.length);
@@ -320,8 +321,8 @@ export class Renderer implements DebugViewFrame {
   }
 
   /** Draws `state.view` into `destination` (null = canvas), multisampled when asked. */
-  private draw(state: FrameState, destination: WebGLFramebuffer | null): number {
-    this.prepare(state);
+  private draw(state: FrameState, images: SceneImages | null | undefined, destination: WebGLFramebuffer | null): number {
+    this.prepare(state, images);
     const samples = this.samplesFor(state);
     // The fresnel view is a number, not a picture: drawn as stored in either space (docs/colour.md#debug-views).
     if (encodesAtEnd(state)) {

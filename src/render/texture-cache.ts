@@ -1,6 +1,8 @@
-// The textures objects draw with: the procedural one of docs/default-scene.md#the-procedural-texture, and images by URL once their
-// owner (the element) has decoded them. An object whose image is not there yet, or failed,
-// draws with the procedural texture. Each is held in the frame's colour space (docs/colour.md#srgb:
+// The textures objects draw with: the procedural one of docs/default-scene.md#the-procedural-texture, and the images each
+// frame is given by URL (the renderer contract's SceneImages): uploaded when a frame's scene first
+// names one its map has, freed when a frame naming it finds it gone from the map or replaced there
+// (else with the renderer). An object whose image is not in the frame's map draws with the
+// procedural texture. Each is held in the frame's colour space (docs/colour.md#srgb:
 // SRGB8_ALPHA8 for `srgb`, so the GPU filters linear light, anisotropically as the procedural
 // texture is read there), uploaded again only when the space
 // changes, and always before any pass: creating a texture binds it, which would unbind the one
@@ -8,10 +10,11 @@
 import { Texture } from './gl/texture';
 import type { ResourceCounter } from './gl/resource-counter';
 import type { SharedResources } from './gl/shared-resources';
-import type { TextureSource } from '../scene/scene';
+import type { Scene, TextureSource } from '../scene/scene';
+import type { DecodedImage, SceneImages } from '../scene/decoded-image';
 
 interface ImageEntry {
-  source: TexImageSource;
+  source: DecodedImage;
   texture: Texture;
 }
 
@@ -42,12 +45,20 @@ export class TextureCache {
     return this.shared.texture(this.srgb);
   }
 
-  /** Uploads (or, with null, frees) the image for `url`. */
-  setImage(url: string, image: TexImageSource | null): void {
-    this.images.get(url)?.texture.dispose();
-    this.images.delete(url);
-    if (!image) return;
-    this.images.set(url, { source: image, texture: this.upload(image, this.srgb) });
+  /**
+   * The frame's images, before any pass: for each image `scene` names, one new in `images` is
+   * uploaded, one gone from it (or replaced there) freed. An unchanged map uploads and allocates nothing.
+   */
+  sync(scene: Scene, images: SceneImages | null | undefined): void {
+    for (const o of scene.objects) {
+      const t = o.material.texture;
+      if (t.kind !== 'image') continue;
+      const image = images?.get(t.url), e = this.images.get(t.url);
+      if (e?.source === image) continue;
+      e?.texture.dispose();
+      if (image) this.images.set(t.url, { source: image, texture: this.upload(image, this.srgb) });
+      else this.images.delete(t.url);
+    }
   }
 
   /** The texture for `source`, and whether it is an image (read at (u, 1 − v)). */
@@ -71,7 +82,7 @@ export class TextureCache {
     this.white = null;
   }
 
-  private upload(image: TexImageSource, srgb: boolean): Texture {
-    return new Texture(this.gl, this.counter, { width: 0, height: 0, data: null, image, mipmap: true, repeat: true, srgb, anisotropic: srgb });
+  private upload(image: DecodedImage, srgb: boolean): Texture {
+    return new Texture(this.gl, this.counter, { width: image.width, height: image.height, data: image.data, mipmap: true, repeat: true, srgb, anisotropic: srgb });
   }
 }

@@ -6,3 +6,9 @@ export interface DecodedImage {
   height: number;
   data: Uint8Array | Uint8ClampedArray;
 }
+
+/**
+ * The decoded images a scene names, by URL: every renderer's third argument (ARCHITECTURE.md,
+ * "How a frame flows"). A material whose URL is not in it draws with the procedural texture.
+ */
+export type SceneImages = ReadonlyMap<string, DecodedImage>;

@@ -3,7 +3,7 @@
 // rows, bit for bit (SoftwareRenderer.band).
 import type { FrameState } from '../frame/types';
 import type { Scene } from '../scene/scene';
-import type { DecodedImage } from '../scene/decoded-image';
+import type { SceneImages } from '../scene/decoded-image';
 import type { SoftwareRenderer } from './software-renderer';
 
 export interface Band {
@@ -31,14 +31,14 @@ export function splitRows(height: number, count: number, weights?: readonly numb
 }
 
 /**
- * Draws `band` of the frame with `renderer` and returns its rows' RGBA8 (a copy, the band's
- * height × the frame's width); null band: the whole frame.
+ * Draws `band` of the frame with `renderer` (SoftwareRenderer.render's scene, state and images)
+ * and returns its rows' RGBA8 (a copy, the band's height × the frame's width); null band: the whole frame.
  */
 export function renderBand(
-  renderer: SoftwareRenderer, state: FrameState, scene: Scene | undefined, images: ReadonlyMap<string, DecodedImage> | undefined, band: Band | null,
+  renderer: SoftwareRenderer, scene: Scene | null, state: FrameState, images: SceneImages | null | undefined, band: Band | null,
 ): Uint8ClampedArray {
   renderer.band = band;
-  const pixels = renderer.render(state, scene, images);
+  const pixels = renderer.render(scene, state, images);
   if (!band) return pixels.slice();
   const width = Math.max(0, Math.floor(state.width));
   return pixels.slice(4 * band.top * width, 4 * band.bottom * width);

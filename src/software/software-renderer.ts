@@ -11,7 +11,7 @@ import { orthographicView } from '../frame/orthographic-view';
 import { FrameSetup } from '../frame/frame-setup';
 import { encodesAtEnd } from '../frame/linear-light';
 import type { FrameState } from '../frame/types';
-import type { DecodedImage } from '../scene/decoded-image';
+import type { DecodedImage, SceneImages } from '../scene/decoded-image';
 import { DefaultSceneCache } from '../scene/default-scene';
 import type { Scene, SceneObject } from '../scene/scene';
 import { GlassShader, GLASS_INDICES, GLASS_TIE_BIAS } from './glass-shader';
@@ -112,29 +112,30 @@ export class SoftwareRenderer {
   }
 
   /**
-   * Draws `state.view` of `scene` (the default scene, docs/default-scene.md, when absent) and returns its pixels:
-   * RGBA8, top row first. The array is the renderer's own and is overwritten by the next call.
-   * `images`: decoded pixels of the scene's image textures by URL (RGBA8, top row first); a
-   * material whose image is missing draws with the procedural texture.
+   * Draws `state.view` of `scene` and returns its pixels: RGBA8, top row first. The array is the
+   * renderer's own and is overwritten by the next call. The renderer contract (ARCHITECTURE.md,
+   * "How a frame flows"): `scene` null is the default scene for `state` (docs/default-scene.md),
+   * kept between frames; `images` the decoded images the scene names, by URL (a material whose
+   * image is missing draws with the procedural texture).
    */
-  render(state: FrameState, scene?: Scene, images?: ReadonlyMap<string, DecodedImage>): Uint8ClampedArray {
-    if (state.view === 'passes') return this.passesTiles.draw(state, (tile) => this.timed(tile, scene, images, false));
-    return this.timed(state, scene, images, true);
+  render(scene: Scene | null, state: FrameState, images?: SceneImages | null): Uint8ClampedArray {
+    if (state.view === 'passes') return this.passesTiles.draw(state, (tile) => this.timed(scene, tile, images, false));
+    return this.timed(scene, state, images, true);
   }
 
-  private timed(state: FrameState, scene: Scene | undefined, images: ReadonlyMap<string, DecodedImage> | undefined, banded: boolean): Uint8ClampedArray {
+  private timed(scene: Scene | null, state: FrameState, images: SceneImages | null | undefined, banded: boolean): Uint8ClampedArray {
     const timing = this.timing;
     this.objectShader.timing = timing;
-    if (!timing) return this.frame(state, scene, images, banded);
+    if (!timing) return this.frame(scene, state, images, banded);
     const t0 = performance.now();
     try {
-      return this.frame(state, scene, images, banded);
+      return this.frame(scene, state, images, banded);
     } finally {
       timing.total += performance.now() - t0;
     }
   }
 
-  private frame(state: FrameState, scene: Scene | undefined, images: ReadonlyMap<string, DecodedImage> | undefined, banded: boolean): Uint8ClampedArray {
+  private frame(scene: Scene | null, state: FrameState, images: SceneImages | null | undefined, banded: boolean): Uint8ClampedArray {
     scene ??= this.defaultScene.get(state.cubeDistance, state.spin);
     const ssaa = Math.max(1, Math.min(8, Math.floor(this.samplesPerAxis)));
     const msaa = ssaa === 1 && state.samples >= 2 ? 2 : 1;
@@ -152,7 +153,7 @@ export class SoftwareRenderer {
     this.main.bottom = this.mirror.bottom = bottom * n;
     this.from = top * n * W;
     this.to = bottom * n * W;
-    this.prepare(state, scene);
+    this.prepare(scene, state);
 
     const view = state.view; // 'passes' is tiled by render()
     let source = this.colour;
@@ -161,36 +162,36 @@ export class SoftwareRenderer {
       case 'reflection':
         if (hasGlass) {
           this.mask.fill(1, this.from, this.to);
-          this.reflectionPass(state, scene, images, false);
+          this.reflectionPass(scene, state, images, false);
           source = this.reflection;
         } else {
           fill(this.colour, this.from, this.to, this.background);
         }
         break;
       case 'scene':
-        this.scenePass(state, scene, images, 'all');
+        this.scenePass(scene, state, images, 'all');
         break;
       case 'fresnel':
-        this.opaquePass(state, scene, images);
+        this.opaquePass(scene, state, images);
         fill(this.colour, this.from, this.to, BLACK);
         if (hasGlass) this.glass('fresnel');
         break;
       default:
         if (!hasGlass) {
-          this.scenePass(state, scene, images, 'all');
+          this.scenePass(scene, state, images, 'all');
           break;
         }
         // Opaque objects, transparent ones beyond the glass, the glass's footprint, the
         // reflection there only, the glass over it all, transparent objects on the eye's side.
-        if (isRough(state)) this.roughGlass(state, scene, images, width);
+        if (isRough(state)) this.roughGlass(scene, state, images, width);
         else {
-          this.scenePass(state, scene, images, 'beyond');
+          this.scenePass(scene, state, images, 'beyond');
           this.mask.fill(0, this.from, this.to);
           this.glass('mask');
-          this.reflectionPass(state, scene, images, true);
+          this.reflectionPass(scene, state, images, true);
           this.glass('compose');
         }
-        this.drawObjects(this.main, state, scene, images, false, 'transparent', 'eye');
+        this.drawObjects(this.main, scene, state, images, false, 'transparent', 'eye');
     }
     // F is a number, shown unencoded in either space (docs/colour.md#debug-views); every other view is a picture.
     const out = this.output.subarray(4 * top * width, 4 * bottom * width);
@@ -203,7 +204,7 @@ export class SoftwareRenderer {
    * the whole reflection, each with its distance codes and mips, then the scene and the glass
    * gathering R̃ and B̃ from them (rough-gather.ts).
    */
-  private roughGlass(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined, width: number): void {
+  private roughGlass(scene: Scene, state: FrameState, images: SceneImages | null | undefined, width: number): void {
     const r = this.main, W = r.width, H = r.height, s = this.setup, g = this.rough, b = this.roughBuffers, shader = this.objectShader;
     b.resize(W * H);
     const transmits = state.transparency > 0, plane = s.glass.plane, codePlane = shader.codePlane;
@@ -216,20 +217,20 @@ export class SoftwareRenderer {
         r.clearDepth();
         r.mask = null;
         shader.colour = b.behind;
-        this.drawObjects(r, state, scene, images, false, 'opaque', 'beyond');
-        this.drawObjects(r, state, scene, images, false, 'transparent', 'beyond');
+        this.drawObjects(r, scene, state, images, false, 'opaque', 'beyond');
+        this.drawObjects(r, scene, state, images, false, 'transparent', 'beyond');
         b.build(g, 1, b.behind, W, H);
       }
       shader.colour = this.colour;
       for (let k = 0; k < 4; k++) codePlane[k] = s.side * plane[k];
       b.codes.fill(1, 0, W * H);
-      this.reflectionPass(state, scene, images, false);
+      this.reflectionPass(scene, state, images, false);
       b.build(g, 0, this.reflection, W, H);
     } finally {
       shader.codes = null;
       shader.colour = this.colour;
     }
-    this.scenePass(state, scene, images, 'beyond');
+    this.scenePass(scene, state, images, 'beyond');
     g.alpha = ggxAlpha(state.roughness ?? 0);
     g.ior = state.ior;
     g.settings = ROUGH_GATHER[state.roughnessQuality ?? 'medium'];
@@ -266,7 +267,7 @@ export class SoftwareRenderer {
     this.glassShader.mask = this.mask;
   }
 
-  private prepare(state: FrameState, scene: Scene): void {
+  private prepare(scene: Scene, state: FrameState): void {
     const s = this.setup;
     const space: ColorSpace = state.colorSpace === 'srgb' ? 'srgb' : 'none';
     this.space = space;
@@ -294,29 +295,29 @@ export class SoftwareRenderer {
   }
 
   /** Pass 2: background, opaque objects, then transparent ones (those on `side` of the glass). */
-  private scenePass(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined, side: Side): void {
-    this.opaquePass(state, scene, images);
-    this.drawObjects(this.main, state, scene, images, false, 'transparent', side);
+  private scenePass(scene: Scene, state: FrameState, images: SceneImages | null | undefined, side: Side): void {
+    this.opaquePass(scene, state, images);
+    this.drawObjects(this.main, scene, state, images, false, 'transparent', side);
   }
 
-  private opaquePass(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined): void {
+  private opaquePass(scene: Scene, state: FrameState, images: SceneImages | null | undefined): void {
     const r = this.main;
     fill(this.colour, this.from, this.to, this.background);
     r.clearDepth();
     r.mask = null;
-    this.drawObjects(r, state, scene, images, false, 'opaque', 'all');
+    this.drawObjects(r, scene, state, images, false, 'opaque', 'all');
   }
 
   /** Pass 1 into the reflection buffer, at the masked pixels only when `masked`. */
-  private reflectionPass(state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined, masked: boolean): void {
+  private reflectionPass(scene: Scene, state: FrameState, images: SceneImages | null | undefined, masked: boolean): void {
     const r = this.mirror;
     fill(this.reflection, this.from, this.to, this.background);
     r.clearDepth();
     r.mask = masked ? this.mask : null;
     this.objectShader.colour = this.reflection;
     try {
-      this.drawObjects(r, state, scene, images, true, 'opaque', 'eye');
-      this.drawObjects(r, state, scene, images, true, 'transparent', 'eye');
+      this.drawObjects(r, scene, state, images, true, 'opaque', 'eye');
+      this.drawObjects(r, scene, state, images, true, 'transparent', 'eye');
     } finally {
       this.objectShader.colour = this.colour;
       r.mask = null;
@@ -335,7 +336,7 @@ export class SoftwareRenderer {
   }
 
   private drawObjects(
-    r: Rasterizer, state: FrameState, scene: Scene, images: ReadonlyMap<string, DecodedImage> | undefined,
+    r: Rasterizer, scene: Scene, state: FrameState, images: SceneImages | null | undefined,
     mirrored: boolean, selection: Selection, side: Side,
   ): void {
     const s = this.setup, d = this.draw, objects = scene.objects;
@@ -380,7 +381,7 @@ export class SoftwareRenderer {
     r.depthBias = 0;
   }
 
-  private textureOf(o: SceneObject, images: ReadonlyMap<string, DecodedImage> | undefined): MipTexture {
+  private textureOf(o: SceneObject, images: SceneImages | null | undefined): MipTexture {
     const source = o.material.texture, space = this.space;
     if (source.kind === 'none') return WHITE;
     if (source.kind !== 'image') return proceduralMipTexture(space);

@@ -26,7 +26,7 @@ scope.onmessage = (e: MessageEvent<SoftwareRequest>) => {
     if (!scene) throw new Error('no scene sent yet');
     renderer.samplesPerAxis = r.samplesPerAxis;
     const t0 = performance.now();
-    const pixels = renderBand(renderer, r.state, scene, images, r.band);
+    const pixels = renderBand(renderer, scene, r.state, images, r.band);
     response = { id: r.id, pixels, width: r.state.width, height: r.state.height, ms: performance.now() - t0 };
     scope.postMessage(response, [pixels.buffer]);
   } catch (err) {

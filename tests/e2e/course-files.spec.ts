@@ -304,7 +304,7 @@ for (const glass of [false, true]) {
       fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, colorSpace: 'srgb', view: 'final', reflectionScale: 1, samples: 4, shading: 'phong',
       tessellation: 'auto', reflectionFormat: 'rgba8', courseCamera: camera('camera.cfg'),
     };
-    const ref = renderScene(scene, state, { samplesPerAxis: 4 });
+    const ref = renderScene(scene, state, null, { samplesPerAxis: 4 });
     const cmp = compareImages(ref, image.data);
     const line = `course scene${glass ? ' with glass' : ''}: PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}, glass ${cmp.psnr.glass.toFixed(1)}, edges ${cmp.psnr.edges.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;
     console.log(line);

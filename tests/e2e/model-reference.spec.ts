@@ -95,7 +95,7 @@ for (const [renderer, space] of CASES) test(`${renderer}, color-space ${space}: 
     yaw: view.rotation[0], pitch: view.rotation[1], colorSpace: space, view: 'final',
     reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
   };
-  const ref = renderScene({ ...scene, objects }, state, { samplesPerAxis: 4, images });
+  const ref = renderScene({ ...scene, objects }, state, images, { samplesPerAxis: 4 });
   const cmp = compareImages(ref, image.data);
   const line = `${renderer} ${space}: textured OBJ + MTL, n-gon, negative indices: PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}, glass ${cmp.psnr.glass.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;
   note(line);

@@ -73,7 +73,7 @@ for (const renderer of ['webgl', 'software']) {
     await openPage(page);
     await mountHtml(page, FLOOR(renderer, '0.5'));
     const img = await settled(page);
-    const ref = renderScene(FLOOR_SCENE, floorState({ width: W, height: H, roughness: 0.5 }), { samplesPerAxis: 2, microfacetSamples: 64 });
+    const ref = renderScene(FLOOR_SCENE, floorState({ width: W, height: H, roughness: 0.5 }), null, { samplesPerAxis: 2, microfacetSamples: 64 });
     const glass = psnrAgainst(ref, img.data).psnr.glass;
     expect(glass, `measured ${MEASURED[renderer]} dB`).toBeGreaterThan(MEASURED[renderer] - 1);
   });
@@ -84,7 +84,7 @@ for (const renderer of ['webgl', 'software']) {
 test('webgl: the first frame of a rough element is already rough (it waits for rough glass\'s chunk)', async ({ page }) => {
   await openPage(page);
   const first = (await mountFirstFrame(page, FLOOR('webgl', '0.5'))).data;
-  const ref = renderScene(FLOOR_SCENE, floorState({ width: W, height: H, roughness: 0.5 }), { samplesPerAxis: 2, microfacetSamples: 64 });
+  const ref = renderScene(FLOOR_SCENE, floorState({ width: W, height: H, roughness: 0.5 }), null, { samplesPerAxis: 2, microfacetSamples: 64 });
   // The polished glass's frame scores 29–31 dB here; the rough one the 39.08 above.
   expect(psnrAgainst(ref, first).psnr.glass, `measured ${MEASURED.webgl} dB`).toBeGreaterThan(MEASURED.webgl - 1);
 });

@@ -91,7 +91,7 @@ const CASES: Case[] = [
 for (const c of CASES) {
   test(`${c.name}, roughness ${c.roughness}, ior ${c.ior}: the glass within ${MARGIN_DB} dB of its measured PSNR against the reference (${c.measured} dB)`, async ({ page }) => {
     const state = c.state({ width: W, height: H, roughness: c.roughness, ior: c.ior });
-    const ref = renderScene(c.scene, state, { samplesPerAxis: 2 });
+    const ref = renderScene(c.scene, state, null, { samplesPerAxis: 2 });
     const mask = glassWithEdges(ref);
     const rough = maskedError(ref, await drawScene(page, state, c.scene), mask);
     const sharp = maskedError(ref, await drawScene(page, { ...state, roughness: 0 }, c.scene), mask);
@@ -249,7 +249,7 @@ test('contact hardening: the cube\'s reflection blurs more the higher above the 
 
 test('the bench\'s comparison (fixedBlurLevel): level 0 is the polished reflection, higher levels blur it, nearer the reference until too wide', async ({ page }) => {
   const state: FrameState = { ...floorState({ width: W, height: H, roughness: 0.5 }), fixedBlurLevel: 0 };
-  const ref = renderScene(FLOOR_SCENE, state, { samplesPerAxis: 2 });
+  const ref = renderScene(FLOOR_SCENE, state, null, { samplesPerAxis: 2 });
   const mask = glassWithEdges(ref);
   const polished = await drawScene(page, { ...state, roughness: 0 }, FLOOR_SCENE);
   const levels = [0, 2, 5];

@@ -152,7 +152,7 @@ describe(`software renderer against the reference with course cameras (${W}×${H
   for (const [name, cam, scene, all, objects] of cases) {
     it(`${name}: within ${MARGIN_DB} dB of ${all} dB (objects ${objects} dB)`, () => {
       const s = state(cam);
-      const cmp = compareImages(renderScene(scene, s, { samplesPerAxis: 4 }), renderer.render(s, scene));
+      const cmp = compareImages(renderScene(scene, s, null, { samplesPerAxis: 4 }), renderer.render(scene, s));
       const line = `course camera, ${name}: PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;
       console.log(line);
       expect(cmp.psnr.all, line).toBeGreaterThanOrEqual(all - MARGIN_DB);

@@ -23,7 +23,7 @@ const centre = (rgba: ArrayLike<number>) => rgba[4 * (8 * N + 8)];
 function drawWith(name: string, over: Partial<FrameState>, s: Scene): ArrayLike<number> {
   const state = { ...STATE, ...over };
   if (name === 'reference') return renderScene(s, state).rgba;
-  return new SoftwareRenderer().render(name.includes('multisampled') ? { ...state, samples: 4 } : state, s);
+  return new SoftwareRenderer().render(s, name.includes('multisampled') ? { ...state, samples: 4 } : state);
 }
 
 describe('a face in the glass plane', () => {
@@ -34,8 +34,8 @@ describe('a face in the glass plane', () => {
 
   for (const [name, draw] of [
     ['reference', (s: Scene) => renderScene(s, STATE).rgba],
-    ['software renderer', (s: Scene) => new SoftwareRenderer().render(STATE, s)],
-    ['software renderer, multisampled', (s: Scene) => new SoftwareRenderer().render({ ...STATE, samples: 4 }, s)],
+    ['software renderer', (s: Scene) => new SoftwareRenderer().render(s, STATE)],
+    ['software renderer, multisampled', (s: Scene) => new SoftwareRenderer().render(s, { ...STATE, samples: 4 })],
   ] as const) {
     it(`${name}: a picture on the glass, seen through it, is 245, not 255`, () => {
       expect(centre(draw(scene(picture(0))))).toBe(covered);
@@ -56,7 +56,7 @@ describe('a face in the glass plane', () => {
 
   for (const [name, draw] of [
     ['reference', (s: Scene) => renderScene(s, { ...STATE, view: 'reflection' }).rgba],
-    ['software renderer', (s: Scene) => new SoftwareRenderer().render({ ...STATE, view: 'reflection' }, s)],
+    ['software renderer', (s: Scene) => new SoftwareRenderer().render(s, { ...STATE, view: 'reflection' })],
   ] as const) {
     it(`${name}: the reflection leaves out a face touching the glass (5e-6 in front of it), keeps one 1e-3 in front`, () => {
       // MIRROR_CONTACT (1e-5): nearer than that to the glass is against it, not in front of it.

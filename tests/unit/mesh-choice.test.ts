@@ -32,8 +32,8 @@ const SCENE: Scene = {
 /** The WebGL renderer's sphere segments for `state` (its stats), on a stand-in context, with the parts it loads for it. */
 async function webglSegments(state: FrameState): Promise<number> {
   const r = new Renderer(fakeGl().gl);
-  await r.load(state, SCENE);
-  r.render(state, SCENE);
+  await r.load(SCENE, state);
+  r.render(SCENE, state);
   const n = r.stats.sphereSegments;
   r.dispose();
   return n;
@@ -44,7 +44,7 @@ function softwareIndices(state: FrameState): number {
   const seen: number[] = [];
   const spy = vi.spyOn(ObjectShader.prototype, 'render').mockImplementation(function (d) { seen.push(d.mesh.indices.length); });
   try {
-    new SoftwareRenderer().render(state, SCENE);
+    new SoftwareRenderer().render(SCENE, state);
   } finally {
     spy.mockRestore();
   }

@@ -2,7 +2,7 @@
 import { describe, expect, it } from 'vitest';
 import { createHash } from 'node:crypto';
 import {
-  glassReflectsCube, glassReflectsObject, renderReference, renderScene, type ReferenceImage, type ReferenceOptions, type ReferenceState, type ViewState,
+  glassReflectsCube, glassReflectsObject, renderReference, renderScene, type ReferenceImage, type ReferenceOptions, type SceneImages, type ReferenceState, type ViewState,
 } from '../../src/reference';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { Geometry, Light, Material, Scene, SceneObject, Vec3 } from '../../src/scene/scene';
@@ -25,9 +25,9 @@ const MATTE: Material = {
 };
 const SUN: Light = { kind: 'directional', vector: [0, 0, 1], ambient: [1, 1, 1], diffuse: [1, 1, 1], specular: [1, 1, 1] };
 
-/** renderScene with the white 1×1 image available (MATTE reads it: texture 1 everywhere). */
-const render = (s: Scene, v: ViewState, options: ReferenceOptions = {}): ReferenceImage =>
-  renderScene(s, v, { ...options, images: options.images ?? WHITE });
+/** renderScene with the white 1×1 image available by default (MATTE reads it: texture 1 everywhere). */
+const render = (s: Scene, v: ViewState, images: SceneImages = WHITE, options: ReferenceOptions = {}): ReferenceImage =>
+  renderScene(s, v, images, options);
 
 function object(geometry: Geometry, over: Partial<SceneObject['transform']> = {}, material: Partial<Material> = {}): SceneObject {
   return {
@@ -232,7 +232,7 @@ describe('opacity', () => {
 describe('textures', () => {
   it('an image missing from the map falls back to the procedural texture, without a crash', () => {
     const s = (texture: Material['texture']): Scene => scene([object({ kind: 'box', size: 2 }, { rotation: [20, 30, 0] }, { texture })]);
-    const missing = render(s({ kind: 'image', url: 'nowhere.png' }), FRONT, { images: WHITE });
+    const missing = render(s({ kind: 'image', url: 'nowhere.png' }), FRONT, WHITE);
     const procedural = render(s({ kind: 'procedural' }), FRONT);
     expect(missing.rgb).toEqual(procedural.rgb);
   });
@@ -242,7 +242,7 @@ describe('textures', () => {
     const red = [255, 0, 0, 255], blue = [0, 0, 255, 255];
     const images = new Map([['rb.png', { width: 1, height: 4, data: new Uint8Array([...red, ...red, ...blue, ...blue]) }]]);
     const flat: Material = { ...MATTE, ambient: [1, 1, 1], diffuse: [0, 0, 0], texture: { kind: 'image', url: 'rb.png' } };
-    const img = render(scene([{ ...object(quad(4, 4)), material: flat }]), FRONT, { images });
+    const img = render(scene([{ ...object(quad(4, 4)), material: flat }]), FRONT, images);
     const [, top] = project(FRONT, [0, 1, 0]), [, bottom] = project(FRONT, [0, -1, 0]); // v = ¾ and ¼
     expect(pixel(img, 80, Math.floor(top))).toEqual([1, 0, 0]);
     expect(pixel(img, 80, Math.floor(bottom))).toEqual([0, 0, 1]);
@@ -251,7 +251,7 @@ describe('textures', () => {
   it('each mapping mode textures a sphere (box-filtered too), differently from uv', () => {
     const images = new Map([['grad.png', { width: 4, height: 4, data: Uint8Array.from({ length: 64 }, (_, i) => (i % 4 === 3 ? 255 : (i * 37) % 256)) }]]);
     const draw = (mapping: Material['mapping']): Float64Array =>
-      render(scene([object({ kind: 'sphere', radius: 1 }, { rotation: [0, 30, 0] }, { mapping, texture: { kind: 'image', url: 'grad.png' } })]), FRONT, { images, samplesPerAxis: 2 }).rgb;
+      render(scene([object({ kind: 'sphere', radius: 1 }, { rotation: [0, 30, 0] }, { mapping, texture: { kind: 'image', url: 'grad.png' } })]), FRONT, images, { samplesPerAxis: 2 }).rgb;
     const maxDiff = (a: Float64Array, b: Float64Array): number => a.reduce((m, x, i) => Math.max(m, Math.abs(x - b[i])), 0);
     const uv = draw('uv');
     // The sphere's own UVs are the spherical mapping (docs/scene-model.md#texture-mappings) (up to rounding and the seam's pixels).

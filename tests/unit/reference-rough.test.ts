@@ -71,7 +71,7 @@ describe('reference rough glass (docs/rough-glass.md#reference-monte-carlo)', ()
     const alpha = roughness * roughness;
 
     it(`roughness ${roughness}: R̃ of a white half-plane behind the viewer, 3 from the glass, is the lobe's share that reaches it`, () => {
-      const ref = renderScene(wall([halfPlane(3)]), { ...HEAD_ON, roughness }, { microfacetSamples: 1024 });
+      const ref = renderScene(wall([halfPlane(3)]), { ...HEAD_ON, roughness }, null, { microfacetSamples: 1024 });
       expect(ref.microfacetSamples).toBe(1024);
       const got = row(ref.rgb, 16).map((v) => v / F);
       for (const i of [10, 13, 15, 16, 18, 21]) {
@@ -84,7 +84,7 @@ describe('reference rough glass (docs/rough-glass.md#reference-monte-carlo)', ()
 
     for (const depth of [0.25, 2]) {
       it(`roughness ${roughness}: B̃ of a white half-plane ${depth} behind the glass is the share of transmitted directions that reach it`, () => {
-        const ref = renderScene(wall([halfPlane(-depth)]), { ...HEAD_ON, roughness }, { microfacetSamples: 1024 });
+        const ref = renderScene(wall([halfPlane(-depth)]), { ...HEAD_ON, roughness }, null, { microfacetSamples: 1024 });
         const got = row(ref.rgb, 16).map((v) => v / (1 - F));
         // Into the facet at θm: sin θ1 = sin θm / 1.5; inside at θm − θ1 from −z, towards the
         // azimuth φm + π; out of the flat face at δ with sin δ = 1.5·sin(θm − θ1) (lost past 1).
@@ -100,7 +100,7 @@ describe('reference rough glass (docs/rough-glass.md#reference-monte-carlo)', ()
 
   it('an edge far behind the glass is blurred wider than one close to it (contact hardening)', () => {
     const width = (depth: number) => {
-      const got = row(renderScene(wall([halfPlane(-depth)]), { ...HEAD_ON, roughness: 0.5 }, { microfacetSamples: 256 }).rgb, 16).map((v) => v / (1 - F));
+      const got = row(renderScene(wall([halfPlane(-depth)]), { ...HEAD_ON, roughness: 0.5 }, null, { microfacetSamples: 256 }).rgb, 16).map((v) => v / (1 - F));
       return got.filter((v) => v > 0.1 && v < 0.9).length;
     };
     const near = width(0.05), far = width(1.5);
@@ -115,10 +115,10 @@ describe('reference rough glass (docs/rough-glass.md#reference-monte-carlo)', ()
       colorSpace: 'srgb' as const, view: 'final' as const,
     };
     const scene = defaultScene(DEFAULT_CUBE_DISTANCE, 0.8);
-    const a = renderScene(scene, state, { samplesPerAxis: 2 }), b = renderScene(scene, { ...state, roughness: 0 }, { samplesPerAxis: 2 });
+    const a = renderScene(scene, state, null, { samplesPerAxis: 2 }), b = renderScene(scene, { ...state, roughness: 0 }, null, { samplesPerAxis: 2 });
     expect(Buffer.from(b.rgb.buffer).equals(Buffer.from(a.rgb.buffer))).toBe(true);
     expect(b.microfacetSamples).toBe(0);
-    const rough = renderScene(scene, { ...state, roughness: 0.4 }, { samplesPerAxis: 2 });
+    const rough = renderScene(scene, { ...state, roughness: 0.4 }, null, { samplesPerAxis: 2 });
     expect(Buffer.from(rough.rgb.buffer).equals(Buffer.from(a.rgb.buffer))).toBe(false);
   });
 
@@ -133,7 +133,7 @@ describe('reference rough glass (docs/rough-glass.md#reference-monte-carlo)', ()
     };
     const polished = renderScene(scene, state).rgb;
     for (const roughness of [0.5, 1]) {
-      const rough = renderScene(scene, { ...state, roughness }, { microfacetSamples: 64 }).rgb;
+      const rough = renderScene(scene, { ...state, roughness }, null, { microfacetSamples: 64 }).rgb;
       let worst = 0;
       for (let i = 0; i < rough.length; i++) worst = Math.max(worst, Math.abs(rough[i] - polished[i]));
       expect(worst, `roughness ${roughness}`).toBeLessThan(1e-12);

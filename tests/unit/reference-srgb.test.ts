@@ -6,7 +6,7 @@ import { renderReference, renderScene, type ReferenceImage, type ReferenceOption
 import { DEFAULT_GLASS, defaultScene } from '../../src/scene/default-scene';
 import { texel } from '../../src/scene/procedural-texture';
 import type { Geometry, Light, Material, Scene, SceneObject, Vec3 } from '../../src/scene/scene';
-import type { DecodedImage } from '../../src/scene/decoded-image';
+import type { DecodedImage, SceneImages } from '../../src/scene/decoded-image';
 
 /** sRGB → linear, the piecewise curve written out (not src/math/srgb.ts). */
 const decode = (c: number): number => (c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4);
@@ -54,8 +54,10 @@ function object(geometry: Geometry, material: Material, position: Vec3 = [0, 0, 
 const scene = (objects: SceneObject[], background: Vec3 = [0, 0, 0], glass: Scene['glass'] = null): Scene =>
   ({ glass, objects, lights: [AMBIENT], background });
 
-function render(s: Scene, colorSpace: 'srgb' | 'none', view: Partial<ViewState> = {}, options: ReferenceOptions = {}): ReferenceImage {
-  return renderScene(s, { ...FRONT, ...view, colorSpace }, { images: new Map([['white.png', WHITE]]), ...options });
+function render(
+  s: Scene, colorSpace: 'srgb' | 'none', view: Partial<ViewState> = {}, images: SceneImages = new Map([['white.png', WHITE]]), options: ReferenceOptions = {},
+): ReferenceImage {
+  return renderScene(s, { ...FRONT, ...view, colorSpace }, images, options);
 }
 const rgbAt = (img: ReferenceImage, x: number, y: number): number[] => Array.from(img.rgb.subarray(3 * (y * img.width + x), 3 * (y * img.width + x) + 3));
 const bytesAt = (img: ReferenceImage, x: number, y: number): number[] => Array.from(img.rgba.subarray(4 * (y * img.width + x), 4 * (y * img.width + x) + 3));
@@ -87,13 +89,13 @@ describe('colour data are decoded, coefficients are not', () => {
   it('an image texel is decoded: level 128 under Ka = 0.5 is encode(0.5·0.2158605) = 92, not 128', () => {
     const grey = new Map([['grey.png', image(1, 1, [128])]]);
     const s = scene([object(quad(8, 8), plain(0.5, 'grey.png'))]);
-    const srgb = render(s, 'srgb', {}, { images: grey });
+    const srgb = render(s, 'srgb', {}, grey);
     expectRgb(rgbAt(srgb, 4, 4), [0.3622491, 0.3622491, 0.3622491], 5e-8);
     expect(bytesAt(srgb, 4, 4)).toEqual([92, 92, 92]);
     // Under Ka = 1 the level comes back as it was: decoded, then encoded.
-    const one = render(scene([object(quad(8, 8), plain(1, 'grey.png'))]), 'srgb', {}, { images: grey });
+    const one = render(scene([object(quad(8, 8), plain(1, 'grey.png'))]), 'srgb', {}, grey);
     expectRgb(rgbAt(one, 4, 4), [128 / 255, 128 / 255, 128 / 255], 1e-12);
-    expect(bytesAt(render(s, 'none', {}, { images: grey }), 4, 4)).toEqual([64, 64, 64]); // round(0.5·128)
+    expect(bytesAt(render(s, 'none', {}, grey), 4, 4)).toEqual([64, 64, 64]); // round(0.5·128)
   });
 
   it('texels are decoded before filtering: half-way between a black and a white texel is linear 0.5 (188)', () => {
@@ -102,10 +104,10 @@ describe('colour data are decoded, coefficients are not', () => {
     const s = scene([object(quad(8, 8), plain(1, 'ramp.png'))]);
     for (const textureFilter of ['point', 'box'] as const) {
       const n = textureFilter === 'point' ? 1 : 4;
-      const srgb = render(s, 'srgb', {}, { images, textureFilter, samplesPerAxis: n });
+      const srgb = render(s, 'srgb', {}, images, { textureFilter, samplesPerAxis: n });
       expectRgb(rgbAt(srgb, 4, 4), [0.735357, 0.735357, 0.735357], 1e-6); // encode(0.5)
       expect(bytesAt(srgb, 4, 4), textureFilter).toEqual([188, 188, 188]);
-      expectRgb(rgbAt(render(s, 'none', {}, { images, textureFilter, samplesPerAxis: n }), 4, 4), [0.5, 0.5, 0.5], 1e-6);
+      expectRgb(rgbAt(render(s, 'none', {}, images, { textureFilter, samplesPerAxis: n }), 4, 4), [0.5, 0.5, 0.5], 1e-6);
     }
   });
 
@@ -145,12 +147,12 @@ describe('light is summed in linear light and encoded once', () => {
     // Point-sampled, the white image is exactly 1 (its box filter is 1 − 3e−15: 127.4999… would round to 127).
     const s = scene([object(quad(4, 8), plain(1), [2, 0, 0]), object(quad(4, 8), plain(0), [-2, 0, 0])], [0.5, 0.5, 0.5]);
     const options: ReferenceOptions = { samplesPerAxis: 4, textureFilter: 'point' };
-    const srgb = render(s, 'srgb', {}, options);
+    const srgb = render(s, 'srgb', {}, undefined, options);
     expectRgb(rgbAt(srgb, 4, 4), [0.735357, 0.735357, 0.735357], 1e-6);
     expect(bytesAt(srgb, 4, 4)).toEqual([188, 188, 188]);
     expect(bytesAt(srgb, 3, 4)).toEqual([0, 0, 0]);
     expect(bytesAt(srgb, 5, 4)).toEqual([255, 255, 255]);
-    const none = render(s, 'none', {}, options);
+    const none = render(s, 'none', {}, undefined, options);
     expectRgb(rgbAt(none, 4, 4), [0.5, 0.5, 0.5], 0);
     expect(bytesAt(none, 4, 4)).toEqual([128, 128, 128]);
   });

@@ -87,9 +87,9 @@ describe('FrameState.turn against the turned scene value', () => {
     const renderer = new SoftwareRenderer();
     for (const view of ['final', 'reflection', 'scene'] as const) {
       // Copies: the renderer draws every frame into the same buffer.
-      const byState = renderer.render({ ...STATE, view, turn }, scene).slice();
-      const byValue = renderer.render({ ...STATE, view }, rotateScene(scene, turn.objects, turn.light)).slice();
-      const plain = renderer.render({ ...STATE, view }, scene).slice();
+      const byState = renderer.render(scene, { ...STATE, view, turn }).slice();
+      const byValue = renderer.render(rotateScene(scene, turn.objects, turn.light), { ...STATE, view }).slice();
+      const plain = renderer.render(scene, { ...STATE, view }).slice();
       let differing = 0, unturned = 0;
       for (let p = 0; p < byState.length; p += 4) {
         if ([0, 1, 2].some((c) => byState[p + c] !== byValue[p + c])) differing++;

@@ -184,7 +184,7 @@ describe('software renderer: anisotropic reads with srgb, isotropic with none', 
     // srgb that would show encode(½) = 188, with none 127.5.
     const expected: Record<ColorSpace, Record<number, number[]>> = { srgb: { 5: [255], 6: [255], 10: [0], 11: [0] }, none: { 5: [127, 128], 6: [127, 128], 10: [127, 128], 11: [127, 128] } };
     for (const space of ['srgb', 'none'] as ColorSpace[]) {
-      const rgba = new SoftwareRenderer().render({ ...STATE, colorSpace: space }, scene, IMAGES);
+      const rgba = new SoftwareRenderer().render(scene, { ...STATE, colorSpace: space }, IMAGES);
       for (const [column, levels] of Object.entries(expected[space])) {
         for (let j = 5; j <= 11; j++) {
           for (let k = 0; k < 3; k++) expect(levels, `${space} pixel (${column}, ${j})`).toContain(rgba[4 * (j * N + Number(column)) + k]);

@@ -18,7 +18,7 @@ import { Rasterizer, VARYINGS } from '../../src/software/raster';
 function banded(renderers: SoftwareRenderer[], bands: Band[], state: FrameState, scene: Scene): Uint8ClampedArray {
   const width = Math.floor(state.width);
   const frame = new Uint8ClampedArray(4 * width * Math.floor(state.height));
-  bands.forEach((band, i) => putBand(frame, renderBand(renderers[i], state, scene, IMAGES, band), band, width));
+  bands.forEach((band, i) => putBand(frame, renderBand(renderers[i], scene, state, IMAGES, band), band, width));
   return frame;
 }
 
@@ -29,7 +29,7 @@ function differing(a: Uint8ClampedArray, b: Uint8ClampedArray): number {
   return n;
 }
 
-const whole = (state: FrameState, scene: Scene, samplesPerAxis = 1) => new SoftwareRenderer({ samplesPerAxis }).render(state, scene, IMAGES).slice();
+const whole = (state: FrameState, scene: Scene, samplesPerAxis = 1) => new SoftwareRenderer({ samplesPerAxis }).render(scene, state, IMAGES).slice();
 const renderersOf = (count: number, samplesPerAxis = 1) => Array.from({ length: count }, () => new SoftwareRenderer({ samplesPerAxis }));
 
 function courseCamera(): CourseCamera {

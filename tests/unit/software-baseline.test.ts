@@ -67,7 +67,7 @@ describe('software renderer: pixels bit for bit as recorded (software-baseline.j
     it(f.name, () => {
       const n = f.samplesPerAxis ?? 1;
       if (!renderers.has(n)) renderers.set(n, new SoftwareRenderer({ samplesPerAxis: n }));
-      const pixels = renderers.get(n)!.render(f.state, f.scene, IMAGES);
+      const pixels = renderers.get(n)!.render(f.scene, f.state, IMAGES);
       const digest = createHash('sha256').update(pixels).digest('hex').slice(0, 24);
       recorded[f.name] = digest;
       if (!UPDATE) expect(digest, `${f.name}: not recorded, or its pixels moved`).toBe(stored[f.name]);
@@ -129,8 +129,8 @@ describe('software renderer: a run of frames, each as a fresh renderer draws it'
     for (const [name, over, sc] of steps) {
       for (const frame of ['first', 'second']) {
         state = { ...state, ...over, time: state.time + 0.05 };
-        const got = one.render(state, sc ?? scene, IMAGES).slice();
-        const want = new SoftwareRenderer().render(state, sc ?? scene, IMAGES);
+        const got = one.render(sc ?? scene, state, IMAGES).slice();
+        const want = new SoftwareRenderer().render(sc ?? scene, state, IMAGES);
         let differing = 0;
         for (let i = 0; i < want.length; i++) if (got[i] !== want[i]) differing++;
         expect(differing, `${name}, ${frame} frame: bytes that differ from a fresh renderer's`).toBe(0);

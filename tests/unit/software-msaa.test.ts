@@ -134,26 +134,26 @@ describe('the software renderer honours `samples`', () => {
   for (const space of ['srgb', 'none'] as const) {
     it(`${space}: an edge through a pixel's centre gives it half of the object's light (samples 4), all of it with samples 0`, () => {
       const s = scene([quad(0, -1, 1, 1, 0, white([1, 1, 1]))]);
-      const four = new SoftwareRenderer().render({ ...STATE, colorSpace: space }, s, IMAGES);
+      const four = new SoftwareRenderer().render(s, { ...STATE, colorSpace: space }, IMAGES);
       // Column 8: two of its four samples covered; the mean is taken in linear light and encoded.
       for (let j = 6; j <= 10; j++) expect(channel(four, 8, j, 0), `row ${j}`).toBe(shown(0.5, space));
       expect(channel(four, 10, 8, 0)).toBe(255);
       expect(channel(four, 7, 8, 0)).toBe(0);
-      const zero = new SoftwareRenderer().render({ ...STATE, colorSpace: space, samples: 0 }, s, IMAGES);
+      const zero = new SoftwareRenderer().render(s, { ...STATE, colorSpace: space, samples: 0 }, IMAGES);
       // One sample at the centre, on the quad's left edge: in (top-left rule).
       expect(channel(zero, 8, 8, 0)).toBe(255);
     });
 
     it(`${space}: a nearer object over half a pixel and a farther one under all of it mix by coverage`, () => {
       const s = scene([quad(-1, -1, 1, 1, 0, white([0, 1, 0])), quad(0, -0.5, 0.5, 0.5, 0.5, white([1, 0, 0]))]);
-      const px = new SoftwareRenderer().render({ ...STATE, colorSpace: space }, s, IMAGES);
+      const px = new SoftwareRenderer().render(s, { ...STATE, colorSpace: space }, IMAGES);
       // The near quad's left edge x = 0 at depth 0.5 still projects to column 8.5.
       expect([channel(px, 8, 8, 0), channel(px, 8, 8, 1), channel(px, 8, 8, 2)]).toEqual([shown(0.5, space), shown(0.5, space), 0]);
     });
 
     it(`${space}: a half-transparent object blends per sample, over the samples it covers only`, () => {
       const s = scene([quad(-1, -1, 1, 1, 0, white([0, 0, 1])), quad(0, -0.5, 0.5, 0.5, 0.5, white([1, 0, 0], 0.5))]);
-      const px = new SoftwareRenderer().render({ ...STATE, colorSpace: space }, s, IMAGES);
+      const px = new SoftwareRenderer().render(s, { ...STATE, colorSpace: space }, IMAGES);
       // Two samples blue, two ½ red + ½ blue: red ¼, blue ¾ in linear light.
       expect([channel(px, 8, 8, 0), channel(px, 8, 8, 2)]).toEqual([shown(0.25, space), shown(0.75, space)]);
     });
@@ -166,8 +166,8 @@ describe('the software renderer honours `samples`', () => {
       cameraPosition: [...DEFAULT_CAMERA_POSITION], yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
     };
     const s = defaultScene(DEFAULT_CUBE_DISTANCE, 0.8);
-    const four = new SoftwareRenderer().render(state, s).slice();
-    const one = new SoftwareRenderer().render({ ...state, samples: 0 }, s).slice();
+    const four = new SoftwareRenderer().render(s, state).slice();
+    const one = new SoftwareRenderer().render(s, { ...state, samples: 0 }).slice();
     // Shaded once per pixel at its centre with the pixel's texture level: where every sample of a
     // pixel falls on one triangle, it is the one-sample pixel exactly. Only edges differ.
     let same = 0;
@@ -177,7 +177,7 @@ describe('the software renderer honours `samples`', () => {
     // Measured 96.6 %; shading at a pixel's first covered sample instead of its centre moves the
     // textures by a quarter pixel and leaves about three quarters of the pixels unchanged.
     expect(share).toBeGreaterThanOrEqual(0.95);
-    const ref = renderScene(s, state, { samplesPerAxis: 4 });
+    const ref = renderScene(s, state, null, { samplesPerAxis: 4 });
     const a = compareImages(ref, four), b = compareImages(ref, one);
     console.log(`against the reference: samples 4 ${a.psnr.all.toFixed(1)} dB (edges ${a.psnr.edges.toFixed(1)}), samples 0 ${b.psnr.all.toFixed(1)} (edges ${b.psnr.edges.toFixed(1)})`);
     // Measured: 45.5 dB (edges 36.9) against 41.8 (edges 32.5) with one sample.

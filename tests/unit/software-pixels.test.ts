@@ -63,7 +63,7 @@ describe('software renderer: hand-computed pixels', () => {
     };
     const sun: Light = { kind: 'directional', vector: [0.3, 0.5, 1], ambient: [0.3, 0.3, 0.3], diffuse: [0.9, 0.8, 0.7], specular: [1, 1, 1] };
     const lamp: Light = { kind: 'point', vector: [1, 1, 1.5], ambient: [0.1, 0.1, 0.1], diffuse: [0.4, 0.4, 0.4], specular: [0.5, 0.5, 0.5] };
-    const rgba = new SoftwareRenderer().render(STATE, quadScene(material, [sun, lamp], [0, 0, 0]), WHITE);
+    const rgba = new SoftwareRenderer().render(quadScene(material, [sun, lamp], [0, 0, 0]), STATE, WHITE);
     const n = [0, 0, 1];
     // The centre (V = N = +Z), two off-axis pixels (V towards the eye from the point seen) and one near the lamp.
     for (const [i, j] of [[8, 8], [5, 11], [11, 6], [12, 4]]) {
@@ -93,7 +93,7 @@ describe('software renderer: hand-computed pixels', () => {
     };
     const ambient: Light = { kind: 'directional', vector: [0, 0, 1], ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0] };
     const bg: [number, number, number] = [0.2, 0.4, 0.6];
-    const rgba = new SoftwareRenderer().render(STATE, quadScene(material, [ambient], bg), WHITE);
+    const rgba = new SoftwareRenderer().render(quadScene(material, [ambient], bg), STATE, WHITE);
     // (0.8·0.3 + 0.2·0.7, 0.5·0.3 + 0.4·0.7, 0.2·0.3 + 0.6·0.7) = (0.38, 0.43, 0.48).
     const blended = [0.38, 0.43, 0.48];
     for (let j = 5; j <= 11; j++) for (let i = 5; i <= 11; i++) expectPixel(rgba, i, j, blended);

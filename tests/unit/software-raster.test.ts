@@ -193,7 +193,7 @@ describe('shared edges', () => {
       fov: 90, cameraPosition: [0, 0, 2], yaw: -90, pitch: 0, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0,
       shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
     };
-    const rgba = new SoftwareRenderer().render(state, scene, white);
+    const rgba = new SoftwareRenderer().render(scene, state, white);
     const once = Math.round(0.8 * 0.5 * 255), twiceBlended = Math.round((0.8 * 0.5 + 0.4 * 0.5) * 255);
     let blendedTwice = 0, missed = 0, onDiagonal = 0;
     for (let y = 4; y < 12; y++) {

@@ -45,8 +45,8 @@ describe(`software renderer against the reference (${STATE.width}×${STATE.heigh
   for (const c of CASES) {
     it(`${c.name}: every region within ${MARGIN_DB} dB of its measured figure`, () => {
       const state = { ...STATE, ...c.state };
-      const ref = renderScene(c.scene, state, { samplesPerAxis: SAMPLES, images: IMAGES });
-      const cmp = compareImages(ref, renderer.render(state, c.scene, IMAGES));
+      const ref = renderScene(c.scene, state, IMAGES, { samplesPerAxis: SAMPLES });
+      const cmp = compareImages(ref, renderer.render(c.scene, state, IMAGES));
       const line = `${c.name}: ${describe2(cmp)}`;
       console.log(line);
       expectFigures(cmp, c.measured, line);
@@ -77,7 +77,7 @@ describe(`software renderer against the reference (${STATE.width}×${STATE.heigh
     it(`default scene, view ${v.view}, fresnel ${v.fresnel}, transparency ${v.transparency}: every region within ${MARGIN_DB} dB`, () => {
       const scene = defaultScene(0.75, 0.8);
       const state = { ...STATE, view: v.view, fresnel: v.fresnel, transparency: v.transparency };
-      const cmp = compareImages(renderScene(scene, state, { samplesPerAxis: SAMPLES }), renderer.render(state, scene));
+      const cmp = compareImages(renderScene(scene, state, null, { samplesPerAxis: SAMPLES }), renderer.render(scene, state));
       const line = `default scene, view ${v.view}, fresnel ${v.fresnel}, T ${v.transparency}: ${describe2(cmp)}`;
       console.log(line);
       expectFigures(cmp, v.measured, line);
@@ -87,7 +87,7 @@ describe(`software renderer against the reference (${STATE.width}×${STATE.heigh
   it('one sample per pixel: edges alias against the supersampled reference, the rest does not', () => {
     const one = new SoftwareRenderer();
     const scene = defaultScene(0.75, 0.8);
-    const cmp = compareImages(renderScene(scene, STATE, { samplesPerAxis: SAMPLES }), one.render(STATE, scene));
+    const cmp = compareImages(renderScene(scene, STATE, null, { samplesPerAxis: SAMPLES }), one.render(scene, STATE));
     const line = `default scene at 1 sample per pixel: ${describe2(cmp)}`;
     console.log(line);
     expectFigures(cmp, { all: 44.8, objects: 47.1, glass: 52.3, background: 54.2, edges: 36.4 }, line);
@@ -128,8 +128,8 @@ describe(`software renderer against the reference in linear light (colorSpace sr
   for (const c of SRGB_CASES) {
     it(`${c.name}: every region within ${MARGIN_DB} dB of its measured figure`, () => {
       const state: FrameState = { ...STATE, ...c.state, colorSpace: 'srgb' };
-      const ref = renderScene(c.scene, state, { samplesPerAxis: SAMPLES, images: IMAGES });
-      const cmp = compareImages(ref, renderer.render(state, c.scene, IMAGES));
+      const ref = renderScene(c.scene, state, IMAGES, { samplesPerAxis: SAMPLES });
+      const cmp = compareImages(ref, renderer.render(c.scene, state, IMAGES));
       const line = `srgb, ${c.name}: ${describe2(cmp)}`;
       console.log(line);
       expectFigures(cmp, c.measured, line);
@@ -145,7 +145,7 @@ describe(`software renderer against the reference in linear light (colorSpace sr
   it('one sample per pixel: each pixel reads its texture over its whole footprint', () => {
     const scene = defaultScene(0.75, 0.8);
     const state: FrameState = { ...STATE, colorSpace: 'srgb' };
-    const cmp = compareImages(renderScene(scene, state, { samplesPerAxis: SAMPLES }), new SoftwareRenderer().render(state, scene));
+    const cmp = compareImages(renderScene(scene, state, null, { samplesPerAxis: SAMPLES }), new SoftwareRenderer().render(scene, state));
     const line = `srgb, default scene at 1 sample per pixel: ${describe2(cmp)}`;
     console.log(line);
     expectFigures(cmp, { all: 40.2, objects: 42.4, glass: 49.7, background: 54.2, edges: 31.5, dark: 52.9 }, line);
@@ -157,14 +157,14 @@ describe('software renderer: the passes debug view', () => {
     const r = new SoftwareRenderer();
     const scene = defaultScene(0.75, 0.8);
     const state: FrameState = { ...STATE, width: 161, height: 91, view: 'passes' };
-    const tiled = r.render(state, scene).slice();
+    const tiled = r.render(scene, state).slice();
     for (let i = 3; i < tiled.length; i += 4) expect(tiled[i]).toBe(255);
     // left 80, right 81; bottom 45, top 46 (top row first in the output).
     const quadrants: [FrameState['view'], number, number, number, number][] = [
       ['reflection', 0, 0, 80, 46], ['scene', 80, 0, 81, 46], ['fresnel', 0, 46, 80, 45], ['final', 80, 46, 81, 45],
     ];
     for (const [view, x, y, w, h] of quadrants) {
-      const alone = r.render({ ...state, view, width: w, height: h }, scene);
+      const alone = r.render(scene, { ...state, view, width: w, height: h });
       let differing = 0;
       for (let row = 0; row < h; row++) {
         for (let col = 0; col < w * 4; col++) if (tiled[4 * ((y + row) * 161 + x) + col] !== alone[4 * row * w + col]) differing++;
@@ -172,8 +172,8 @@ describe('software renderer: the passes debug view', () => {
       expect(differing, `${view} tile`).toBe(0);
     }
     // Not four copies of one view.
-    const a = r.render({ ...state, view: 'reflection', width: 80, height: 46 }, scene).slice();
-    const b = r.render({ ...state, view: 'final', width: 80, height: 46 }, scene);
+    const a = r.render(scene, { ...state, view: 'reflection', width: 80, height: 46 }).slice();
+    const b = r.render(scene, { ...state, view: 'final', width: 80, height: 46 });
     expect(a.some((v, i) => v !== b[i])).toBe(true);
   });
 });

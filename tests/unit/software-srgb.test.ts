@@ -49,7 +49,7 @@ describe('software renderer, color-space srgb against none (docs/colour.md#none)
     const s = scene([quad(-1, -1, 1, 1, 0, material([0.2159, 0.2159, 0.2159], { kind: 'image', url: 'white' }))], [0, 0, 0]);
     const expected: Record<ColorSpace, number> = { srgb: 128, none: 55 };
     for (const space of SPACES) {
-      const rgba = new SoftwareRenderer().render({ ...STATE, colorSpace: space }, s, IMAGES);
+      const rgba = new SoftwareRenderer().render(s, { ...STATE, colorSpace: space }, IMAGES);
       for (const [i, j] of INSIDE) for (let k = 0; k < 3; k++) expect(rgba[4 * (j * N + i) + k], `${space} (${i}, ${j})`).toBe(expected[space]);
     }
   });
@@ -57,7 +57,7 @@ describe('software renderer, color-space srgb against none (docs/colour.md#none)
   it('an image texel is decoded before the light multiplies it: grey 188 under Ka = 0.5 is encode(0.5·decode(188/255)), 94 with none', () => {
     const s = scene([quad(-1, -1, 1, 1, 0, material([0.5, 0.5, 0.5], { kind: 'image', url: 'grey188' }))], [0, 0, 0]);
     for (const space of SPACES) {
-      const rgba = new SoftwareRenderer().render({ ...STATE, colorSpace: space }, s, IMAGES);
+      const rgba = new SoftwareRenderer().render(s, { ...STATE, colorSpace: space }, IMAGES);
       const c = 0.5 * decoded(188 / 255, space);
       for (const [i, j] of INSIDE) expectPixel(rgba, N, i, j, [c, c, c], space);
     }
@@ -72,7 +72,7 @@ describe('software renderer, color-space srgb against none (docs/colour.md#none)
     const levels = [0.0005, 0.0015, 0.004], columns = [3, 8, 14];
     const expected: Record<ColorSpace, number[]> = { srgb: [2, 5, 13], none: [0, 0, 1] };
     for (const space of SPACES) {
-      const rgba = new SoftwareRenderer().render({ ...STATE, colorSpace: space }, s, IMAGES);
+      const rgba = new SoftwareRenderer().render(s, { ...STATE, colorSpace: space }, IMAGES);
       for (let q = 0; q < 3; q++) {
         expectPixel(rgba, N, columns[q], 8, [levels[q], levels[q], levels[q]], space);
         expect(rgba[4 * (8 * N + columns[q])], `${space} Ka ${levels[q]}`).toBe(expected[space][q]);
@@ -85,7 +85,7 @@ describe('software renderer, color-space srgb against none (docs/colour.md#none)
     const ka = [0.8, 0.5, 0.2] as const;
     const s = scene([quad(-1, -1, 1, 1, 0, material([...ka], { kind: 'image', url: 'white' }, 0.3))], bg);
     for (const space of SPACES) {
-      const rgba = new SoftwareRenderer().render({ ...STATE, colorSpace: space }, s, IMAGES);
+      const rgba = new SoftwareRenderer().render(s, { ...STATE, colorSpace: space }, IMAGES);
       const back = bg.map((c) => decoded(c, space));
       // Outside the quad: decode then encode gives back 51, 102, 153 in both spaces.
       expectPixel(rgba, N, 1, 1, back, space);
@@ -101,7 +101,7 @@ describe('software renderer, color-space srgb against none (docs/colour.md#none)
     const s = scene([quad(0, -3, 3, 3, 0, material([1, 1, 1], { kind: 'image', url: 'white' }))], [0, 0, 0]);
     const expected: Record<ColorSpace, number[]> = { srgb: [0, 188, 255], none: [0, 128, 255] };
     for (const space of SPACES) {
-      const rgba = new SoftwareRenderer({ samplesPerAxis: 4 }).render({ ...STATE, colorSpace: space }, s, IMAGES);
+      const rgba = new SoftwareRenderer({ samplesPerAxis: 4 }).render(s, { ...STATE, colorSpace: space }, IMAGES);
       for (let j = 0; j < N; j++) {
         for (let i = 7; i <= 9; i++) {
           for (let k = 0; k < 3; k++) expect(rgba[4 * (j * N + i) + k], `${space} (${i}, ${j})`).toBe(expected[space][i - 7]);
@@ -116,7 +116,7 @@ describe('software renderer, color-space srgb against none (docs/colour.md#none)
     const s = scene([quad(-1, -1, 1, 1, 0, material([1, 1, 1], { kind: 'image', url: 'black-white' }), 64)], [0, 0, 0]);
     const expected: Record<ColorSpace, number> = { srgb: 188, none: 128 };
     for (const space of SPACES) {
-      const rgba = new SoftwareRenderer().render({ ...STATE, colorSpace: space }, s, IMAGES);
+      const rgba = new SoftwareRenderer().render(s, { ...STATE, colorSpace: space }, IMAGES);
       for (const [i, j] of INSIDE) for (let k = 0; k < 3; k++) expect(rgba[4 * (j * N + i) + k], `${space} (${i}, ${j})`).toBe(expected[space]);
     }
   });
@@ -129,7 +129,7 @@ describe('software renderer, color-space srgb against none (docs/colour.md#none)
       let sum = 0;
       for (let y = 0; y < n; y++) for (let x = 0; x < n; x++) sum += decoded(texel(x, y) / 255, space);
       const mean = sum / (n * n);
-      const rgba = new SoftwareRenderer().render({ ...STATE, colorSpace: space }, s);
+      const rgba = new SoftwareRenderer().render(s, { ...STATE, colorSpace: space });
       for (const [i, j] of INSIDE) expectPixel(rgba, N, i, j, [mean, mean, mean], space);
     }
     // Levels 100 and 200 average to 160 in light, 150 as stored.
@@ -162,7 +162,7 @@ describe('software renderer, the glass in linear light (docs/rendering.md#the-gl
 
   it('F·R + (1 − F)·(T·B + (1 − T)·D), D = decode(tex) ⊙ tint ⊙ 0.35, R the decoded background, encoded once', () => {
     for (const space of SPACES) {
-      const rgba = new SoftwareRenderer().render(state(space), glassScene, IMAGES);
+      const rgba = new SoftwareRenderer().render(glassScene, state(space), IMAGES);
       const r = BG.map((c) => decoded(c, space));
       for (let j = 0; j < W; j++) {
         for (let i = 0; i < W; i++) {
@@ -174,8 +174,8 @@ describe('software renderer, the glass in linear light (docs/rendering.md#the-gl
   });
 
   it('the fresnel view shows F unencoded, the same bytes in both spaces', () => {
-    const srgb = new SoftwareRenderer().render(state('srgb', 'fresnel'), glassScene, IMAGES).slice();
-    const none = new SoftwareRenderer().render(state('none', 'fresnel'), glassScene, IMAGES);
+    const srgb = new SoftwareRenderer().render(glassScene, state('srgb', 'fresnel'), IMAGES).slice();
+    const none = new SoftwareRenderer().render(glassScene, state('none', 'fresnel'), IMAGES);
     expect(srgb).toEqual(none);
     for (let j = 0; j < W; j++) {
       for (let i = 0; i < W; i++) {
@@ -193,8 +193,8 @@ describe('software renderer, the glass in linear light (docs/rendering.md#the-gl
     const passesScene = { ...glassScene, objects: [...glassScene.objects, quad(-0.5, -0.5, 0.5, 0.5, 0.5, material([0.25, 0.25, 0.25], { kind: 'image', url: 'white' }))] };
     const r = new SoftwareRenderer();
     const tiled: Record<ColorSpace, Uint8ClampedArray> = {
-      srgb: r.render({ ...state('srgb', 'passes'), width: 2 * W, height: 2 * W }, passesScene, IMAGES).slice(),
-      none: r.render({ ...state('none', 'passes'), width: 2 * W, height: 2 * W }, passesScene, IMAGES).slice(),
+      srgb: r.render(passesScene, { ...state('srgb', 'passes'), width: 2 * W, height: 2 * W }, IMAGES).slice(),
+      none: r.render(passesScene, { ...state('none', 'passes'), width: 2 * W, height: 2 * W }, IMAGES).slice(),
     };
     const tile = (px: Uint8ClampedArray, x: number, y: number): number[] => {
       const out: number[] = [];
@@ -204,7 +204,7 @@ describe('software renderer, the glass in linear light (docs/rendering.md#the-gl
     const quadrants: [FrameState['view'], number, number][] = [['reflection', 0, 0], ['scene', W, 0], ['fresnel', 0, W], ['final', W, W]];
     for (const [view, x, y] of quadrants) {
       for (const space of SPACES) {
-        expect(tile(tiled[space], x, y), `${space} ${view} tile`).toEqual([...r.render(state(space, view), passesScene, IMAGES)]);
+        expect(tile(tiled[space], x, y), `${space} ${view} tile`).toEqual([...r.render(passesScene, state(space, view), IMAGES)]);
       }
       const a = tile(tiled.srgb, x, y), b = tile(tiled.none, x, y);
       const same = a.every((v, k) => v === b[k]);

@@ -1,14 +1,12 @@
-// An RGBA8 2D texture from pixels (row 0 uploaded first) or a decoded image (its top row
-// first), optionally mipmapped and repeating; `srgb` stores it as SRGB8_ALPHA8, which the GPU
+// An RGBA8 2D texture from pixels (row 0 uploaded first: a decoded image's top row), optionally
+// mipmapped and repeating; `srgb` stores it as SRGB8_ALPHA8, which the GPU
 // decodes to linear light before filtering (docs/colour.md#srgb), and whose mipmaps it averages in linear.
 import type { ResourceCounter } from './resource-counter';
 
 export interface TextureOptions {
   width: number;
   height: number;
-  data: Uint8Array | null;
-  /** A decoded image instead of `data` (width and height are then the image's). */
-  image?: TexImageSource;
+  data: Uint8Array | Uint8ClampedArray | null;
   mipmap?: boolean;
   repeat?: boolean;
   /** Colour data in sRGB (SRGB8_ALPHA8): sampled as linear light. */
@@ -33,14 +31,8 @@ export class Texture {
     gl.bindTexture(gl.TEXTURE_2D, t);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
     const format = o.srgb ? gl.SRGB8_ALPHA8 : gl.RGBA8;
-    if (o.image) {
-      // No flip on upload (ImageBitmaps ignore UNPACK_FLIP_Y_WEBGL): the shader reads images at
-      // (u, 1 − v), which puts OBJ's v = 0 on the image's bottom row.
-      gl.pixelStorei(gl.UNPACK_PREMULTIPLY_ALPHA_WEBGL, false);
-      gl.texImage2D(gl.TEXTURE_2D, 0, format, gl.RGBA, gl.UNSIGNED_BYTE, o.image);
-    } else {
-      gl.texImage2D(gl.TEXTURE_2D, 0, format, o.width, o.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, o.data);
-    }
+    // No flip on upload: the shader reads images at (u, 1 − v), which puts OBJ's v = 0 on the image's bottom row.
+    gl.texImage2D(gl.TEXTURE_2D, 0, format, o.width, o.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, o.data);
     const wrap = o.repeat ? gl.REPEAT : gl.CLAMP_TO_EDGE;
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, wrap);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, wrap);

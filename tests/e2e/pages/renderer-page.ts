@@ -4,6 +4,7 @@
 import { Renderer } from '../../../src/render/renderer';
 import type { FrameState } from '../../../src/frame/types';
 import type { Scene } from '../../../src/scene/scene';
+import type { DecodedImage } from '../../../src/scene/decoded-image';
 import type { MeshData } from '../../../src/scene/geometry/mesh-data';
 
 interface JsonMesh { positions: number[]; normals: number[]; uvs: number[]; indices: number[] }
@@ -13,6 +14,8 @@ const gl = canvas.getContext('webgl2', {
   alpha: true, antialias: false, depth: true, stencil: false, premultipliedAlpha: true, preserveDrawingBuffer: false,
 })!;
 const renderer = new Renderer(gl, { checks: true });
+/** The images given so far, kept from draw to draw as the element's backend keeps them: the renderer's third argument. */
+const decoded = new Map<string, DecodedImage>();
 
 function revive(scene: Scene): Scene {
   return {
@@ -36,23 +39,24 @@ function toBase64(bytes: Uint8ClampedArray): string {
 }
 
 const api = {
-  /** RGBA8 of `state.view` of `scene`, top row first, base64 (after loading what it needs: rough glass's chunk). */
+  /**
+   * RGBA8 of `state.view` of `scene`, top row first, base64 (after loading what it needs: rough
+   * glass's chunk), with `images` added to those of the draws before.
+   */
   async draw(state: FrameState, scene: Scene, images: Record<string, { width: number; height: number; rgba: number[] }> = {}): Promise<string> {
-    await renderer.load(state, revive(scene));
+    await renderer.load(revive(scene), state);
     canvas.width = state.width;
     canvas.height = state.height;
-    for (const [url, img] of Object.entries(images)) {
-      renderer.setImage(url, new ImageData(new Uint8ClampedArray(img.rgba), img.width, img.height));
-    }
+    for (const [url, img] of Object.entries(images)) decoded.set(url, new ImageData(new Uint8ClampedArray(img.rgba), img.width, img.height));
     // 'passes' is drawn to the canvas and read back; the fresnel view as 'final' (its pass reads).
     const source = state.view === 'final' || state.view === 'scene' || state.view === 'reflection' ? state.view : state.view === 'passes' ? 'screen' : 'final';
-    return toBase64(renderer.read(source, state, revive(scene)).data);
+    return toBase64(renderer.read(revive(scene), state, decoded, source).data);
   },
   /** A state drawn without loading first (rough glass before its chunk is in). */
   drawNow(state: FrameState, scene: Scene): string {
     canvas.width = state.width;
     canvas.height = state.height;
-    return toBase64(renderer.read('final', state, revive(scene)).data);
+    return toBase64(renderer.read(revive(scene), state, decoded, 'final').data);
   },
   /** The renderer's stats after the last draw. */
   stats() {
@@ -64,15 +68,15 @@ const api = {
    */
   async time(state: FrameState, scene: Scene, frames: number): Promise<number> {
     const s = revive(scene);
-    await renderer.load(state, s);
+    await renderer.load(s, state);
     canvas.width = state.width;
     canvas.height = state.height;
     const px = new Uint8Array(4);
-    renderer.render(state, s);
+    renderer.render(s, state, decoded);
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
     const t0 = performance.now();
     for (let i = 0; i < frames; i++) {
-      renderer.render(state, s);
+      renderer.render(s, state, decoded);
       gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
     }
     return (performance.now() - t0) / frames;
