@@ -12,6 +12,12 @@ const SCENE = `<glass-plane-scene time="0" spin="0" style="width:160px;height:90
 </glass-plane-scene>`;
 
 const same = (a: RgbaImage, b: RgbaImage) => a.width === b.width && a.data.every((v, i) => v === b.data[i]);
+/** Pixels of the red sphere: clearly more red than green and blue. */
+function redPixels(img: RgbaImage): number {
+  let red = 0;
+  for (let i = 0; i < img.data.length; i += 4) if (img.data[i] - img.data[i + 1] > 60 && img.data[i] - img.data[i + 2] > 60) red++;
+  return red;
+}
 const fetched = (page: import('@playwright/test').Page) =>
   page.evaluate(() => performance.getEntriesByType('resource').some((e) => e.name.includes('child-elements')));
 
@@ -34,9 +40,21 @@ test('the first frame of a scene with children shows them, however slow their ch
   const settled = await capture(page);
   expect(same(first, settled), 'the first frame is the settled one').toBe(true);
   // The red sphere is there: measured 73 such pixels; the default scene drawn in its place has 0.
-  let red = 0;
-  for (let i = 0; i < first.data.length; i += 4) if (first.data[i] - first.data[i + 1] > 60 && first.data[i] - first.data[i + 2] > 60) red++;
-  expect(red, 'red sphere pixels in the first frame (measured 73)').toBeGreaterThan(50);
+  expect(redPixels(first), 'red sphere pixels in the first frame (measured 73)').toBeGreaterThan(50);
+});
+
+test('children defined already: the first frame waits for what gathers their parts (held back 600 ms)', async ({ page }) => {
+  await page.route('**/gather-parts*', async (route) => {
+    await new Promise((r) => setTimeout(r, 600));
+    await route.continue();
+  });
+  await openPage(page);
+  await page.evaluate(async () => {
+    const mod = await import('/src/index.ts' as string) as { defineChildren(): Promise<void> };
+    await mod.defineChildren();
+  });
+  const first = await mountFirstFrame(page, SCENE);
+  expect(redPixels(first), 'red sphere pixels in the first frame (measured 73)').toBeGreaterThan(50);
 });
 
 test('defineChildren() defines both elements, for pages that want their classes', async ({ page }) => {

@@ -60,6 +60,19 @@ test('held back 600 ms each, the chunks still end in the course camera\'s pictur
   expect(same(await settled(page), course)).toBe(true);
 });
 
+test('`ready` waits for camera-src\'s reader (held back 600 ms): at `ready` the course camera is the view', async ({ page }) => {
+  const { course, flyby } = await pictures(page);
+  await page.route('**/camera-source*', async (route) => {
+    await new Promise((r) => setTimeout(r, 600));
+    await route.continue();
+  });
+  await openPage(page);
+  await mountHtml(page, SCENE(`camera-src="${CFG}"`)); // resolves at `ready`
+  const atReady = await capture(page);
+  expect(same(atReady, flyby), 'not the camera attributes\' picture').toBe(false);
+  expect(same(atReady, course)).toBe(true);
+});
+
 for (const name of CHUNKS) {
   test(`if ${name} cannot load, the camera attributes stay the view: one warning, no error`, async ({ page, consoleLog }) => {
     const { flyby } = await pictures(page);

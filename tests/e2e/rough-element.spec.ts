@@ -81,7 +81,12 @@ for (const renderer of ['webgl', 'software']) {
 
 // WebGL rough glass is a chunk of its own (render/rough-glass-gl.ts), loaded when a frame first
 // asks for roughness: the element's first frame waits for it instead of showing the glass polished.
-test('webgl: the first frame of a rough element is already rough (it waits for rough glass\'s chunk)', async ({ page }) => {
+test('webgl: the first frame of a rough element is already rough, however slow rough glass\'s chunk (held back 600 ms)', async ({ page }) => {
+  // Held back, the chunk lands after every other part the frame needs (the floor's mesh extras).
+  await page.route('**/rough-glass-gl*', async (route) => {
+    await new Promise((r) => setTimeout(r, 600));
+    await route.continue();
+  });
   await openPage(page);
   const first = (await mountFirstFrame(page, FLOOR('webgl', '0.5'))).data;
   const ref = renderScene(FLOOR_SCENE, floorState({ width: W, height: H, roughness: 0.5 }), null, { samplesPerAxis: 2, microfacetSamples: 64 });
