@@ -1,7 +1,7 @@
 // Which mesh each object draws with: one chooser for both renderers, so the WebGL and the
 // software renderer draw the same sphere in every view (orthographic 'auto' included).
 import { describe, expect, it, vi } from 'vitest';
-import { fakeGl } from './fake-gl';
+import { fakeGl } from './helpers/fake-gl';
 import { Renderer } from '../../src/render/renderer';
 import { SoftwareRenderer } from '../../src/software';
 import { ObjectShader } from '../../src/software/object-shader';

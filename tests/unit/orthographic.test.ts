@@ -5,7 +5,7 @@
 // enough to see it: only the reflected highlights change), sphereScreenRadius ignoring the
 // orthographic half-height (the sizes test).
 import { describe, expect, it } from 'vitest';
-import { apply, expectClose } from './helpers';
+import { apply, expectClose } from './helpers/math';
 import { forwardFromYawPitch, viewerSide } from '../../src/math/camera';
 import { MIN_ORTHO_DEPTH, orthoHalfHeight, orthographicMatrix, type OrthoView } from '../../src/math/orthographic';
 import { orthographicView } from '../../src/frame/orthographic-view';

@@ -7,7 +7,7 @@ import {
 import { defaultScene } from '../../src/scene/default-scene';
 import type { Geometry, Light, Material, Scene, SceneObject, Vec3 } from '../../src/scene/scene';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION } from '../../src/element/attributes';
-import { projectToPixels } from './helpers';
+import { projectToPixels } from './helpers/math';
 
 const DEFAULT_VIEW: ReferenceState = {
   width: 96, height: 54, time: 1.25, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',

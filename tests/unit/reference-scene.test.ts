@@ -5,7 +5,7 @@ import {
   type ReferenceImage, type ReferenceState,
 } from '../../src/reference';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
-import { projectToPixels } from './helpers';
+import { projectToPixels } from './helpers/math';
 
 const STATE: ReferenceState = {
   width: 320, height: 180, time: 0, spin: 0, cubeDistance: 2.5, transparency: 0.5, ior: 1.5,

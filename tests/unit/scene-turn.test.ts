@@ -15,7 +15,7 @@ import { defaultScene } from '../../src/scene/default-scene';
 import { boundsCenter, rotateScene } from '../../src/scene/group-rotation';
 import type { SceneTurn } from '../../src/scene/turn';
 import type { Light, Scene } from '../../src/scene/scene';
-import { expectClose } from './helpers';
+import { expectClose } from './helpers/math';
 
 const STATE: FrameState = {
   width: 48, height: 27, time: 0.7, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',

@@ -11,7 +11,7 @@ import type { FrameState } from '../../src/frame/types';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
 import { SoftwareRenderer, putBand, renderBand, splitRows, type Band } from '../../src/software';
-import { CASES, IMAGES, STATE } from './software-cases';
+import { CASES, IMAGES, STATE } from './helpers/software-cases';
 import { Rasterizer, VARYINGS } from '../../src/software/raster';
 
 /** The whole frame from `bands`, each drawn by its renderer of `renderers` (one per band). */

@@ -16,7 +16,7 @@ import type { FrameState } from '../../src/frame/types';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
 import { SoftwareRenderer } from '../../src/software';
-import { CASES, IMAGES, STATE } from './software-cases';
+import { CASES, IMAGES, STATE } from './helpers/software-cases';
 import { DEFAULT_GLASS, DEFAULT_LIGHT } from '../../src/scene/default-scene';
 
 const FILE = new URL('./software-baseline.json', import.meta.url);

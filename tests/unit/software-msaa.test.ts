@@ -11,7 +11,7 @@ import { linearToSrgbByte, type ColorSpace } from '../../src/math/srgb';
 import type { FrameState } from '../../src/frame/types';
 import type { DecodedImage } from '../../src/scene/decoded-image';
 import type { Scene, SceneObject } from '../../src/scene/scene';
-import { AMBIENT, material, N, quad, STATE as BASE } from './quad-scenes';
+import { AMBIENT, material, N, quad, STATE as BASE } from './helpers/quad-scenes';
 
 const STRIDE = VARYINGS + 1;
 

@@ -1,8 +1,8 @@
 // Small hand-checkable scenes for the renderer tests (software-srgb, software-msaa, glass-tie):
 // 17×17 pixels, vertical fov 90°, the eye at (0, 0, 2) looking down −Z — a point (x, y, 0) lands
 // on pixel column 8.5·(1 + x/2), row 8.5·(1 − y/2) — flat quads facing +Z, ambient light only.
-import type { FrameState } from '../../src/frame/types';
-import type { Light, Material, SceneObject, TextureSource } from '../../src/scene/scene';
+import type { FrameState } from '../../../src/frame/types';
+import type { Light, Material, SceneObject, TextureSource } from '../../../src/scene/scene';
 
 export const N = 17;
 

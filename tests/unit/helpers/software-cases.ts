@@ -1,12 +1,12 @@
 // The software renderer's test scenes (docs/software-renderer.md): the cases software-reference.test.ts compares
 // with the float64 reference (with the figures measured there) and software-baseline.test.ts
 // holds to the bit, at 160×90.
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION } from '../../src/element/attributes';
-import { BACKGROUND, DEFAULT_GLASS, DEFAULT_LIGHT, defaultScene } from '../../src/scene/default-scene';
-import type { Geometry, Material, Scene, SceneObject } from '../../src/scene/scene';
-import type { FrameState } from '../../src/frame/types';
-import type { DecodedImage } from '../../src/reference';
-import { bezierPatchMesh } from '../../src/scene/geometry/bezier';
+import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION } from '../../../src/element/attributes';
+import { BACKGROUND, DEFAULT_GLASS, DEFAULT_LIGHT, defaultScene } from '../../../src/scene/default-scene';
+import type { Geometry, Material, Scene, SceneObject } from '../../../src/scene/scene';
+import type { FrameState } from '../../../src/frame/types';
+import type { DecodedImage } from '../../../src/reference';
+import { bezierPatchMesh } from '../../../src/scene/geometry/bezier';
 
 /** A bicubic Bézier bump (docs/software-renderer.md#bezier-surfaces) at E = 40, as the course's .byu loader makes it. */
 function bezierBump() {
