@@ -10,6 +10,7 @@ import { drawScene, openRendererPage, sceneToJson } from './helpers/scene-json';
 import { parseCameraCfg } from '../../src/loaders/course/camera-cfg';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from '../unit/helpers/frame-state';
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -97,11 +98,7 @@ test('the Renderer draws a course camera from the camera attributes until load()
   await openRendererPage(page);
   const text = fs.readFileSync(path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../data/course/camera.cfg'), 'utf8');
   const { warnings: _w, ...camera } = parseCameraCfg(text, { url: 'camera.cfg' });
-  const base: FrameState = {
-    width: 160, height: 90, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: [3.6, 2.4, 0.2], yaw: -169, pitch: -23.6, colorSpace: 'srgb', view: 'final', reflectionScale: 1,
-    samples: 0, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-  };
+  const base: FrameState = defaultFrameState({ width: 160, height: 90, spin: 0, samples: 0 });
   const withCamera = { ...base, courseCamera: camera };
   const scene = sceneToJson(defaultScene(0.75, 0));
   type Api = { __renderer: { drawNow(s: FrameState, sc: unknown): string } };

@@ -5,7 +5,8 @@ import type { Page } from '@playwright/test';
 import { test, expect, mount, openPage, capture, setAttributes, nextFrame, type RgbaImage, type SceneElement } from './fixtures';
 import { renderReference, compareImages, glassReflectsCube, type ReferenceImage } from '../../src/reference';
 import type { Projection } from '../../src/frame/types';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
+import { defaultFrameState } from '../unit/helpers/frame-state';
+import { DEFAULT_CAMERA_ROTATION } from '../../src/element/attributes';
 import { formatError, maskedError, reflectsCubeMask } from './helpers/reference-match';
 import { expectPsnr, MARGIN_DB } from './helpers/bounds';
 
@@ -13,11 +14,7 @@ const TIME = 1.25;
 
 /** The default scene and camera at `time`, through `projection`, as the reference draws it. */
 function reference(width: number, height: number, time: number, projection: Projection, samplesPerAxis = 1): ReferenceImage {
-  return renderReference({
-    width, height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov: 60,
-    cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace: 'none', view: 'final',
-    projection,
-  }, { samplesPerAxis });
+  return renderReference(defaultFrameState({ width, height, time, colorSpace: 'none', projection }), { samplesPerAxis });
 }
 
 function note(line: string): void {

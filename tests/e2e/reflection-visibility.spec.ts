@@ -6,7 +6,7 @@
 import type { Page } from '@playwright/test';
 import { test, expect, mount, openPage, capture, setAttributes, type RgbaImage } from './fixtures';
 import { renderReference, glassReflectsCube } from '../../src/reference';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
+import { defaultFrameState } from '../unit/helpers/frame-state';
 
 /** The visibility bar, at 640×360 with defaults: max ≥ 40 levels and ≥ 1,000 pixels ≥ 15 … */
 const BAR = { max: 40, pixels: 1000 };
@@ -61,10 +61,7 @@ function visibility(withReflection: RgbaImage, without: RgbaImage, mask: Uint8Ar
 
 /** Pixels whose centre ray hits the glass and whose mirrored ray then hits the cube. */
 function cubeReflectionMask(width: number, height: number, time: number, fov = 60): Uint8Array {
-  const ref = renderReference({
-    width, height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov,
-    cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace: 'srgb', view: 'final',
-  });
+  const ref = renderReference(defaultFrameState({ width, height, time, fov }));
   return Uint8Array.from(ref.keys, (k) => (glassReflectsCube(k) ? 1 : 0));
 }
 

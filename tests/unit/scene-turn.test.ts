@@ -16,12 +16,9 @@ import { boundsCenter, rotateScene } from '../../src/scene/group-rotation';
 import type { SceneTurn } from '../../src/scene/turn';
 import type { Light, Scene } from '../../src/scene/scene';
 import { expectClose } from './helpers/math';
+import { defaultFrameState } from './helpers/frame-state';
 
-const STATE: FrameState = {
-  width: 48, height: 27, time: 0.7, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-  fov: 60, cameraPosition: [3.6, 2.4, 0.2], yaw: -169, pitch: -23.6, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0,
-  shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-};
+const STATE: FrameState = defaultFrameState({ width: 48, height: 27, time: 0.7, colorSpace: 'none', samples: 0 });
 
 /** The default scene (a spinning cube before the glass, a sphere behind it), both turned, with a point light after the directional one. */
 function content(): Scene {

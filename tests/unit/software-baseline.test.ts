@@ -11,12 +11,13 @@
 import { createHash } from 'node:crypto';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
+import { DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import type { FrameState } from '../../src/frame/types';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
 import { SoftwareRenderer } from '../../src/software';
 import { CASES, IMAGES, STATE } from './helpers/software-cases';
+import { defaultFrameState } from './helpers/frame-state';
 import { DEFAULT_GLASS, DEFAULT_LIGHT } from '../../src/scene/default-scene';
 
 const FILE = new URL('./software-baseline.json', import.meta.url);
@@ -53,10 +54,7 @@ for (const time of [0.4, 2.9]) {
   for (const [samples, colorSpace] of [[0, 'srgb'], [4, 'srgb'], [0, 'none'], [4, 'none']] as const) {
     frames.push({
       name: `default scene 640×360, t ${time}, samples ${samples}, ${colorSpace}`, scene: big,
-      state: {
-        ...STATE, width: 640, height: 360, time, cubeDistance: DEFAULT_CUBE_DISTANCE, cameraPosition: [...DEFAULT_CAMERA_POSITION],
-        yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace, samples,
-      },
+      state: defaultFrameState({ time, colorSpace, samples }),
     });
   }
 }

@@ -6,6 +6,7 @@ import { CLIP_DISTANCE, Rasterizer, VARYINGS, type FragmentShader } from '../../
 import { SoftwareRenderer } from '../../src/software';
 import type { FrameState } from '../../src/frame/types';
 import type { Scene } from '../../src/scene/scene';
+import { AMBIENT, material, STATE as QUAD_STATE, unitQuad, WHITE } from './helpers/quad-scenes';
 
 const STRIDE = VARYINGS + 3;
 
@@ -167,33 +168,11 @@ describe('shared edges', () => {
     // of a 16×16 image: the diagonal runs through the centres (k + ½, k + ½).
     const W = 16;
     const scene: Scene = {
-      glass: null, background: [0, 0, 0],
-      lights: [{ kind: 'directional', vector: [0, 0, 1], ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0] }],
-      objects: [{
-        geometry: {
-          kind: 'mesh', key: 'quad',
-          data: {
-            positions: new Float32Array([-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0]),
-            normals: new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]),
-            uvs: new Float32Array(8),
-            indices: new Uint16Array([0, 1, 2, 0, 2, 3]),
-          },
-        },
-        transform: { position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
-        material: {
-          ambient: [0.8, 0.8, 0.8], diffuse: [0, 0, 0], specular: [0, 0, 0], shininess: 1, opacity: 0.5,
-          texture: { kind: 'image', url: 'white' }, mapping: 'uv',
-        },
-        bounds: { center: [0, 0, 0], radius: 1.5 },
-      }],
+      glass: null, background: [0, 0, 0], lights: [AMBIENT],
+      objects: [unitQuad(material([0.8, 0.8, 0.8], { kind: 'image', url: 'white' }, 0.5))],
     };
-    const white = new Map([['white', { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }]]);
-    const state: FrameState = {
-      width: W, height: W, time: 0, spin: 0, cubeDistance: 0, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-      fov: 90, cameraPosition: [0, 0, 2], yaw: -90, pitch: 0, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0,
-      shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-    };
-    const rgba = new SoftwareRenderer().render(scene, state, white);
+    const state: FrameState = { ...QUAD_STATE, width: W, height: W, colorSpace: 'none' };
+    const rgba = new SoftwareRenderer().render(scene, state, WHITE);
     const once = Math.round(0.8 * 0.5 * 255), twiceBlended = Math.round((0.8 * 0.5 + 0.4 * 0.5) * 255);
     let blendedTwice = 0, missed = 0, onDiagonal = 0;
     for (let y = 4; y < 12; y++) {
