@@ -5,6 +5,7 @@
 // view to the camera attributes, with one warning and no `error`.
 import type { Page } from '@playwright/test';
 import { test, expect, openPage, capture, type RgbaImage } from './fixtures';
+import { samePixels as same } from './helpers/chunks';
 import { mountHtml } from './helpers/scene-children';
 import { drawScene, openRendererPage, sceneToJson } from './helpers/scene-json';
 import { parseCameraCfg } from '../../src/loaders/course/camera-cfg';
@@ -19,7 +20,6 @@ const CFG = '/tests/data/course/camera.cfg';
 const SCENE = (attrs: string) => `<glass-plane-scene time="0" spin="0" ${attrs}></glass-plane-scene>`;
 const CHUNKS = ['camera-source', 'course-projection'];
 
-const same = (a: RgbaImage, b: RgbaImage) => a.width === b.width && a.data.every((v, i) => v === b.data[i]);
 const fetched = (page: Page) =>
   page.evaluate((names) => names.filter((n) => performance.getEntriesByType('resource').some((e) => e.name.includes(n))), CHUNKS);
 const settled = async (page: Page) => {

@@ -17,6 +17,7 @@ import type { SceneTurn } from '../../src/scene/turn';
 import type { Light, Scene } from '../../src/scene/scene';
 import { expectClose } from './helpers/math';
 import { defaultFrameState } from './helpers/frame-state';
+import { differingPixels } from './helpers/pixel-diff';
 
 const STATE: FrameState = defaultFrameState({ width: 48, height: 27, time: 0.7, colorSpace: 'none', samples: 0 });
 
@@ -87,11 +88,7 @@ describe('FrameState.turn against the turned scene value', () => {
       const byState = renderer.render(scene, { ...STATE, view, turn }).slice();
       const byValue = renderer.render(rotateScene(scene, turn.objects, turn.light), { ...STATE, view }).slice();
       const plain = renderer.render(scene, { ...STATE, view }).slice();
-      let differing = 0, unturned = 0;
-      for (let p = 0; p < byState.length; p += 4) {
-        if ([0, 1, 2].some((c) => byState[p + c] !== byValue[p + c])) differing++;
-        if ([0, 1, 2].some((c) => byState[p + c] !== plain[p + c])) unturned++;
-      }
+      const differing = differingPixels(byState, byValue), unturned = differingPixels(byState, plain);
       // Measured: no pixel differs in any view (48×27). A float32 entry rounding the other way
       // could flip one pixel by a level; none does here, and the bound says so.
       expect(differing, `${view}: pixels that differ`).toBe(0);

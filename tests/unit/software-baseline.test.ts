@@ -18,6 +18,7 @@ import type { Scene } from '../../src/scene/scene';
 import { SoftwareRenderer } from '../../src/software';
 import { CASES, IMAGES, STATE } from './helpers/software-cases';
 import { defaultFrameState } from './helpers/frame-state';
+import { differingBytes } from './helpers/pixel-diff';
 import { DEFAULT_GLASS, DEFAULT_LIGHT } from '../../src/scene/default-scene';
 
 const FILE = new URL('./software-baseline.json', import.meta.url);
@@ -129,8 +130,7 @@ describe('software renderer: a run of frames, each as a fresh renderer draws it'
         state = { ...state, ...over, time: state.time + 0.05 };
         const got = one.render(sc ?? scene, state, IMAGES).slice();
         const want = new SoftwareRenderer().render(sc ?? scene, state, IMAGES);
-        let differing = 0;
-        for (let i = 0; i < want.length; i++) if (got[i] !== want[i]) differing++;
+        const differing = differingBytes(want, got);
         expect(differing, `${name}, ${frame} frame: bytes that differ from a fresh renderer's`).toBe(0);
       }
     }

@@ -130,15 +130,7 @@ describe('shared edges', () => {
     }
     for (let k = 0; k < n; k++) draw(r, rec, [[16.5, 16.5], ring[k], ring[(k + 1) % n]]);
     // Inside the polygon (point-in-polygon by crossings; centres exactly on the rim excluded).
-    let missed = 0, twice = 0;
-    for (let y = 0; y < H; y++) {
-      for (let x = 0; x < W; x++) {
-        const c = rec.count[y * W + x];
-        if (c > 1) twice++;
-        if (c === 0 && strictlyInside(ring, x + 0.5, y + 0.5)) missed++;
-      }
-    }
-    expect({ missed, twice }).toEqual({ missed: 0, twice: 0 });
+    expect(coverageFaults(rec, ring)).toEqual({ missed: 0, twice: 0 });
 
     // A jittered 9×9 vertex grid over [2, 30]², alternate diagonals; vertices on centres,
     // corners and arbitrary 1/256 positions.
@@ -152,15 +144,7 @@ describe('shared edges', () => {
     }
     const outline = [...[0, 1, 2, 3, 4, 5, 6, 7, 8].map((i) => p(i, 0)), ...[1, 2, 3, 4, 5, 6, 7, 8].map((j) => p(8, j)),
       ...[7, 6, 5, 4, 3, 2, 1, 0].map((i) => p(i, 8)), ...[7, 6, 5, 4, 3, 2, 1].map((j) => p(0, j))];
-    missed = twice = 0;
-    for (let y = 0; y < H; y++) {
-      for (let x = 0; x < W; x++) {
-        const c = grid.count[y * W + x];
-        if (c > 1) twice++;
-        if (c === 0 && strictlyInside(outline, x + 0.5, y + 0.5)) missed++;
-      }
-    }
-    expect({ missed, twice }).toEqual({ missed: 0, twice: 0 });
+    expect(coverageFaults(grid, outline)).toEqual({ missed: 0, twice: 0 });
   });
 
   it('a kt = 0.5 mesh of two triangles sharing a diagonal over a black background: no pixel blended twice or missed', () => {
@@ -190,6 +174,19 @@ describe('shared edges', () => {
     expect(rgba[4 * (12 * W + 12)]).toBe(0);
   });
 });
+
+/** Pixels `rec` saw more than one fragment at, and pixels whose centre is strictly inside `outline` that it saw none at. */
+function coverageFaults(rec: Recorder, outline: number[][]): { missed: number; twice: number } {
+  let missed = 0, twice = 0;
+  for (let y = 0; y < rec.height; y++) {
+    for (let x = 0; x < rec.width; x++) {
+      const c = rec.count[y * rec.width + x];
+      if (c > 1) twice++;
+      if (c === 0 && strictlyInside(outline, x + 0.5, y + 0.5)) missed++;
+    }
+  }
+  return { missed, twice };
+}
 
 /** Even-odd test; points within 1e-9 of an edge count as outside. */
 function strictlyInside(poly: number[][], x: number, y: number): boolean {
