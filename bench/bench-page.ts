@@ -1,8 +1,8 @@
 // In-browser half of `npm run bench`: draws configurations with our Renderer (and the
 // three.js peer), times batches of frames closed by a 1-pixel readback, returns pixels.
 import { Renderer } from '../src/render/renderer';
-import { DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
 import type { FrameState } from '../src/frame/types';
+import { defaultFrameState } from '../tests/unit/helpers/frame-state';
 import { ThreePeer } from './three-peer';
 import { DEFAULTS, type Knobs } from './configs';
 import type { BenchView } from './views';
@@ -17,14 +17,14 @@ export interface Scene {
 }
 
 function frameState(scene: Scene, knobs: Knobs, view: BenchView, mode: FrameState['view'] = 'final'): FrameState {
-  return {
+  return defaultFrameState({
     width: Math.max(1, Math.round(scene.width * knobs.pixelRatio)),
     height: Math.max(1, Math.round(scene.height * knobs.pixelRatio)),
-    time: scene.time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: knobs.fresnel, fov: 60,
+    time: scene.time, fresnel: knobs.fresnel,
     cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace: knobs.colorSpace, view: mode,
     reflectionScale: knobs.reflectionScale, samples: knobs.samples, shading: knobs.shading, tessellation: knobs.tessellation,
     reflectionFormat: knobs.reflectionFormat, projection: view.projection,
-  };
+  });
 }
 
 const oursCanvas = document.getElementById('ours') as HTMLCanvasElement;

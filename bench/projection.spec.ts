@@ -5,7 +5,7 @@
 import { writeFileSync } from 'node:fs';
 import { test, expect } from '../tests/e2e/fixtures';
 import { renderReference, compareImages } from '../src/reference';
-import { DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
+import { defaultFrameState } from '../tests/unit/helpers/frame-state';
 import type { Projection } from '../src/frame/types';
 import { DEFAULTS } from './configs';
 import { VIEWS, type BenchView } from './views';
@@ -23,11 +23,10 @@ const PROJECTIONS: readonly Projection[] = ['perspective', 'orthographic'];
 type Bench = { bench: BenchApi };
 
 function psnrOf(view: BenchView, rgba: Uint8Array) {
-  const ref = renderReference({
-    width: SCENE.width, height: SCENE.height, time: SCENE.time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5,
-    ior: 1.5, fresnel: 'exact', fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace: DEFAULTS.colorSpace, view: 'final',
-    projection: view.projection,
-  }, { samplesPerAxis: SPP_AXIS });
+  const ref = renderReference(defaultFrameState({
+    width: SCENE.width, height: SCENE.height, time: SCENE.time,
+    cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace: DEFAULTS.colorSpace, projection: view.projection,
+  }), { samplesPerAxis: SPP_AXIS });
   return compareImages(ref, rgba).psnr;
 }
 

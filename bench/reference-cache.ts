@@ -22,6 +22,8 @@ export interface ReferenceRequest {
 }
 
 export function cachedReference(r: ReferenceRequest): ReferenceImage {
+  // Written out, not defaultFrameState(): its JSON is the file's key, and the fields the factory
+  // adds (projection, target, roughness, ...) would change every key and drop the cached files.
   const state = {
     width: r.width, height: r.height, time: r.time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5,
     ior: 1.5, fresnel: 'exact' as const, fov: 60, cameraPosition: r.view.cameraPosition, yaw: r.view.yaw, pitch: r.view.pitch,

@@ -11,6 +11,7 @@ import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { createHash } from 'node:crypto';
 import { test, expect } from '../tests/e2e/fixtures';
 import { compareImages, renderScene, type ReferenceImage } from '../src/reference';
+import { defaultFrameState } from '../tests/unit/helpers/frame-state';
 import { SoftwareRenderer } from '../src/software';
 import { ROUGHNESS_QUALITIES, type RoughnessQuality } from '../src/frame/rough-glass';
 import type { FrameState } from '../src/frame/types';
@@ -42,11 +43,10 @@ interface Bench {
 
 function state(roughness: number, ior: number, extra: Partial<FrameState> = {}): FrameState {
   const v = ROUGH_FLOOR_VIEW;
-  return {
-    width: SIZE.width, height: SIZE.height, time: 0, spin: 0, cubeDistance: 0, transparency: 0.5, ior, fresnel: 'exact', fov: 60,
-    cameraPosition: v.cameraPosition, yaw: v.yaw, pitch: v.pitch, colorSpace: 'srgb', view: 'final', reflectionScale: 1,
-    samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8', roughness, ...extra,
-  };
+  return defaultFrameState({
+    width: SIZE.width, height: SIZE.height, spin: 0, cubeDistance: 0, ior, cameraPosition: v.cameraPosition, yaw: v.yaw, pitch: v.pitch,
+    roughness, ...extra,
+  });
 }
 
 /** The reference of a case, cached in bench/.cache by its state, sampling and the reference's sources. */

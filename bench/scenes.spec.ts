@@ -6,6 +6,7 @@
 import { writeFileSync } from 'node:fs';
 import { test, expect } from '../tests/e2e/fixtures';
 import { renderScene, compareImages, type ReferenceImage } from '../src/reference';
+import { defaultFrameState } from '../tests/unit/helpers/frame-state';
 import type { ColorSpace, FrameState, Shading } from '../src/frame/types';
 import { BENCH_SCENES } from './scenes';
 import { summary, shuffled } from './stats';
@@ -37,11 +38,9 @@ const spaceOf = (v: Variant): ColorSpace => v.knobs.colorSpace ?? 'srgb';
 
 function reference(i: number, colorSpace: ColorSpace): ReferenceImage {
   const b = BENCH_SCENES[i];
-  const view: FrameState = {
-    width: SIZE.width, height: SIZE.height, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: b.view.cameraPosition, yaw: b.view.yaw, pitch: b.view.pitch, colorSpace, view: 'final',
-    reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-  };
+  const view: FrameState = defaultFrameState({
+    width: SIZE.width, height: SIZE.height, spin: 0, cameraPosition: b.view.cameraPosition, yaw: b.view.yaw, pitch: b.view.pitch, colorSpace,
+  });
   return renderScene(b.scene, view, null, { samplesPerAxis: SPP_AXIS });
 }
 

@@ -12,8 +12,9 @@
 // `hash` as the first argument it prints a digest of each row's pixels at fixed times instead.
 import { createHash } from 'node:crypto';
 import { loadavg } from 'node:os';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
+import { DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
 import type { ColorSpace, FrameState } from '../src/frame/types';
+import { defaultFrameState } from '../tests/unit/helpers/frame-state';
 import { defaultScene } from '../src/scene/default-scene';
 import { SoftwareRenderer } from '../src/software';
 import { shuffled, summary } from './stats';
@@ -24,12 +25,9 @@ const WARMUP = 4;
 
 /** `turning`: the camera's yaw moves 0.05° a frame as well, so nothing is as in the frame before. */
 function state(time: number, colorSpace: ColorSpace, samples: FrameState['samples'], turning = false): FrameState {
-  return {
-    width: SIZE.width, height: SIZE.height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5,
-    fresnel: 'exact', fov: 60, cameraPosition: [...DEFAULT_CAMERA_POSITION], yaw: DEFAULT_CAMERA_ROTATION[0] + (turning ? 3 * time : 0),
-    pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace, view: 'final', reflectionScale: 1, samples, shading: 'phong',
-    tessellation: 'auto', reflectionFormat: 'rgba8',
-  };
+  return defaultFrameState({
+    width: SIZE.width, height: SIZE.height, time, yaw: DEFAULT_CAMERA_ROTATION[0] + (turning ? 3 * time : 0), colorSpace, samples,
+  });
 }
 
 type Row = [FrameState['samples'], ColorSpace, boolean?];

@@ -5,6 +5,7 @@ import { SoftwareHost } from '../src/element/software-host';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
 import { Renderer } from '../src/render/renderer';
 import type { ColorSpace, FrameState } from '../src/frame/types';
+import { defaultFrameState } from '../tests/unit/helpers/frame-state';
 import type { SoftwareTiming } from '../src/software';
 import { defaultScene } from '../src/scene/default-scene';
 import type { SceneImages } from '../src/scene/decoded-image';
@@ -20,12 +21,12 @@ const DEFAULT_VIEW: BenchView = { name: 'default', cameraPosition: [...DEFAULT_C
 
 /** The element's defaults (bench/configs.ts DEFAULTS) at `time`, in `colorSpace` (the default's unless given). */
 function frameState(size: Size, time: number, view: BenchView = DEFAULT_VIEW, colorSpace: ColorSpace = DEFAULTS.colorSpace, samples: number = DEFAULTS.samples): FrameState {
-  return {
-    width: size.width, height: size.height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5,
-    fresnel: DEFAULTS.fresnel, fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace, view: 'final',
+  return defaultFrameState({
+    width: size.width, height: size.height, time,
+    fresnel: DEFAULTS.fresnel, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace,
     reflectionScale: DEFAULTS.reflectionScale, samples, shading: DEFAULTS.shading, tessellation: DEFAULTS.tessellation,
     reflectionFormat: DEFAULTS.reflectionFormat,
-  };
+  });
 }
 
 const canvas = document.getElementById('gl') as HTMLCanvasElement;

@@ -15,6 +15,7 @@ import { bezierPatchMesh } from '../src/scene/geometry/bezier';
 import { defaultScene } from '../src/scene/default-scene';
 import { SoftwareRenderer, type SoftwareTiming } from '../src/software';
 import type { ColorSpace, FrameState } from '../src/frame/types';
+import { defaultFrameState } from '../tests/unit/helpers/frame-state';
 import { BENCH_SCENES } from './scenes';
 import { cachedReference } from './reference-cache';
 import { BAR_ALL_DB, BAR_DARK_DB } from './report';
@@ -62,11 +63,9 @@ const ONE: Sampling = { key: 'one', label: '1 (samples 0)', samplesPerAxis: 1, s
 const SSAA: Sampling = { key: 'ssaa', label: '2×2 supersampled', samplesPerAxis: 2, samples: 4 };
 
 function state(size: Size, view: BenchView, time = PIXEL_TIME, colorSpace: ColorSpace = 'srgb', samples: FrameState['samples'] = 4): FrameState {
-  return {
-    width: size.width, height: size.height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace, view: 'final',
-    reflectionScale: 1, samples, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-  };
+  return defaultFrameState({
+    width: size.width, height: size.height, time, cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace, samples,
+  });
 }
 const DEFAULT_VIEW: BenchView = { name: 'default', cameraPosition: [...DEFAULT_CAMERA_POSITION], yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1] };
 

@@ -6,6 +6,7 @@
 import { Renderer } from '../src/render/renderer';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../src/element/attributes';
 import type { FrameState } from '../src/frame/types';
+import { defaultFrameState } from '../tests/unit/helpers/frame-state';
 import { ThreePeer, type PeerOptions } from './three-peer';
 
 const q = new URLSearchParams(location.search);
@@ -14,14 +15,13 @@ const num = (k: string, d: number) => (q.has(k) ? Number(q.get(k)) : d);
 const W = num('w', 640);
 const H = num('h', 360);
 const samples = num('samples', 0) as 0 | 2 | 4;
-const state: FrameState = {
-  width: W, height: H, time: num('time', 1.25), spin: 0.8, cubeDistance: num('cube', DEFAULT_CUBE_DISTANCE), transparency: num('t', 0.5),
-  ior: num('ior', 1.5), fresnel: (q.get('fresnel') ?? 'exact') as FrameState['fresnel'], fov: 60,
+const state: FrameState = defaultFrameState({
+  width: W, height: H, time: num('time', 1.25), cubeDistance: num('cube', DEFAULT_CUBE_DISTANCE), transparency: num('t', 0.5),
+  ior: num('ior', 1.5), fresnel: (q.get('fresnel') ?? 'exact') as FrameState['fresnel'],
   cameraPosition: [num('x', DEFAULT_CAMERA_POSITION[0]), num('y', DEFAULT_CAMERA_POSITION[1]), num('z', DEFAULT_CAMERA_POSITION[2])],
   yaw: num('yaw', DEFAULT_CAMERA_ROTATION[0]), pitch: num('pitch', DEFAULT_CAMERA_ROTATION[1]),
-  colorSpace: (q.get('cs') ?? 'srgb') as FrameState['colorSpace'], view: 'final', reflectionScale: num('scale', 1), samples, shading: (q.get('shading') ?? 'phong') as FrameState['shading'], tessellation: num('segments', 64),
-  reflectionFormat: 'rgba8',
-};
+  colorSpace: (q.get('cs') ?? 'srgb') as FrameState['colorSpace'], reflectionScale: num('scale', 1), samples, shading: (q.get('shading') ?? 'phong') as FrameState['shading'], tessellation: num('segments', 64),
+});
 const peerOptions: PeerOptions = {
   samples, reflectionScale: state.reflectionScale, sphereSegments: state.tessellation as number,
   reflectionType: (q.get('type') ?? 'half') as 'half' | 'byte',

@@ -5,13 +5,13 @@
 import { test, expect, openPage, capture } from './fixtures';
 import { mountFirstFrame, mountHtml } from './helpers/scene-children';
 import type { RgbaImage } from './helpers/golden';
+import { samePixels as same } from './helpers/chunks';
 
 const SCENE = `<glass-plane-scene time="0" spin="0" style="width:160px;height:90px" pixel-ratio="1">
   <glass-object shape="sphere" position="0 1 0" diffuse="0.9 0.2 0.2" ambient="0.9 0.2 0.2"></glass-object>
   <glass-light position="2 4 3"></glass-light>
 </glass-plane-scene>`;
 
-const same = (a: RgbaImage, b: RgbaImage) => a.width === b.width && a.data.every((v, i) => v === b.data[i]);
 /** Pixels of the red sphere: clearly more red than green and blue. */
 function redPixels(img: RgbaImage): number {
   let red = 0;

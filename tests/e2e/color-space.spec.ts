@@ -8,6 +8,7 @@ import { note } from './helpers/bounds';
 import { compareImages, type RgbaImage } from './helpers/golden';
 import { drawScene, openRendererPage } from './helpers/scene-json';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from '../unit/helpers/frame-state';
 import type { Scene } from '../../src/scene/scene';
 
 const WHITE = '/tests/e2e/pages/models/white.png';
@@ -81,11 +82,8 @@ for (const renderer of ['webgl', 'software']) {
 
 test.describe('WebGL renderer', () => {
   const W = 64, H = 48;
-  const state = (colorSpace: 'srgb' | 'none'): FrameState => ({
-    width: W, height: H, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov: 60,
-    cameraPosition: [0, 0, 2.5], yaw: -90, pitch: 0, colorSpace, view: 'final', reflectionScale: 1, samples: 4, shading: 'phong',
-    tessellation: 'auto', reflectionFormat: 'rgba8',
-  });
+  const state = (colorSpace: 'srgb' | 'none'): FrameState =>
+    defaultFrameState({ width: W, height: H, spin: 0, cameraPosition: [0, 0, 2.5], yaw: -90, pitch: 0, colorSpace });
   // A 2×2 checker of 0 and 200 (not 255: decoding 255 gives 255 back), the box's face filling the view.
   const CHECKER = { checker: { width: 2, height: 2, rgba: [0, 0, 0, 255, 200, 200, 200, 255, 200, 200, 200, 255, 0, 0, 0, 255] } };
   const scene: Scene = {

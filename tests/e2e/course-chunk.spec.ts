@@ -5,11 +5,13 @@
 // view to the camera attributes, with one warning and no `error`.
 import type { Page } from '@playwright/test';
 import { test, expect, openPage, capture, type RgbaImage } from './fixtures';
+import { samePixels as same } from './helpers/chunks';
 import { mountHtml } from './helpers/scene-children';
 import { drawScene, openRendererPage, sceneToJson } from './helpers/scene-json';
 import { parseCameraCfg } from '../../src/loaders/course/camera-cfg';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from '../unit/helpers/frame-state';
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -18,7 +20,6 @@ const CFG = '/tests/data/course/camera.cfg';
 const SCENE = (attrs: string) => `<glass-plane-scene time="0" spin="0" ${attrs}></glass-plane-scene>`;
 const CHUNKS = ['camera-source', 'course-projection'];
 
-const same = (a: RgbaImage, b: RgbaImage) => a.width === b.width && a.data.every((v, i) => v === b.data[i]);
 const fetched = (page: Page) =>
   page.evaluate((names) => names.filter((n) => performance.getEntriesByType('resource').some((e) => e.name.includes(n))), CHUNKS);
 const settled = async (page: Page) => {
@@ -97,11 +98,7 @@ test('the Renderer draws a course camera from the camera attributes until load()
   await openRendererPage(page);
   const text = fs.readFileSync(path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../data/course/camera.cfg'), 'utf8');
   const { warnings: _w, ...camera } = parseCameraCfg(text, { url: 'camera.cfg' });
-  const base: FrameState = {
-    width: 160, height: 90, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: [3.6, 2.4, 0.2], yaw: -169, pitch: -23.6, colorSpace: 'srgb', view: 'final', reflectionScale: 1,
-    samples: 0, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-  };
+  const base: FrameState = defaultFrameState({ width: 160, height: 90, spin: 0, samples: 0 });
   const withCamera = { ...base, courseCamera: camera };
   const scene = sceneToJson(defaultScene(0.75, 0));
   type Api = { __renderer: { drawNow(s: FrameState, sc: unknown): string } };

@@ -12,6 +12,7 @@ import { courseProject, type CourseCamera } from '../../src/math/course-camera';
 import { renderScene, compareImages } from '../../src/reference';
 import type { Scene, SceneObject } from '../../src/scene/scene';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from '../unit/helpers/frame-state';
 
 const DATA = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../data/course');
 const URL_BASE = '/tests/data/course/';
@@ -299,11 +300,9 @@ for (const glass of [false, true]) {
     await settle(page);
     const image = await capture(page);
     const scene = await sceneOf(page);
-    const state: FrameState = {
-      width: image.width, height: image.height, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.4, ior: 1.5, fresnel: 'exact',
-      fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, colorSpace: 'srgb', view: 'final', reflectionScale: 1, samples: 4, shading: 'phong',
-      tessellation: 'auto', reflectionFormat: 'rgba8', courseCamera: camera('camera.cfg'),
-    };
+    const state: FrameState = defaultFrameState({
+      width: image.width, height: image.height, spin: 0, transparency: 0.4, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, courseCamera: camera('camera.cfg'),
+    });
     const ref = renderScene(scene, state, null, { samplesPerAxis: 4 });
     const cmp = compareImages(ref, image.data);
     const line = `course scene${glass ? ' with glass' : ''}: PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}, glass ${cmp.psnr.glass.toFixed(1)}, edges ${cmp.psnr.edges.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;

@@ -5,12 +5,9 @@ import { test, expect } from './fixtures';
 import { drawScene, openRendererPage, sceneToJson } from './helpers/scene-json';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from '../unit/helpers/frame-state';
 
-const STATE: FrameState = {
-  width: 160, height: 90, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-  fov: 60, cameraPosition: [3.6, 2.4, 0.2], yaw: -169, pitch: -23.6, colorSpace: 'srgb', view: 'final', reflectionScale: 1,
-  samples: 0, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-};
+const STATE: FrameState = defaultFrameState({ width: 160, height: 90, spin: 0, samples: 0 });
 
 test('the checks report a non-finite uniform once Renderer.load has brought them, not before', async ({ page, consoleLog }) => {
   await openRendererPage(page);

@@ -5,6 +5,7 @@
 import { test, expect, mount, openPage, capture, type Attrs } from './fixtures';
 import { renderReference } from '../../src/reference';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from '../unit/helpers/frame-state';
 import { cameraAttrs } from './helpers/stability';
 
 const SIZE = { width: 160, height: 90 };
@@ -19,9 +20,8 @@ test('a face in the glass plane is seen through the glass, as the reference draw
   await openPage(page);
   const { selector } = await mount(page, ATTRS, SIZE);
   const image = await capture(page, undefined, selector);
-  const state = (view: FrameState['view']) => ({
-    width: SIZE.width, height: SIZE.height, time: 0, spin: 0, cubeDistance: -0.5, transparency: 0.5, ior: 1.5, fresnel: 'exact' as const,
-    fov: 60, cameraPosition: EYE, yaw: -90, pitch: 0, colorSpace: 'none' as const, view,
+  const state = (view: FrameState['view']) => defaultFrameState({
+    width: SIZE.width, height: SIZE.height, spin: 0, cubeDistance: -0.5, cameraPosition: EYE, yaw: -90, pitch: 0, colorSpace: 'none', view,
   });
   const ref = renderReference(state('final'), { samplesPerAxis: 2 });
   const bare = renderReference(state('scene'), { samplesPerAxis: 2 });

@@ -7,6 +7,7 @@ import path from 'node:path';
 import { test, expect, mount, openPage, capture, nextFrame, type RgbaImage } from './fixtures';
 import { mountHtml } from './helpers/scene-children';
 import { compareToGolden, GOLDEN_DIR, readPng } from './helpers/golden';
+import { differingBytes } from '../unit/helpers/pixel-diff';
 
 const SIZE = { width: 320, height: 180 };
 const VIEWS = ['none', 'reflection', 'scene', 'fresnel', 'passes'] as const;
@@ -21,9 +22,7 @@ const CAMERAS = {
 function bytesDifferingFromNone(name: string, image: RgbaImage): number {
   const golden = readPng(path.join(GOLDEN_DIR, 'none', `${name}.png`));
   expect([image.width, image.height]).toEqual([golden.width, golden.height]);
-  let n = 0;
-  for (let i = 0; i < golden.data.length; i++) if (golden.data[i] !== image.data[i]) n++;
-  return n;
+  return differingBytes(golden.data, image.data);
 }
 
 for (const [cameraName, cameraAttrs] of Object.entries(CAMERAS)) {

@@ -2,6 +2,7 @@
 import { test, expect, openPage, mount, capture, setAttributes, type SceneElement } from './fixtures';
 import { note } from './helpers/bounds';
 import { compareImages } from './helpers/golden';
+import { diffImages } from './helpers/stability';
 
 const SIZE = { width: 160, height: 90 };
 
@@ -86,14 +87,7 @@ test('reflection-format rgba16f keeps the reflection unrounded: the glass change
   const byte = await capture(page, undefined, selector);
   await setAttributes(page, selector, { 'reflection-format': 'rgba16f' });
   const half = await capture(page, undefined, selector);
-  let changed = 0;
-  let max = 0;
-  for (let i = 0; i < byte.data.length; i += 4) {
-    let d = 0;
-    for (let c = 0; c < 3; c++) d = Math.max(d, Math.abs(byte.data[i + c] - half.data[i + c]));
-    if (d > 0) changed++;
-    max = Math.max(max, d);
-  }
+  const { changed, max } = diffImages(byte, half, 0);
   note(`rgba16f vs rgba8 at grazing incidence: ${changed} px changed, max ${max}`);
   // Measured 137 px, max 2 levels; bound 10 % under the count. (214 px with color-space none,
   // where the 8-bit reflection is linear RGBA8; held as SRGB8_ALPHA8 its steps are finer in the

@@ -9,6 +9,7 @@ import { readPng } from './helpers/golden';
 import { renderScene, compareImages, type DecodedImage } from '../../src/reference';
 import type { Scene, SceneObject } from '../../src/scene/scene';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from '../unit/helpers/frame-state';
 import { expectPsnr, note } from './helpers/bounds';
 
 const BOUND_DB = 35;
@@ -89,12 +90,11 @@ for (const [renderer, space] of CASES) test(`${renderer}, color-space ${space}: 
   const png = readPng(path.join(MODELS, 'checker.png'));
   const images = new Map<string, DecodedImage>([[url, { width: png.width, height: png.height, data: png.data }]]);
 
-  const state: FrameState = {
-    width: image.width, height: image.height, time: 0, spin: 0, cubeDistance: 0.75, transparency: view.transparency,
-    ior: view.ior, fresnel: 'exact', fov: view.fov, cameraPosition: view.position as [number, number, number],
-    yaw: view.rotation[0], pitch: view.rotation[1], colorSpace: space, view: 'final',
-    reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-  };
+  const state: FrameState = defaultFrameState({
+    width: image.width, height: image.height, spin: 0, transparency: view.transparency,
+    ior: view.ior, fov: view.fov, cameraPosition: view.position as [number, number, number],
+    yaw: view.rotation[0], pitch: view.rotation[1], colorSpace: space,
+  });
   const ref = renderScene({ ...scene, objects }, state, images, { samplesPerAxis: 4 });
   const cmp = compareImages(ref, image.data);
   const line = `${renderer} ${space}: textured OBJ + MTL, n-gon, negative indices: PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}, glass ${cmp.psnr.glass.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;

@@ -1,23 +1,21 @@
 // projection="orthographic" (docs/interaction.md#orthographic-projection): the default view drawn orthographically matches the
 // float64 reference, its reflection is still there for a viewer to see, switching back leaves
 // perspective exactly as it was, and a bad value warns once and falls back.
-import type { Page } from '@playwright/test';
 import { test, expect, mount, openPage, capture, setAttributes, nextFrame, type RgbaImage, type SceneElement } from './fixtures';
 import { renderReference, compareImages, glassReflectsCube, type ReferenceImage } from '../../src/reference';
 import type { Projection } from '../../src/frame/types';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
+import { defaultFrameState } from '../unit/helpers/frame-state';
+import { DEFAULT_CAMERA_ROTATION } from '../../src/element/attributes';
 import { formatError, maskedError, reflectsCubeMask } from './helpers/reference-match';
+import { LEVEL, pair, visibility } from './helpers/reflection-visibility';
+import { differingPixels } from '../unit/helpers/pixel-diff';
 import { expectPsnr, MARGIN_DB } from './helpers/bounds';
 
 const TIME = 1.25;
 
 /** The default scene and camera at `time`, through `projection`, as the reference draws it. */
 function reference(width: number, height: number, time: number, projection: Projection, samplesPerAxis = 1): ReferenceImage {
-  return renderReference({
-    width, height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov: 60,
-    cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace: 'none', view: 'final',
-    projection,
-  }, { samplesPerAxis });
+  return renderReference(defaultFrameState({ width, height, time, colorSpace: 'none', projection }), { samplesPerAxis });
 }
 
 function note(line: string): void {
@@ -55,39 +53,10 @@ test('orthographic default view: within 2 dB of its measured PSNR against the fl
   expect(mirrored.psnr, 'measured 50.2 dB').toBeGreaterThanOrEqual(50.2 - MARGIN_DB);
 });
 
-// reflection-visibility.spec.ts's measure: the final image with the default ior against ior 1
-// (F = 0, no reflection), per pixel the largest |Δ| over RGB.
-const LEVEL = 15;
-
-interface Visibility { max: number; atLeast15: number; cubeMax: number; cubeAtLeast15: number; cubePixels: number }
-
-function visibility(on: RgbaImage, off: RgbaImage, mask: Uint8Array): Visibility {
-  const v: Visibility = { max: 0, atLeast15: 0, cubeMax: 0, cubeAtLeast15: 0, cubePixels: 0 };
-  for (let p = 0; p < on.width * on.height; p++) {
-    const i = 4 * p;
-    const d = Math.max(Math.abs(on.data[i] - off.data[i]), Math.abs(on.data[i + 1] - off.data[i + 1]), Math.abs(on.data[i + 2] - off.data[i + 2]));
-    v.max = Math.max(v.max, d);
-    if (d >= LEVEL) v.atLeast15++;
-    if (mask[p]) {
-      v.cubePixels++;
-      v.cubeMax = Math.max(v.cubeMax, d);
-      if (d >= LEVEL) v.cubeAtLeast15++;
-    }
-  }
-  return v;
-}
-
+// reflection-visibility.spec.ts's measure (helpers/reflection-visibility.ts): the final image with the default ior
+// against ior 1 (F = 0, no reflection), per pixel the largest |Δ| over RGB.
 const cubeMask = (ref: ReferenceImage) => Uint8Array.from(ref.keys, (k) => (glassReflectsCube(k) ? 1 : 0));
 const count = (mask: Uint8Array) => mask.reduce((n, m) => n + m, 0);
-
-async function pair(page: Page, selector: string, time: number): Promise<[RgbaImage, RgbaImage]> {
-  await setAttributes(page, selector, { time, ior: null });
-  const on = await capture(page, undefined, selector);
-  await setAttributes(page, selector, { ior: 1 });
-  const off = await capture(page, undefined, selector);
-  await setAttributes(page, selector, { ior: null });
-  return [on, off];
-}
 
 test('orthographic default view at 640×360: the reflection differs plainly from no reflection where it shows the cube', async ({ page }) => {
   // The visibility bar for the perspective view at 640×360 (reflection-visibility.spec.ts): max ≥ 40
@@ -131,11 +100,7 @@ test('perspective is unchanged: back from orthographic the same pixels, and swit
   const explicit = await capture(page, undefined, selector);
   await setAttributes(page, selector, { projection: null });
   const after = await capture(page, undefined, selector);
-  const differing = (a: RgbaImage, b: RgbaImage) => {
-    let n = 0;
-    for (let i = 0; i < a.data.length; i += 4) if (a.data[i] !== b.data[i] || a.data[i + 1] !== b.data[i + 1] || a.data[i + 2] !== b.data[i + 2]) n++;
-    return n;
-  };
+  const differing = (a: RgbaImage, b: RgbaImage) => differingPixels(a.data, b.data);
   note(`perspective vs orthographic: ${differing(before, ortho)} px differ`);
   expect(differing(before, ortho), 'orthographic draws another picture (measured 37,675 px)').toBeGreaterThan(0.9 * 37_675);
   expect(differing(before, explicit), 'projection="perspective" is the default').toBe(0);

@@ -3,16 +3,15 @@
 // Fresnel term is 0), and most of that difference must sit where the glass reflects the cube.
 // Which pixels those are is decided from the geometry: the float64 reference traces each pixel's
 // primary and mirrored rays and names what they hit (sample keys), no colour involved.
-import type { Page } from '@playwright/test';
-import { test, expect, mount, openPage, capture, setAttributes, type RgbaImage } from './fixtures';
+import { test, expect, mount, openPage } from './fixtures';
 import { renderReference, glassReflectsCube } from '../../src/reference';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
+import { defaultFrameState } from '../unit/helpers/frame-state';
+import { LEVEL, pair, visibility, type Visibility } from './helpers/reflection-visibility';
 
 /** The visibility bar, at 640×360 with defaults: max ≥ 40 levels and ≥ 1,000 pixels ≥ 15 … */
 const BAR = { max: 40, pixels: 1000 };
 /** … and within the pixels where the glass reflects the cube, max ≥ 40 and ≥ 500 pixels ≥ 15. */
 const CUBE_BAR = { max: 40, pixels: 500 };
-const LEVEL = 15;
 /** Spin turns the cube; the bar must hold for any pose it takes, so several fixed clocks are checked. */
 const TIMES = [0, 1.25, 2.5, 3.75];
 
@@ -32,50 +31,10 @@ const MEASURED: Record<string, Measured> = {
   'demo 1035×717, time 1.25': { max: 76, atLeast15: 20467, cubeMax: 76, cubeAtLeast15: 13197 },
 };
 
-interface Visibility {
-  max: number;
-  atLeast15: number;
-  cubeMax: number;
-  cubeAtLeast15: number;
-  /** Pixels where the glass reflects the cube (geometry). */
-  cubePixels: number;
-}
-
-/** Per-pixel max |Δ| over RGB between the two images, summarised over all pixels and over `mask`. */
-function visibility(withReflection: RgbaImage, without: RgbaImage, mask: Uint8Array): Visibility {
-  const v: Visibility = { max: 0, atLeast15: 0, cubeMax: 0, cubeAtLeast15: 0, cubePixels: 0 };
-  const a = withReflection.data, b = without.data;
-  for (let p = 0; p < withReflection.width * withReflection.height; p++) {
-    const i = 4 * p;
-    const d = Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2]));
-    v.max = Math.max(v.max, d);
-    if (d >= LEVEL) v.atLeast15++;
-    if (mask[p]) {
-      v.cubePixels++;
-      v.cubeMax = Math.max(v.cubeMax, d);
-      if (d >= LEVEL) v.cubeAtLeast15++;
-    }
-  }
-  return v;
-}
-
 /** Pixels whose centre ray hits the glass and whose mirrored ray then hits the cube. */
 function cubeReflectionMask(width: number, height: number, time: number, fov = 60): Uint8Array {
-  const ref = renderReference({
-    width, height, time, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov,
-    cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace: 'srgb', view: 'final',
-  });
+  const ref = renderReference(defaultFrameState({ width, height, time, fov }));
   return Uint8Array.from(ref.keys, (k) => (glassReflectsCube(k) ? 1 : 0));
-}
-
-/** Final frames at `time` with the default ior and with ior 1 (no reflection), then back. */
-async function pair(page: Page, selector: string, time: number): Promise<[RgbaImage, RgbaImage]> {
-  await setAttributes(page, selector, { time, ior: null });
-  const on = await capture(page, undefined, selector);
-  await setAttributes(page, selector, { ior: 1 });
-  const off = await capture(page, undefined, selector);
-  await setAttributes(page, selector, { ior: null });
-  return [on, off];
 }
 
 function check(v: Visibility, what: string): void {

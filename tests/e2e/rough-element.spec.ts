@@ -3,10 +3,12 @@
 // `roughness="0"` as the frame without the attribute bit for bit, a bad value falling back with
 // one warning — and the demo's roughness slider writes the attribute.
 import { test, expect, openPage, capture, setAttributes } from './fixtures';
+import { differingBytes } from '../unit/helpers/pixel-diff';
 import { mountFirstFrame, mountHtml } from './helpers/scene-children';
 import { compareImages as psnrAgainst, renderScene } from '../../src/reference';
 import { FLOOR_SCENE, floorState } from './helpers/rough-scenes';
 import type { RgbaImage } from './helpers/golden';
+import { samePixels as same } from './helpers/chunks';
 
 const W = 160, H = 90;
 /** The bench's floor as markup: the glass, the cube resting on it, the sphere 1.5 above it, its camera. */
@@ -24,7 +26,6 @@ async function settled(page: import('@playwright/test').Page): Promise<RgbaImage
   return capture(page);
 }
 
-const same = (a: RgbaImage, b: RgbaImage) => a.width === b.width && a.data.every((v, i) => v === b.data[i]);
 
 for (const renderer of ['webgl', 'software']) {
   test.describe(`${renderer} renderer`, () => {
@@ -37,9 +38,7 @@ for (const renderer of ['webgl', 'software']) {
       expect(same(none, zero)).toBe(true);
       await setAttributes(page, 'glass-plane-scene', { roughness: 0.5 });
       const rough = await settled(page);
-      let changed = 0;
-      for (let i = 0; i < rough.data.length; i++) if (rough.data[i] !== none.data[i]) changed++;
-      expect(changed, 'bytes changed by roughness 0.5').toBeGreaterThan(1000);
+      expect(differingBytes(rough.data, none.data), 'bytes changed by roughness 0.5').toBeGreaterThan(1000);
       await setAttributes(page, 'glass-plane-scene', { roughness: null });
       expect(same(none, await settled(page))).toBe(true);
     });

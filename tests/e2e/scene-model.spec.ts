@@ -12,6 +12,7 @@ import { defaultScene, DEFAULT_LIGHT } from '../../src/scene/default-scene';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import type { Light, Material, Scene, SceneObject } from '../../src/scene/scene';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from '../unit/helpers/frame-state';
 import type { RgbaImage } from './helpers/golden';
 import { clusterMesh } from '../../src/scene/geometry/cluster';
 import { gaussianMesh } from '../../src/scene/geometry/gaussian';
@@ -20,11 +21,9 @@ const W = 320, H = 180;
 
 function state(position: Vec3, target: Vec3, view: FrameState['view'] = 'final'): FrameState {
   const { yaw, pitch } = lookAt(position, target);
-  return {
-    width: W, height: H, time: 0, spin: 0, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: position, yaw, pitch, colorSpace: 'none', view, reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 64,
-    reflectionFormat: 'rgba8',
-  };
+  return defaultFrameState({
+    width: W, height: H, spin: 0, cameraPosition: position, yaw, pitch, colorSpace: 'none', view, samples: 0, tessellation: 64,
+  });
 }
 
 const grey = (x: number): Vec3 => [x, x, x];

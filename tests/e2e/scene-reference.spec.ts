@@ -15,6 +15,7 @@ import { renderScene, compareImages } from '../../src/reference';
 import { DEFAULT_LIGHT } from '../../src/scene/default-scene';
 import type { Light, Material, Scene, SceneObject, Vec3 } from '../../src/scene/scene';
 import type { FrameState, Shading } from '../../src/frame/types';
+import { defaultFrameState } from '../unit/helpers/frame-state';
 import { bezierPatchMesh } from '../../src/scene/geometry/bezier';
 
 const W = 320, H = 180;
@@ -22,11 +23,7 @@ const ISSUE_BAR_DB = 35;
 
 function state(position: Vec3, target: Vec3, shading: Shading = 'phong'): FrameState {
   const { yaw, pitch } = lookAt(position, target);
-  return {
-    width: W, height: H, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov: 60,
-    cameraPosition: position, yaw, pitch, colorSpace: 'srgb', view: 'final', reflectionScale: 1, samples: 4, shading, tessellation: 'auto',
-    reflectionFormat: 'rgba8',
-  };
+  return defaultFrameState({ width: W, height: H, spin: 0, cameraPosition: position, yaw, pitch, shading });
 }
 
 const grey = (x: number): Vec3 => [x, x, x];

@@ -3,6 +3,7 @@
 // pixels it puts there with one, which are the main thread's whole frame (capture()); rough glass
 // (drawn whole by one worker) too; every worker is terminated when the element goes.
 import { test, expect, mount, openPage, type SceneElement } from './fixtures';
+import { differingBytes } from '../unit/helpers/pixel-diff';
 
 const SIZE = { width: 320, height: 180 };
 
@@ -53,9 +54,7 @@ async function canvasAndCapture(page: Page, selector: string) {
 
 function differing(a: number[], b: number[]): number {
   expect(a.length).toBe(b.length);
-  let n = 0;
-  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) n++;
-  return n;
+  return differingBytes(a, b);
 }
 
 for (const [name, attrs] of [

@@ -8,8 +8,8 @@ import { test, expect, mount, openPage, capture, setAttributes, type SceneElemen
 import { withoutWebGL2 } from './helpers/no-webgl2';
 import { compareImages as comparePixels } from './helpers/golden';
 import { renderReference, compareImages } from '../../src/reference';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION } from '../../src/element/attributes';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from '../unit/helpers/frame-state';
 import { expectPsnr } from './helpers/bounds';
 
 const SIZE = { width: 320, height: 180 };
@@ -29,11 +29,7 @@ const SOFTWARE_MEASURED = { all: 46.1, objects: 45.3, glass: 50.8, edges: 35.8 }
 const WEBGL_MEASURED = { all: 46.4, objects: 44.5, glass: 50.5, edges: 36.3 };
 
 function referenceOfDefault(time: number) {
-  const state: FrameState = {
-    width: SIZE.width, height: SIZE.height, time, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
-    colorSpace: 'srgb', view: 'final', reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-  };
+  const state: FrameState = defaultFrameState({ width: SIZE.width, height: SIZE.height, time });
   return renderReference(state, { samplesPerAxis: 4 });
 }
 

@@ -11,6 +11,7 @@
 import { test, expect, mount, openPage, capture, canvasSize, nextFrame, setAttributes, type Attrs, type SceneElement, type RgbaImage, type FrameReport } from './fixtures';
 import { renderReference, compareImages as compareWithReference } from '../../src/reference';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from '../unit/helpers/frame-state';
 import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import { cameraAttrs, debugLog, diffImages, dumpImage, formatDiff, garbagePixels, glLimits, histogram, lookAt, type FrameDiff } from './helpers/stability';
 import type { Vec3 } from './helpers/projection';
@@ -219,10 +220,9 @@ test.describe('extremes (docs/rendering.md#numerical-stability)', () => {
     }
     // And against the float64 reference there (see the PSNR bound below).
     const p = pose(1e7 - 10);
-    const ref = renderReference({
-      width: SIZE.width, height: SIZE.height, time: 1.25, spin: 0.8, cubeDistance: 1e7 - 10, transparency: 0.5, ior: 1.5,
-      fresnel: 'exact', fov: 60, colorSpace: 'none', view: 'final', cameraPosition: p.position, yaw: p.yaw, pitch: p.pitch,
-    }, { samplesPerAxis: 4 });
+    const ref = renderReference(defaultFrameState({
+      width: SIZE.width, height: SIZE.height, time: 1.25, cubeDistance: 1e7 - 10, colorSpace: 'none', cameraPosition: p.position, yaw: p.yaw, pitch: p.pitch,
+    }), { samplesPerAxis: 4 });
     const cmp = compareWithReference(ref, (await capture(page, undefined, selector)).data);
     debugLog(`cube at 1e7 − 10 vs reference: PSNR ${cmp.psnr.all.toFixed(1)} dB, max ${cmp.maxError.toFixed(0)}`);
     expect(cmp.psnr.all, 'PSNR against the reference at 1e7 (measured 47.8 dB)').toBeGreaterThanOrEqual(47.8 - MARGIN_DB);
@@ -468,10 +468,9 @@ test.describe('error against the float64 reference at the extremes (docs/renderi
         ...cameraAttrs(pose.position, pose.yaw, pose.pitch),
         'cube-distance': s.cubeDistance, transparency: s.transparency, ior: s.ior,
       });
-      const ref = renderReference({
-        width: image.width, height: image.height, time: 1.25, spin: 0.8, fresnel: 'exact', fov: 60, colorSpace: 'none', view: 'final',
-        cameraPosition: pose.position, yaw: pose.yaw, pitch: pose.pitch, ...s,
-      }, { samplesPerAxis: SPP });
+      const ref = renderReference(defaultFrameState({
+        width: image.width, height: image.height, time: 1.25, colorSpace: 'none', cameraPosition: pose.position, yaw: pose.yaw, pitch: pose.pitch, ...s,
+      }), { samplesPerAxis: SPP });
       const cmp = compareWithReference(ref, image.data);
       const row = `${c.name}: PSNR all ${cmp.psnr.all.toFixed(1)} dB (glass ${cmp.psnr.glass.toFixed(1)}, objects ${cmp.psnr.objects.toFixed(1)}, edges ${cmp.psnr.edges.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;
       rows.push(row);

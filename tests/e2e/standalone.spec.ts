@@ -5,6 +5,7 @@ import path from 'node:path';
 import { test, expect, openPage, mount, capture } from './fixtures';
 import { note } from './helpers/bounds';
 import { countUnlike } from './helpers/pixels';
+import { differingBytes } from '../unit/helpers/pixel-diff';
 
 const BUNDLE = path.resolve('dist/glass-plane-scene.standalone.js');
 
@@ -38,9 +39,7 @@ for (const [name, attrs] of [
       frames.push(await capture(page));
     }
     const [built, sources] = frames;
-    let differ = 0;
-    for (let i = 0; i < built.data.length; i++) if (built.data[i] !== sources.data[i]) differ++;
-    expect(differ, `bytes that differ between the standalone bundle and the sources (${name})`).toBe(0);
+    expect(differingBytes(built.data, sources.data), `bytes that differ between the standalone bundle and the sources (${name})`).toBe(0);
     expect(countUnlike(built, [26, 26, 26], 3), 'not an empty frame').toBeGreaterThan(2000);
   });
 }

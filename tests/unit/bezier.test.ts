@@ -4,7 +4,7 @@ import { describe, expect, it } from 'vitest';
 import {
   bezierPatchMesh, bezierPatchNormal, checkBezierPatch, evaluateBezierPatch, type BezierPatch,
 } from '../../src/scene/geometry/bezier';
-import { cross, dot, length, sub, unit, type V3 } from './obj-helpers';
+import { cross, dot, length, sub, unit, type V3 } from './helpers/obj';
 
 /** Deterministic numbers in [−1, 1) (a 32-bit LCG). */
 function random(seed: number): () => number {

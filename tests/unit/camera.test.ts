@@ -1,6 +1,6 @@
 // Camera pose → forward, view and projection (docs/default-scene.md#the-camera).
 import { describe, expect, it } from 'vitest';
-import { apply, expectClose } from './helpers';
+import { apply, expectClose } from './helpers/math';
 import { clampPitch, forwardFromYawPitch, PITCH_LIMIT, projectionMatrix, rotationOnlyView, tanHalfFov, wrapYaw } from '../../src/math/camera';
 
 describe('forwardFromYawPitch', () => {

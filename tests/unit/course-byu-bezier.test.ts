@@ -4,8 +4,8 @@ import { describe, expect, it } from 'vitest';
 import { netLength, parseByuBezier } from '../../src/loaders/course/byu-bezier';
 import { parseByu } from '../../src/loaders/course/byu';
 import { evaluateBezierPatch } from '../../src/scene/geometry/bezier';
-import { length } from './obj-helpers';
-import { expectLoadError, sample, xyz } from './course-helpers';
+import { length } from './helpers/obj';
+import { expectLoadError, sample, xyz } from './helpers/course';
 
 /** The nets the samples were written from: P(i, j) = (i·dx, j·dy, 0.25·sin(i + 2j)), rounded. */
 function heightNet(m: number, n: number, dx: number, dy: number): number[] {

@@ -3,8 +3,8 @@
 import { describe, expect, it } from 'vitest';
 import { courseVertexNormals, parseByuMesh } from '../../src/loaders/course/byu-mesh';
 import { makeChalice } from '../data/course/make-chalice';
-import { cross, dot, length, sub, unit, type V3 } from './obj-helpers';
-import { expectLoadError, sample, xyz } from './course-helpers';
+import { cross, dot, length, sub, unit, type V3 } from './helpers/obj';
+import { expectLoadError, sample, xyz } from './helpers/course';
 
 const S3 = 1 / Math.sqrt(3);
 

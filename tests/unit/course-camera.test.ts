@@ -5,8 +5,8 @@ import { parseCameraCfg } from '../../src/loaders/course/camera-cfg';
 import {
   courseBasis, courseDepthRange, courseProject, courseView, courseViewProjection, type CourseCamera, type Vec3,
 } from '../../src/math/course-camera';
-import { cross } from './obj-helpers';
-import { expectLoadError, sample } from './course-helpers';
+import { cross } from './helpers/obj';
+import { expectLoadError, sample } from './helpers/course';
 
 const R2 = Math.SQRT1_2;
 

@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { parseLightingTxt } from '../../src/loaders/course/lighting-txt';
 import { coursePhong, type CourseLight, type CourseMaterial } from '../../src/math/course-phong';
 import type { Vec3 } from '../../src/math/course-camera';
-import { expectLoadError, sample } from './course-helpers';
+import { expectLoadError, sample } from './helpers/course';
 
 const R2 = Math.SQRT1_2;
 

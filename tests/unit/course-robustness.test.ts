@@ -12,7 +12,7 @@ import { parseCameraCfg } from '../../src/loaders/course/camera-cfg';
 import { parseLightingTxt } from '../../src/loaders/course/lighting-txt';
 import { sniffCourse } from '../../src/loaders/course/sniff-course';
 import { CourseLines, isNumber } from '../../src/loaders/course/course-text';
-import { expectLoadError, sample } from './course-helpers';
+import { expectLoadError, sample } from './helpers/course';
 
 const PARSERS: [string, (text: string, o: { url: string }) => unknown][] = [
   ['parseByuMesh', parseByuMesh], ['parseByuBezier', parseByuBezier], ['parseByu', parseByu],

@@ -8,6 +8,7 @@ import { compareImages, renderScene } from '../../src/reference';
 import { FrameSetup } from '../../src/frame/frame-setup';
 import { CourseProjection } from '../../src/frame/course-projection';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from './helpers/frame-state';
 import { courseSceneRange } from '../../src/scene/course-depth';
 import { BACKGROUND, DEFAULT_LIGHT, defaultScene } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
@@ -25,11 +26,9 @@ function camera(c: Vec3, look: Vec3, up: Vec3, d: number, hx: number, hy: number
 const OBLIQUE = camera([3.6, 2.4, 4], [0, 1, 0], [0, 1, 0], 1, 0.6, 0.5);
 
 function state(cam: CourseCamera | null, over: Partial<FrameState> = {}): FrameState {
-  return {
-    width: W, height: H, time: 1.25, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: [9, 9, 9], yaw: 0, pitch: 0, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0,
-    shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8', courseCamera: cam, ...over,
-  };
+  return defaultFrameState({
+    width: W, height: H, time: 1.25, cameraPosition: [9, 9, 9], yaw: 0, pitch: 0, colorSpace: 'none', samples: 0, courseCamera: cam, ...over,
+  });
 }
 
 /** The pixel a world point lands on through setup.viewProjection (eye-relative), rows from the top. */

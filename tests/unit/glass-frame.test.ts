@@ -2,7 +2,7 @@
 // share: plane, width and height axes and corners worked out by hand for glass off the origin.
 import { describe, it } from 'vitest';
 import { glassFrame } from '../../src/scene/glass-frame';
-import { expectClose } from './helpers';
+import { expectClose } from './helpers/math';
 
 describe('glassFrame', () => {
   it('the default glass (docs/default-scene.md#the-glass): the plane z = 0, a = +X, b = +Y, corners (∓4, −1 | 3, 0)', () => {

@@ -7,7 +7,7 @@ import { SoftwareRenderer } from '../../src/software';
 import { fresnel } from '../../src/math/fresnel';
 import type { FrameState } from '../../src/frame/types';
 import type { Scene, SceneObject } from '../../src/scene/scene';
-import { AMBIENT, material, N, quad, STATE as BASE } from './quad-scenes';
+import { AMBIENT, material, N, quad, STATE as BASE } from './helpers/quad-scenes';
 
 // quad-scenes.ts's 17 × 17 frame, looking head-on at a glass wall z = 0: the centre pixel looks
 // along the normal (F = 0.04 at ior 1.5). As stored, T = 1.

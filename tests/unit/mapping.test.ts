@@ -2,7 +2,7 @@
 import { describe, expect, it } from 'vitest';
 import { cylindricalUV, sphericalUV, triplanarUV, TRIPLANAR_SHARPNESS } from '../../src/scene/mapping';
 import type { Bounds } from '../../src/scene/scene';
-import { expectClose } from './helpers';
+import { expectClose } from './helpers/math';
 
 const UNIT: Bounds = { center: [0, 0, 0], radius: 1 };
 const OFF: Bounds = { center: [1, 2, 3], radius: 2 };

@@ -1,7 +1,7 @@
 // Which mesh each object draws with: one chooser for both renderers, so the WebGL and the
 // software renderer draw the same sphere in every view (orthographic 'auto' included).
 import { describe, expect, it, vi } from 'vitest';
-import { fakeGl } from './fake-gl';
+import { fakeGl } from './helpers/fake-gl';
 import { Renderer } from '../../src/render/renderer';
 import { SoftwareRenderer } from '../../src/software';
 import { ObjectShader } from '../../src/software/object-shader';
@@ -11,12 +11,11 @@ import { AUTO_SILHOUETTE_ERROR_PX, sphereScreenRadius } from '../../src/frame/sp
 import { BACKGROUND, DEFAULT_GLASS, DEFAULT_LIGHT } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from './helpers/frame-state';
 
-const STATE: FrameState = {
-  width: 320, height: 180, time: 0, spin: 0, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-  fov: 60, cameraPosition: [0, 1, 6], yaw: -90, pitch: 0, colorSpace: 'none', view: 'scene', reflectionScale: 1, samples: 0,
-  shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-};
+const STATE: FrameState = defaultFrameState({
+  width: 320, height: 180, spin: 0, cameraPosition: [0, 1, 6], yaw: -90, pitch: 0, colorSpace: 'none', view: 'scene', samples: 0,
+});
 
 /** One sphere of radius 1 before the glass, at the origin of its own frame. */
 const SCENE: Scene = {

@@ -1,6 +1,6 @@
 // Mirror math: points, directions, the reflection matrix and the mirrored view (docs/rendering.md#pass-1-reflection).
 import { describe, expect, it } from 'vitest';
-import { apply, expectClose } from './helpers';
+import { apply, expectClose } from './helpers/math';
 import { mat4, vec4 } from 'gl-matrix';
 import { eyeRelativePlane, reflectDirection, reflectionMatrix, reflectPoint, signedDistance, type Plane } from '../../src/math/mirror';
 

@@ -4,7 +4,7 @@
 // text the whole file decodes to (what parseObjBytes did before it read bytes).
 import { afterAll, expect, vi } from 'vitest';
 import type * as Obj from '../../src/loaders/obj';
-import { expectSameOutcome, outcomeOf, type Outcome } from './obj-same';
+import { expectSameOutcome, outcomeOf, type Outcome } from './helpers/obj-same';
 
 const compared = { text: 0, bytes: 0 };
 

@@ -9,7 +9,7 @@ import { LoadError } from '../../src/loaders/load-error';
 import { parseObj, parseObjBytes, type ObjOptions, type ObjResult } from '../../src/loaders/obj';
 import { sniffModel } from '../../src/loaders/sniff';
 import { bunnyObj, dragonObj } from '../data/make-obj';
-import { expectSameOutcome, outcomeOf, type Outcome } from './obj-same';
+import { expectSameOutcome, outcomeOf, type Outcome } from './helpers/obj-same';
 
 const utf8 = (text: string): Uint8Array => new TextEncoder().encode(text);
 

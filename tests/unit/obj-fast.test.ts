@@ -11,7 +11,7 @@ import { ByteScanner } from '../../src/loaders/obj/byte-scanner';
 import { readPositionCorners } from '../../src/loaders/obj/position-corners';
 import { readObj } from '../../src/loaders/obj/reader';
 import { bunnyObj, dragonObj } from '../data/make-obj';
-import { expectSameOutcome, outcomeOf } from './obj-same';
+import { expectSameOutcome, outcomeOf } from './helpers/obj-same';
 
 const utf8 = (text: string): Uint8Array => new TextEncoder().encode(text);
 const TRI = 'v 0 0 0\nv 1 0 0\nv 0 1 0\n';

@@ -4,7 +4,7 @@ import { parseObj } from '../../src/loaders/obj';
 import {
   cross, dot, insidePolygon, length, normal, polygonArea, polygonObj, position, star, sub, triangleNormal,
   triangles, unit, type V3,
-} from './obj-helpers';
+} from './helpers/obj';
 
 /** Lays 2D points into 3D on the plane through `origin` spanned by the orthonormal `u`, `w`. */
 function plane(origin: V3, u: V3, w: V3): { to3: (p: [number, number]) => V3; to2: (p: V3) => [number, number] } {

@@ -1,7 +1,7 @@
 // OBJ statements and syntax as found in the wild (docs/scene-model.md#obj-and-mtl): one `it` per item, exact numbers.
 import { describe, expect, it } from 'vitest';
 import { normalizeObj, parseObj, parseObjBytes } from '../../src/loaders/obj';
-import { normal, position } from './obj-helpers';
+import { normal, position } from './helpers/obj';
 
 const TRI = 'v 0 0 0\nv 1 0 0\nv 0 1 0\n';
 const f32 = (xs: number[]): number[] => xs.map(Math.fround);

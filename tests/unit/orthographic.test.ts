@@ -5,7 +5,7 @@
 // enough to see it: only the reflected highlights change), sphereScreenRadius ignoring the
 // orthographic half-height (the sizes test).
 import { describe, expect, it } from 'vitest';
-import { apply, expectClose } from './helpers';
+import { apply, expectClose } from './helpers/math';
 import { forwardFromYawPitch, viewerSide } from '../../src/math/camera';
 import { MIN_ORTHO_DEPTH, orthoHalfHeight, orthographicMatrix, type OrthoView } from '../../src/math/orthographic';
 import { orthographicView } from '../../src/frame/orthographic-view';
@@ -15,17 +15,13 @@ import { sphereScreenRadius } from '../../src/frame/sphere-screen';
 import { orthoPixelsPerUnit } from '../../src/frame/reflection-lod';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from './helpers/frame-state';
 import type { Scene } from '../../src/scene/scene';
 
 const TAN30 = Math.tan(Math.PI / 6);
 
 function state(overrides: Partial<FrameState> = {}): FrameState {
-  return {
-    width: 640, height: 360, time: 1.25, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: [3.6, 2.4, 0.2], yaw: -169, pitch: -23.6, colorSpace: 'none', view: 'final',
-    reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-    projection: 'orthographic', ...overrides,
-  };
+  return defaultFrameState({ time: 1.25, colorSpace: 'none', samples: 0, projection: 'orthographic', ...overrides });
 }
 
 describe('orthoHalfHeight', () => {

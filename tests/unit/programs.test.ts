@@ -6,7 +6,7 @@ import { SharedResources } from '../../src/render/gl/shared-resources';
 import { ShaderError } from '../../src/render/gl/program';
 import { FRESNEL_MODELS } from '../../src/math/fresnel';
 import type { Shading } from '../../src/frame/types';
-import { fakeGl } from './fake-gl';
+import { fakeGl } from './helpers/fake-gl';
 
 const CLIPS: ClipMode[] = ['none', 'clip-distance', 'discard'];
 const SHADINGS: Shading[] = ['phong', 'gouraud', 'flat'];

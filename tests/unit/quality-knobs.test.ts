@@ -5,6 +5,7 @@ import { segmentsForScreenRadius, MAX_SEGMENTS, MIN_SEGMENTS } from '../../src/s
 import { sphereScreenRadius } from '../../src/frame/sphere-screen';
 import { SPHERE } from '../../src/scene/default-scene';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from './helpers/frame-state';
 
 const parse = (attr: string, raw: string | null) => ATTRIBUTE_BY_NAME.get(attr)!.parse(raw);
 
@@ -70,10 +71,8 @@ describe('reflection-format', () => {
 });
 
 describe('auto tessellation', () => {
-  const state = (z: number, height = 360): FrameState => ({
-    width: 640, height, time: 0, spin: 0, cubeDistance: 2.5, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: [1, 1, z], yaw: -90, pitch: 0, colorSpace: 'none', view: 'final',
-    reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
+  const state = (z: number, height = 360): FrameState => defaultFrameState({
+    height, spin: 0, cubeDistance: 2.5, cameraPosition: [1, 1, z], yaw: -90, pitch: 0, colorSpace: 'none', samples: 0,
   });
 
   it('measures the sphere on screen: nearer and taller buffers make it bigger', () => {

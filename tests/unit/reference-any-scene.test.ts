@@ -6,18 +6,14 @@ import {
 } from '../../src/reference';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { Geometry, Light, Material, Scene, SceneObject, Vec3 } from '../../src/scene/scene';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION } from '../../src/element/attributes';
-import { projectToPixels } from './helpers';
+import { projectToPixels } from './helpers/math';
+import { defaultFrameState } from './helpers/frame-state';
 
-const DEFAULT_VIEW: ReferenceState = {
-  width: 96, height: 54, time: 1.25, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-  fov: 60, cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace: 'none', view: 'final',
-};
+const DEFAULT_VIEW: ReferenceState = defaultFrameState({ width: 96, height: 54, time: 1.25, colorSpace: 'none' });
 /** Looking down −Z from (0, 0, 10). */
-const FRONT: ViewState = {
-  width: 160, height: 120, time: 0, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov: 40,
-  cameraPosition: [0, 0, 10], yaw: -90, pitch: 0, colorSpace: 'none', view: 'scene',
-};
+const FRONT: ViewState = defaultFrameState({
+  width: 160, height: 120, fov: 40, cameraPosition: [0, 0, 10], yaw: -90, pitch: 0, colorSpace: 'none', view: 'scene',
+});
 const WHITE = new Map([['white.png', { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }]]);
 const MATTE: Material = {
   ambient: [0.1, 0.1, 0.1], diffuse: [0.5, 0.4, 0.3], specular: [0, 0, 0], shininess: 32, opacity: 1,

@@ -1,14 +1,10 @@
 // Supersampling convergence of the reference: 16, 64 and 256 spp agree away from edges (docs/knobs.md#measuring-accuracy).
 import { describe, expect, it } from 'vitest';
 import { renderReference, REGION_EDGE, type ReferenceImage, type ReferenceState } from '../../src/reference';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
+import { defaultFrameState } from './helpers/frame-state';
 
 /** The element's default view (cube, its reflection, the sphere through the glass), shrunk to 64×36. */
-const DEFAULT_VIEW: ReferenceState = {
-  width: 64, height: 36, time: 1.25, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5,
-  fresnel: 'exact', fov: 60, cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
-  colorSpace: 'none', view: 'final',
-};
+const DEFAULT_VIEW: ReferenceState = defaultFrameState({ width: 64, height: 36, time: 1.25, colorSpace: 'none' });
 const OBLIQUE_VIEW: ReferenceState = { ...DEFAULT_VIEW, cameraPosition: [2.5, 1.6, 5], yaw: -115, pitch: -8 };
 
 interface Difference { max: number; mean: number; pixels: number }

@@ -3,11 +3,11 @@
 import { describe, expect, it } from 'vitest';
 import { renderReference, REGION_BACKGROUND, REGION_CUBE, REGION_GLASS, REGION_SPHERE, type ReferenceState } from '../../src/reference';
 import { texel } from '../../src/scene/procedural-texture';
+import { defaultFrameState } from './helpers/frame-state';
 
-const STATE: ReferenceState = {
-  width: 33, height: 33, time: 0, spin: 0, cubeDistance: 2.5, transparency: 0.5, ior: 1.5,
-  fresnel: 'exact', fov: 60, cameraPosition: [0, 1, 6], yaw: -90, pitch: 0, colorSpace: 'none', view: 'final',
-};
+const STATE: ReferenceState = defaultFrameState({
+  width: 33, height: 33, spin: 0, cubeDistance: 2.5, cameraPosition: [0, 1, 6], yaw: -90, pitch: 0, colorSpace: 'none',
+});
 const BG = 0.1;
 const L = [0.4, 1, 0.6].map((c) => c / Math.hypot(0.4, 1, 0.6));
 const TINT_DARK = [0.7 * 0.35, 0.9 * 0.35, 1.0 * 0.35];

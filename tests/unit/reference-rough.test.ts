@@ -7,8 +7,9 @@ import { describe, expect, it } from 'vitest';
 import { renderScene } from '../../src/reference';
 import { fresnel } from '../../src/math/fresnel';
 import { defaultScene } from '../../src/scene/default-scene';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
+import { DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from './helpers/frame-state';
 import type { Light, Material, Scene, SceneObject } from '../../src/scene/scene';
 
 const AMBIENT: Light = { kind: 'directional', vector: [0, 0, 1], ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0] };
@@ -35,12 +36,11 @@ const halfPlane = (z: number) => mesh(`half ${z}`, [0, -50, z, 50, -50, z, 50, 5
 
 /** 32 × 32 px, orthographic, looking down −z from z = 2 at a glass wall z = 0 (x, y ∈ [−1, 1] on screen). */
 const W = 32;
-const HEAD_ON: FrameState = {
-  width: W, height: W, time: 0, spin: 0, cubeDistance: 0, transparency: 1, ior: 1.5, fresnel: 'exact',
+const HEAD_ON: FrameState = defaultFrameState({
+  width: W, height: W, spin: 0, cubeDistance: 0, transparency: 1,
   fov: 2 * Math.atan(0.5) * (180 / Math.PI), cameraPosition: [0, 0, 2], yaw: -90, pitch: 0, target: [0, 0, 0],
-  projection: 'orthographic', colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0, shading: 'phong',
-  tessellation: 'auto', reflectionFormat: 'rgba8',
-};
+  projection: 'orthographic', colorSpace: 'none', samples: 0,
+});
 const wall = (objects: SceneObject[]): Scene => ({ glass: { center: [0, 0, 0], normal: [0, 0, 1], size: [20, 20] }, objects, lights: [AMBIENT], background: [0, 0, 0] });
 
 /** Share of D(m)·cosθm over the normals `keep` accepts that `white` also accepts (midpoint rule). */
@@ -109,11 +109,8 @@ describe('reference rough glass (docs/rough-glass.md#reference-monte-carlo)', ()
   });
 
   it('roughness 0 is the polished path bit for bit', () => {
-    const state = {
-      width: 48, height: 27, time: 1.25, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency: 0.5, ior: 1.5, fresnel: 'exact' as const, fov: 60,
-      cameraPosition: [...DEFAULT_CAMERA_POSITION] as [number, number, number], yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
-      colorSpace: 'srgb' as const, view: 'final' as const,
-    };
+    // roughness absent (undefined) here, 0 below.
+    const state = defaultFrameState({ width: 48, height: 27, time: 1.25, roughness: undefined });
     const scene = defaultScene(DEFAULT_CUBE_DISTANCE, 0.8);
     const a = renderScene(scene, state, null, { samplesPerAxis: 2 }), b = renderScene(scene, { ...state, roughness: 0 }, null, { samplesPerAxis: 2 });
     expect(Buffer.from(b.rgb.buffer).equals(Buffer.from(a.rgb.buffer))).toBe(true);

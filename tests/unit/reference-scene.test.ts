@@ -4,17 +4,13 @@ import {
   renderReference, REGION_BACKGROUND, REGION_CUBE, REGION_EDGE, REGION_GLASS, REGION_SPHERE,
   type ReferenceImage, type ReferenceState,
 } from '../../src/reference';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
-import { projectToPixels } from './helpers';
+import { projectToPixels } from './helpers/math';
+import { defaultFrameState } from './helpers/frame-state';
 
-const STATE: ReferenceState = {
-  width: 320, height: 180, time: 0, spin: 0, cubeDistance: 2.5, transparency: 0.5, ior: 1.5,
-  fresnel: 'exact', fov: 60, cameraPosition: [2, 2, 6], yaw: -109.4, pitch: -6.3, colorSpace: 'none', view: 'final',
-};
-const DEFAULT_VIEW: ReferenceState = {
-  ...STATE, width: 320, height: 180, time: 1.25, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE,
-  cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
-};
+const STATE: ReferenceState = defaultFrameState({
+  width: 320, height: 180, spin: 0, cubeDistance: 2.5, cameraPosition: [2, 2, 6], yaw: -109.4, pitch: -6.3, colorSpace: 'none',
+});
+const DEFAULT_VIEW: ReferenceState = defaultFrameState({ width: 320, height: 180, time: 1.25, colorSpace: 'none' });
 
 /** Pixels where red exceeds green: the cube (albedo 0.8, 0.3, 0.3), never the grey background or green sphere. */
 function cubeMask(img: ReferenceImage): Uint8Array {

@@ -7,6 +7,7 @@ import { DEFAULT_GLASS, defaultScene } from '../../src/scene/default-scene';
 import { texel } from '../../src/scene/procedural-texture';
 import type { Geometry, Light, Material, Scene, SceneObject, Vec3 } from '../../src/scene/scene';
 import type { DecodedImage, SceneImages } from '../../src/scene/decoded-image';
+import { defaultFrameState } from './helpers/frame-state';
 
 /** sRGB → linear, the piecewise curve written out (not src/math/srgb.ts). */
 const decode = (c: number): number => (c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4);
@@ -14,10 +15,7 @@ const decode = (c: number): number => (c <= 0.04045 ? c / 12.92 : ((c + 0.055) /
 const encode = (l: number): number => (l <= 0 ? 0 : l >= 1 ? 1 : l <= 0.0031308 ? 12.92 * l : 1.055 * l ** (1 / 2.4) - 0.055);
 
 /** 9×9 looking down −Z from (0, 0, 10): pixel (4, 4) is centred on the axis. */
-const FRONT: ViewState = {
-  width: 9, height: 9, time: 0, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov: 40,
-  cameraPosition: [0, 0, 10], yaw: -90, pitch: 0, colorSpace: 'srgb', view: 'final',
-};
+const FRONT: ViewState = defaultFrameState({ width: 9, height: 9, fov: 40, cameraPosition: [0, 0, 10], yaw: -90, pitch: 0 });
 /** Ambient light only: a surface shows Ka ⊙ tex, nothing else. */
 const AMBIENT: Light = { kind: 'directional', vector: [0, 0, 1], ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0] };
 const image = (width: number, height: number, levels: number[]): DecodedImage => ({
@@ -183,10 +181,9 @@ describe('light is summed in linear light and encoded once', () => {
 
 describe('the fresnel view', () => {
   it('shows F unencoded, the same in both colour spaces (0.04 head-on: 10)', () => {
-    const state: ReferenceState = {
-      width: 33, height: 33, time: 0, spin: 0, cubeDistance: 2.5, transparency: 0.5, ior: 1.5, fresnel: 'exact', fov: 60,
-      cameraPosition: [100.5 / 64 - 4, 300.5 / 128 - 1, 4], yaw: -90, pitch: 0, colorSpace: 'srgb', view: 'fresnel',
-    };
+    const state: ReferenceState = defaultFrameState({
+      width: 33, height: 33, spin: 0, cubeDistance: 2.5, cameraPosition: [100.5 / 64 - 4, 300.5 / 128 - 1, 4], yaw: -90, pitch: 0, view: 'fresnel',
+    });
     const srgb = renderReference(state);
     const none = renderReference({ ...state, colorSpace: 'none' });
     expect(srgb.rgb).toEqual(none.rgb);

@@ -3,7 +3,7 @@
 // first time a frame has it, nothing while the map is unchanged, again when the URL's image is
 // replaced, and frees it when a frame naming it no longer finds it. On a stand-in context.
 import { describe, expect, it } from 'vitest';
-import { fakeGl } from './fake-gl';
+import { fakeGl } from './helpers/fake-gl';
 import { defaultFrameState } from './helpers/frame-state';
 import { Renderer } from '../../src/render/renderer';
 import { BACKGROUND, DEFAULT_GLASS, DEFAULT_LIGHT } from '../../src/scene/default-scene';

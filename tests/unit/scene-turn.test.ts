@@ -15,13 +15,11 @@ import { defaultScene } from '../../src/scene/default-scene';
 import { boundsCenter, rotateScene } from '../../src/scene/group-rotation';
 import type { SceneTurn } from '../../src/scene/turn';
 import type { Light, Scene } from '../../src/scene/scene';
-import { expectClose } from './helpers';
+import { expectClose } from './helpers/math';
+import { defaultFrameState } from './helpers/frame-state';
+import { differingPixels } from './helpers/pixel-diff';
 
-const STATE: FrameState = {
-  width: 48, height: 27, time: 0.7, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-  fov: 60, cameraPosition: [3.6, 2.4, 0.2], yaw: -169, pitch: -23.6, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0,
-  shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-};
+const STATE: FrameState = defaultFrameState({ width: 48, height: 27, time: 0.7, colorSpace: 'none', samples: 0 });
 
 /** The default scene (a spinning cube before the glass, a sphere behind it), both turned, with a point light after the directional one. */
 function content(): Scene {
@@ -90,11 +88,7 @@ describe('FrameState.turn against the turned scene value', () => {
       const byState = renderer.render(scene, { ...STATE, view, turn }).slice();
       const byValue = renderer.render(rotateScene(scene, turn.objects, turn.light), { ...STATE, view }).slice();
       const plain = renderer.render(scene, { ...STATE, view }).slice();
-      let differing = 0, unturned = 0;
-      for (let p = 0; p < byState.length; p += 4) {
-        if ([0, 1, 2].some((c) => byState[p + c] !== byValue[p + c])) differing++;
-        if ([0, 1, 2].some((c) => byState[p + c] !== plain[p + c])) unturned++;
-      }
+      const differing = differingPixels(byState, byValue), unturned = differingPixels(byState, plain);
       // Measured: no pixel differs in any view (48×27). A float32 entry rounding the other way
       // could flip one pixel by a level; none does here, and the bound says so.
       expect(differing, `${view}: pixels that differ`).toBe(0);

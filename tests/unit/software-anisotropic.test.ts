@@ -6,10 +6,10 @@ import { describe, expect, it } from 'vitest';
 import { imageMipTexture, MAX_ANISOTROPY, MipTexture, proceduralMipTexture } from '../../src/software/mip-texture';
 import { SoftwareRenderer } from '../../src/software';
 import { TEXTURE_SIZE } from '../../src/scene/default-scene';
-import type { FrameState } from '../../src/frame/types';
 import type { DecodedImage } from '../../src/scene/decoded-image';
 import type { ColorSpace } from '../../src/math/srgb';
-import type { Light, Scene } from '../../src/scene/scene';
+import type { Scene } from '../../src/scene/scene';
+import { AMBIENT, material, N, STATE, unitQuad } from './helpers/quad-scenes';
 
 const S = 16;
 
@@ -144,35 +144,15 @@ describe('MipTexture, anisotropic reads (EXT_texture_filter_anisotropic)', () =>
 });
 
 describe('software renderer: anisotropic reads with srgb, isotropic with none', () => {
-  // As software-srgb.test.ts: 17×17 pixels, fov 90°, the eye at (0, 0, 2) looking down −Z; the
+  // quad-scenes.ts's frame: 17×17 pixels, fov 90°, the eye at (0, 0, 2) looking down −Z; the
   // quad x, y ∈ [−1, 1] at z = 0 covers pixels 4.25..12.75. Its u runs 0..1 across x and v 0..68
   // up y: on a 4×1 image of stripes (white, white, black, black) a pixel's footprint is
   // 4/8.5 = 0.47 texel across the stripes and 68/8.5 = 8 texels along them — the footprint of a
   // striped floor seen at a slant, with the derivatives the same at every pixel.
-  const N = 17;
-  const STATE: FrameState = {
-    width: N, height: N, time: 0, spin: 0, cubeDistance: 0, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 90, cameraPosition: [0, 0, 2], yaw: -90, pitch: 0, colorSpace: 'srgb', view: 'final', reflectionScale: 1, samples: 0,
-    shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-  };
   const stripes: DecodedImage = { width: 4, height: 1, data: new Uint8Array([255, 255, 255, 255, 255, 255, 255, 255, 0, 0, 0, 255, 0, 0, 0, 255]) };
-  const AMBIENT: Light = { kind: 'directional', vector: [0, 0, 1], ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0] };
   const scene: Scene = {
     glass: null, lights: [AMBIENT], background: [0, 0, 0],
-    objects: [{
-      geometry: {
-        kind: 'mesh', key: 'stretched quad',
-        data: {
-          positions: new Float32Array([-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0]),
-          normals: new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]),
-          uvs: new Float32Array([0, 0, 1, 0, 1, 68, 0, 68]),
-          indices: new Uint16Array([0, 1, 2, 0, 2, 3]),
-        },
-      },
-      transform: { position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
-      material: { ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0], shininess: 1, opacity: 1, texture: { kind: 'image', url: 'stripes' }, mapping: 'uv' },
-      bounds: { center: [0, 0, 0], radius: 1.5 },
-    }],
+    objects: [unitQuad(material([1, 1, 1], { kind: 'image', url: 'stripes' }), [0, 0, 1, 0, 1, 68, 0, 68], 'stretched quad')],
   };
   const IMAGES = new Map([['stripes', stripes]]);
 

@@ -11,7 +11,8 @@ import type { FrameState } from '../../src/frame/types';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
 import { SoftwareRenderer, putBand, renderBand, splitRows, type Band } from '../../src/software';
-import { CASES, IMAGES, STATE } from './software-cases';
+import { CASES, IMAGES, STATE } from './helpers/software-cases';
+import { differingBytes } from './helpers/pixel-diff';
 import { Rasterizer, VARYINGS } from '../../src/software/raster';
 
 /** The whole frame from `bands`, each drawn by its renderer of `renderers` (one per band). */
@@ -24,9 +25,7 @@ function banded(renderers: SoftwareRenderer[], bands: Band[], state: FrameState,
 
 function differing(a: Uint8ClampedArray, b: Uint8ClampedArray): number {
   expect(a.length).toBe(b.length);
-  let n = 0;
-  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) n++;
-  return n;
+  return differingBytes(a, b);
 }
 
 const whole = (state: FrameState, scene: Scene, samplesPerAxis = 1) => new SoftwareRenderer({ samplesPerAxis }).render(scene, state, IMAGES).slice();

@@ -11,12 +11,14 @@
 import { createHash } from 'node:crypto';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
+import { DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import type { FrameState } from '../../src/frame/types';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
 import { SoftwareRenderer } from '../../src/software';
-import { CASES, IMAGES, STATE } from './software-cases';
+import { CASES, IMAGES, STATE } from './helpers/software-cases';
+import { defaultFrameState } from './helpers/frame-state';
+import { differingBytes } from './helpers/pixel-diff';
 import { DEFAULT_GLASS, DEFAULT_LIGHT } from '../../src/scene/default-scene';
 
 const FILE = new URL('./software-baseline.json', import.meta.url);
@@ -53,10 +55,7 @@ for (const time of [0.4, 2.9]) {
   for (const [samples, colorSpace] of [[0, 'srgb'], [4, 'srgb'], [0, 'none'], [4, 'none']] as const) {
     frames.push({
       name: `default scene 640×360, t ${time}, samples ${samples}, ${colorSpace}`, scene: big,
-      state: {
-        ...STATE, width: 640, height: 360, time, cubeDistance: DEFAULT_CUBE_DISTANCE, cameraPosition: [...DEFAULT_CAMERA_POSITION],
-        yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace, samples,
-      },
+      state: defaultFrameState({ time, colorSpace, samples }),
     });
   }
 }
@@ -131,8 +130,7 @@ describe('software renderer: a run of frames, each as a fresh renderer draws it'
         state = { ...state, ...over, time: state.time + 0.05 };
         const got = one.render(sc ?? scene, state, IMAGES).slice();
         const want = new SoftwareRenderer().render(sc ?? scene, state, IMAGES);
-        let differing = 0;
-        for (let i = 0; i < want.length; i++) if (got[i] !== want[i]) differing++;
+        const differing = differingBytes(want, got);
         expect(differing, `${name}, ${frame} frame: bytes that differ from a fresh renderer's`).toBe(0);
       }
     }

@@ -6,12 +6,13 @@ import { Rasterizer, VARYINGS, type FragmentShader } from '../../src/software/ra
 import { SoftwareRenderer } from '../../src/software';
 import { compareImages, renderScene } from '../../src/reference';
 import { defaultScene } from '../../src/scene/default-scene';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
+import { DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import { linearToSrgbByte, type ColorSpace } from '../../src/math/srgb';
 import type { FrameState } from '../../src/frame/types';
 import type { DecodedImage } from '../../src/scene/decoded-image';
 import type { Scene, SceneObject } from '../../src/scene/scene';
-import { AMBIENT, material, N, quad, STATE as BASE } from './quad-scenes';
+import { AMBIENT, material, N, quad, STATE as BASE } from './helpers/quad-scenes';
+import { defaultFrameState } from './helpers/frame-state';
 
 const STRIDE = VARYINGS + 1;
 
@@ -161,10 +162,7 @@ describe('the software renderer honours `samples`', () => {
 
   it('the default scene: interior pixels as with one sample, edges closer to the reference', () => {
     const [W, H] = [192, 108];
-    const state: FrameState = {
-      ...STATE, width: W, height: H, time: 1.25, spin: 0.8, cubeDistance: DEFAULT_CUBE_DISTANCE, fov: 60,
-      cameraPosition: [...DEFAULT_CAMERA_POSITION], yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
-    };
+    const state: FrameState = defaultFrameState({ width: W, height: H, time: 1.25, samples: 4 });
     const s = defaultScene(DEFAULT_CUBE_DISTANCE, 0.8);
     const four = new SoftwareRenderer().render(s, state).slice();
     const one = new SoftwareRenderer().render(s, { ...state, samples: 0 }).slice();

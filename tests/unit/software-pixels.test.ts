@@ -6,35 +6,15 @@ import { describe, expect, it } from 'vitest';
 import { SoftwareRenderer } from '../../src/software';
 import type { FrameState } from '../../src/frame/types';
 import type { Light, Material, Scene } from '../../src/scene/scene';
+import { N, STATE as QUAD_STATE, unitQuad, WHITE } from './helpers/quad-scenes';
 
-// 17×17 pixels (odd: the centre pixel's centre is on the axis), vertical fov 90°, the eye at
-// (0, 0, 2) looking down −Z; the 2×2 quad on z = 0 covers pixels 4.25..12.75.
-const N = 17, EYE = [0, 0, 2];
-const STATE: FrameState = {
-  width: N, height: N, time: 0, spin: 0, cubeDistance: 0, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-  fov: 90, cameraPosition: [EYE[0], EYE[1], EYE[2]], yaw: -90, pitch: 0, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0,
-  shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-};
-const WHITE = new Map([['white', { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }]]);
+// quad-scenes.ts's 17×17 pixels (odd: the centre pixel's centre is on the axis), vertical fov 90°,
+// the eye at (0, 0, 2) looking down −Z; the 2×2 quad on z = 0 covers pixels 4.25..12.75.
+const EYE = [0, 0, 2];
+const STATE: FrameState = { ...QUAD_STATE, colorSpace: 'none' };
 
 function quadScene(material: Material, lights: Light[], background: [number, number, number]): Scene {
-  return {
-    glass: null, background, lights,
-    objects: [{
-      geometry: {
-        kind: 'mesh', key: 'quad',
-        data: {
-          positions: new Float32Array([-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0]),
-          normals: new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]),
-          uvs: new Float32Array(8),
-          indices: new Uint16Array([0, 1, 2, 0, 2, 3]),
-        },
-      },
-      transform: { position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
-      material,
-      bounds: { center: [0, 0, 0], radius: 1.5 },
-    }],
-  };
+  return { glass: null, background, lights, objects: [unitQuad(material)] };
 }
 
 /** The point of the quad seen through the centre of pixel (i, j): eye + 2·(x_ndc, y_ndc, −1). */

@@ -6,6 +6,7 @@ import { CLIP_DISTANCE, Rasterizer, VARYINGS, type FragmentShader } from '../../
 import { SoftwareRenderer } from '../../src/software';
 import type { FrameState } from '../../src/frame/types';
 import type { Scene } from '../../src/scene/scene';
+import { AMBIENT, material, STATE as QUAD_STATE, unitQuad, WHITE } from './helpers/quad-scenes';
 
 const STRIDE = VARYINGS + 3;
 
@@ -129,15 +130,7 @@ describe('shared edges', () => {
     }
     for (let k = 0; k < n; k++) draw(r, rec, [[16.5, 16.5], ring[k], ring[(k + 1) % n]]);
     // Inside the polygon (point-in-polygon by crossings; centres exactly on the rim excluded).
-    let missed = 0, twice = 0;
-    for (let y = 0; y < H; y++) {
-      for (let x = 0; x < W; x++) {
-        const c = rec.count[y * W + x];
-        if (c > 1) twice++;
-        if (c === 0 && strictlyInside(ring, x + 0.5, y + 0.5)) missed++;
-      }
-    }
-    expect({ missed, twice }).toEqual({ missed: 0, twice: 0 });
+    expect(coverageFaults(rec, ring)).toEqual({ missed: 0, twice: 0 });
 
     // A jittered 9×9 vertex grid over [2, 30]², alternate diagonals; vertices on centres,
     // corners and arbitrary 1/256 positions.
@@ -151,15 +144,7 @@ describe('shared edges', () => {
     }
     const outline = [...[0, 1, 2, 3, 4, 5, 6, 7, 8].map((i) => p(i, 0)), ...[1, 2, 3, 4, 5, 6, 7, 8].map((j) => p(8, j)),
       ...[7, 6, 5, 4, 3, 2, 1, 0].map((i) => p(i, 8)), ...[7, 6, 5, 4, 3, 2, 1].map((j) => p(0, j))];
-    missed = twice = 0;
-    for (let y = 0; y < H; y++) {
-      for (let x = 0; x < W; x++) {
-        const c = grid.count[y * W + x];
-        if (c > 1) twice++;
-        if (c === 0 && strictlyInside(outline, x + 0.5, y + 0.5)) missed++;
-      }
-    }
-    expect({ missed, twice }).toEqual({ missed: 0, twice: 0 });
+    expect(coverageFaults(grid, outline)).toEqual({ missed: 0, twice: 0 });
   });
 
   it('a kt = 0.5 mesh of two triangles sharing a diagonal over a black background: no pixel blended twice or missed', () => {
@@ -167,33 +152,11 @@ describe('shared edges', () => {
     // of a 16×16 image: the diagonal runs through the centres (k + ½, k + ½).
     const W = 16;
     const scene: Scene = {
-      glass: null, background: [0, 0, 0],
-      lights: [{ kind: 'directional', vector: [0, 0, 1], ambient: [1, 1, 1], diffuse: [0, 0, 0], specular: [0, 0, 0] }],
-      objects: [{
-        geometry: {
-          kind: 'mesh', key: 'quad',
-          data: {
-            positions: new Float32Array([-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0]),
-            normals: new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]),
-            uvs: new Float32Array(8),
-            indices: new Uint16Array([0, 1, 2, 0, 2, 3]),
-          },
-        },
-        transform: { position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
-        material: {
-          ambient: [0.8, 0.8, 0.8], diffuse: [0, 0, 0], specular: [0, 0, 0], shininess: 1, opacity: 0.5,
-          texture: { kind: 'image', url: 'white' }, mapping: 'uv',
-        },
-        bounds: { center: [0, 0, 0], radius: 1.5 },
-      }],
+      glass: null, background: [0, 0, 0], lights: [AMBIENT],
+      objects: [unitQuad(material([0.8, 0.8, 0.8], { kind: 'image', url: 'white' }, 0.5))],
     };
-    const white = new Map([['white', { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }]]);
-    const state: FrameState = {
-      width: W, height: W, time: 0, spin: 0, cubeDistance: 0, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-      fov: 90, cameraPosition: [0, 0, 2], yaw: -90, pitch: 0, colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0,
-      shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-    };
-    const rgba = new SoftwareRenderer().render(scene, state, white);
+    const state: FrameState = { ...QUAD_STATE, width: W, height: W, colorSpace: 'none' };
+    const rgba = new SoftwareRenderer().render(scene, state, WHITE);
     const once = Math.round(0.8 * 0.5 * 255), twiceBlended = Math.round((0.8 * 0.5 + 0.4 * 0.5) * 255);
     let blendedTwice = 0, missed = 0, onDiagonal = 0;
     for (let y = 4; y < 12; y++) {
@@ -211,6 +174,19 @@ describe('shared edges', () => {
     expect(rgba[4 * (12 * W + 12)]).toBe(0);
   });
 });
+
+/** Pixels `rec` saw more than one fragment at, and pixels whose centre is strictly inside `outline` that it saw none at. */
+function coverageFaults(rec: Recorder, outline: number[][]): { missed: number; twice: number } {
+  let missed = 0, twice = 0;
+  for (let y = 0; y < rec.height; y++) {
+    for (let x = 0; x < rec.width; x++) {
+      const c = rec.count[y * rec.width + x];
+      if (c > 1) twice++;
+      if (c === 0 && strictlyInside(outline, x + 0.5, y + 0.5)) missed++;
+    }
+  }
+  return { missed, twice };
+}
 
 /** Even-odd test; points within 1e-9 of an edge count as outside. */
 function strictlyInside(poly: number[][], x: number, y: number): boolean {

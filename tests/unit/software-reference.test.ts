@@ -9,7 +9,7 @@ import { compareImages, renderScene, type ImageComparison } from '../../src/refe
 import { defaultScene } from '../../src/scene/default-scene';
 import type { FrameState } from '../../src/frame/types';
 import { SoftwareRenderer } from '../../src/software';
-import { CASES, IMAGES, STATE, type Case, type Figures } from './software-cases';
+import { CASES, IMAGES, STATE, type Case, type Figures } from './helpers/software-cases';
 
 const SAMPLES = 4;
 

@@ -8,29 +8,25 @@ import { describe, expect, it } from 'vitest';
 import { SoftwareRenderer } from '../../src/software';
 import { compareImages, renderScene } from '../../src/reference';
 import { defaultScene, DEFAULT_LIGHT, defaultMaterial } from '../../src/scene/default-scene';
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
+import { DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import { roughFloorScene, ROUGH_FLOOR_VIEW } from '../../bench/rough-scene';
 import { HORIZON_SCENE, horizonState } from '../e2e/helpers/rough-scenes';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from './helpers/frame-state';
+import { differingBytes } from './helpers/pixel-diff';
 import type { Scene, SceneObject, Vec3 } from '../../src/scene/scene';
 
 const W = 160, H = 90;
 
 function floorState(roughness: number, ior = 10): FrameState {
   const v = ROUGH_FLOOR_VIEW;
-  return {
-    width: W, height: H, time: 0, spin: 0, cubeDistance: 0, transparency: 0.5, ior, fresnel: 'exact', fov: 60,
-    cameraPosition: v.cameraPosition, yaw: v.yaw, pitch: v.pitch, colorSpace: 'srgb', view: 'final', reflectionScale: 1,
-    samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8', roughness,
-  };
+  return defaultFrameState({
+    width: W, height: H, spin: 0, cubeDistance: 0, ior, cameraPosition: v.cameraPosition, yaw: v.yaw, pitch: v.pitch, roughness,
+  });
 }
 
 function wallState(roughness: number, transparency = 0.5): FrameState {
-  return {
-    width: W, height: H, time: 0, spin: 0, cubeDistance: DEFAULT_CUBE_DISTANCE, transparency, ior: 1.5, fresnel: 'exact', fov: 60,
-    cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1], colorSpace: 'srgb',
-    view: 'final', reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8', roughness,
-  };
+  return defaultFrameState({ width: W, height: H, spin: 0, transparency, roughness });
 }
 
 /** 2×2 strata per pixel, 64 microfacet normals each (its noise: ≥ 51 dB against 4096 at 0.3). */
@@ -73,9 +69,7 @@ describe('software renderer: roughness 0 is the polished glass', () => {
       const b = new SoftwareRenderer().render(sc, polished).slice();
       expect(Buffer.from(a).equals(Buffer.from(b))).toBe(true);
       const c = new SoftwareRenderer().render(sc, { ...st, roughness: 0.05 });
-      let changed = 0;
-      for (let i = 0; i < a.length; i++) if (a[i] !== c[i]) changed++;
-      expect(changed).toBeGreaterThan(100);
+      expect(differingBytes(a, c)).toBeGreaterThan(100);
     }
   });
 });

@@ -11,7 +11,7 @@ import { linearToSrgb, linearToSrgbByte, srgbToLinear, type ColorSpace } from '.
 import { texel } from '../../src/scene/procedural-texture';
 import { TEXTURE_SIZE } from '../../src/scene/default-scene';
 import type { FrameState } from '../../src/frame/types';
-import { AMBIENT, material, N, quad, STATE } from './quad-scenes';
+import { AMBIENT, material, N, quad, STATE } from './helpers/quad-scenes';
 import type { DecodedImage } from '../../src/scene/decoded-image';
 import type { Glass, Scene, SceneObject } from '../../src/scene/scene';
 

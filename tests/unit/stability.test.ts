@@ -6,6 +6,7 @@ import { describe, expect, it } from 'vitest';
 import { mat4 } from 'gl-matrix';
 import { FrameSetup, type DrawMatrices } from '../../src/frame/frame-setup';
 import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from './helpers/frame-state';
 import { clampPitch, forwardFromYawPitch, PITCH_LIMIT, projectionMatrix, rotationOnlyView } from '../../src/math/camera';
 import { fresnel, FRESNEL_MODELS } from '../../src/math/fresnel';
 import { ATTRIBUTE_BY_NAME } from '../../src/element/attributes';
@@ -21,12 +22,10 @@ const H = 360;
 const CUBE_CENTRE = (d: number): Vec3 => [-1, 1, d];
 
 function state(overrides: Partial<FrameState> = {}): FrameState {
-  return {
-    width: W, height: H, time: 1.25, spin: 0.8, cubeDistance: 2.5, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-    fov: 60, cameraPosition: [5.25, 3, 1], yaw: -170.8, pitch: -19.6, colorSpace: 'none', view: 'final',
-    reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
+  return defaultFrameState({
+    width: W, height: H, time: 1.25, cubeDistance: 2.5, cameraPosition: [5.25, 3, 1], yaw: -170.8, pitch: -19.6, colorSpace: 'none', samples: 0,
     ...overrides,
-  };
+  });
 }
 
 function setupFor(overrides: Partial<FrameState>): FrameSetup {

@@ -2,6 +2,7 @@
 import { describe, expect, it } from 'vitest';
 import { buildProceduralTexture, proceduralTexture, texel, textureNoise } from '../../src/scene/procedural-texture';
 import { TEXTURE_SIZE } from '../../src/scene/default-scene';
+import { differingBytes } from './helpers/pixel-diff';
 
 /** The §3 hash written again, in BigInt arithmetic modulo 2³², so it shares no code with the module. */
 function referenceNoise(x: number, y: number): number {
@@ -99,9 +100,7 @@ describe('proceduralTexture', () => {
     const again = buildProceduralTexture();
     expect(again === data, 'a new array').toBe(false); // not .not.toBe: that formats both 1 MB arrays
     expect(again.length).toBe(data.length);
-    let differing = 0;
-    for (let i = 0; i < data.length; i++) if (again[i] !== data[i]) differing++;
-    expect(differing, 'bytes that differ between two builds').toBe(0);
+    expect(differingBytes(data, again), 'bytes that differ between two builds').toBe(0);
   });
 
   it('is built once: later calls return the same array', () => {

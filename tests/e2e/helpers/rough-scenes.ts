@@ -5,6 +5,7 @@
 import { DEFAULT_LIGHT, defaultMaterial, defaultScene } from '../../../src/scene/default-scene';
 import { roughFloorScene, SPHERE_HEIGHT } from '../../../bench/rough-scene';
 import type { FrameState } from '../../../src/frame/types';
+import { defaultFrameState } from '../../unit/helpers/frame-state';
 import type { Scene, Vec3 } from '../../../src/scene/scene';
 import { lookAt } from './stability';
 
@@ -26,12 +27,10 @@ export interface RoughView {
 
 function state(from: Vec3, to: Vec3, v: RoughView): FrameState {
   const { yaw, pitch } = lookAt(from, to);
-  return {
-    width: v.width, height: v.height, time: 0, spin: 0, cubeDistance: 0.75, transparency: v.transparency ?? 0.5, ior: v.ior ?? 10,
-    fresnel: 'exact', fov: 60, cameraPosition: from, yaw, pitch, colorSpace: 'srgb', view: 'final', reflectionScale: 1, samples: 4,
-    shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8', roughness: v.roughness,
-    ...(v.quality ? { roughnessQuality: v.quality } : {}),
-  };
+  return defaultFrameState({
+    width: v.width, height: v.height, spin: 0, transparency: v.transparency ?? 0.5, ior: v.ior ?? 10, cameraPosition: from, yaw, pitch,
+    roughness: v.roughness, ...(v.quality ? { roughnessQuality: v.quality } : {}),
+  });
 }
 
 /** The floor seen from above at a slant (the bench's rough-floor view). */

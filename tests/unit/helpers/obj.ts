@@ -1,5 +1,5 @@
 // Small readers over an ObjResult for the loader tests: vertices, triangles, areas.
-import type { ObjResult } from '../../src/loaders/obj';
+import type { ObjResult } from '../../../src/loaders/obj';
 
 export type V3 = [number, number, number];
 

@@ -1,8 +1,8 @@
 // The byte parser against the text parser: the same ObjResult bit for bit, or the same LoadError.
 import { expect } from 'vitest';
 // Imports no parser (only its types): obj-bytes-suite.test.ts uses it inside a mock of obj.ts.
-import { LoadError } from '../../src/loaders/load-error';
-import type { ObjResult } from '../../src/loaders/obj';
+import { LoadError } from '../../../src/loaders/load-error';
+import type { ObjResult } from '../../../src/loaders/obj';
 
 export type Outcome = { ok: true; result: ObjResult } | { ok: false; error: unknown };
 

@@ -1,12 +1,12 @@
 // The software renderer's test scenes (docs/software-renderer.md): the cases software-reference.test.ts compares
 // with the float64 reference (with the figures measured there) and software-baseline.test.ts
 // holds to the bit, at 160×90.
-import { DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION } from '../../src/element/attributes';
-import { BACKGROUND, DEFAULT_GLASS, DEFAULT_LIGHT, defaultScene } from '../../src/scene/default-scene';
-import type { Geometry, Material, Scene, SceneObject } from '../../src/scene/scene';
-import type { FrameState } from '../../src/frame/types';
-import type { DecodedImage } from '../../src/reference';
-import { bezierPatchMesh } from '../../src/scene/geometry/bezier';
+import { BACKGROUND, DEFAULT_GLASS, DEFAULT_LIGHT, defaultScene } from '../../../src/scene/default-scene';
+import type { Geometry, Material, Scene, SceneObject } from '../../../src/scene/scene';
+import type { FrameState } from '../../../src/frame/types';
+import type { DecodedImage } from '../../../src/reference';
+import { bezierPatchMesh } from '../../../src/scene/geometry/bezier';
+import { defaultFrameState } from './frame-state';
 
 /** A bicubic Bézier bump (docs/software-renderer.md#bezier-surfaces) at E = 40, as the course's .byu loader makes it. */
 function bezierBump() {
@@ -29,11 +29,7 @@ export interface Figures {
   dark?: number | null;
 }
 
-export const STATE: FrameState = {
-  width: 160, height: 90, time: 1.25, spin: 0.8, cubeDistance: 0.75, transparency: 0.5, ior: 1.5, fresnel: 'exact',
-  fov: 60, cameraPosition: DEFAULT_CAMERA_POSITION, yaw: DEFAULT_CAMERA_ROTATION[0], pitch: DEFAULT_CAMERA_ROTATION[1],
-  colorSpace: 'none', view: 'final', reflectionScale: 1, samples: 0, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8',
-};
+export const STATE: FrameState = defaultFrameState({ width: 160, height: 90, time: 1.25, colorSpace: 'none', samples: 0 });
 
 const MATTE: Material = {
   ambient: [0.2, 0.2, 0.2], diffuse: [0.8, 0.8, 0.8], specular: [0.5, 0.5, 0.5], shininess: 32, opacity: 1,

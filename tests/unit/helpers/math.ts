@@ -1,7 +1,7 @@
 // Shared assertions for the float64 math tests.
 import { expect } from 'vitest';
 import { mat4, vec4 } from 'gl-matrix';
-import { projectionMatrix } from '../../src/math/camera';
+import { projectionMatrix } from '../../../src/math/camera';
 
 /** Every component of `actual` within `eps` of `expected` (same length). */
 export function expectClose(actual: ArrayLike<number>, expected: ArrayLike<number>, eps = 1e-12): void {

@@ -3,9 +3,9 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { expect } from 'vitest';
-import { LoadError } from '../../src/loaders/load-error';
+import { LoadError } from '../../../src/loaders/load-error';
 
-const DATA = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../data/course');
+const DATA = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../data/course');
 
 /** A sample's text, decoded as the element decodes a fetched body (UTF-8, BOM kept in the string). */
 export function sample(name: string): string {
