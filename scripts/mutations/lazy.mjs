@@ -108,7 +108,7 @@ export default [
     tests: [CHUNKS],
   },
   {
-    name: 'Z20 the centre of a value built before the group rotation came is never found (the turn about the origin)',
+    name: 'Z20 the centre of a value built after the group rotation came is never found (the turn about the old centre)',
     edits: [{ file: 'src/element/scene-value.ts', find: '      this.centered = false;\n      this.builds++;', replace: '      this.centered = true;\n      this.builds++;' }],
     tests: [CHUNKS],
   },

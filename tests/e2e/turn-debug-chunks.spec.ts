@@ -74,6 +74,26 @@ test('objectRotation without controls: frames wait for the group rotation (held 
   expect(after.position, 'the turn moved the first object').not.toEqual(before.position);
 });
 
+test('a scene value built after the group rotation is in turns about its own centre (the content moved, the turn kept)', async ({ page }) => {
+  // A quarter turn of the scene with the cube at -2: set up so from the start, or moved there after
+  // the turn or before it, the picture must be the same (the renderers turn about the centre
+  // SceneValue finds for each value it builds; `scene` finds its own).
+  const picture = async (attrs: string, steps: string[]) => {
+    await openPage(page);
+    await mountHtml(page, SCENE(`controls="trackball" ${attrs}`));
+    for (const step of steps) {
+      await page.evaluate((step) => new Function('el', step)(document.querySelector('glass-plane-scene')), step);
+      await wait(page, 200); // a frame drawn, its value built, between the changes
+    }
+    return capture(page);
+  };
+  const turn = `el.objectRotation = ${JSON.stringify(QUARTER)};`, move = 'el.setAttribute("cube-distance", "-2");';
+  const fromTheStart = await picture('cube-distance="-2"', [turn]);
+  expect(same(await picture('', [move]), fromTheStart), 'the turn changes the picture').toBe(false);
+  expect(same(await picture('', [turn, move]), fromTheStart), 'turned, then moved').toBe(true);
+  expect(same(await picture('', [move, turn]), fromTheStart), 'moved, then turned').toBe(true);
+});
+
 test('with controls="trackball" the group rotation comes with the controls: `scene` is turned in the same task', async ({ page }) => {
   const ref = await turnedReference(page);
   await openPage(page);
