@@ -57,7 +57,7 @@ export class SceneValue {
     }
     const code = this.rotation;
     if (!this.centered && code) {
-      this.center.set(code.boundsCenter(this.value.objects));
+      code.boundsCenter(this.value.objects, this.center);
       this.centered = true;
     }
     return this.value;

@@ -56,7 +56,7 @@ export function reflectDirection<T extends Out3>(out: T, d: ReadonlyVec3, plane:
 
 /** out = the 4×4 reflection matrix of the plane (column-major, det −1, its own inverse). */
 export function reflectionMatrix<T extends Out16>(out: T, plane: Plane): T {
-  const [a, b, c, d] = [plane[0], plane[1], plane[2], plane[3]];
+  const a = plane[0], b = plane[1], c = plane[2], d = plane[3];
   out[0] = 1 - 2 * a * a; out[1] = -2 * a * b;    out[2] = -2 * a * c;     out[3] = 0;
   out[4] = -2 * a * b;    out[5] = 1 - 2 * b * b; out[6] = -2 * b * c;     out[7] = 0;
   out[8] = -2 * a * c;    out[9] = -2 * b * c;    out[10] = 1 - 2 * c * c; out[11] = 0;

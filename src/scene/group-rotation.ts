@@ -24,12 +24,17 @@ function multiply(out: quat, a: ArrayLike<number>, b: ArrayLike<number>): quat {
   return out;
 }
 
-/** The rotation by `deg` degrees about axis `i` (0 x, 1 y, 2 z). */
-function axisQuat(i: number, deg: number): Float64Array {
-  const h = (deg * DEG) / 2, q = new Float64Array([0, 0, 0, Math.cos(h)]);
-  q[i] = Math.sin(h);
-  return q;
+/** out = the rotation by `deg` degrees about axis `i` (0 x, 1 y, 2 z). */
+function axisQuat(out: Float64Array, i: number, deg: number): Float64Array {
+  const h = (deg * DEG) / 2;
+  out.fill(0);
+  out[i] = Math.sin(h);
+  out[3] = Math.cos(h);
+  return out;
 }
+
+// eulerToQuat's two axis rotations: a frame's and a gesture's turns allocate nothing.
+const AXIS_A = new Float64Array(4), AXIS_B = new Float64Array(4);
 
 /**
  * out = v turned by the unit quaternion q: t = 2 (q⃗ × v), out = v + w t + q⃗ × t (the same
@@ -49,8 +54,8 @@ function rotateVector(out: number[] | Float64Array, q: ArrayLike<number>, vx: nu
 
 /** Rz·Ry·Rx of Euler degrees (x applied first), as the renderers build it. */
 export function eulerToQuat(out: quat, rotation: readonly number[]): quat {
-  multiply(out, axisQuat(2, rotation[2]), axisQuat(1, rotation[1]));
-  return multiply(out, out, axisQuat(0, rotation[0]));
+  multiply(out, axisQuat(AXIS_A, 2, rotation[2]), axisQuat(AXIS_B, 1, rotation[1]));
+  return multiply(out, out, axisQuat(AXIS_A, 0, rotation[0]));
 }
 
 /** Euler degrees [x, y, z] with Rz·Ry·Rx = the rotation of `q`; x = 0 at gimbal lock. */
@@ -66,12 +71,12 @@ export function quatToEuler(q: ReadonlyQuat): Vec3 {
 }
 
 /** Centre of the box around the objects' world bounding spheres (their spin aside); the origin for none. */
-export function boundsCenter(objects: readonly SceneObject[]): Vec3 {
-  if (objects.length === 0) return [0, 0, 0];
-  const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
-  const q = (new Float64Array([0, 0, 0, 1]) as unknown as quat), c = new Float64Array(3);
-  for (const o of objects) {
-    const { position, rotation, scale } = o.transform, b = o.bounds.center;
+export function boundsCenter<T extends number[] | Float64Array | Float32Array>(objects: readonly SceneObject[], out: T): T {
+  out[0] = 0; out[1] = 0; out[2] = 0;
+  if (objects.length === 0) return out;
+  const lo = BOX_LO.fill(Infinity), hi = BOX_HI.fill(-Infinity), q = BOX_Q, c = BOX_C;
+  for (let k = 0; k < objects.length; k++) {
+    const o = objects[k], { position, rotation, scale } = o.transform, b = o.bounds.center;
     rotateVector(c, eulerToQuat(q, rotation), b[0] * scale[0], b[1] * scale[1], b[2] * scale[2]);
     for (let i = 0; i < 3; i++) c[i] += position[i];
     const r = o.bounds.radius * Math.max(Math.abs(scale[0]), Math.abs(scale[1]), Math.abs(scale[2]));
@@ -80,9 +85,13 @@ export function boundsCenter(objects: readonly SceneObject[]): Vec3 {
       hi[i] = Math.max(hi[i], c[i] + r);
     }
   }
-  const mid = (i: number) => (Number.isFinite(lo[i] + hi[i]) ? (lo[i] + hi[i]) / 2 : 0);
-  return [mid(0), mid(1), mid(2)];
+  for (let i = 0; i < 3; i++) out[i] = Number.isFinite(lo[i] + hi[i]) ? (lo[i] + hi[i]) / 2 : 0;
+  return out;
 }
+
+// boundsCenter's scratch: a gesture's start asks for the centre, and asks allocate nothing.
+const BOX_LO = new Float64Array(3), BOX_HI = new Float64Array(3), BOX_C = new Float64Array(3);
+const BOX_Q = new Float64Array(4) as unknown as quat;
 
 /** The objects turned by `q` about `center`: position c + q·(p − c), rotation q·R. */
 export function rotateObjects(objects: readonly SceneObject[], q: ReadonlyQuat, center: Vec3): readonly SceneObject[] {
@@ -110,7 +119,7 @@ export function rotateLight(light: Light, q: ReadonlyQuat, center: Vec3): Light 
 /** `scene` with the trackball's object and light rotations applied about the objects' centre. */
 export function rotateScene(scene: Scene, objects: ReadonlyQuat, light: ReadonlyQuat): Scene {
   if (isIdentity(objects) && isIdentity(light)) return scene;
-  const center = boundsCenter(scene.objects);
+  const center = boundsCenter(scene.objects, [0, 0, 0]);
   return {
     ...scene,
     objects: rotateObjects(scene.objects, objects, center),

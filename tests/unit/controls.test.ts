@@ -218,7 +218,7 @@ describe('the trackball\'s rotation of the scene', () => {
 
   it('turns each object about the centre: model\' = T(c)·Q·T(−c)·model', () => {
     const objects = [obj([1, 0, 0], [10, 20, 30]), obj([-1, 2, 0.5], [0, -40, 0])];
-    const c = boundsCenter(objects);
+    const c = boundsCenter(objects, [0, 0, 0]);
     expect(c).toEqual([0, 1, 0.25]);
     const q = quat.setAxisAngle(q64(), vec3.normalize(v64(), [1, 2, -1]), 0.7);
     const turned = rotateObjects(objects, q, c);
@@ -272,7 +272,7 @@ describe('the group rotation\'s own quaternion arithmetic (the core does without
       expect([...eulerToQuat(q64(), e)]).toEqual([...qe]);
       const c = vec3.add(v64(), vec3.transformQuat(v64(), vec3.multiply(v64(), o.bounds.center as vec3, o.transform.scale as vec3), qe), o.transform.position as vec3);
       // One object: the middle of its box is its centre, (c − r + c + r) / 2, to rounding.
-      const b = boundsCenter([o]), rad = o.bounds.radius * Math.max(...o.transform.scale.map(Math.abs));
+      const b = boundsCenter([o], [0, 0, 0]), rad = o.bounds.radius * Math.max(...o.transform.scale.map(Math.abs));
       expect(b).toEqual([0, 1, 2].map((i) => (c[i] - rad + (c[i] + rad)) / 2));
       const centre: [number, number, number] = [r(), r(), r()];
       const p = vec3.add(v64(), vec3.transformQuat(v64(), vec3.subtract(v64(), o.transform.position as vec3, centre), q), centre);

@@ -2,7 +2,7 @@
 // frame's one question starts and waits for, the failure policy, and no allocation when nothing
 // is pending. The declarations themselves: render/parts.ts, element/parts.ts, and their chunks.
 import fs from 'node:fs';
-import { PerformanceObserver } from 'node:perf_hooks';
+import { collections } from './helpers/collections';
 import { describe, expect, it } from 'vitest';
 import { LazyParts, type LazyPartSpec, type PartListener } from '../../src/frame/lazy-parts';
 import { CHUNKS } from '../../src/frame/chunks';
@@ -147,17 +147,6 @@ describe('LazyParts', () => {
     expect(fetches).toBe(1); // the fetch went on, and what it brought was left
   });
 });
-
-/** Runs `body` and counts the garbage collections it caused (node's 'gc' performance entries). */
-async function collections(body: () => void): Promise<number> {
-  let count = 0;
-  const observer = new PerformanceObserver((list) => { count += list.getEntries().length; });
-  observer.observe({ entryTypes: ['gc'] });
-  body();
-  await new Promise((r) => setTimeout(r, 50));
-  observer.disconnect();
-  return count;
-}
 
 describe('the frame\'s one question allocates nothing when nothing is pending', () => {
   const CALLS = 2_000_000;

@@ -37,7 +37,7 @@ const q64 = (axis: [number, number, number], deg: number) => {
   return quat.setAxisAngle(q, [axis[0] / n, axis[1] / n, axis[2] / n], (deg * Math.PI) / 180);
 };
 const NONE = new Float64Array([0, 0, 0, 1]) as unknown as quat;
-const CENTER = boundsCenter(content().objects);
+const CENTER = boundsCenter(content().objects, [0, 0, 0]);
 
 const TURNS: [string, SceneTurn][] = [
   ['objects only', { objects: q64([0.3, 1, -0.2], 37), light: NONE, center: CENTER }],

@@ -46,6 +46,8 @@ export class ControlsInput implements Controller {
   private readonly flyby: FlybyController;
   private readonly input: FlybyInput;
   private readonly pointer: PointerControls;
+  /** Where an orbit about the objects' centre turns: filled at a gesture's start. */
+  private readonly target = new Float64Array(3);
   private lookTimer: ReturnType<typeof setTimeout> | undefined;
   /** The camera moved since the last write-back. */
   private cameraDirty = false;
@@ -84,7 +86,7 @@ export class ControlsInput implements Controller {
       objectRotation: host.objectRotation as unknown as quat, lightRotation: host.lightRotation as unknown as quat,
       mode: () => (host.values.controls === 'orbit' || host.values.controls === 'trackball' ? host.values.controls as PointerMode : null),
       pose: () => host.pose,
-      target: () => host.values.cameraTarget ?? boundsCenter(host.scene().objects),
+      target: () => host.values.cameraTarget ?? boundsCenter(host.scene().objects, this.target),
       fov: () => host.values.fov,
       changed: (camera) => {
         // A trackball turn moves objects, not the camera: no write-back, no camera-change for it.

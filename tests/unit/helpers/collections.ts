@@ -1,0 +1,21 @@
+// Garbage collections counted around a loop: how the tests see allocation in code a frame runs.
+import { PerformanceObserver, performance } from 'node:perf_hooks';
+
+/**
+ * Runs `body` and counts the garbage collections that started while it ran (node's 'gc'
+ * performance entries, delivered after it). Collections in the wait for that delivery — the
+ * test runner's own messages — are not the body's and are not counted.
+ */
+export async function collections(body: () => void): Promise<number> {
+  let count = 0, start = Infinity, end = Infinity;
+  const observer = new PerformanceObserver((list) => {
+    for (const e of list.getEntries()) if (e.startTime >= start && e.startTime <= end) count++;
+  });
+  observer.observe({ entryTypes: ['gc'] });
+  start = performance.now();
+  body();
+  end = performance.now();
+  await new Promise((r) => setTimeout(r, 50));
+  observer.disconnect();
+  return count;
+}
