@@ -71,7 +71,7 @@ export function quatToEuler(q: ReadonlyQuat): Vec3 {
 }
 
 /** Centre of the box around the objects' world bounding spheres (their spin aside); the origin for none. */
-export function boundsCenter<T extends number[] | Float64Array | Float32Array>(objects: readonly SceneObject[], out: T): T {
+export function boundsCenter<T extends [number, number, number] | Float64Array | Float32Array>(objects: readonly SceneObject[], out: T): T {
   out[0] = 0; out[1] = 0; out[2] = 0;
   if (objects.length === 0) return out;
   const lo = BOX_LO.fill(Infinity), hi = BOX_HI.fill(-Infinity), q = BOX_Q, c = BOX_C;
