@@ -30,6 +30,14 @@ export class RoughGather {
   fixedLevel = -1;
   /** Sample-grid cells per pixel along an axis (the gather works in pixels, reads the grid). */
   cells = 1;
+  /**
+   * Grid cells along an axis that one glass fragment stands for: 1 where every sample is shaded,
+   * the pixel's 2 under 2× multisampling (one fragment per pixel, as WebGL shades). The gather
+   * centres on that footprint and reads its centre there, exactly: a centre read at the pixel's
+   * level from a sample off the pixel's centre mixed in the neighbouring pixel, so an object
+   * touching the glass, seen through it, blurred by half a pixel and never hardened.
+   */
+  footprint = 1;
   private width = 0;
   private height = 0;
   private vp: Float64Array = new Float64Array(16);
@@ -102,14 +110,15 @@ export class RoughGather {
     // too, which keeps its share of the lobe — a scale s, unbounded, lost it: 29.4 dB in WebGL).
     const P0 = this.eye[0] + rel[0], P1 = this.eye[1] + rel[1], P2 = this.eye[2] + rel[2], at = this.at;
     if (!this.project(P0, P1, P2)) return false;
-    const qx = at[0], qy = at[1], step = 1e-3 * L;
+    const ax = at[0], ay = at[1], step = 1e-3 * L;
     if (!this.project(P0 + step * e1[0], P1 + step * e1[1], P2 + step * e1[2])) return false;
-    const m00 = (at[0] - qx) / 1e-3, m10 = (at[1] - qy) / 1e-3;
+    const m00 = (at[0] - ax) / 1e-3, m10 = (at[1] - ay) / 1e-3;
     if (!this.project(P0 + step * e2[0], P1 + step * e2[1], P2 + step * e2[2])) return false;
-    const m01 = (at[0] - qx) / 1e-3, m11 = (at[1] - qy) / 1e-3;
+    const m01 = (at[0] - ax) / 1e-3, m11 = (at[1] - ay) / 1e-3;
     A[0] = m00 * J[0] + m01 * J[2]; A[1] = m00 * J[1] + m01 * J[3];
     A[2] = m10 * J[0] + m11 * J[2]; A[3] = m10 * J[1] + m11 * J[3];
-    return this.rings(out, pass, qx, qy, c, L);
+    const f = this.footprint;
+    return this.rings(out, pass, f * (Math.floor(ax / f) + 0.5), f * (Math.floor(ay / f) + 0.5), c, L);
   }
 
   /** The bench's comparison: the reflection at one mip level wherever the pixel is (FrameState.fixedBlurLevel). */
@@ -155,10 +164,10 @@ export class RoughGather {
     const A0 = A[0] / s, A1 = A[1] / s, A2 = A[2] / s, A3 = A[3] / s, detPx = det / (s * s);
     const sq = A0 * A0 + A1 * A1 + A2 * A2 + A3 * A3;
     const smax = Math.sqrt((sq + Math.sqrt(Math.max(0, sq * sq - 4 * detPx * detPx))) / 2);
-    const lodCells = Math.log2(s), { angles, lodBias } = this.settings;
+    const lodCells = Math.log2(s), lodCentre = Math.log2(this.footprint), { angles, lodBias } = this.settings;
     const rings = roughRings(this.alpha, smax), px = qx / s, py = qy / s;
     const t = this.texel, bg = this.background;
-    this.read(image, qx, qy, lodCells);
+    this.read(image, qx, qy, lodCentre);
     const gq = this.scaleOf(t[4] + 1 - t[3], c, L);
     let sum = 0, r = 0, g = 0, b = 0;
     for (let ring = -1; ring < rings; ring++) {
@@ -166,7 +175,7 @@ export class RoughGather {
       const inner = ring < 0 ? 0 : ring === 0 ? ROUGH_FIRST_RING / 2 : ROUGH_FIRST_RING * 2 ** (ring - 1);
       const count = ring < 0 ? 1 : angles, mid = ring < 0 ? 0 : (inner + outer) / 2;
       const area = ((Math.PI * (outer * outer - inner * inner)) / count) * (detPx / (smax * smax));
-      const level = (ring < 0 ? 0 : Math.max(0, 0.5 * Math.log2(area) + lodBias)) + lodCells;
+      const level = ring < 0 ? lodCentre : Math.max(0, 0.5 * Math.log2(area) + lodBias) + lodCells;
       const xo = outer / smax, xi = inner / smax;
       for (let i = 0; i < count; i++) {
         const phi = (2 * Math.PI * (i + 0.5 * (ring & 1))) / count;

@@ -236,6 +236,7 @@ export class SoftwareRenderer {
     g.settings = ROUGH_GATHER[state.roughnessQuality ?? 'medium'];
     g.fixedLevel = state.fixedBlurLevel ?? -1;
     g.cells = W / width;
+    g.footprint = r.shadeEvery;
     const v = s.viewVectorMain;
     this.forward[0] = -v[0]; this.forward[1] = -v[1]; this.forward[2] = -v[2];
     for (let k = 0; k < 3; k++) this.viewerNormal[k] = s.side * plane[k];
