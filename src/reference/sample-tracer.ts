@@ -1,7 +1,7 @@
 // One sample of one view: primary ray, what lies behind the glass (B), the mirror ray (R), composited.
 import { viewerSide } from '../math/camera';
 import { reflectPoint, signedDistance, type Plane } from '../math/mirror';
-import type { Scene } from '../scene/scene';
+import { MAX_LIGHTS, type Scene } from '../scene/scene';
 import { setClipRange, visible } from './clip';
 import { courseSceneRange } from '../scene/course-depth';
 import { CAMERA } from '../scene/default-scene';
@@ -86,7 +86,7 @@ export class SampleTracer {
     this.camera = new ViewCamera(view, scene.glass?.center ?? null, range);
     this.scene = new RayScene(scene, view.time);
     this.codes = this.scene.codes;
-    this.lights = scene.lights.map(prepareLight);
+    this.lights = scene.lights.slice(0, MAX_LIGHTS).map(prepareLight); // as the renderers: docs/scene-model.md#lights
     this.texture = new SurfaceTexture(filter, view.colorSpace, images);
     const bg = scene.background;
     for (let k = 0; k < 3; k++) this.backgroundColour[k] = view.colorSpace === 'srgb' ? srgbToLinear(bg[k]) : bg[k];

@@ -70,6 +70,7 @@ export interface Light {
   specular: Vec3;
 }
 
+/** Lights a scene is drawn with: its first MAX_LIGHTS, by every renderer and the reference (docs/scene-model.md#lights). */
 export const MAX_LIGHTS = 4;
 
 export interface Glass {
@@ -84,7 +85,7 @@ export interface Scene {
   /** Null: no glass, hence no glass pass and no reflection pass (a plain model viewer). */
   glass: Glass | null;
   objects: readonly SceneObject[];
-  /** 1..MAX_LIGHTS lights. */
+  /** Its lights; the first MAX_LIGHTS light it. */
   lights: readonly Light[];
   /** Clear colour, also of the reflection. */
   background: Vec3;

@@ -17,6 +17,7 @@ import type { Light, Material, Scene, SceneObject, Vec3 } from '../../src/scene/
 import type { FrameState, Shading } from '../../src/frame/types';
 import { defaultFrameState } from '../unit/helpers/frame-state';
 import { bezierPatchMesh } from '../../src/scene/geometry/bezier';
+import { FIFTH, FOUR, litBy } from '../unit/helpers/lights';
 
 const W = 320, H = 180;
 const ISSUE_BAR_DB = 35;
@@ -155,3 +156,12 @@ for (const c of CASES) {
     expectPsnr(cmp, c.measured, c.name);
   });
 }
+
+test('a fifth light is left out, as by the software renderer and the reference (docs/scene-model.md#lights)', async ({ page }) => {
+  const st = defaultFrameState({ width: 96, height: 54, spin: 0 });
+  const four = await drawScene(page, st, litBy(FOUR)), five = await drawScene(page, st, litBy([...FOUR, FIFTH]));
+  const other = await drawScene(page, st, litBy([...FOUR.slice(1), FIFTH]));
+  const differing = (a: Uint8Array, b: Uint8Array) => a.reduce((n, v, i) => n + (v !== b[i] ? 1 : 0), 0);
+  expect(differing(other.data, four.data)).toBeGreaterThan(1000); // the fifth light shows where it is used
+  expect(differing(five.data, four.data)).toBe(0);
+});
