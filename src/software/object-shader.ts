@@ -277,9 +277,12 @@ export class ObjectShader implements FragmentShader {
   repeat(sample: number): void {
     const c = this.colour, o = 3 * sample;
     const alpha = this.draw.material.opacity;
+    // A transparent fragment writes its distance code as an opaque one does: it writes depth in
+    // WebGL, whose codes come from depth; without it, one over the background was no surface to
+    // rough glass, and vanished.
+    if (this.codes !== null) this.codes[sample] = this.code;
     if (alpha >= 1) {
       c[o] = this.cr; c[o + 1] = this.cg; c[o + 2] = this.cb;
-      if (this.codes !== null) this.codes[sample] = this.code;
     } else {
       // colour·(1 − kt) + framebuffer·kt (docs/software-renderer.md#transparency), kt = 1 − opacity.
       const a = alpha > 0 ? alpha : 0;

@@ -29,6 +29,21 @@ function wallState(roughness: number, transparency = 0.5): FrameState {
   return defaultFrameState({ width: W, height: H, spin: 0, transparency, roughness });
 }
 
+/** A clear wall (T = 1, ior 1.5) seen head-on. */
+function headOn(roughness: number): FrameState {
+  return defaultFrameState({
+    width: W, height: H, spin: 0, transparency: 1, ior: 1.5, roughness, samples: 1, cameraPosition: [0, 1, 4], yaw: -90, pitch: 0,
+  });
+}
+
+const HALF_CLEAR_SPHERE: Scene = {
+  ...defaultScene(DEFAULT_CUBE_DISTANCE, 0), background: [0, 0, 0],
+  objects: [{
+    geometry: { kind: 'sphere', radius: 0.6 }, transform: { position: [0, 1, -0.8], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
+    material: { ...defaultMaterial([0.9, 0.9, 0.9]), opacity: 0.5 }, bounds: { center: [0, 0, 0], radius: 0.6 },
+  }],
+};
+
 /** 2×2 strata per pixel, 64 microfacet normals each (its noise: ≥ 51 dB against 4096 at 0.3). */
 const REFERENCE = { samplesPerAxis: 2, microfacetSamples: 64 };
 
@@ -48,6 +63,9 @@ describe('software renderer: rough glass against the reference (docs/rough-glass
     ['long floor at grazing incidence', () => HORIZON_SCENE, (r) => horizonState({ width: W, height: H, roughness: r, ior: 10 }), 0.3, 36.6], // 37.07 (26.95)
     // T = 1, ior 1.5: F ≤ 0.04 head-on, so the glass shows mostly B̃ (the sphere through it).
     ['clear wall', () => defaultScene(DEFAULT_CUBE_DISTANCE, 0), (r) => wallState(r, 1), 0.5, 32.2], // 32.77 (26.07)
+    // A half-transparent sphere behind a clear wall, nothing behind it but the background: it
+    // counts as a surface (29.14 when its fragments wrote no distance code: it vanished).
+    ['half-transparent sphere behind a clear wall', () => HALF_CLEAR_SPHERE, headOn, 0.3, 54.6], // 55.11
   ];
   for (const [name, scene, state, roughness, bound] of cases) {
     it(`${name}, roughness ${roughness}: the glass within the bound, and closer than the polished frame`, () => {
@@ -178,9 +196,7 @@ describe('software renderer: contact hardening through the glass', () => {
   const background: Vec3 = [0, 0, 0];
   const base = { ...defaultScene(DEFAULT_CUBE_DISTANCE, 0), background };
   const full: Scene = { ...base, objects: [slab(-0.8, 0.01), slab(0.8, 2)] }, empty: Scene = { ...base, objects: [] };
-  const state = (roughness: number) => defaultFrameState({
-    width: W, height: H, spin: 0, transparency: 1, ior: 1.5, roughness, samples: 1, cameraPosition: [0, 1, 4], yaw: -90, pitch: 0,
-  });
+  const state = headOn;
   // Supersampled grids read the glass's centre where it is, on the grid (before: at the pixel's
   // mip level from off its centre, 0.083 and 0.070 for the near slab, as blurred as the far one).
   for (const samplesPerAxis of [1, 2, 3]) {
