@@ -5,11 +5,11 @@
 // object it makes goes with the renderer. Scenes: helpers/rough-scenes.ts.
 import { test, expect } from './fixtures';
 import { drawScene, openRendererPage, sceneToJson } from './helpers/scene-json';
-import { MARGIN_DB, note } from './helpers/bounds';
+import { note } from './helpers/bounds';
 import { countGlObjects, glCensus, liveTotal } from './helpers/gl-census';
 import { maskedError, formatError } from './helpers/reference-match';
 import { project, type Camera } from './helpers/projection';
-import { renderScene, type ReferenceImage } from '../../src/reference';
+import { compareImages, renderScene, type ReferenceImage } from '../../src/reference';
 import { srgbToLinear } from '../../src/math/srgb';
 import type { FrameState } from '../../src/frame/types';
 import { courseBasis, type CourseCamera } from '../../src/math/course-camera';
@@ -43,6 +43,26 @@ function glassWithEdges(ref: ReferenceImage): Uint8Array {
 }
 
 const W = 160, H = 90;
+
+/**
+ * How far under its measured figure each case's bound sits. Frames here are deterministic (the
+ * same to 0.05 dB from run to run) and so is the reference's Monte Carlo: 2 dB, the other
+ * accuracy specs' margin, let a 0.3–0.5 dB loss in the gather pass unseen.
+ */
+const MARGIN_DB = 0.3;
+
+/** A half-transparent sphere behind a clear wall with nothing but the background behind it. */
+const HALF_CLEAR_SPHERE: Scene = {
+  ...withoutObjects(WALL_SCENE), background: [0, 0, 0],
+  objects: [{
+    geometry: { kind: 'sphere', radius: 0.6 }, transform: { position: [0, 1, -0.8], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
+    material: { ...WALL_SCENE.objects[1].material, opacity: 0.5 }, bounds: { center: [0, 0, 0], radius: 0.6 },
+  }],
+};
+
+function headOn(v: RoughView): FrameState {
+  return { ...wallState(v), transparency: 1, cameraPosition: [0, 1, 4], yaw: -90, pitch: 0 };
+}
 
 interface Case {
   name: string;
@@ -86,6 +106,9 @@ const CASES: Case[] = [
   // Grazing: the background's share of the lobe dropped where its eye ray would not go beyond the glass, as the reference
   // drops rays that leave beyond the horizon (kept: 34.8 dB); sharp frame 25.9 dB.
   { name: 'a long floor at grazing incidence', scene: HORIZON_SCENE, state: horizonState, roughness: 0.3, ior: 10, measured: 40.2 },
+  // Depth written by its fragments gives it a distance code: it is a surface to the gather
+  // (without: 28.0 dB, the sphere gone from the frame beyond the glass); sharp frame 44.1 dB.
+  { name: 'a half-transparent sphere behind a clear wall', scene: HALF_CLEAR_SPHERE, state: headOn, roughness: 0.3, ior: 1.5, measured: 51.3 },
 ];
 
 for (const c of CASES) {
@@ -272,52 +295,34 @@ test('the bench\'s comparison (fixedBlurLevel): level 0 is the polished reflecti
 });
 
 /** Pixels where each box shows in the polished frame, measured (the box in front, the box beneath the glass). */
-const MEASURED_FRONT_PX = 333, MEASURED_BEHIND_PX = 277;
-test('semi-transparent boxes over a rough glass: one on the viewer\'s side stays over it, one beyond it is seen through it', async ({ page }) => {
+test('semi-transparent boxes over a rough glass: one on the viewer\'s side stays over it, one beyond it is seen through it, both against the reference', async ({ page }) => {
   const box = (position: Vec3): Scene['objects'][number] => ({
     geometry: { kind: 'box', size: 0.8 },
     transform: { position, rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 },
     material: { ...FLOOR_SCENE.objects[0].material, ambient: [0.2, 0.3, 1], diffuse: [0.2, 0.3, 1], opacity: 0.5, texture: { kind: 'none' } },
     bounds: { center: [0, 0, 0], radius: Math.sqrt(3) * 0.4 },
   });
-  const state = floorState({ width: W, height: H, roughness: 0.3 });
-  // Where the box changes the polished frame by more than `threshold` (linear R + G + B), how much it
-  // changes the rough frame there, as a share of that.
-  const share = async (base: Scene, position: Vec3, threshold: number) => {
-    const scene: Scene = { ...base, objects: [...base.objects, box(position)] };
-    const change = async (roughness: number) => {
-      const a = await drawScene(page, { ...state, roughness }, scene);
-      const b = await drawScene(page, { ...state, roughness }, base);
-      return Array.from({ length: H }, (_, y) => rowDifference(a, b, y));
-    };
-    const polished = await change(0), rough = await change(0.3);
-    let count = 0, sumPolished = 0, sumRough = 0;
-    for (let y = 0; y < H; y++) {
-      for (let x = 0; x < W; x++) {
-        if (Math.abs(polished[y][x]) < threshold) continue;
-        count++;
-        sumPolished += Math.abs(polished[y][x]);
-        sumRough += Math.abs(rough[y][x]);
-      }
-    }
-    return { count, share: sumRough / sumPolished };
-  };
-  // Beneath the glass, an opaque slab behind the box: a transparent object seen against the
-  // background alone leaves no coverage in the frame beyond the glass, and rough glass shows
-  // the background there (as the software renderer does).
+  // Beneath the glass, an opaque slab behind the box.
   const slab: Scene['objects'][number] = {
     ...FLOOR_SCENE.objects[0], transform: { position: [0, -1.6, 0], rotation: [0, 0, 0], scale: [8, 0.2, 8], spin: 0 },
     bounds: { center: [0, 0, 0], radius: Math.sqrt(3) / 2 },
   };
-  const front = await share(FLOOR_SCENE, [0.2, 0.6, 2.4], 0.1);
-  const behind = await share({ ...FLOOR_SCENE, objects: [...FLOOR_SCENE.objects, slab] }, [0.2, -0.7, 1.8], 0.02);
-  const line = `the box in front: ${front.count} px, the rough frame changes ${(100 * front.share).toFixed(0)}% as much as the polished; `
-    + `beneath the glass: ${behind.count} px, ${(100 * behind.share).toFixed(0)}%`;
-  note(line);
-  expect(front.count, line).toBeGreaterThan(MEASURED_FRONT_PX * 0.8);
-  expect(behind.count, line).toBeGreaterThan(MEASURED_BEHIND_PX * 0.8);
-  // Measured 1.23 (its blurred reflection changes too); drawn before the glass, which erased it, far less.
-  expect(front.share, line).toBeGreaterThanOrEqual(0.9);
-  // Measured 0.15 (blurred through the glass, dimmed by (1 − F)·T); drawn over the glass unblurred when the glass leaves no depth.
-  expect(behind.share, line).toBeLessThanOrEqual(0.5);
+  const state = floorState({ width: W, height: H, roughness: 0.3 });
+  // [name, scene, measured: the objects' PSNR (the box in front among them), the glass's]. The
+  // front box's blurred reflection, with no depth from its fragments, was background to the
+  // gather: glass 30.5 dB. Drawn before the glass, which erased it, the objects fall far.
+  const cases = [
+    ['the box in front', { ...FLOOR_SCENE, objects: [...FLOOR_SCENE.objects, box([0.2, 0.6, 2.4])] }, 41.1, 39.6],
+    ['the box beneath the glass', { ...FLOOR_SCENE, objects: [...FLOOR_SCENE.objects, slab, box([0.2, -0.7, 1.8])] }, 42.6, 32.8],
+  ] as const;
+  for (const [name, scene, objects, glass] of cases) {
+    const ref = renderScene(scene, state, null, { samplesPerAxis: 2 });
+    const image = await drawScene(page, state, scene);
+    const onGlass = maskedError(ref, image, glassWithEdges(ref)), all = compareImages(ref, image.data);
+    const line = `${name}: glass ${formatError(onGlass)}; objects ${all.psnr.objects.toFixed(1)} dB`;
+    note(line);
+    expect(all.psnr.objects, line).toBeGreaterThanOrEqual(objects - MARGIN_DB);
+    expect(onGlass.psnr, line).toBeGreaterThanOrEqual(glass - MARGIN_DB);
+  }
 });
+

@@ -88,7 +88,8 @@ export function drawObjects(
         gl.enable(gl.BLEND);
         // Straight alpha over what is drawn; the target's alpha stays 1 for the glass pass.
         gl.blendFuncSeparate(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA, gl.ZERO, gl.ONE);
-        gl.depthMask(false);
+        // Into rough glass's images (the reflection, the frame beyond the glass) with depth.
+        gl.depthMask(ctx.transparentDepth && (mirrored || farSide !== null));
       }
       setMatrices(gl, program, mirrored ? m.mirrored : m.main);
       setMaterial(gl, program, o);

@@ -31,6 +31,12 @@ export interface PassContext {
   cull: boolean;
   /** Pass 1 draws only inside this rectangle of its target, or everywhere when null. */
   scissor: Viewport | null;
+  /**
+   * Transparent objects write depth too in the reflection and the frame beyond the glass: rough
+   * glass's distance codes come from those passes' depth, and a transparent surface with only the background behind it is a surface to the
+   * gather (docs/rough-glass.md#the-gather). Off otherwise: depth from transparent objects decides nothing.
+   */
+  transparentDepth: boolean;
   /** Triangles submitted since the frame began, by the eye they were drawn from. */
   triangles: { scene: number; reflection: number };
 }
