@@ -102,6 +102,13 @@ describe('a model\'s MTL: texture URLs (docs/scene-model.md#obj-and-mtl)', () =>
   const OBJ = 'mtllib ../materials/a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl wood\nf 1 2 3\nusemtl glass\nf 3 2 1\n';
   const load = (url: string) => loadModel(url, new AbortController().signal, () => {});
 
+  it('resolves a map_Kd path against the MTL\'s own URL, not the model\'s', async () => {
+    stubFetch({ [MODEL]: OBJ, [MTL]: 'newmtl wood\nmap_Kd tex/wood.png\n' });
+    const model = await load(MODEL);
+    expect(model.materials.get('wood')?.texture).toBe('http://x/materials/tex/wood.png');
+    expect(model.warnings).toEqual([]);
+  });
+
   it('costs a map_Kd path that is no URL only that texture, with a warning naming the MTL and the line', async () => {
     stubFetch({ [MODEL]: OBJ, [MTL]: 'newmtl wood\nKd 1 0 0\nmap_Kd http://[bad\n\nnewmtl glass\nd 0.5\nmap_Kd glass.png\n' });
     const model = await load(MODEL);
