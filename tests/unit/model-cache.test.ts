@@ -4,6 +4,8 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import { acquireModel } from '../../src/element/children/model-cache';
 import { GlassObject } from '../../src/element/children/glass-object';
+import { GlassLight } from '../../src/element/children/glass-light';
+import { CameraSource } from '../../src/element/camera-source';
 import { stubFetch } from './helpers/fetch-stub';
 
 const OBJ = 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n';
@@ -29,9 +31,8 @@ describe('the model cache', () => {
   });
 });
 
-/** A <glass-object> without a DOM: connected, its events collected. */
-function connectedObject(): { el: GlassObject; types: string[] } {
-  const el = new GlassObject();
+/** A child element without a DOM: connected, its events collected. */
+function connected<T extends GlassObject | GlassLight>(el: T): { el: T; types: string[] } {
   const types: string[] = [];
   Object.assign(el, {
     isConnected: true,
@@ -47,12 +48,44 @@ describe('<glass-object src> after a failed load', () => {
     vi.stubGlobal('document', { baseURI: 'http://x/page/' });
     const url = 'http://x/element/busy.obj';
     const { requests } = stubFetch({ [url]: [503, OBJ] });
-    const { el, types } = connectedObject();
+    const { el, types } = connected(new GlassObject());
     el.attributeChangedCallback('src', null, url);
     await vi.waitFor(() => expect(types).toContain('error'));
     el.attributeChangedCallback('src', url, url);
     await vi.waitFor(() => expect(types).toContain('load'));
     expect(requests).toEqual([url, url]);
     expect(el.toSceneObjects()).toHaveLength(1);
+  });
+});
+
+describe('the course\'s files after a failed load (docs/course-files.md#load-errors)', () => {
+  const LIGHTING = '0 0 10\n0.2\n255 255 255\n0.8\n1 1 1\n0.5\n255 255 255\n8\n';
+
+  it('<glass-light src> set again to the same URL fetches the lighting file again', async () => {
+    vi.spyOn(console, 'error').mockImplementation(() => {});
+    vi.stubGlobal('document', { baseURI: 'http://x/page/' });
+    const url = 'http://x/light/iluminacao.txt';
+    const { requests } = stubFetch({ [url]: [503, LIGHTING] });
+    const { el, types } = connected(new GlassLight());
+    el.attributeChangedCallback('src', null, url);
+    await vi.waitFor(() => expect(types).toContain('error'));
+    el.attributeChangedCallback('src', url, url);
+    await vi.waitFor(() => expect(types).toContain('load'));
+    expect(requests).toEqual([url, url]);
+  });
+
+  it('camera-src set again to the same URL fetches the camera file again', async () => {
+    vi.spyOn(console, 'error').mockImplementation(() => {});
+    vi.stubGlobal('document', { baseURI: 'http://x/page/' });
+    const url = 'http://x/camera/busy.cfg';
+    const { requests } = stubFetch({ [url]: [503, '0 0 10\n0 0 -1\n0 1 0\n1 1 1\n'] });
+    const types: string[] = [];
+    const element = { isConnected: true, dispatchEvent: (e: Event) => types.push(e.type) > 0 } as unknown as HTMLElement;
+    const source = new CameraSource({ element, src: () => url, changed: () => {} });
+    source.srcChanged();
+    await vi.waitFor(() => expect(types).toContain('error'));
+    source.srcChanged();
+    await vi.waitFor(() => expect(source.camera).not.toBeNull());
+    expect(requests).toEqual([url, url]);
   });
 });
