@@ -63,7 +63,7 @@ export default [
   },
   {
     name: 'B10 a face with a bad corner kept on the fast path',
-    edits: [{ file: 'src/loaders/obj/reader.ts', find: "if (cornerLists.add(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) !== '') {", replace: "if (cornerLists.add(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) === '#') {" }],
+    edits: [{ file: 'src/loaders/obj/reader.ts', find: 'fault = cornerLists.add(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount);', replace: 'cornerLists.add(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount);' }],
     tests: [EQUAL],
   },
   {
@@ -172,8 +172,8 @@ export default [
     tests: [FAST],
   },
   {
-    name: 'B32 a bare face of fewer than 3 corners kept',
-    edits: [{ file: 'src/loaders/obj/reader.ts', find: 'if (count >= 3) corners.length = start + count;', replace: 'if (count >= 0) corners.length = start + count;' }],
+    name: 'B32 a bare face of fewer than 3 corners kept (read as a triangle)',
+    edits: [{ file: 'src/loaders/obj/reader.ts', find: 'corners.length = start + count;', replace: 'corners.length = start + Math.max(count, 3);' }],
     tests: [FAST, EQUAL],
   },
   {

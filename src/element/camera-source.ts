@@ -88,6 +88,8 @@ export class CameraSource implements Controller {
       (e) => {
         if (this.handle !== handle) return;
         this.pending = false;
+        // Forgotten here as in the cache: camera-src set again, even to this URL, fetches again.
+        this.url = null;
         this.fail(url, loadErrorDetail(url, e));
       },
     );

@@ -5,6 +5,8 @@ import { isNumberToken } from './number-token';
 export interface MtlTexture {
   /** Relative to the MTL file; `\` read as `/`, spaces kept. */
   path: string;
+  /** `path` resolved against the MTL file's URL; absent when the file was read without an absolute URL. */
+  url?: string;
   /** -s u v w (v, w default 1) and -o u v w (v, w default 0). */
   scale?: [number, number, number];
   offset?: [number, number, number];

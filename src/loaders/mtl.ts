@@ -46,6 +46,7 @@ export function parseMtl(text: string, options: { url?: string; sniffed?: ModelF
   if (format === 'html') throw new LoadError(url, 'an HTML page (or other markup), not an MTL file');
   if (format === 'binary') throw new LoadError(url, 'binary content, not an MTL file');
 
+  const base = absoluteBase(url);
   const materials = new Map<string, MtlMaterial>();
   const warnings = new Warnings();
   const fromD = new Set<MtlMaterial>(); // materials whose opacity came from d, which beats Tr
@@ -68,7 +69,7 @@ export function parseMtl(text: string, options: { url?: string; sniffed?: ModelF
       continue;
     }
     const args = rest === '' ? [] : rest.split(/\s+/);
-    readStatement({ m: current, keyword, key, rest, args, line, warnings, fromD });
+    readStatement({ m: current, keyword, key, rest, args, line, warnings, fromD, base });
   }
   return { materials, warnings: warnings.result() };
 }
@@ -85,6 +86,8 @@ interface Statement {
   warnings: Warnings;
   /** Materials whose opacity came from d, which beats Tr. */
   fromD: Set<MtlMaterial>;
+  /** The file's own URL, which texture paths are relative to; null when it has none. */
+  base: URL | null;
 }
 
 /** Sets what statement `s` gives its material; a malformed or unknown one is a warning. */
@@ -131,13 +134,38 @@ function readStatement(s: Statement): void {
       break;
     }
     case 'map_kd': case 'map_ka': {
-      const map = readMapStatement(s.rest, (message) => warnings.add(line, `${keyword}: ${message}`));
+      const map = textureOf(s);
       if (map && key === 'map_kd') m.diffuseMap = map;
       else if (map) m.ambientMap = map;
       break;
     }
     default:
       if (!KNOWN_UNUSED.has(key)) warnings.addOncePerKeyword(keyword.slice(0, 64), line, `unknown statement ${shown(keyword)}; ignored`);
+  }
+}
+
+/**
+ * A map_Kd or map_Ka statement's texture, its path resolved against the MTL's URL; null (with a
+ * warning) when it has no path or one that makes no URL: that costs the texture, never the file.
+ */
+function textureOf(s: Statement): MtlTexture | null {
+  const map = readMapStatement(s.rest, (message) => s.warnings.add(s.line, `${s.keyword}: ${message}`));
+  if (map === null || s.base === null) return map;
+  try {
+    map.url = new URL(map.path, s.base).href;
+  } catch {
+    s.warnings.add(s.line, `${s.keyword} ${shown(map.path)} is not a usable URL; texture ignored`);
+    return null;
+  }
+  return map;
+}
+
+/** `url` as a base for texture paths, or null when it is not an absolute URL (a file read inline, a test). */
+function absoluteBase(url: string): URL | null {
+  try {
+    return new URL(url);
+  } catch {
+    return null;
   }
 }
 

@@ -58,10 +58,18 @@ describe('parseByuMesh: faults', () => {
     expect(r.declaredFaceCount).toBe(4);
     expect([...r.mesh.indices]).toEqual([0, 2, 1, 0, 3, 2, 1, 2, 3]);
     expect(r.warnings).toEqual([{ line: 7, message: expect.stringMatching(/face 2: index 9 is outside 1\.\.4/) }]);
-    for (const bad of ['0', '-1', '5', '1.5']) {
-      const w = parseByuMesh(`4 2\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 2 ${bad}\n1 2 3\n`).warnings;
+    for (const bad of ['0 2 3', '1 -2 3', '1 2 5', '1 2 -5', '1 2 1.5', '1 2 -0']) {
+      const w = parseByuMesh(`4 2\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n${bad}\n1 2 3\n`).warnings;
       expect(w.map((x) => x.line), bad).toEqual([6]);
     }
+    expect(parseByuMesh('4 2\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 2 -5\n1 2 3\n').warnings[0].message).toMatch(/index -5 is outside 1\.\.4/);
+  });
+
+  it('reads a classic BYU face ending in a negative index as that corner and keeps the face (docs/course-files.md#mesh-byu)', () => {
+    const r = parseByuMesh('4 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 3 -2\n1 2 -4\n1 4 -3\n2 3 -4\n', { url: 'classic.byu' });
+    expect(r.warnings).toEqual([]);
+    expect(r.faceCount).toBe(4);
+    expect([...r.mesh.indices]).toEqual([...parseByuMesh(sample('tetra.byu')).mesh.indices]);
   });
 
   it('is a load error when every face is dropped', () => {

@@ -69,6 +69,44 @@ describe('HTML pages and binary bytes', () => {
   });
 });
 
+// Each case as LF text: its LoadError's line (null for none) and its warnings' lines. Blank lines
+// sit before the faults, so that a line end counted twice (CR then LF) or not at all moves them.
+describe('line numbers with CRLF, CR or LF line ends (docs/course-files.md#text-conventions)', () => {
+  const cases: [string, (text: string, o: { url: string }) => { warnings: { line: number }[] }, string, number | null, number[]][] = [
+    ['a mesh .byu: a bad token', parseByuMesh, '4 1\n\n0 0 0\n1 0 0\n\n\n0 1 0\n0 x 1\n1 2 3\n', 8, []],
+    ['a mesh .byu: extra values, a face out of range, lines after the counts', parseByuMesh,
+      '4 2 9\n\n0 0 0\n1 0 0\n\n0 1 0 7\n0 0 1\n\n1 2 9\n1 2 3\n\n\nextra\n', null, [1, 6, 9, 13]],
+    ['a mesh .byu: too few lines', parseByuMesh, '4 1\n\n0 0 0\n\n1 0 0\n\n', 5, []],
+    ['a Bézier .byu: a bad token', parseByuBezier, '1 1\n\n3\n\n0 0 0\n1 0 0\n\n0 1 ,\n1 1 0\n', 8, []],
+    ['a Bézier .byu: values after E, lines after the points, a resolution clamped (named at E\'s line)',
+      (t, o) => parseByuBezier(t, { ...o, resolution: 1 }), '1 1\n\n\n3 9\n0 0 0\n1 0 0\n\n0 1 0\n1 1 0\n\nmore\n', null, [4, 11, 4]],
+    ['a camera .cfg: d of 0', parseCameraCfg, '0 0 10\n\n0 0 -1\n0 1 0\n\n\n0 1 1\n', 7, []],
+    ['a camera .cfg: V parallel to N', parseCameraCfg, '0 0 10\n\n0 0 -1\n\n0 0 2\n1 1 1\n', 5, []],
+    ['a camera .cfg: extra values and lines', parseCameraCfg, '0 0 10\n\n0 0 -1 5\n0 1 0\n1 1 1\n\n\nx\n', null, [3, 8]],
+    ['an iluminacao.txt: a bad token', parseLightingTxt, '0 0 0\n\n0.5\n255 255 255\n\n0.5\nx 1 1\n', 7, []],
+    ['an iluminacao.txt: values clamped', parseLightingTxt,
+      '0 0 0\n\n1.5\n255 255 255\n0.5\n\n1 1 1\n0.5\n300 255 255\n\n4\n', null, [3, 9]],
+    ['an HTML page after blank lines', parseLightingTxt, '\n\n  \n<html>\n</html>\n', 4, []],
+  ];
+  const endings: [string, (text: string) => string][] = [
+    ['LF', (t) => t], ['CRLF', (t) => t.replace(/\n/g, '\r\n')], ['CR', (t) => t.replace(/\n/g, '\r')],
+    ['CRLF with a BOM', (t) => `\uFEFF${t.replace(/\n/g, '\r\n')}`],
+  ];
+
+  for (const [what, parse, text, errorLine, warningLines] of cases) {
+    it(`names the same lines whatever the line ends: ${what}`, () => {
+      for (const [how, convert] of endings) {
+        const label = `${what} (${how})`;
+        if (errorLine !== null) {
+          expectLoadError(() => parse(convert(text), { url: 'f' }), 'f', errorLine, /./);
+          continue;
+        }
+        expect(parse(convert(text), { url: 'f' }).warnings.map((w) => w.line), label).toEqual(warningLines);
+      }
+    });
+  }
+});
+
 describe('numbers', () => {
   const camera = (d: string): string => `0 0 10\n0 0 -1\n0 1 0\n${d} 1 1\n`;
 

@@ -1,7 +1,9 @@
 // MTL materials as found in the wild (docs/scene-model.md#obj-and-mtl): values, texture options, faults.
-import { describe, expect, it } from 'vitest';
+import { afterEach, describe, expect, it, vi } from 'vitest';
+import { loadModel } from '../../src/element/children/model-loader';
 import { LoadError } from '../../src/loaders/load-error';
 import { parseMtl, parseMtlBytes } from '../../src/loaders/mtl';
+import { stubFetch } from './helpers/fetch-stub';
 
 const one = (text: string, name = 'm') => {
   const r = parseMtl(text, { url: 'a.mtl' });
@@ -78,10 +80,43 @@ describe('parseMtl: texture maps', () => {
     expect(warnings.map((w) => w.line)).toEqual([2]);
   });
 
+  it('resolves paths against the file\'s URL; a path that makes no URL is a warning with its line, the texture dropped', () => {
+    const r = parseMtl('newmtl m\nmap_Ka ../t/a b.png\nmap_Kd -s 2 http://[bad\nKd 1 0 0\n', { url: 'http://x/m/a.mtl' });
+    expect(r.materials.get('m')).toEqual({
+      name: 'm', ambientMap: { path: '../t/a b.png', url: 'http://x/t/a%20b.png' }, diffuse: [1, 0, 0],
+    });
+    expect(r.warnings).toEqual([{ line: 3, message: 'map_Kd "http://[bad" is not a usable URL; texture ignored' }]);
+  });
+
   it('warns about a map with no path', () => {
     const { m, warnings } = one('newmtl m\nmap_Kd -s 1 1 1\n');
     expect(m.diffuseMap).toBeUndefined();
     expect(warnings.map((w) => w.line)).toEqual([2]);
+  });
+});
+
+describe('a model\'s MTL: texture URLs (docs/scene-model.md#obj-and-mtl)', () => {
+  afterEach(() => vi.unstubAllGlobals());
+  const MODEL = 'http://x/models/a.obj';
+  const MTL = 'http://x/materials/a.mtl';
+  const OBJ = 'mtllib ../materials/a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl wood\nf 1 2 3\nusemtl glass\nf 3 2 1\n';
+  const load = (url: string) => loadModel(url, new AbortController().signal, () => {});
+
+  it('resolves a map_Kd path against the MTL\'s own URL, not the model\'s', async () => {
+    stubFetch({ [MODEL]: OBJ, [MTL]: 'newmtl wood\nmap_Kd tex/wood.png\n' });
+    const model = await load(MODEL);
+    expect(model.materials.get('wood')?.texture).toBe('http://x/materials/tex/wood.png');
+    expect(model.warnings).toEqual([]);
+  });
+
+  it('costs a map_Kd path that is no URL only that texture, with a warning naming the MTL and the line', async () => {
+    stubFetch({ [MODEL]: OBJ, [MTL]: 'newmtl wood\nKd 1 0 0\nmap_Kd http://[bad\n\nnewmtl glass\nd 0.5\nmap_Kd glass.png\n' });
+    const model = await load(MODEL);
+    expect(model.materials.get('wood')).toEqual({ diffuse: [1, 0, 0] });
+    expect(model.materials.get('glass')).toEqual({ opacity: 0.5, texture: 'http://x/materials/glass.png' });
+    expect(model.warnings).toEqual([
+      expect.stringMatching(/^glass-plane-scene: http:\/\/x\/materials\/a\.mtl line 3: map_Kd "http:\/\/\[bad" is not a usable URL; texture ignored$/),
+    ]);
   });
 });
 

@@ -3,7 +3,7 @@
 // nor normals, and the byte scanner's reads past a file that ends without a line end. Each must
 // give exactly what the general way gives: the bytes against the text (which never takes a fast
 // path), the weld by position against the general weld.
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import { decodeText } from '../../src/loaders/decode-text';
 import { parseObj, parseObjBytes } from '../../src/loaders/obj';
 import { buildMesh, newellNormal } from '../../src/loaders/obj/build-mesh';
@@ -64,6 +64,24 @@ describe('OBJ fast paths: the same result as the general way', () => {
         { line: 7, message: 'vertex index 1234567890 is outside the 3 vertices read so far; face dropped' },
       ]);
       expect(r.indices.length, how).toBe(3);
+    }
+  });
+
+  it('reads each line once on the fast path, after a bad vertex too: never again for the statement', () => {
+    // The scanner's fast reads, counted: a line the fast path gives up on is read the general
+    // way, but no line is handed from one fast path to another to be read again.
+    const faces = 100;
+    const text = `v 0 0 0\nv 1 x 0\nv 1 0 0\nv 0 1 0\nvt x\nvn 0 0\n${'f 1 3 4\nf 4 3 1\n'.repeat(faces / 2)}f 1 2 3\nf 1 3 9\n`;
+    const corners = vi.spyOn(ByteScanner.prototype, 'readPlainCorners');
+    const numbers = vi.spyOn(ByteScanner.prototype, 'readPlainNumbers');
+    try {
+      const r = parseObjBytes(utf8(text));
+      expect(r.indices.length).toBe(3 * faces);
+      expect(r.warnings.map((w) => w.line)).toEqual([2, 5, 6, faces + 7, faces + 8]);
+      expect(corners).toHaveBeenCalledTimes(faces + 2);
+      expect(numbers).toHaveBeenCalledTimes(6);
+    } finally {
+      vi.restoreAllMocks();
     }
   });
 

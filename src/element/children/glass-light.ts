@@ -124,6 +124,8 @@ export class GlassLight extends ChildElement<LightAttributes> {
       (e) => {
         if (this.handle !== handle) return;
         this.pending = false;
+        // Forgotten here as in the cache: src set again, even to this URL, fetches again.
+        this.loadingUrl = null;
         this.changed();
         this.fire('error', loadErrorDetail(url, e));
       },

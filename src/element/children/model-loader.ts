@@ -1,6 +1,6 @@
 // One model's whole load: fetch (with progress), sniff and parse, then its MTL files resolved
-// against the model's URL. A missing or broken MTL is a warning, not an error: the model
-// still shows, with attribute and default materials.
+// against the model's URL (and their textures against each MTL's own). A missing or broken MTL
+// is a warning, not an error: the model still shows, with attribute and default materials.
 import { LoadError, warningText } from '../../loaders/load-error';
 import { parseMtlBytes } from '../../loaders/mtl';
 import type { ObjResult } from '../../loaders/obj';
@@ -45,7 +45,7 @@ export async function loadModel(url: string, signal: AbortSignal, onProgress: (p
         const map = m.diffuseMap ?? m.ambientMap;
         materials.set(key, {
           ambient: m.ambient, diffuse: m.diffuse, specular: m.specular, shininess: m.shininess, opacity: m.opacity,
-          texture: map ? new URL(map.path, mtlUrl).href : undefined,
+          texture: map?.url,
         });
       }
     } catch (e) {

@@ -29,7 +29,8 @@ const MIN_LINE = 6;
  * Reads exactly the counts of the header; content after them is ignored with one warning.
  * A missing count, a token that is not a number or fewer lines than counted throw a
  * LoadError with the line; a face with an index outside 1..NV (or not a whole number) is
- * dropped with a warning naming its line. No face left is a LoadError.
+ * dropped with a warning naming its line, but a negative last index is the classic BYU end
+ * of a face, read as its absolute value. No face left is a LoadError.
  */
 export function parseByuMesh(text: string, options: { url?: string; sniffed?: ModelFormat } = {}): ByuMeshResult {
   const url = options.url ?? '';
@@ -57,11 +58,13 @@ export function parseByuMesh(text: string, options: { url?: string; sniffed?: Mo
   let firstDropped = 0;
   for (let f = 0; f < nt; f++) {
     const l = lines.require(3, `after ${f} of the ${nt} faces the header (line ${header.line}) counts`);
-    const [a, b, c] = lines.numbers(l, 3, `face ${f + 1}`);
+    const [a, b, end] = lines.numbers(l, 3, `face ${f + 1}`);
     extra(l, 3, warnings, 'face');
-    const bad = [a, b, c].find((i) => !Number.isInteger(i) || i < 1 || i > nv);
-    if (bad !== undefined) {
-      warnings.add(l.line, `face ${f + 1}: index ${bad} is outside 1..${nv}; face dropped`);
+    // Classic BYU polygon lists mark a face's last corner with a minus sign: |end| is that corner.
+    const c = Math.abs(end);
+    const bad = [a, b, c].findIndex((i) => !Number.isInteger(i) || i < 1 || i > nv);
+    if (bad >= 0) {
+      warnings.add(l.line, `face ${f + 1}: index ${[a, b, end][bad]} is outside 1..${nv}; face dropped`);
       if (firstDropped === 0) firstDropped = l.line;
       continue;
     }

@@ -84,10 +84,16 @@ class ObjReader {
   private statements(): void {
     const sc = this.sc;
     while (!sc.atEnd()) {
-      // The usual lines, `v x y z` and `f a b c`, read on a fast path when they are plain.
+      // The usual lines, `v x y z` and `f a b c`, straight to their statements, which try their
+      // fast paths first: a line is never handed back to be dispatched and read again.
       const plain = sc.plainKeyword();
-      if ((plain === 1 && this.plainVertex()) || (plain === 2 && this.plainFace())) continue;
-      this.statement();
+      if (plain === 0) {
+        this.statement();
+        continue;
+      }
+      if (plain === 1) this.vertex(sc.line);
+      else this.faceStatement(sc.line);
+      sc.nextLine();
     }
   }
 
@@ -119,50 +125,6 @@ class ObjReader {
     else if (c0 === 102 /* f */ && endsKeyword(c1)) this.faceStatement(line);
     else this.otherStatement(line);
     sc.nextLine();
-  }
-
-  /** At a line's `v `: the vertex read as statement() would, if its numbers are plain; else false, the cursor unmoved. */
-  private plainVertex(): boolean {
-    const sc = this.sc;
-    const line = sc.line;
-    sc.pos += 1;
-    const n = sc.readPlainNumbers(this.values);
-    if (n < 0) {
-      sc.pos -= 1;
-      return false;
-    }
-    this.addVertex(line, n);
-    sc.nextLine();
-    return true;
-  }
-
-  /**
-   * At a line's `f `: a plain face of at least 3 usable corners kept as statement() would keep
-   * it; else false, nothing read and the cursor unmoved (statement() then says what is wrong).
-   */
-  private plainFace(): boolean {
-    const sc = this.sc;
-    const line = sc.line, from = sc.pos;
-    sc.pos += 1;
-    const lists = this.cornerLists, corners = lists.corners;
-    const start = corners.length;
-    // `f 1 2 3`: straight into the corner list; any other plain face by way of `raw`.
-    let count = -1;
-    if (this.byteScanner !== null && lists.positionsOnly()) {
-      count = readPositionCorners(this.byteScanner, corners.reserve(PLAIN_CORNERS), start, PLAIN_CORNERS, this.vCount);
-      if (count >= 3) corners.length = start + count;
-    }
-    if (count < 3) {
-      sc.pos = from + 1;
-      count = sc.readPlainCorners(this.raw);
-      if (count < 3 || !lists.addPlain(this.raw, count, this.vCount, this.tCount, this.nCount)) {
-        sc.pos = from;
-        return false;
-      }
-    }
-    this.keepFace(line, start, count);
-    sc.nextLine();
-    return true;
   }
 
   /** Reads up to 8 numbers to the end of the statement; returns how many, or −1 if one is bad. */
@@ -268,7 +230,7 @@ class ObjReader {
    * rest of the statement is still read, to count its corners. Sets `fault` and `cornerCount`.
    */
   private readCorners(): void {
-    if (this.readPlainCorners()) return;
+    if (this.readBareCorners() || this.readPlainCorners()) return;
     const sc = this.sc;
     let fault = '';
     let cornerCount = 0;
@@ -298,24 +260,39 @@ class ObjReader {
   }
 
   /**
-   * readCorners for a plain face (the scanner's fast path) whose corners are all usable, as
-   * the general way reads it; false, with nothing read, for any other face.
+   * readCorners for `f 1 2 3` over bytes (position-corners.ts): bare position indices within
+   * range, straight into the corner list while it holds nothing else (fewer than 3 are then
+   * dropped as the general way drops them); false, the cursor unmoved, for any other face.
+   */
+  private readBareCorners(): boolean {
+    const { byteScanner: sc, cornerLists: lists } = this;
+    if (sc === null || !lists.positionsOnly()) return false;
+    const corners = lists.corners, start = corners.length;
+    const count = readPositionCorners(sc, corners.reserve(PLAIN_CORNERS), start, PLAIN_CORNERS, this.vCount);
+    if (count < 0) return false;
+    corners.length = start + count;
+    this.fault = '';
+    this.cornerCount = count;
+    return true;
+  }
+
+  /**
+   * readCorners for a plain face (the scanner's fast path), as the general way reads it, faults
+   * and all: the line is read once, whatever its corners hold. False, the cursor unmoved, for a
+   * face that is not plain.
    */
   private readPlainCorners(): boolean {
     const { sc, cornerLists, raw } = this;
-    const from = sc.pos;
     const count = sc.readPlainCorners(raw);
     if (count < 0) return false;
-    const first = cornerLists.corners.length;
     const { vCount, tCount, nCount } = this;
-    for (let k = 0; k < 3 * count; k += 3) {
-      if (cornerLists.add(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount) !== '') {
-        cornerLists.truncate(first);
-        sc.pos = from; // the general way says what is wrong
-        return false;
-      }
+    let fault = '';
+    // Straight into the lists when no corner needs more (addPlain); else corner by corner, which
+    // starts the uv and normal lists, checks bad elements and names the first fault.
+    if (count < 3 || !cornerLists.addPlain(raw, count, vCount, tCount, nCount)) {
+      for (let k = 0; k < 3 * count && fault === ''; k += 3) fault = cornerLists.add(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount);
     }
-    this.fault = '';
+    this.fault = fault;
     this.cornerCount = count;
     return true;
   }
