@@ -115,8 +115,10 @@ test.describe('trackball inertia', () => {
     for (const [i, fps] of RATES.entries()) {
       await page.evaluate((s) => { (document.querySelector(s) as unknown as ControlsElement).objectRotation = [0, 0, 0, 1]; }, selector);
       await startRecording(page, selector, fps);
-      // A flick: 8 moves 16 ms apart, released 8 ms after the last.
-      await drag(cdp, { x: b.cx - 20, y: b.cy + 5 }, { x: b.cx + 20, y: b.cy - 5 }, { t0: 20 + 10 * i, steps: 8, dtMs: 16, restMs: 8 });
+      // A flick: 8 moves 16 ms apart, released 8 ms after the last; each sent once the page has
+      // handled the one before (at 13 frames/s on a loaded machine, moves still queued were
+      // coalesced into one, which turns 5° at most: the flick was sometimes lost).
+      await drag(cdp, { x: b.cx - 20, y: b.cy + 5 }, { x: b.cx + 20, y: b.cy - 5 }, { t0: 20 + 10 * i, steps: 8, dtMs: 16, restMs: 8, handledBy: page });
       const rec = await motionRecorded(page);
       const final = rec.samples[rec.samples.length - 1].q;
       const fit = fitTau(rec.samples.map((x) => x.t - rec.releaseAt), rec.samples.map((x) => quatAngle(x.q, final)), quatAngle(rec.releaseQ, final));
@@ -137,7 +139,7 @@ test('orbit: after a flick the camera\'s turn decays with τ ≤ 0.5 s in real t
     await page.evaluate((s) => { const el = document.querySelector(s)!; el.setAttribute('camera-position', '0 1 6'); el.setAttribute('camera-target', '0 0 0'); }, selector);
     await startRecording(page, selector, fps);
     // 40 px right in 10 moves 16 ms apart: 0.4°/px × 4 px / 16 ms = 100°/s at the release.
-    await drag(cdp, { x: b.cx - 20, y: b.cy }, { x: b.cx + 20, y: b.cy }, { t0: 60 + 10 * i, steps: 10, dtMs: 16, restMs: 8 });
+    await drag(cdp, { x: b.cx - 20, y: b.cy }, { x: b.cx + 20, y: b.cy }, { t0: 60 + 10 * i, steps: 10, dtMs: 16, restMs: 8, handledBy: page });
     const rec = await motionRecorded(page);
     const final = rec.samples[rec.samples.length - 1].yaw;
     const left = (yaw: number) => ((final - yaw + 540) % 360) - 180;
@@ -163,7 +165,7 @@ test('orbit: a flick turns on at its release rate (no 6.3°/s cap), and its one 
   // 40 px right in 10 moves 16 ms apart, released 8 ms after the last: the rate over the last
   // 80 ms is 0.4°/px × 4 px / 16 ms = 100°/s.
   const r0 = 100;
-  await drag(cdp, { x: b.cx - 20, y: b.cy }, { x: b.cx + 20, y: b.cy }, { t0: 90, steps: 10, dtMs: 16, restMs: 8 });
+  await drag(cdp, { x: b.cx - 20, y: b.cy }, { x: b.cx + 20, y: b.cy }, { t0: 90, steps: 10, dtMs: 16, restMs: 8, handledBy: page });
   await expect.poll(async () => (await changes()).length, { timeout: 20_000 }).toBe(1);
   await page.waitForTimeout(500);
   const [change] = await changes();
