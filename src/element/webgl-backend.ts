@@ -14,8 +14,12 @@ function checksEnabled(): boolean {
 
 export class WebGLBackend implements Backend {
   readonly kind = 'webgl';
-  /** Frames are drawn at once: none is ever on its way. */
-  readonly busy = false;
+  /**
+   * Signalled when the GPU has drawn the last frame. The page never gets ahead of the GPU by more
+   * than one frame: a slow GPU (a software one) would queue frame after frame, and the page's
+   * main thread then stalls for seconds as the queue drains (docs/interaction.md#inertia).
+   */
+  private fence: WebGLSync | null = null;
   private disposed = false;
   private readonly renderer: Renderer;
   /** The images given so far, by URL: the renderer's third argument (it uploads each once). */
@@ -32,6 +36,23 @@ export class WebGLBackend implements Backend {
         warn,
       },
     });
+  }
+
+  /** The GPU still draws the last frame: this one is skipped and the next animation frame looks again. */
+  get busy(): boolean {
+    const gl = this.shared.gl, fence = this.fence;
+    if (!fence) return false;
+    if (gl.getSyncParameter(fence, gl.SYNC_STATUS) === gl.UNSIGNALED) {
+      this.host.resume(false);
+      return true;
+    }
+    this.dropFence();
+    return false;
+  }
+
+  private dropFence(): void {
+    this.shared.gl.deleteSync(this.fence);
+    this.fence = null;
   }
 
   waitsFor(scene: Scene, state: FrameState): boolean {
@@ -51,6 +72,9 @@ export class WebGLBackend implements Backend {
       this.shared.reserve(width, height);
       report = this.renderer.render(scene, state, this.images);
       this.presenter.present(width, height);
+      const gl = this.shared.gl;
+      this.fence = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+      gl.flush();
     } catch (e) {
       this.host.renderError(e);
       return;
@@ -75,6 +99,7 @@ export class WebGLBackend implements Backend {
 
   dispose(): RenderStats {
     this.disposed = true;
+    this.dropFence();
     const last = this.renderer.stats;
     this.renderer.dispose();
     return last;

@@ -16,7 +16,8 @@ export interface Chunk {
 }
 
 export const CHUNKS = {
-  core: { budget: 30300, when: 'with the element' },
+  // 30,300 until a WebGL frame waited for the GPU to finish the one before (+141 B: 30,394).
+  core: { budget: 30400, when: 'with the element' },
   // Checks, debug views and the texts of failures: for developers, or when something went wrong.
   diagnostics: {
     budget: 1400, when: 'debug-view, frame checks, or a failure',

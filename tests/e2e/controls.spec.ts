@@ -188,6 +188,29 @@ test.describe('orbit', () => {
     expect((await changes()).length, 'one camera-change for the whole wheel gesture').toBe(1);
   });
 
+  test('wheel events in lines (deltaMode 1) dolly as 16 px a line, in pages (deltaMode 2) as the canvas height a page', async ({ page }) => {
+    await openPage(page);
+    const { selector } = await mount(page, { time: 0, spin: 0, controls: 'orbit', 'camera-position': '0 1 6', 'camera-target': '0 0 0' }, SIZE);
+    const changes = await recordCameraChanges(page, selector);
+    const b = await box(page, selector);
+    /** The camera's distance after one wheel event from the start, as its camera-change tells it. */
+    const dolly = async (deltaY: number, deltaMode: number) => {
+      const n = (await changes()).length + 2; // the page's camera-position, then the wheel's gesture
+      await page.evaluate((s) => document.querySelector(s)!.setAttribute('camera-position', '0 1 6'), selector);
+      await page.evaluate(([s, x, y, deltaY, deltaMode]) => {
+        const canvas = document.querySelector(s as string)!.shadowRoot!.querySelector('canvas')!;
+        canvas.dispatchEvent(new WheelEvent('wheel', { deltaY: deltaY as number, deltaMode: deltaMode as number, clientX: x as number, clientY: y as number, bubbles: true, cancelable: true, composed: true }));
+      }, [selector, b.cx, b.cy, deltaY, deltaMode] as const);
+      await expect.poll(async () => (await changes()).length).toBe(n);
+      return Math.hypot(...(await changes())[n - 1].position);
+    };
+    const lines = await dolly(3, 1), pixels = await dolly(48, 0);
+    expect(pixels, 'the pixel event dollied').not.toBeCloseTo(Math.hypot(0, 1, 6), 3);
+    expect(lines, '3 lines = 48 px').toBeCloseTo(pixels, 9);
+    // A quarter page of a 180 px canvas: 45 px.
+    expect(await dolly(0.25, 2), '¼ page = 45 px').toBeCloseTo(await dolly(45, 0), 9);
+  });
+
   test('with camera-target the camera looks at it: "0 1 6" alone shows nothing of the scene, with a target it does', async ({ page }) => {
     await openPage(page);
     const bg = (img: { data: Uint8Array }) => { let n = 0; for (let i = 0; i < img.data.length; i += 4) if (Math.abs(img.data[i] - 26) > 8 || Math.abs(img.data[i + 2] - 26) > 8) n++; return n; };

@@ -120,7 +120,8 @@ test.describe('a scene of children goes idle', () => {
       child.setAttribute('src', 'models/tetra-copy.obj');
       child.setAttribute('position', '-1 1 1');
       child.addEventListener('error', () => reject(new Error('tetra-copy.obj did not load')));
-      child.addEventListener('load', () => requestAnimationFrame(() => requestAnimationFrame(() => resolve(el.stats.frames - before))));
+      // The frame after the load, whenever it comes (it waits for the GPU to finish the frame before).
+      child.addEventListener('load', () => el.addEventListener('frame', () => resolve(el.stats.frames - before), { once: true }));
       el.append(child);
     }), model);
     expect(drawn, 'frames drawn for the model that arrived').toBeGreaterThan(0);

@@ -40,19 +40,46 @@ export const EPOCH = Date.now() / 1000 + 3 * 3600;
  * Mouse drag through CDP: press at `from`, `steps` moves to `to`, `dtMs` apart, release `restMs`
  * after the last move; `t0` seconds after EPOCH (only differences matter to the element).
  */
-export async function drag(cdp: CDPSession, from: { x: number; y: number }, to: { x: number; y: number }, o: { t0: number; steps: number; dtMs: number; restMs: number; button?: 'left' | 'right'; modifiers?: number }) {
+export async function drag(cdp: CDPSession, from: { x: number; y: number }, to: { x: number; y: number }, o: { t0: number; steps: number; dtMs: number; restMs: number; button?: 'left' | 'right'; modifiers?: number; handledBy?: Page }) {
   const button = o.button ?? 'left', buttons = button === 'left' ? 1 : 2, modifiers = o.modifiers ?? 0;
+  const handled = o.handledBy ? await pointerEventsHandled(o.handledBy) : async () => {};
   let t = EPOCH + o.t0;
   await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x: from.x, y: from.y, timestamp: t, modifiers });
   t += 0.01;
   await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: from.x, y: from.y, button, buttons, clickCount: 1, timestamp: t, modifiers });
+  await handled('pointerdown');
   for (let k = 1; k <= o.steps; k++) {
     t += o.dtMs / 1000;
     const x = from.x + ((to.x - from.x) * k) / o.steps, y = from.y + ((to.y - from.y) * k) / o.steps;
     await cdp.send('Input.dispatchMouseEvent', { type: 'mouseMoved', x, y, button, buttons, timestamp: t, modifiers });
+    await handled('pointermove');
   }
   t += o.restMs / 1000;
   await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: to.x, y: to.y, button, buttons: 0, clickCount: 1, timestamp: t, modifiers });
+  await handled('pointerup');
+}
+
+/**
+ * For `drag`'s `handledBy`: resolves, for each event dispatched, once the page has handled it. A
+ * page that cannot keep up (a slow frame, a loaded machine) would otherwise get moves that are
+ * still queued when the next arrives coalesced into one pointermove, which turns at most 5° and
+ * takes the flick's speed with it. Counted on the window in the capture phase: the element's own
+ * listener runs later in the same dispatch.
+ */
+async function pointerEventsHandled(page: Page): Promise<(type: string) => Promise<void>> {
+  const base = await page.evaluate(() => {
+    const w = window as unknown as { __pointerEvents?: Record<string, number> };
+    if (!w.__pointerEvents) {
+      const n: Record<string, number> = (w.__pointerEvents = { pointerdown: 0, pointermove: 0, pointerup: 0 });
+      // Moves with a button down only: the hover move before a press may come or not.
+      for (const type of Object.keys(n)) window.addEventListener(type, (e) => { if (type !== 'pointermove' || (e as PointerEvent).buttons) n[type]++; }, true);
+    }
+    return { ...w.__pointerEvents };
+  });
+  return async (type) => {
+    const n = ++base[type];
+    await page.waitForFunction(([type, n]) => (window as unknown as { __pointerEvents: Record<string, number> }).__pointerEvents[type as string] >= (n as number), [type, n] as const, { polling: 5 });
+  };
 }
 
 /** Collects camera-change details on the element from now on, each with performance.now() when it came. */
