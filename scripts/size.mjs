@@ -92,7 +92,7 @@ for (const r of rows) {
   const b = budget[r.name];
   const ok = b === undefined || bytes <= b;
   if (!ok) over++;
-  lines.push(`| ${r.label ?? r.name} | ${table[r.name]?.when ?? '—'} | ${kB(bytes)} kB | ${b === undefined ? '—' : `${kB(b)} kB${ok ? '' : ' **over**'}`} |`);
+  lines.push(`| ${r.label ?? r.name} | ${table[r.name]?.when ?? '—'} | ${kB(bytes)} kB | ${b === undefined ? '—' : `${kB(b)} kB${ok ? '' : ` **over** by ${bytes - b} B`}`} |`);
 }
 console.log(lines.join('\n'));
 if (process.argv.includes('--tree')) {
