@@ -193,9 +193,10 @@ export class SampleTracer {
    * viewer's side further).
    */
   private glassInFront(g: SurfaceHit, object: SurfaceHit | null): boolean {
-    if (object === null || g.t < object.t) return true;
-    if (Math.abs(object.t - g.t) > TIE * Math.abs(g.t)) return false;
-    return this.side * signedDistance(this.plane!, this.scene.centres[object.object]) <= 0;
+    if (object === null) return true;
+    // A tie first: the glass and a face in its plane meet the ray a rounding apart either way.
+    if (Math.abs(object.t - g.t) <= TIE * Math.abs(g.t)) return this.side * signedDistance(this.plane!, this.scene.centres[object.object]) <= 0;
+    return g.t < object.t;
   }
 
   /** debug-view fresnel: F on glass not hidden by an opaque object, black elsewhere. */

@@ -28,12 +28,10 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
   // Rough, the glass is opaque: its depth hides what lies beyond it from the transparent objects
   // drawn after it (renderer.ts).
   gl.depthMask(rough !== null);
-  // Pushed back a hair — a constant, not scaled by its depth slope, which at grazing incidence
-  // let objects behind the glass cover it — so a face of an object on the viewer's side lying in
-  // the glass plane stays in front of it instead of z-fighting; objects on the plane or beyond
-  // it are pushed back further in the scene pass (draw-objects.ts), so the glass covers their
-  // faces in the plane (a picture behind a glass wall, cube-distance −0.5 with spin 0).
-  gl.polygonOffset(0, 1);
+  // No polygon offset: on a depth tie (LESS) what is drawn first wins, and objects are drawn
+  // before the glass — a face in its plane of an object on the viewer's side stays in front
+  // (glass-tie.spec.ts); objects on the plane or beyond are pushed back in the scene pass
+  // (draw-objects.ts), so the glass covers them (a picture behind a glass wall).
   if (!outputFresnel) {
     gl.enable(gl.BLEND);
     gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA);
@@ -59,7 +57,6 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
     gl.bindTexture(gl.TEXTURE_2D, null);
     gl.activeTexture(gl.TEXTURE0);
     gl.disable(gl.BLEND);
-    gl.disable(gl.POLYGON_OFFSET_FILL);
     gl.depthMask(true);
     gl.disable(gl.DEPTH_TEST);
   }
