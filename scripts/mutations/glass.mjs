@@ -102,8 +102,8 @@ export default [
     tests: [TIE],
   },
   {
-    name: 'G7 reference: an object off the plane in front of the glass counted as a tie',
-    edits: [{ file: 'src/reference/sample-tracer.ts', find: 'if (Math.abs(object.t - g.t) > TIE * Math.abs(g.t)) return false;', replace: 'if (object.t - g.t > TIE * Math.abs(g.t)) return false;' }],
+    name: 'G7 reference: an object beyond the glass, far off the plane, counted as a tie',
+    edits: [{ file: 'src/reference/sample-tracer.ts', find: 'if (Math.abs(object.t - g.t) <= TIE * Math.abs(g.t))', replace: 'if (g.t - object.t <= TIE * Math.abs(g.t))' }],
     tests: [TIE],
   },
   {

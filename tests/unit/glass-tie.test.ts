@@ -58,6 +58,10 @@ describe('a face in the glass plane', () => {
       expect([...values].sort((a, b) => a - b)).toEqual([0, 255]);
     });
 
+    it(`${name}: a face beyond the glass is seen through it whatever side its object's centre is on (245)`, () => {
+      expect(centre(draw(scene(picture(0.1, -0.3))))).toBe(covered);
+    });
+
     it(`${name}: a face in front of the glass stays in front whatever side its object's centre is on (255)`, () => {
       // Drawn over with transparency 0 the glass would show its dark body there, not white.
       expect(centre(drawWith(name, { transparency: 0 }, scene(picture(-0.1, 0.3))))).toBe(255);
