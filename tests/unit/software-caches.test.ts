@@ -7,6 +7,12 @@
 import { describe, expect, it } from 'vitest';
 import { GlassCache, GLASS_KEY_LENGTH } from '../../src/software/glass-cache';
 import { MAX_CACHED_OBJECTS, MAX_CACHED_PIXELS, ObjectCache, OBJECT_KEY_LENGTH } from '../../src/software/object-cache';
+import { SoftwareRenderer } from '../../src/software';
+import { defaultScene } from '../../src/scene/default-scene';
+import { DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
+import { defaultFrameState } from './helpers/frame-state';
+import { differingBytes } from './helpers/pixel-diff';
+import { courseBasis, type CourseCamera } from '../../src/math/course-camera';
 
 const key = (...values: number[]) => {
   const k = new Float64Array(GLASS_KEY_LENGTH);
@@ -119,4 +125,27 @@ describe('ObjectCache', () => {
     for (let k = 0; k < 2; k++) c.begin(0, objectKey(1), [], MAX_CACHED_PIXELS + 1);
     expect(c.current).toBe(0);
   });
+});
+
+describe('the software renderer across resizes', () => {
+  // Frames 2 and 3 at a size read its caches; a size met after another (the height alone
+  // shrinking, caches as large as before) must not read what another size wrote. Each frame against a fresh renderer's, bit for bit.
+  const sizes: [number, number][] = [[96, 70], [96, 70], [96, 70], [96, 54], [96, 54], [70, 96], [70, 96], [96, 54], [96, 54], [120, 54], [120, 54]];
+  // The course's camera fixes the view's extent (hx, hy), not the canvas: a height alone changes
+  // the grid and nothing else the draws are keyed on but the grid's size.
+  const basis = courseBasis([1 - 3.6, 1 - 2.4, 0 - 4], [0, 1, 0]) as Exclude<ReturnType<typeof courseBasis>, string>;
+  const course: CourseCamera = { c: [3.6, 2.4, 4], ...basis, d: 1, hx: 0.6, hy: 0.5 };
+  for (const [label, over] of [
+    ['default', {}], ['multisampled', { samples: 4 }], ['rough', { roughness: 0.3 }], ['the course\'s camera', { courseCamera: course }],
+  ] as const) {
+    it(`${label}: every frame of a run of sizes (a height alone changing among them) is a fresh renderer's`, () => {
+      const live = new SoftwareRenderer(), scene = defaultScene(DEFAULT_CUBE_DISTANCE, 0);
+      for (const [width, height] of sizes) {
+        const state = defaultFrameState({ width, height, spin: 0, ...over });
+        const got = live.render(scene, state).slice(), want = new SoftwareRenderer().render(scene, state);
+        expect(got.length, `${width}×${height}`).toBe(4 * width * height);
+        expect(differingBytes(got, want), `${width}×${height}`).toBe(0);
+      }
+    });
+  }
 });
