@@ -86,7 +86,13 @@ export class BackendController implements Controller, ContextClient {
     if ((wantSoftware && kind === 'software') || (!wantSoftware && kind === 'webgl')) return;
     this.host.stopFrames();
     this.stop();
-    if (this.host.failure.type !== 'context-lost') this.host.failure.clear();
+    // The CPU renderer needs no context: no longer its client, its loss no longer ours, the
+    // canvas's limit the CPU's.
+    if (wantSoftware) {
+      this.shared?.release(this);
+      this.shared = null;
+    }
+    if (wantSoftware || this.host.failure.type !== 'context-lost') this.host.failure.clear();
     this.start();
   }
 

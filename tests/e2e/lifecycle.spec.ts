@@ -346,3 +346,46 @@ test.describe('context loss', () => {
     expect(compareImages(after, before).differing, 'pixels changed by the loss and restore').toBe(0);
   });
 });
+
+test('an element switched from WebGL to the software renderer draws on when the shared context is lost, at the CPU\'s size limit', async ({ page, consoleLog }) => {
+  await openPage(page);
+  const webgl = (await mount(page, { time: 0, spin: 0 }, SIZE)).selector;
+  // 5000 px wide: within WebGL's limit here, past the CPU renderer's 4096.
+  const wide = (await mount(page, { renderer: 'webgl', time: 0, spin: 0 }, { width: 5000, height: 8 })).selector;
+  const switched = await page.evaluate((s) => new Promise<{ renderer: string | null | undefined; width: number }>((resolve, reject) => {
+    const el = document.querySelector(s) as SceneElement;
+    const t = setTimeout(() => reject(new Error('no software frame')), 15_000);
+    const drawn = () => {
+      if (el.stats.renderer !== 'software') return;
+      el.removeEventListener('frame', drawn);
+      clearTimeout(t);
+      resolve({ renderer: el.stats.renderer, width: el.shadowRoot!.querySelector('canvas')!.width });
+    };
+    el.addEventListener('frame', drawn);
+    el.setAttribute('renderer', 'software');
+  }), wide);
+  expect(switched.renderer).toBe('software');
+  expect(switched.width, 'the CPU renderer\'s canvas limit').toBeLessThanOrEqual(4096);
+
+  const after = await page.evaluate(([webgl, wide]) => new Promise<{ errors: string[]; frames: number }>((resolve, reject) => {
+    const gl = (globalThis as { __GLASS_PLANE_SCENE_GL__?: WebGL2RenderingContext }).__GLASS_PLANE_SCENE_GL__!;
+    const ext = gl.getExtension('WEBGL_lose_context');
+    if (!ext) return reject(new Error('WEBGL_lose_context unavailable'));
+    const errors: string[] = [];
+    let frames = 0;
+    document.querySelector(webgl)!.addEventListener('error', (e) => errors.push(`${webgl}: ${(e as unknown as CustomEvent<{ type: string }>).detail.type}`));
+    const el = document.querySelector(wide) as SceneElement;
+    el.addEventListener('error', (e) => errors.push(`${wide}: ${(e as unknown as CustomEvent<{ type: string }>).detail.type}`));
+    el.addEventListener('frame', () => frames++);
+    ext.loseContext();
+    // After the loss: the software element draws what is asked of it.
+    setTimeout(() => {
+      el.setAttribute('time', '1');
+      const t = setTimeout(() => resolve({ errors, frames }), 10_000);
+      el.addEventListener('frame', () => { clearTimeout(t); resolve({ errors, frames }); }, { once: true });
+    }, 300);
+  }), [webgl, wide]);
+  expect(after.errors, 'only the WebGL element loses its context').toEqual([`${webgl}: context-lost`]);
+  expect(after.frames, 'the software element drew after the loss').toBeGreaterThan(0);
+  consoleLog.take('error');
+});
