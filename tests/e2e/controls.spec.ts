@@ -392,6 +392,34 @@ test('camera-change: one per batch of camera attributes set by the page, none fo
   expect((await changes()).length).toBe(2);
 });
 
+test('camera-change details a listener keeps are never changed by later camera changes (attributes, a pan, an orbit)', async ({ page }) => {
+  await openPage(page);
+  const { selector } = await mount(page, { time: 0, spin: 0, controls: 'orbit', 'camera-position': '0 1 6', 'camera-target': '0 0 0' }, SIZE);
+  await page.evaluate((s) => {
+    const w = window as unknown as { __kept: { detail: unknown; json: string }[] };
+    w.__kept = [];
+    document.querySelector(s)!.addEventListener('camera-change', (e) => {
+      const detail = (e as CustomEvent).detail;
+      w.__kept.push({ detail, json: JSON.stringify(detail) });
+    });
+  }, selector);
+  const kept = () => page.evaluate(() => (window as unknown as { __kept: { detail: unknown; json: string }[] }).__kept
+    .map((k) => ({ now: JSON.stringify(k.detail), then: k.json })));
+  // 1: the page sets the camera; 2: a right-drag pans (position and target move); 3: a key orbits.
+  await setAttributes(page, selector, { 'camera-position': '1 2 7', 'camera-target': '0 0.5 0' });
+  await expect.poll(async () => (await kept()).length).toBe(1);
+  const b = await box(page, selector);
+  const cdp = await page.context().newCDPSession(page);
+  await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 30, y: b.cy + 10 }, { t0: 35, steps: 6, dtMs: 16, restMs: 200, button: 'right', handledBy: page });
+  await expect.poll(async () => (await kept()).length).toBe(2);
+  await page.focus(selector);
+  await page.keyboard.press('ArrowLeft');
+  await expect.poll(async () => (await kept()).length).toBe(3);
+  const details = await kept();
+  expect(new Set(details.map((d) => d.then)).size, 'three different cameras announced').toBe(3);
+  for (const [i, d] of details.entries()) expect(d.now, `detail ${i + 1}, read after the later changes`).toBe(d.then);
+});
+
 // orbit and trackball are a chunk of their own (controls/pointer-controls.ts), loaded the first
 // time `controls` asks for them: the frame after that waits for it, so a drag after the next
 // frame is never lost — even when the chunk is slow to come (held back 600 ms here).
