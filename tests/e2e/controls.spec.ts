@@ -5,7 +5,7 @@
 // objects, the orbit's near side, the point under a pan), and with pixels. Inertia by the wall
 // clock at several frame rates: inertia.spec.ts.
 import type { CDPSession, Page } from '@playwright/test';
-import { test, expect, mount, openPage, capture, setAttributes } from './fixtures';
+import { test, expect, mount, openPage, capture, nextFrame, setAttributes, type SceneElement } from './fixtures';
 import { compareImages } from './helpers/golden';
 import { box, DEG, drag, pose, recordCameraChanges, rotationOf, screenOffset, type ControlsElement, type Quat } from './helpers/controls-input';
 import { forwardFromYawPitch } from '../../src/math/camera';
@@ -42,11 +42,10 @@ test.describe('trackball', () => {
     const after = await capture(page, undefined, selector);
     expect(compareImages(before, after).differing, 'pixels changed by the drag').toBeGreaterThan(500);
     await setAttributes(page, selector, { controls: null });
-    await page.evaluate((s) => { (document.querySelector(s) as unknown as ControlsElement).objectRotation = [0, 0, 0, 1]; }, selector);
-    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    // Each set rotation is in the next frame drawn (waited for as its `frame` event).
+    await nextFrame(page, selector, new Function('el', 'el.objectRotation = [0, 0, 0, 1];') as (el: SceneElement) => void);
     expect(compareImages(before, await capture(page, undefined, selector)).differing, 'identity rotation: the first picture again').toBe(0);
-    await page.evaluate(([s, q]) => { (document.querySelector(s as string) as unknown as ControlsElement).objectRotation = q as Quat; }, [selector, q] as const);
-    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    await nextFrame(page, selector, new Function('el', `el.objectRotation = ${JSON.stringify(q)};`) as (el: SceneElement) => void);
     expect(compareImages(after, await capture(page, undefined, selector)).differing, 'the dragged picture from objectRotation').toBe(0);
   });
 
