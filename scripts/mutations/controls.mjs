@@ -135,6 +135,21 @@ export default [
     tests: [CONTROLS],
   },
   {
+    name: 'C24 a press does not stop the trackball\'s spin after a flick (held, the objects turn on)',
+    edits: [{ file: POINTER, find: '    this.spin.stop();\n    if (this.pointers.size === 1)', replace: '    if (this.pointers.size === 1)' }],
+    tests: [INERTIA],
+  },
+  {
+    name: 'C25 controls changed during an orbit\'s inertia drops the gesture (nothing written back, no camera-change)',
+    edits: [{ file: INPUT, find: '    this.pointer.cancel();\n    this.gestureEnd();', replace: '    this.pointer.cancel();' }],
+    tests: [INERTIA],
+  },
+  {
+    name: 'C26 camera-change details share the pose\'s position array (a kept detail moves with the camera)',
+    edits: [{ file: 'src/element/camera-rig.ts', find: '{ position: [...position], rotation: [yaw, pitch] };', replace: '{ position, rotation: [yaw, pitch] };' }],
+    tests: [CONTROLS],
+  },
+  {
     name: 'C20 no frame asked for once the element\'s lazy parts settle (frames held for ever)',
     edits: [{ file: 'src/element/glass-plane-scene.ts', find: '{ settled: requestRender, warn }', replace: '{ settled: () => {}, warn }' }],
     tests: [CONTROLS],

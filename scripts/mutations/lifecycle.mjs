@@ -111,4 +111,10 @@ export default [
     edits: [{ file: SOFTWARE, find: "        this.host.resume(this.software.thread === 'worker');", replace: '        this.host.resume(true);' }],
     tests: ['tests/e2e/software.spec.ts'],
   },
+  {
+    name: 'L20 properties set before the definition set again only at connection (an upgraded element not yet connected ignores them)',
+    edits: [{ file: ELEMENT, find: "    for (const name of upgradeProperties(this, ['alt', 'objectRotation'])) this.attributeChangedCallback(name);\n", replace: '' },
+      { file: ELEMENT, find: '  connectedCallback(): void {\n', replace: "  connectedCallback(): void {\n    for (const name of upgradeProperties(this, ['alt', 'objectRotation'])) this.attributeChangedCallback(name);\n" }],
+    tests: ['tests/e2e/properties.spec.ts'],
+  },
 ];

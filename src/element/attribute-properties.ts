@@ -25,14 +25,21 @@ export function defineAttributeProperties(proto: AttributeHost): void {
   }
 }
 
-/** A property set before the element was defined shadows the accessor: replay it through it. */
-export function upgradeProperties(el: HTMLElement): void {
+/**
+ * Properties set on the element before it was defined shadow its accessors: each (of the
+ * attribute table and `extra`, whose attributes are their names) is deleted and set again
+ * through its accessor. Returns the attributes of those set again.
+ */
+export function upgradeProperties(el: HTMLElement, extra: readonly string[]): string[] {
   const own = el as unknown as Record<string, unknown>;
-  for (const { property } of ATTRIBUTES) {
+  const set: string[] = [];
+  for (const { property, attribute } of [...ATTRIBUTES, ...extra.map((p) => ({ property: p, attribute: p }))]) {
     if (Object.prototype.hasOwnProperty.call(el, property)) {
       const value = own[property];
       delete own[property];
       own[property] = value;
+      set.push(attribute);
     }
   }
+  return set;
 }

@@ -158,12 +158,14 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
       resume: (offThread: boolean) => this.loop.resume(offThread),
     });
     this.controllers = [this.rig, this.loop, this.source, this.backend];
+    // An upgrade: what the page set before the definition goes through the accessors now, so it
+    // holds before the element is connected; the attributes it writes get no callback meanwhile.
+    for (const name of upgradeProperties(this, ['alt', 'objectRotation'])) this.attributeChangedCallback(name);
   }
 
   // ---- lifecycle -------------------------------------------------------------------------
 
   connectedCallback(): void {
-    upgradeProperties(this);
     if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
     if (!this.hasAttribute('role')) this.setAttribute('role', 'img');
     if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', this.alt);
@@ -174,7 +176,10 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     for (const c of this.controllers) c.hostDisconnected?.();
   }
 
-  attributeChangedCallback(name: string, _old: string | null, raw: string | null): void {
+  attributeChangedCallback(name: string): void {
+    // The value now: an upgrade queues its callbacks with the values the attributes had before
+    // the constructor, which may have set them since (upgradeProperties).
+    const raw = this.getAttribute(name);
     if (name === 'alt') {
       this.setAttribute('aria-label', raw ?? DEFAULT_LABEL);
       return;

@@ -5,7 +5,7 @@
 // objects, the orbit's near side, the point under a pan), and with pixels. Inertia by the wall
 // clock at several frame rates: inertia.spec.ts.
 import type { CDPSession, Page } from '@playwright/test';
-import { test, expect, mount, openPage, capture, setAttributes } from './fixtures';
+import { test, expect, mount, openPage, capture, nextFrame, setAttributes, type SceneElement } from './fixtures';
 import { compareImages } from './helpers/golden';
 import { box, DEG, drag, pose, recordCameraChanges, rotationOf, screenOffset, type ControlsElement, type Quat } from './helpers/controls-input';
 import { forwardFromYawPitch } from '../../src/math/camera';
@@ -42,11 +42,10 @@ test.describe('trackball', () => {
     const after = await capture(page, undefined, selector);
     expect(compareImages(before, after).differing, 'pixels changed by the drag').toBeGreaterThan(500);
     await setAttributes(page, selector, { controls: null });
-    await page.evaluate((s) => { (document.querySelector(s) as unknown as ControlsElement).objectRotation = [0, 0, 0, 1]; }, selector);
-    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    // Each set rotation is in the next frame drawn (waited for as its `frame` event).
+    await nextFrame(page, selector, new Function('el', 'el.objectRotation = [0, 0, 0, 1];') as (el: SceneElement) => void);
     expect(compareImages(before, await capture(page, undefined, selector)).differing, 'identity rotation: the first picture again').toBe(0);
-    await page.evaluate(([s, q]) => { (document.querySelector(s as string) as unknown as ControlsElement).objectRotation = q as Quat; }, [selector, q] as const);
-    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+    await nextFrame(page, selector, new Function('el', `el.objectRotation = ${JSON.stringify(q)};`) as (el: SceneElement) => void);
     expect(compareImages(after, await capture(page, undefined, selector)).differing, 'the dragged picture from objectRotation').toBe(0);
   });
 
@@ -390,6 +389,34 @@ test('camera-change: one per batch of camera attributes set by the page, none fo
   await expect.poll(async () => (await changes()).length).toBe(2);
   await page.waitForTimeout(100);
   expect((await changes()).length).toBe(2);
+});
+
+test('camera-change details a listener keeps are never changed by later camera changes (attributes, a pan, an orbit)', async ({ page }) => {
+  await openPage(page);
+  const { selector } = await mount(page, { time: 0, spin: 0, controls: 'orbit', 'camera-position': '0 1 6', 'camera-target': '0 0 0' }, SIZE);
+  await page.evaluate((s) => {
+    const w = window as unknown as { __kept: { detail: unknown; json: string }[] };
+    w.__kept = [];
+    document.querySelector(s)!.addEventListener('camera-change', (e) => {
+      const detail = (e as CustomEvent).detail;
+      w.__kept.push({ detail, json: JSON.stringify(detail) });
+    });
+  }, selector);
+  const kept = () => page.evaluate(() => (window as unknown as { __kept: { detail: unknown; json: string }[] }).__kept
+    .map((k) => ({ now: JSON.stringify(k.detail), then: k.json })));
+  // 1: the page sets the camera; 2: a right-drag pans (position and target move); 3: a key orbits.
+  await setAttributes(page, selector, { 'camera-position': '1 2 7', 'camera-target': '0 0.5 0' });
+  await expect.poll(async () => (await kept()).length).toBe(1);
+  const b = await box(page, selector);
+  const cdp = await page.context().newCDPSession(page);
+  await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 30, y: b.cy + 10 }, { t0: 35, steps: 6, dtMs: 16, restMs: 200, button: 'right', handledBy: page });
+  await expect.poll(async () => (await kept()).length).toBe(2);
+  await page.focus(selector);
+  await page.keyboard.press('ArrowLeft');
+  await expect.poll(async () => (await kept()).length).toBe(3);
+  const details = await kept();
+  expect(new Set(details.map((d) => d.then)).size, 'three different cameras announced').toBe(3);
+  for (const [i, d] of details.entries()) expect(d.now, `detail ${i + 1}, read after the later changes`).toBe(d.then);
 });
 
 // orbit and trackball are a chunk of their own (controls/pointer-controls.ts), loaded the first

@@ -5,10 +5,11 @@
 // yaw (orbit): the angle still to turn decays as e^(−t/τ), τ ≤ 0.5 s at every rate, and the
 // whole turn after release is the same at every rate. The orbit's inertia is in one unit: a
 // flick turns on at its own rate (not 6.3°/s), and its camera-change comes when the rate falls
-// below 0.05°/s, at τ·ln(r₀ / 0.05°/s) after the release.
+// below 0.05°/s, at τ·ln(r₀ / 0.05°/s) after the release. A press, held without moving, stops a
+// trackball's spin where it finds it (seen red without the stop in onDown: 13° more by the next frame).
 import type { Page } from '@playwright/test';
 import { test, expect, mount, openPage } from './fixtures';
-import { box, drag, quatAngle, recordCameraChanges, type ControlsElement, type Quat } from './helpers/controls-input';
+import { box, drag, EPOCH, pose, quatAngle, recordCameraChanges, rotationOf, type ControlsElement, type Quat } from './helpers/controls-input';
 import { INERTIA_TAU } from '../../src/element/controls/inertia';
 
 interface Pace { fps: number; tickAt: number; idle(): boolean }
@@ -126,6 +127,44 @@ test.describe('trackball inertia', () => {
     }
     expectWallClockDecay('trackball', runs);
   });
+
+  test('trackball: a press (held, not moved) on objects still spinning after a flick stops them; they stay where the press found them', async ({ page }) => {
+    await openPage(page);
+    const { selector } = await mount(page, { ...CHEAP, time: 0, spin: 0, controls: 'trackball' }, { width: 160, height: 90 });
+    const b = await box(page, selector);
+    const cdp = await page.context().newCDPSession(page);
+    // The rotation as the press arrives (capture: before the element's own handler, in the same task).
+    await page.evaluate((s) => {
+      const el = document.querySelector(s) as unknown as ControlsElement;
+      const w = window as unknown as { __atPress: Quat | null };
+      w.__atPress = null;
+      window.addEventListener('pointerdown', () => { w.__atPress = el.objectRotation; }, true);
+    }, selector);
+    await drag(cdp, { x: b.cx - 20, y: b.cy + 5 }, { x: b.cx + 20, y: b.cy - 5 }, { t0: 50, steps: 8, dtMs: 16, restMs: 8, handledBy: page });
+    const released = await rotationOf(page, selector);
+    // Still spinning: a frame after the release has turned the objects further.
+    await page.evaluate((s) => new Promise((r) => document.querySelector(s)!.addEventListener('frame', r, { once: true })), selector);
+    expect(quatAngle(released, await rotationOf(page, selector)), 'turned on after the release').toBeGreaterThan(0.5);
+    await page.evaluate(() => { (window as unknown as { __atPress: Quat | null }).__atPress = null; });
+    const t = EPOCH + 51;
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', x: b.cx, y: b.cy, button: 'left', buttons: 1, clickCount: 1, timestamp: t });
+    await page.waitForFunction(() => (window as unknown as { __atPress: Quat | null }).__atPress !== null, undefined, { polling: 5 });
+    const atPress = await page.evaluate(() => (window as unknown as { __atPress: Quat }).__atPress);
+    // Held: frames asked for and drawn, and the objects have not moved since the press.
+    const held = await page.evaluate(async (s) => {
+      const el = document.querySelector(s) as unknown as ControlsElement;
+      const seen: Quat[] = [];
+      for (let i = 0; i < 3; i++) {
+        const frame = new Promise((r) => el.addEventListener('frame', r, { once: true }));
+        el.requestRender();
+        await frame;
+        seen.push(el.objectRotation);
+      }
+      return seen;
+    }, selector);
+    for (const [i, q] of held.entries()) expect(quatAngle(atPress, q), `frame ${i + 1} while held: turned since the press (°)`).toBe(0);
+    await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: b.cx, y: b.cy, button: 'left', buttons: 0, clickCount: 1, timestamp: t + 0.3 });
+  });
 });
 
 test('orbit: after a flick the camera\'s turn decays with τ ≤ 0.5 s in real time at 13, 30 and 144 frames/s, and turns as far at each', async ({ page }) => {
@@ -193,6 +232,41 @@ test('orbit: a flick turns on at its release rate (no 6.3°/s cap), and its one 
   const attrs = await page.evaluate((s) => document.querySelector(s)!.getAttribute('camera-rotation'), selector);
   expect(attrs!.split(' ').map(Number), 'the written camera-rotation is the one announced').toEqual(change.rotation);
 });
+
+for (const next of [null, 'trackball'] as const) {
+  test(`orbit: controls changed to ${next ?? 'none'} while a flick's inertia runs ends the gesture there: the camera written back and one camera-change`, async ({ page }) => {
+    await openPage(page);
+    const { selector } = await mount(page, { ...CHEAP, time: 0, spin: 0, controls: 'orbit', 'camera-position': '0 1 6', 'camera-target': '0 0 0' }, { width: 160, height: 90 });
+    const changes = await recordCameraChanges(page, selector);
+    const start = await pose(page, selector);
+    const b = await box(page, selector);
+    const cdp = await page.context().newCDPSession(page);
+    await drag(cdp, { x: b.cx - 20, y: b.cy }, { x: b.cx + 20, y: b.cy }, { t0: 95, steps: 10, dtMs: 16, restMs: 8, handledBy: page });
+    // A frame of the inertia, then the change: the pose then is what is written and announced.
+    const live = await page.evaluate(([s, next]) => new Promise<{ position: number[]; rotation: number[] }>((resolve) => {
+      const el = document.querySelector(s as string) as unknown as ControlsElement & { cameraPosition: number[]; cameraRotation: number[] };
+      el.addEventListener('frame', () => {
+        const at = { position: el.cameraPosition, rotation: el.cameraRotation };
+        if (next === null) el.removeAttribute('controls');
+        else el.setAttribute('controls', next as string);
+        resolve(at);
+      }, { once: true });
+    }), [selector, next] as const);
+    expect(Math.abs(live.rotation[0] - start.rotation[0]), 'the inertia had turned the camera (°)').toBeGreaterThan(1);
+    await expect.poll(async () => (await changes()).length, { message: 'the gesture ended' }).toBe(1);
+    const [change] = await changes();
+    expect(change.rotation, 'announced: the pose at the change').toEqual(live.rotation);
+    expect(change.position).toEqual(live.position);
+    const attrs = await page.evaluate((s) => ['camera-position', 'camera-rotation'].map((a) => document.querySelector(s)!.getAttribute(a)), selector);
+    expect(attrs[0]!.split(' ').map(Number), 'camera-position written back').toEqual(live.position);
+    expect(attrs[1]!.split(' ').map(Number), 'camera-rotation written back').toEqual(live.rotation);
+    // Nothing moves on, and no second event comes.
+    await page.evaluate((s) => new Promise((r) => { const el = document.querySelector(s) as unknown as ControlsElement; el.addEventListener('frame', r, { once: true }); el.requestRender(); }), selector);
+    await page.waitForTimeout(300);
+    expect(await changes(), 'one camera-change').toHaveLength(1);
+    expect((await pose(page, selector)).rotation, 'the camera stopped').toEqual(live.rotation);
+  });
+}
 
 /**
  * A busy page: from the release on, the page's own requestAnimationFrame loop works 20 ms in

@@ -309,6 +309,63 @@ test.describe('attributes and properties', () => {
   });
 });
 
+test.describe('properties set before the element is defined', () => {
+  // What the page sets first: the camera's fov (over a markup fov="40" on the one in the
+  // document), a frame-state attribute, a scene attribute, and the trackball's rotation.
+  const SET = { fov: 30, transparency: 0.9, cubeDistance: 1.2 };
+  const TURN = [0, Math.sin(Math.PI / 12), 0, Math.cos(Math.PI / 12)];
+
+  test('survive the upgrade: in the document, upgraded before it is connected, and upgraded when appended; the frames use them', async ({ page }) => {
+    await page.goto('/tests/e2e/pages/undefined.html');
+    const r = await page.evaluate(async ({ set, turn }) => {
+      type El = HTMLElement & Record<string, unknown>;
+      const make = (id: string) => {
+        const el = document.createElement('glass-plane-scene') as unknown as El;
+        el.id = id;
+        el.setAttribute('time', '1.25');
+        el.setAttribute('spin', '0');
+        el.style.width = '160px';
+        el.style.height = '90px';
+        return el;
+      };
+      const ready = (el: El) => new Promise((r) => el.addEventListener('ready', r, { once: true }));
+      const setAll = (el: El) => { Object.assign(el, set); el.objectRotation = turn; };
+      const inDoc = make('in-doc'), early = make('early'), late = make('late');
+      inDoc.setAttribute('fov', '40');
+      document.body.append(inDoc);
+      for (const el of [inDoc, early, late]) setAll(el);
+      const inDocReady = ready(inDoc);
+      await import('/src/index.ts' as string);
+      await customElements.whenDefined('glass-plane-scene');
+      customElements.upgrade(early); // upgraded, not connected
+      const read = (el: El) => ({
+        values: { fov: el.fov, transparency: el.transparency, cubeDistance: el.cubeDistance },
+        attrs: [el.getAttribute('fov'), el.getAttribute('transparency'), el.getAttribute('cube-distance')],
+        rotation: el.objectRotation,
+        own: ['fov', 'transparency', 'cubeDistance', 'objectRotation'].filter((p) => Object.prototype.hasOwnProperty.call(el, p)),
+      });
+      const beforeConnected = read(early);
+      const readies = [inDocReady, ready(early), ready(late)];
+      document.body.append(early, late);
+      await Promise.all(readies);
+      return { beforeConnected, inDoc: read(inDoc), early: read(early), late: read(late) };
+    }, { set: SET, turn: TURN });
+    const expected = { values: SET, attrs: ['30', '0.9', '1.2'], rotation: TURN.map((x) => expect.closeTo(x, 12)), own: [] };
+    expect(r.beforeConnected, 'upgraded, not yet connected').toEqual(expected);
+    expect(r.inDoc, 'in the document when defined').toEqual(expected);
+    expect(r.early, 'upgraded, then connected').toEqual(expected);
+    expect(r.late, 'upgraded when connected').toEqual(expected);
+    // Their frames are those of an element given the same values once defined.
+    const { selector } = await mount(page, { time: 1.25, spin: 0, fov: 30, transparency: 0.9, 'cube-distance': 1.2 }, { width: 160, height: 90 });
+    await nextFrame(page, selector, new Function('el', `el.objectRotation = ${JSON.stringify(TURN)};`) as (el: SceneElement) => void);
+    const reference = await capture(page, undefined, selector);
+    for (const id of ['#in-doc', '#early', '#late']) {
+      await nextFrame(page, id);
+      expect(compareImages(reference, await capture(page, undefined, id)).differing, `${id}: pixels unlike the reference`).toBe(0);
+    }
+  });
+});
+
 test.describe('events', () => {
   test('frame reports which passes ran, and why one was skipped', async ({ page }) => {
     const { selector, ready } = await mount(page, { time: 1.25, 'debug-view': 'scene' }, SIZE);

@@ -3,7 +3,8 @@
 // Each broken on purpose once and seen red: FrameSetup's side by the eye's position (the clip
 // test), the mirrored view vector left unmirrored (the view-vector test; no e2e figure moves
 // enough to see it: only the reflected highlights change), sphereScreenRadius ignoring the
-// orthographic half-height (the sizes test).
+// orthographic half-height (the sizes test), the target's distance taken for its depth (the
+// target across the ray), the glass centre taken before the target (the target along the ray).
 import { describe, expect, it } from 'vitest';
 import { apply, expectClose } from './helpers/math';
 import { forwardFromYawPitch, viewerSide } from '../../src/math/camera';
@@ -163,6 +164,33 @@ describe('the mirrored orthographic camera (FrameSetup)', () => {
     expect(keep([3, 0, -2])).toBeCloseTo(-MIRROR_CONTACT, 6);
     expect(keep([3, 0, -2])).toBeLessThan(0);
     expect(keep([3, 2 * MIRROR_CONTACT, -2])).toBeGreaterThan(0);
+  });
+});
+
+describe('a camera-target moving along the view ray (FrameSetup)', () => {
+  // The eye at (0, 1, 5) looks down 30° along −Z: forward f = (0, −1/2, −√3/2), right (1, 0, 0),
+  // up (0, √3/2, −1/2). The target starts 4 along f: depth 4, half-height 4·tan 30°.
+  const eye: [number, number, number] = [0, 1, 5];
+  const S3 = Math.sqrt(3);
+  const along = (depth: number, right = 0, up = 0): [number, number, number] =>
+    [right, 1 - depth / 2 + up * S3 / 2, 5 - depth * S3 / 2 - up / 2];
+  const halfHeight = (target: [number, number, number]) => {
+    const s = state({ cameraPosition: eye, yaw: -90, pitch: -30, target });
+    const setup = new FrameSetup(null, orthographicView);
+    setup.update(s, defaultScene(s.cubeDistance, s.spin));
+    return setup.halfHeight;
+  };
+
+  it('grows by k·tan(fov/2) when the target moves k further along the ray, and shrinks as it comes nearer', () => {
+    expect(halfHeight(along(4))).toBeCloseTo(4 * TAN30, 12);
+    expect(halfHeight(along(6))).toBeCloseTo(6 * TAN30, 12);
+    expect(halfHeight(along(1.5))).toBeCloseTo(1.5 * TAN30, 12);
+  });
+
+  it('keeps its size when the target moves across the ray (right and up), its depth unchanged', () => {
+    expect(halfHeight(along(4, 3, 0))).toBeCloseTo(4 * TAN30, 12);
+    expect(halfHeight(along(4, 0, 2))).toBeCloseTo(4 * TAN30, 12);
+    expect(halfHeight(along(4, -3, 2))).toBeCloseTo(4 * TAN30, 12);
   });
 });
 

@@ -114,9 +114,13 @@ export class ControlsInput implements Controller {
     return this.flyby.active || this.pointer.active;
   }
 
-  /** `controls` changed: a gesture and a motion under way stop. */
+  /**
+   * `controls` changed: a gesture and a motion under way stop, and end as a gesture ends: where
+   * they moved the camera, it is written back and announced once (docs/interaction.md#write-back-and-camera-change).
+   */
   cancel(): void {
     this.pointer.cancel();
+    this.gestureEnd();
   }
 
   /** A frame begins: the flyby and the motion after release advance. */

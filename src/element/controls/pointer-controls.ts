@@ -113,10 +113,11 @@ export class PointerControls implements Controller {
     this.cancel();
   }
 
-  /** Drops any gesture and motion in progress (mode change, disconnection). */
+  /** Stops any gesture and motion in progress (mode change, disconnection); the host ends the gesture. */
   cancel(): void {
     this.pointers.clear();
     this.drag = null;
+    this.moved = false;
     this.spin.stop();
     clearTimeout(this.wheelTimer);
     this.wheelTimer = undefined;
