@@ -64,7 +64,7 @@ export default [
   },
   {
     name: 'Z11 the core\'s own axis quaternion: the whole angle where the half belongs',
-    edits: [{ file: 'src/scene/group-rotation.ts', find: 'const h = (deg * DEG) / 2,', replace: 'const h = deg * DEG,' }],
+    edits: [{ file: 'src/scene/group-rotation.ts', find: 'const h = (deg * DEG) / 2;', replace: 'const h = deg * DEG;' }],
     tests: ['tests/unit/controls.test.ts'],
   },
   {

@@ -63,7 +63,7 @@ export default [
   },
   {
     name: 'E8 removal leaves the element a client of the shared context (rebuilt on a restore)',
-    edits: [{ file: BACKENDS, find: '    this.shared?.release(this);\n', replace: '' }],
+    edits: [{ file: BACKENDS, find: '    this.stop();\n    this.shared?.release(this);\n', replace: '    this.stop();\n' }],
     tests: [LEAKS],
   },
   {
@@ -116,5 +116,10 @@ export default [
     edits: [{ file: ELEMENT, find: "    for (const name of upgradeProperties(this, ['alt', 'objectRotation'])) this.attributeChangedCallback(name);\n", replace: '' },
       { file: ELEMENT, find: '  connectedCallback(): void {\n', replace: "  connectedCallback(): void {\n    for (const name of upgradeProperties(this, ['alt', 'objectRotation'])) this.attributeChangedCallback(name);\n" }],
     tests: ['tests/e2e/properties.spec.ts'],
+  },
+  {
+    name: 'L21 switched to the software renderer, the element stays a client of the shared context (its loss stops it; the canvas keeps WebGL\'s limit)',
+    edits: [{ file: BACKENDS, find: '    if (wantSoftware) {\n      this.shared?.release(this);\n      this.shared = null;\n    }\n', replace: '' }],
+    tests: [LIFECYCLE],
   },
 ];
