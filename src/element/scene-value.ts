@@ -8,7 +8,7 @@
 // in, `scene` is the value unturned.
 import type { ReadonlyQuat } from 'gl-matrix';
 import { isIdentity, type SceneTurn } from '../scene/turn';
-import type { Scene } from '../scene/scene';
+import { deepFreeze, type Scene } from '../scene/scene';
 import { composeScene, SCENE_ATTRIBUTES, type ChildParts, type SceneInputs } from './compose-scene';
 import type { SceneAttributes } from './attributes';
 
@@ -50,7 +50,7 @@ export class SceneValue {
   /** What the renderers draw, without the turn: the same object until the content changes. */
   get current(): Scene {
     if (!this.value) {
-      this.value = composeScene(this.host.inputs(), this.host.parts());
+      this.value = deepFreeze(composeScene(this.host.inputs(), this.host.parts()));
       this.images = this.value.objects.some((o) => o.material.texture.kind === 'image');
       this.centered = false;
       this.builds++;
@@ -70,7 +70,7 @@ export class SceneValue {
   get turned(): Scene {
     const code = this.rotation;
     if (!code) return this.current;
-    return (this.turnedValue ??= code.rotateScene(this.current, this.host.objectRotation, this.host.lightRotation));
+    return (this.turnedValue ??= deepFreeze(code.rotateScene(this.current, this.host.objectRotation, this.host.lightRotation)));
   }
 
   /** The value last built names an image texture. */

@@ -90,3 +90,16 @@ export interface Scene {
   /** Clear colour, also of the reflection. */
   background: Vec3;
 }
+
+/**
+ * `value` and everything in it frozen, but typed arrays (which cannot be): the scene value the
+ * element hands over. A page that changed it in place would otherwise see some renderers follow
+ * and others not — the software renderer's caches know a value by identity (docs/scene-model.md#one-scene-value).
+ */
+export function deepFreeze<T>(value: T): T {
+  if (value !== null && typeof value === 'object' && !ArrayBuffer.isView(value) && !Object.isFrozen(value)) {
+    Object.freeze(value);
+    for (const v of Object.values(value)) deepFreeze(v);
+  }
+  return value;
+}

@@ -229,3 +229,29 @@ test('meshes from files are drawn from both sides and lit on the side facing the
   // Not culled, and N turned towards the viewer: N·L = 1, full white (unlit it would be black).
   expect(img.data[i], 'the triangle, lit from the viewer\u2019s side').toBeGreaterThanOrEqual(254);
 });
+
+test('the page\'s scene value is frozen through and through: a change in place throws, and the element and both renderers draw on as before', async ({ page }) => {
+  await openPage(page);
+  for (const renderer of ['webgl', 'software']) {
+    const { selector } = await mount(page, { time: 0, spin: 0, renderer, 'object-rotation': '' }, { width: 160, height: 90 });
+    const before = await capture(page, undefined, selector);
+    const tries = await page.evaluate((s) => {
+      'use strict'; // assignments to frozen properties throw, as in a module
+      const scene = (document.querySelector(s) as unknown as { scene: Scene }).scene;
+      const attempts: [string, () => void][] = [
+        ['an object\'s position', () => { (scene.objects[0].transform.position as unknown as number[])[1] = 5; }],
+        ['a material', () => { (scene.objects[0].material as { opacity: number }).opacity = 0.2; }],
+        ['the objects', () => { (scene.objects as SceneObject[]).pop(); }],
+        ['a light', () => { (scene.lights[0].diffuse as unknown as number[])[0] = 9; }],
+        ['the background', () => { (scene.background as unknown as number[])[0] = 1; }],
+        ['the glass', () => { (scene as { glass: unknown }).glass = null; }],
+      ];
+      return attempts.map(([name, f]) => { try { f(); return `${name}: changed`; } catch (e) { return `${name}: ${(e as Error).name}`; } });
+    }, selector);
+    expect(tries, renderer).toEqual([
+      'an object\'s position: TypeError', 'a material: TypeError', 'the objects: TypeError', 'a light: TypeError', 'the background: TypeError', 'the glass: TypeError',
+    ]);
+    await page.evaluate((s) => (document.querySelector(s) as unknown as { requestRender(): void }).requestRender(), selector);
+    expect(compareImages(await capture(page, undefined, selector), before).differing, renderer).toBe(0);
+  }
+});
