@@ -1,4 +1,4 @@
-// Size limits of src/, so each file and function can be read whole: no function over 80 lines, no file over 400. A long function is
+// Size limits of src/, so each file and function can be read whole: no function over 80 lines, no file over 400 (the element's host 300). A long function is
 // split where a name explains the piece; a long file by concern. Functions are measured on the
 // syntax tree (Vite's parser), from the line their declaration starts on to the line it ends on.
 //
@@ -13,9 +13,10 @@ import { sourceFiles } from './check-layers.mjs';
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 export const MAX_FUNCTION_LINES = 80;
 export const MAX_FILE_LINES = 400;
-/** Files not held to the limits yet, relative to the root, with the reason. */
-export const EXEMPT = new Map([
-  ['src/element/glass-plane-scene.ts', 'being split into controllers'],
+/** Files held to a tighter limit of lines than MAX_FILE_LINES, relative to the root. */
+export const FILE_LIMITS = new Map([
+  // The thin host over the element's controllers (ARCHITECTURE.md): what grows it belongs in one.
+  ['src/element/glass-plane-scene.ts', 300],
 ]);
 
 const FUNCTIONS = new Set(['FunctionDeclaration', 'FunctionExpression', 'ArrowFunctionExpression']);
@@ -61,10 +62,9 @@ export function check(root = ROOT, all = []) {
   const problems = [];
   for (const file of sourceFiles(path.join(root, 'src'))) {
     const rel = path.relative(root, file).split(path.sep).join('/');
-    if (EXEMPT.has(rel)) continue;
     const code = fs.readFileSync(file, 'utf8');
-    const lines = code.split('\n').length - (code.endsWith('\n') ? 1 : 0);
-    if (lines > MAX_FILE_LINES) problems.push(`${rel}: ${lines} lines (at most ${MAX_FILE_LINES})`);
+    const lines = code.split('\n').length - (code.endsWith('\n') ? 1 : 0), limit = FILE_LIMITS.get(rel) ?? MAX_FILE_LINES;
+    if (lines > limit) problems.push(`${rel}: ${lines} lines (at most ${limit})`);
     for (const f of functionsOf(code, rel)) {
       all.push({ ...f, file: rel });
       if (f.lines > MAX_FUNCTION_LINES) problems.push(`${rel}:${f.line}: ${f.name} is ${f.lines} lines (at most ${MAX_FUNCTION_LINES})`);

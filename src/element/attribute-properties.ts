@@ -1,6 +1,7 @@
 // One camelCase accessor per row of the attribute table: the getter returns the parsed value,
 // the setter writes the attribute (which parses, warns if needed and re-renders).
-import { ATTRIBUTES, propertyToRaw, type SceneAttributes } from './attributes';
+import { ATTRIBUTES, ATTRIBUTE_BY_NAME, propertyToRaw, type SceneAttributes } from './attributes';
+import type { AttributeWarnings } from './warnings';
 
 /** Where an element keeps its parsed values; `live` may override one (the flown camera). */
 export interface AttributeHost extends HTMLElement {
@@ -42,4 +43,17 @@ export function upgradeProperties(el: HTMLElement, extra: readonly string[]): st
     }
   }
   return set;
+}
+
+/**
+ * Attribute `name` parsed into `values` (a bad value warned about once, its fallback kept): its
+ * property, or null for an attribute that is not one of the table's.
+ */
+export function parseAttribute(values: SceneAttributes, name: string, raw: string | null, warnings: AttributeWarnings): keyof SceneAttributes | null {
+  const spec = ATTRIBUTE_BY_NAME.get(name);
+  if (!spec) return null;
+  const parsed = spec.parse(raw);
+  if (parsed.problem) warnings.report(spec, raw ?? '', parsed.problem);
+  (values as unknown as Record<string, unknown>)[spec.property] = parsed.value;
+  return spec.property;
 }

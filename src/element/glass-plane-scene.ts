@@ -2,12 +2,12 @@
 // attributes and fans their changes out, and keeps the public API and its events. When frames are
 // drawn is the FrameLoop's business, the camera the CameraRig's, the scene value SceneValue's,
 // who draws the BackendController's (WebGL2 or the CPU), and all GL work the renderer's.
-import { ATTRIBUTES, ATTRIBUTE_BY_NAME, DEBUG_VIEWS, defaultAttributes, type SceneAttributes } from './attributes';
-import { defineAttributeProperties, upgradeProperties, type AttributeHost } from './attribute-properties';
+import { ATTRIBUTES, DEBUG_VIEWS, defaultAttributes, type SceneAttributes } from './attributes';
+import { defineAttributeProperties, parseAttribute, upgradeProperties, type AttributeHost } from './attribute-properties';
 import { AttributeWarnings, warn } from './warnings';
 import { applyStyle } from './element-style';
 import { readCanvas } from './canvas-readback';
-import type { FrameReport, FrameState, RenderStats } from '../frame/types';
+import type { FrameState, RenderStats } from '../frame/types';
 import type { Scene } from '../scene/scene';
 import type { CapturePass, GlassPlaneSceneEventMap } from './types';
 import type { Controller } from './controller';
@@ -23,6 +23,8 @@ import { CameraRig } from './camera-rig';
 import { FrameLoop } from './frame-loop';
 import { BackendController } from './backend-controller';
 import { Failure } from './failure';
+import { FrameEvents } from './frame-events';
+import { routeAttribute, type AttributeRoutes } from './attribute-routes';
 
 const DEFAULT_LABEL = 'A dark glass plane reflecting a cube, with a sphere behind it';
 
@@ -99,8 +101,9 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
   private readonly backend: BackendController;
   /** Connected and disconnected in this order. */
   private readonly controllers: Controller[];
-  private frames = 0;
-  private readyFired = false;
+  private readonly events: FrameEvents;
+  /** Where each attribute's change goes beyond the scene value and the frame state. */
+  private readonly routes: AttributeRoutes;
 
   constructor() {
     super();
@@ -127,36 +130,30 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     const parts: ElementPartsHost = {
       values: this.values, rig: this.rig, scenes: this.scenes, source: this.source,
       namesImages: () => this.scenes.namesImages(),
-      imagesArrived: (chunk) => {
-        this.images = new chunk.TextureImages({ sink: () => this.backend.current, loaded: requestRender });
-      },
+      imagesArrived: (chunk) => { this.images = new chunk.TextureImages({ sink: () => this.backend.current, loaded: requestRender }); },
       provideRotation: (code) => this.parts.provide(GROUP_ROTATION, code),
     };
     this.parts = new LazyParts(ELEMENT_PARTS, parts, { settled: requestRender, warn });
     this.states.current.turn = this.scenes.turn;
     this.loop = new FrameLoop({
-      element: this, canvas,
-      pixelRatio: () => this.values.pixelRatio,
-      maxSize: () => this.backend.maxSize,
+      element: this, canvas, pixelRatio: () => this.values.pixelRatio, maxSize: () => this.backend.maxSize,
       canDraw: () => this.backend.current !== null && !this.failure.type,
       animating: () => (this.values.time === null && sceneSpins(this.scenes.current)) || this.rig.moving,
       frame: (now) => this.drawFrame(now),
-      paused: () => this.rig.paused(),
-      idle: () => this.rig.idle(),
+      paused: () => this.rig.paused(), idle: () => this.rig.idle(),
       motionPreferenceChanged: () => this.sceneChanged(),
     });
     this.backend = new BackendController({
-      element: this, canvas, failure: this.failure, requestRender,
-      renderer: () => this.values.renderer,
-      started: (backend) => {
-        this.images?.feed(backend);
-        this.loop.resize();
-        this.requestRender();
-      },
+      element: this, canvas, failure: this.failure, requestRender, renderer: () => this.values.renderer,
+      started: (backend) => { this.images?.feed(backend); this.loop.resize(); this.requestRender(); },
       stopFrames: () => this.loop.cancel(),
-      drawn: (state, report) => this.frameDrawn(state, report),
+      drawn: (state, report) => this.events.drawn(state, report),
       resume: (offThread: boolean) => this.loop.resume(offThread),
     });
+    // A frame drawn clears a shader failure's message and is kept for capture.
+    const drawn = (state: FrameState) => { this.failure.drawn(); this.states.drawn(state); };
+    this.events = new FrameEvents({ element: this, drawn, loading: () => this.source.loading || this.rig.loading || this.parts.loading });
+    this.routes = { rig: this.rig, backend: this.backend, loop: this.loop, failure: this.failure, element: this, requestRender };
     this.controllers = [this.rig, this.loop, this.source, this.backend];
     // An upgrade: what the page set before the definition goes through the accessors now, so it
     // holds before the element is connected; the attributes it writes get no callback meanwhile.
@@ -184,26 +181,10 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
       this.setAttribute('aria-label', raw ?? DEFAULT_LABEL);
       return;
     }
-    const spec = ATTRIBUTE_BY_NAME.get(name);
-    if (!spec) return;
-    const parsed = spec.parse(raw);
-    if (parsed.problem) this.warnings.report(spec, raw ?? '', parsed.problem);
-    const p = spec.property;
-    (this.values as unknown as Record<string, unknown>)[p] = parsed.value;
+    const p = parseAttribute(this.values, name, raw, this.warnings);
+    if (!p) return;
     this.scenes.attributeChanged(p);
-    // The pose written back at rest is the one just drawn: nothing to move, nothing to draw.
-    if (this.rig.writingBack) return;
-    if (p === 'cameraPosition' || p === 'cameraRotation' || p === 'cameraTarget') this.rig.cameraAttributeChanged();
-    if (p === 'controls') this.rig.controlsChanged();
-    if (p === 'renderer' && this.isConnected) this.backend.rendererChanged();
-    if (p === 'cameraSrc') this.rig.cameraSrcChanged();
-    // Resize only: drawing here, mid-way through a script's batch of attribute changes, would
-    // show a frame with half of them applied (the next animation frame comes before paint).
-    if (p === 'pixelRatio') this.loop.resize();
-    // A shader failure is not final: the change may select a variant that compiles. The message
-    // stays up until a frame is drawn.
-    this.failure.retry();
-    this.requestRender();
+    routeAttribute(p, this.routes);
   }
 
   // ---- public API --------------------------------------------------------------------------
@@ -253,14 +234,14 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
    */
   capture(pass?: CapturePass): ImageData | null {
     if (!this.backend.current || this.failure.type) return null;
-    if (pass === undefined) return this.frames > 0 ? readCanvas(this.canvas) : null;
+    if (pass === undefined) return this.events.frames > 0 ? readCanvas(this.canvas) : null;
     return this.backend.capture(this.scenes.current, this.states.last ?? this.frameState(performance.now()), pass);
   }
 
   /** Frames, passes run and skipped, draw calls, compiled programs, live GL resources and scene builds. */
   get stats(): RenderStats {
     const s = this.backend.stats();
-    s.frames = this.frames;
+    s.frames = this.events.frames;
     s.sceneBuilds = this.scenes.builds;
     return s;
   }
@@ -299,23 +280,6 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     const s = this.states.fill(this.values, now, this.canvas.width, this.canvas.height, this.effectiveSpin());
     this.rig.aim(s, this.scenes.current);
     return s;
-  }
-
-  /** After a frame is on the canvas: counts, the last state (for capture), `ready` and `frame`. */
-  private frameDrawn(state: FrameState, report: Omit<FrameReport, 'frame'>): void {
-    this.frames++;
-    this.failure.drawn(); // drawn again after a shader failure
-    this.states.drawn(state);
-    // One small frozen object per frame (the event is one anyway), its passes shared frozen
-    // records: listeners may keep it, and nothing later changes it.
-    const { time, width, height, drawCalls, passes } = report;
-    const detail: FrameReport = Object.freeze({ frame: this.frames, time, width, height, drawCalls, passes });
-    // `ready` waits for the models of the children: loaded or failed (docs/element.md#events).
-    if (!this.readyFired && !this.source.loading && !this.rig.loading && !this.parts.loading) {
-      this.readyFired = true;
-      this.dispatchEvent(new CustomEvent('ready', { detail }));
-    }
-    this.dispatchEvent(new CustomEvent('frame', { detail }));
   }
 
   /** Spin counts unless reduced motion is asked for and the page did not set `spin` itself. */

@@ -19,8 +19,9 @@ export const CHUNKS = {
   // 30,300 until a WebGL frame waited for the GPU to finish the one before (+141 B: 30,394);
   // then transparent objects' depth for rough glass's codes (30,424); then properties set before
   // the definition set again in the upgrade's constructor, not at connection (+50 B: 30,476);
-  // then the scene value frozen where it is handed over (+59 B: 30,535).
-  core: { budget: 30550, when: 'with the element' },
+  // then the scene value frozen where it is handed over (+59 B: 30,535); then the host split
+  // to its 300 lines (frame events, attribute parsing and routes in modules of their own: +87 B).
+  core: { budget: 30650, when: 'with the element' },
   // Checks, debug views and the texts of failures: for developers, or when something went wrong.
   diagnostics: {
     budget: 1400, when: 'debug-view, frame checks, or a failure',
