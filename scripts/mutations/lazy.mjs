@@ -19,7 +19,7 @@ export default [
   },
   {
     name: 'Z2 ready fired while a lazy part (camera-src\'s reader) is still on its way',
-    edits: [{ file: 'src/element/glass-plane-scene.ts', find: ' && !this.parts.loading) {', replace: ') {' }],
+    edits: [{ file: 'src/element/glass-plane-scene.ts', find: ' || this.rig.loading || this.parts.loading });', replace: ' || this.rig.loading });' }],
     tests: [CHUNK],
   },
   {
