@@ -236,14 +236,14 @@ test('a negative hx mirrors the picture left to right (culled built-ins too)', a
   await mountHtml(page, `<glass-plane-scene time="0" glass-size="0 0" background="${BLACK}" camera-src="${URL_BASE}camera.cfg">
     <glass-object src="${URL_BASE}tetra.byu" scale="2"></glass-object>
     <glass-object shape="cube" position="-2 0 0" rotation="20 30 0"></glass-object></glass-plane-scene>`);
-  await settle(page);
-  const a = await capture(page);
-  await nextEvent(page, 'frame', `el.setAttribute('camera-src', '${URL_BASE}camera-negative-hx.cfg')`);
-  await settle(page);
-  const b = await capture(page);
+  const a = await capture(page); // mountHtml waited for ready, which waits for the camera file
   const covered = a.data.filter((_, i) => i % 4 === 0 && a.data[i] + a.data[i + 1] + a.data[i + 2] > 0).length;
   expect(covered).toBeGreaterThan(1000); // measured 1073
-  const differ = mirroredDifference(a, b);
+  await page.evaluate((url) => document.querySelector('glass-plane-scene')!.setAttribute('camera-src', url), `${URL_BASE}camera-negative-hx.cfg`);
+  // The camera is in force once its file is in, frames later under load: wait for the picture it
+  // means (15 s at most), not for a number of frames.
+  await expect.poll(async () => mirroredDifference(a, await capture(page)), { timeout: 15_000 }).toBeLessThan(16);
+  const differ = mirroredDifference(a, await capture(page));
   console.log(`negative hx: ${differ} of ${W * H} pixels differ from the mirrored picture (${covered} covered)`);
   // Measured 8 (edge pixels whose coverage rounds differently mirrored); an unmirrored picture differs in hundreds.
   expect(differ).toBeLessThan(16);
