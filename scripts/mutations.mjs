@@ -9,6 +9,7 @@
 //   npm run test:mutations -- controls  only one area (a file of scripts/mutations/), one mutation by
 //                                       its id (Z14), or those whose name contains the word; several
 //                                       may be given (the baseline still runs)
+//   … -- --area lazy --area build       areas only: a word that names an area is never read as part of a name
 //   KEEP_MUTANTS=1 …                    leave the temporary copies in place
 //
 // Logs: test-results/mutations/<name>.log. Not part of `npm test`: it runs the relevant specs
@@ -49,7 +50,8 @@ function sourceFiles() {
  * (node_modules/.vite) stays private to the copy instead of being shared with the checkout's.
  */
 function makeCopy(label) {
-  const dir = fs.mkdtempSync(path.join(os.tmpdir(), `gps-mutant-${label.replace(/\W+/g, '-').slice(0, 30)}-`));
+  // The run's pid in the name: two runs side by side (or one's leftovers) never share a folder.
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), `gps-mutant-${process.pid}-${label.replace(/\W+/g, '-').slice(0, 30)}-`));
   for (const f of sourceFiles()) {
     const to = path.join(dir, f);
     fs.mkdirSync(path.dirname(to), { recursive: true });
@@ -159,12 +161,29 @@ function table(rows) {
 
 const seconds = (t0) => `${((Date.now() - t0) / 1000).toFixed(0)} s`;
 
+/** `--area NAME` pairs (areas) apart from the other words (filters). */
+export function parseArguments(args) {
+  const areas = [], filters = [];
+  for (let i = 0; i < args.length; i++) {
+    if (args[i] === '--area') areas.push(args[++i] ?? '');
+    else if (args[i].startsWith('--area=')) areas.push(args[i].slice('--area='.length));
+    else filters.push(args[i]);
+  }
+  return { areas, filters };
+}
+
 async function main() {
-  // Each argument: an area, a mutation's id ("Z14": that one only), or a word of its name.
-  const filters = process.argv.slice(2);
+  // Each argument: an area, a mutation's id ("Z14": that one only), or a word of its name;
+  // `--area NAME`: that area, and nothing else by that word.
+  const { areas, filters } = parseArguments(process.argv.slice(2));
   const id = (m) => m.name.split(' ')[0];
   const picks = (m, f) => m.area === f || (/^[A-Z]+\d+$/.test(f) ? id(m) === f : m.name.includes(f));
-  const chosen = MUTATIONS.filter((m) => !filters.length || filters.some((f) => picks(m, f)));
+  const chosen = MUTATIONS.filter((m) => (!filters.length && !areas.length) || areas.includes(m.area) || filters.some((f) => picks(m, f)));
+  const unknown = areas.filter((a) => !MUTATIONS.some((m) => m.area === a));
+  if (unknown.length) {
+    console.error(`mutations: no area ${unknown.join(', ')} (areas: ${[...new Set(MUTATIONS.map((m) => m.area))].join(', ')})`);
+    process.exit(2);
+  }
   if (!chosen.length) {
     console.error(`mutations: none matches ${filters.join(' ')}`);
     process.exit(2);
