@@ -162,7 +162,8 @@ test.describe('trackball inertia', () => {
       }
       return seen;
     }, selector);
-    for (const [i, q] of held.entries()) expect(quatAngle(atPress, q), `frame ${i + 1} while held: turned since the press (°)`).toBe(0);
+    // At most a rounding (2.4e-6° seen once under load); a spin the press did not stop turns degrees a frame.
+    for (const [i, q] of held.entries()) expect(quatAngle(atPress, q), `frame ${i + 1} while held: turned since the press (°)`).toBeLessThan(1e-3);
     await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', x: b.cx, y: b.cy, button: 'left', buttons: 0, clickCount: 1, timestamp: t + 0.3 });
   });
 });
