@@ -57,7 +57,7 @@ type Kind = 'ours' | 'ours-unoptimized' | 'scene-only' | 'clear-only' | 'three';
 
 const api = {
   /** ms per frame over `frames` frames, after `warmup` untimed ones. */
-  time(kind: Kind, scene: Scene, knobs: Knobs, view: BenchView, frames: number, warmup: number): number {
+  async time(kind: Kind, scene: Scene, knobs: Knobs, view: BenchView, frames: number, warmup: number): Promise<number> {
     const s = frameState(scene, knobs, view, kind === 'scene-only' ? 'scene' : 'final');
     if (kind === 'three') {
       resize(peerCanvas, s);
@@ -72,6 +72,8 @@ const api = {
       return (performance.now() - t0) / frames;
     }
     resize(oursCanvas, s);
+    // The parts this configuration needs (flat shading's mesh extras, …), as the element's frames wait for them.
+    await renderer.load(null, s);
     renderer.optimize = kind !== 'ours-unoptimized';
     const draw = kind === 'clear-only'
       ? () => { gl.bindFramebuffer(gl.FRAMEBUFFER, null); gl.viewport(0, 0, s.width, s.height); gl.clearColor(0.1, 0.1, 0.1, 1); gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT); }
@@ -101,6 +103,7 @@ const api = {
       draw = () => peer!.render(s, opts);
     } else {
       resize(oursCanvas, s);
+      await renderer.load(null, s);
       draw = kind === 'clear-only'
         ? () => { gl.bindFramebuffer(gl.FRAMEBUFFER, null); gl.viewport(0, 0, s.width, s.height); gl.clearColor(0.1, 0.1, 0.1, 1); gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT); }
         : () => { renderer.optimize = kind !== 'ours-unoptimized'; renderer.render(null, s); renderer.optimize = true; };
@@ -132,7 +135,7 @@ const api = {
   },
 
   /** RGBA8, top row first, base64, at the drawing-buffer size. */
-  pixels(kind: 'ours' | 'three', scene: Scene, knobs: Knobs, view: BenchView): { width: number; height: number; data: string } {
+  async pixels(kind: 'ours' | 'three', scene: Scene, knobs: Knobs, view: BenchView): Promise<{ width: number; height: number; data: string }> {
     const s = frameState(scene, knobs, view);
     if (kind === 'three') {
       resize(peerCanvas, s);
@@ -141,6 +144,8 @@ const api = {
       return { width: s.width, height: s.height, data: toBase64(peer.readPixels()) };
     }
     resize(oursCanvas, s);
+    // The parts this configuration needs (flat shading's mesh extras, …), as the element's frames wait for them.
+    await renderer.load(null, s);
     const px = renderer.read(null, s, null, 'screen');
     return { width: px.width, height: px.height, data: toBase64(px.data) };
   },
