@@ -12,5 +12,11 @@ const only = process.env.STRYKER_TESTS?.split(',').filter(Boolean);
 
 export default defineConfig({
   ...base,
-  test: { ...base.test, testTimeout: 120_000, ...(only?.length ? { include: only } : {}) },
+  test: {
+    ...base.test,
+    testTimeout: 120_000,
+    // Instrumented code allocates (coverage counters): the allocation tests skip (helpers/collections.ts).
+    env: { GPS_MUTATION_RUN: '1' },
+    ...(only?.length ? { include: only } : {}),
+  },
 });
