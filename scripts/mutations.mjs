@@ -1,3 +1,4 @@
+// Now holds only what StrykerJS cannot reach (WebGL passes, shaders, the browser): run it as `npm run test:mutations:browser`.
 // Mutation check for the tests: each mutation (scripts/mutations/*.mjs) breaks one pass on purpose in a
 // temporary copy of the repository and runs the tests meant to catch it. A mutation is "caught"
 // when at least one of those tests fails, "missed" when they all pass, "stale" when its search

@@ -34,11 +34,13 @@ export function clampPitch(pitch: number): number {
  * pose read back is the pose written.
  */
 export function wrapYaw(yaw: number): number {
+  // Stryker disable next-line ArithmeticOperator: yaw − 180 is the same angle as yaw + 180 modulo 360
   return ((((yaw + 180) % 360) + 360) % 360) - 180;
 }
 
 /** Copies a pose in; yaw is wrapped, pitch clamped, non-finite components leave the old value. */
 export function setPose(p: CameraPose, position: readonly [number, number, number], yaw: number, pitch: number): void {
+  // Stryker disable next-line EqualityOperator: i ≤ 3 reads position[3], undefined, which is not finite: no write
   for (let i = 0; i < 3; i++) if (Number.isFinite(position[i])) p.position[i] = position[i];
   if (Number.isFinite(yaw)) p.yaw = wrapYaw(yaw);
   if (Number.isFinite(pitch)) p.pitch = clampPitch(pitch);
@@ -94,6 +96,7 @@ export type Projection = 'perspective' | 'orthographic';
 export function viewerSide(plane: Plane, eye: ReadonlyVec3, forward: ReadonlyVec3, projection: Projection): number {
   if (projection === 'orthographic') {
     const c = plane[0] * forward[0] + plane[1] * forward[1] + plane[2] * forward[2];
+    // Stryker disable next-line EqualityOperator: c ≤ 0 differs from c < 0 only at c = 0, which the guard excludes
     if (c !== 0) return c < 0 ? 1 : -1;
   }
   return signedDistance(plane, eye) >= 0 ? 1 : -1;

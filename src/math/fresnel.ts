@@ -8,6 +8,7 @@
 export type FresnelModel = 'exact' | 'schlick' | 'classic';
 export const FRESNEL_MODELS: readonly FresnelModel[] = ['exact', 'schlick', 'classic'];
 
+// Stryker disable next-line EqualityOperator: at 0 and at 1 the clamp returns x itself either way
 const clamp01 = (x: number) => (x < 0 ? 0 : x > 1 ? 1 : x);
 
 /** Unpolarized dielectric reflectance from air into a medium of index `ior` ≥ 1. */

@@ -9,6 +9,7 @@ type In3 = ArrayLike<number>;
 
 /** α = roughness², clamped to [0, 1]: the GGX width of docs/rough-glass.md#ggx-microfacets. */
 export function ggxAlpha(roughness: number): number {
+  // Stryker disable next-line EqualityOperator: at 0 and at 1 both branches give the same value
   const r = roughness > 0 ? (roughness < 1 ? roughness : 1) : 0;
   return r * r;
 }
@@ -33,6 +34,7 @@ export function ggxNormal(out: Out3, alpha: number, xi1: number, xi2: number, n:
   const cx = sin * Math.cos(phi), cy = sin * Math.sin(phi);
   // Tangent frame (Duff et al. 2017, "Building an orthonormal basis, revisited").
   const nx = n[0], ny = n[1], nz = n[2];
+  // Stryker disable next-line EqualityOperator: at nz = 0 either sign gives an orthonormal frame (any one will do)
   const sign = nz >= 0 ? 1 : -1;
   const a = -1 / (sign + nz), b = nx * ny * a;
   const tx = 1 + sign * nx * nx * a, ty = sign * b, tz = -sign * nx;
@@ -60,6 +62,7 @@ export function reflectAbout(out: Out3, d: In3, m: In3): Out3 {
 function refract(out: Out3, d: In3, nf: In3, eta: number): boolean {
   const c = d[0] * nf[0] + d[1] * nf[1] + d[2] * nf[2];
   const k = 1 - eta * eta * (1 - c * c);
+  // Stryker disable next-line EqualityOperator: k = 0 exactly is the critical angle: a ray along the surface, lost or grazing
   if (k < 0) return false;
   const s = eta * c + Math.sqrt(k);
   out[0] = eta * d[0] - s * nf[0];
@@ -78,7 +81,9 @@ function refract(out: Out3, d: In3, nf: In3, eta: number): boolean {
  */
 export function refractThin(out: Out3, d: In3, m: In3, n: In3, ior: number): boolean {
   if (d[0] * m[0] + d[1] * m[1] + d[2] * m[2] >= 0) return false;
+  // Stryker disable next-line BooleanLiteral: into the glass (eta = 1/ior ≤ 1; ior is 1..10) refraction is never total
   if (!refract(out, d, m, 1 / ior)) return false;
+  // Stryker disable next-line EqualityOperator: out·n = 0 exactly is a ray along the glass: totally reflected at ior > 1, grazing at 1
   if (out[0] * n[0] + out[1] * n[1] + out[2] * n[2] >= 0) return false;
   return refract(out, out, n, ior);
 }

@@ -16,6 +16,7 @@ export function srgbToLinear(c: number): number {
 
 /** Linear light → encoded, clipped to 0..1 first (no tone mapping). */
 export function linearToSrgb(l: number): number {
+  // Stryker disable next-line EqualityOperator: l = 0 takes the linear segment below: 12.92·0 = 0
   if (!(l > 0)) return 0; // NaN, negatives and zero
   if (l >= 1) return 1;
   if (l <= 0.0031308) return 12.92 * l;
@@ -25,6 +26,7 @@ export function linearToSrgb(l: number): number {
 /** decode(b / 255) for every 8-bit level b: colour data held in bytes decoded by a lookup. */
 export const SRGB_BYTE_TO_LINEAR: Float64Array = /* @__PURE__ */ (() => {
   const t = new Float64Array(256);
+  // Stryker disable next-line EqualityOperator: b ≤ 256 also writes t[256], which a Float64Array of 256 drops
   for (let b = 0; b < 256; b++) t[b] = srgbToLinear(b / 255);
   return t;
 })();
@@ -36,13 +38,16 @@ export const SRGB_BYTE_TO_LINEAR: Float64Array = /* @__PURE__ */ (() => {
  */
 const THRESHOLDS: Float64Array = /* @__PURE__ */ (() => {
   const t = new Float64Array(256);
+  // Stryker disable next-line UnaryOperator: t[0] is never read (the search's mid is ≥ 1); −∞ documents "at or below"
   t[0] = -Infinity;
+  // Stryker disable next-line EqualityOperator: b ≤ 256 also writes t[256], which a Float64Array of 256 drops
   for (let b = 1; b < 256; b++) t[b] = srgbToLinear((b - 0.5) / 255);
   return t;
 })();
 
 /** round(linearToSrgb(l)·255) by a binary search over 255 thresholds (8 comparisons). */
 export function linearToSrgbByte(l: number): number {
+  // Stryker disable next-line ConditionalExpression,EqualityOperator: a shortcut: the search gives 0 for l ≤ 0 and NaN too (t[1] > 0)
   if (!(l > 0)) return 0;
   const t = THRESHOLDS;
   let lo = 0, hi = 255; // t[lo] ≤ l; the answer is in [lo, hi]

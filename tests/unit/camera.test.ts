@@ -1,7 +1,10 @@
 // Camera pose → forward, view and projection (docs/default-scene.md#the-camera).
 import { describe, expect, it } from 'vitest';
 import { apply, expectClose } from './helpers/math';
-import { clampPitch, forwardFromYawPitch, PITCH_LIMIT, projectionMatrix, rotationOnlyView, tanHalfFov, wrapYaw } from '../../src/math/camera';
+import {
+  clampPitch, forwardFromYawPitch, PITCH_LIMIT, projectionMatrix, rotationOnlyView, setPose, tanHalfFov, viewerSide, wrapYaw,
+  type CameraPose,
+} from '../../src/math/camera';
 
 describe('forwardFromYawPitch', () => {
   it('yaw −90, pitch 0 looks down −Z', () => {
@@ -105,5 +108,43 @@ describe('projectionMatrix', () => {
     expect(top[1] / top[3]).toBeCloseTo(1, 12);
     const right = apply(proj, [h * (16 / 9), 0, z]);
     expect(right[0] / right[3]).toBeCloseTo(1, 12);
+  });
+});
+
+describe('setPose', () => {
+  it('copies a pose in: yaw wrapped, pitch clamped', () => {
+    const p: CameraPose = { position: [0, 0, 0], yaw: 0, pitch: 0 };
+    setPose(p, [1, -2, 3.5], 190, 95);
+    expect(p).toEqual({ position: [1, -2, 3.5], yaw: -170, pitch: PITCH_LIMIT });
+  });
+
+  it('a non-finite component leaves the old value, each on its own', () => {
+    const p: CameraPose = { position: [1, 2, 3], yaw: 10, pitch: 20 };
+    setPose(p, [NaN, 5, Infinity], NaN, -30);
+    expect(p).toEqual({ position: [1, 5, 3], yaw: 10, pitch: -30 });
+    setPose(p, [7, -Infinity, 8], 45, NaN);
+    expect(p).toEqual({ position: [7, 5, 8], yaw: 45, pitch: -30 });
+  });
+});
+
+describe('viewerSide', () => {
+  // The plane through the origin with unit normal (0, 0.6, 0.8); the eye 5 behind it (−5·n), so
+  // only the orthographic rule can answer +1.
+  const plane = [0, 0.6, 0.8, 0] as const;
+  const behind = [0, -3, -4] as const;
+
+  it('orthographic: the side −forward points to, wherever the eye is', () => {
+    // n·f = 0.6·0.5 + 0.8·(−0.625) = 0.3 − 0.5 = −0.2 < 0: the camera sees the normal's side.
+    expect(viewerSide(plane, behind, [0, 0.5, -0.625], 'orthographic')).toBe(1);
+    // The same with the axes' roles swapped: n·f = 0.8·(−0.625) + 0.6·0.5 = −0.2.
+    expect(viewerSide([0, 0.8, 0.6, 0], [0, -4, -3], [0, -0.625, 0.5], 'orthographic')).toBe(1);
+    // Forward along the normal: the back, even with the eye in front.
+    expect(viewerSide(plane, [0, 3, 4], [0, 0.6, 0.8], 'orthographic')).toBe(-1);
+  });
+
+  it('orthographic with forward in the plane, and perspective: the eye\'s side', () => {
+    expect(viewerSide(plane, [0, 3, 4], [1, 0, 0], 'orthographic')).toBe(1);
+    expect(viewerSide(plane, behind, [1, 0, 0], 'orthographic')).toBe(-1);
+    expect(viewerSide(plane, behind, [0, 0.5, -0.625], 'perspective')).toBe(-1);
   });
 });

@@ -181,4 +181,42 @@ describe('courseViewProjection', () => {
     expect(straddle.near).toBeCloseTo(1000 * 1e-4 * 0.999, 9);
     expect(straddle.far).toBeCloseTo(1000 * 1.001, 9);
   });
+
+  // A camera at the origin looking along +z: a vertex's view depth is its z.
+  const alongZ: CourseCamera = { c: [0, 0, 0], n: [0, 0, 1], v: [0, 1, 0], u: [-1, 0, 0], d: 1, hx: 1, hy: 1 };
+  const at = (...zs: number[]) => zs.flatMap((z) => [0, 0, z]);
+  const range = (near: number, far: number, behind: boolean) =>
+    ({ near: expect.closeTo(near * 0.999, 12), far: expect.closeTo(far * 1.001, 12), behind });
+
+  it('all in front, or all behind: the nearest vertex, however close, is the near plane', () => {
+    expect(courseDepthRange(alongZ, at(0.001, 100))).toEqual(range(0.001, 100, false));
+    expect(courseDepthRange(alongZ, at(-0.001, -100))).toEqual(range(0.001, 100, true));
+  });
+
+  it('a vertex on the eye\'s plane (z = 0) counts on neither side', () => {
+    expect(courseDepthRange(alongZ, at(0, 2, 5))).toEqual(range(2, 5, false));
+    expect(courseDepthRange(alongZ, at(0, -2, -5))).toEqual(range(2, 5, true));
+  });
+
+  it('nothing off the eye\'s plane, or no vertex: the default 0.01..100', () => {
+    expect(courseDepthRange(alongZ, at(0, 0))).toEqual({ near: 0.01, far: 100, behind: false });
+    expect(courseDepthRange(alongZ, [])).toEqual({ near: 0.01, far: 100, behind: false });
+  });
+});
+
+describe('courseBasis', () => {
+  it('V within 10⁻⁹ of N\'s direction, relative to its length, is parallel; a zero V too', () => {
+    // V = (10⁻⁷, 0, 1000): 10⁻¹⁰ of its length off N, at any scale.
+    expect(courseBasis([0, 0, 1], [1e-7, 0, 1000])).toBe('V parallel to N');
+    expect(courseBasis([0, 0, 1], [1e-3, 0, 1000])).not.toBe('V parallel to N'); // 10⁻⁶ off
+    expect(courseBasis([0, 0, 1], [0, 0, 0])).toBe('V parallel to N');
+  });
+
+  it('gives no −0 component for a camera written with round numbers', () => {
+    // N = −x, V = −z: U = N × V = (0·(−1) − 0·0, 0·0 − (−1)·(−1), (−1)·0 − 0·0) = (−0, −1, −0) before cleaning.
+    const b = courseBasis([-1, 0, 0], [0, 0, -1]);
+    expect(b).toEqual({ n: [-1, 0, 0], v: [0, 0, -1], u: [0, -1, 0] });
+    if (typeof b === 'string') return;
+    for (const x of [...b.n, ...b.v, ...b.u]) expect(Object.is(x, -0)).toBe(false);
+  });
 });

@@ -86,6 +86,29 @@ describe('coursePhong', () => {
       [0, 1, 2].map((c) => ambient[c] + 255 * 0.5 * material.od[c] * R2));
   });
 
+  it('off the origin, every axis used: P = (1, 2, 3), N = (12, 15, 16)/25, L = (0, 0.6, 0.8), V = (0.36, 0.48, 0.8)', () => {
+    // N·L = 0.36 + 0.512 = 0.872; R = 2·0.872·N − L = (0.83712, 0.4464, 0.31616);
+    // R·V = 0.3013632 + 0.214272 + 0.252928 = 0.7685632, and ks·(R·V)² = 0.5·0.7685632².
+    const P: Vec3 = [1, 2, 3];
+    const lit = coursePhong(light([1, 8, 11]), material, P, [12, 15, 16], [4.6, 6.8, 11]);
+    close(lit, [0, 1, 2].map((c) => ambient[c] + 255 * (0.5 * material.od[c] * 0.872 + 0.5 * 0.7685632 ** 2)));
+  });
+
+  it('an eye in the surface\'s plane leaves N as given; with n = 0, (R·V)^n at R·V = 0 adds nothing', () => {
+    // L = N = (0, 0, 1), V = (1, 0, 0): N·V = 0, N·L = 1, R = N, R·V = 0.
+    const flat = { ...material, n: 0 };
+    close(coursePhong(light([0, 0, 10]), flat, O, UP, [10, 0, 0]), [0, 1, 2].map((c) => ambient[c] + 255 * 0.5 * material.od[c]));
+  });
+
+  it('a grazing light (N·L = 0) gives no specular, even toward the mirror direction', () => {
+    // R would be −L = (−1, 0, 0); the eye low on that side has R·V > 0.
+    close(coursePhong(light([10, 0, 0]), material, O, UP, [-10, 0, 1]), ambient);
+  });
+
+  it('a zero normal lights with the ambient term only', () => {
+    close(coursePhong(light([0, 0, 10]), material, O, [0, 0, 0], [0, 0, 10]), ambient);
+  });
+
   it('clamps every channel to 0..255', () => {
     const bright = coursePhong(light([0, 0, 10], [2550, 2550, 2550]), material, O, UP, [0, 0, 10]);
     expect(bright).toEqual([255, 255, 255]);

@@ -4,11 +4,11 @@ import { describe, expect, it } from 'vitest';
 import { reflectionMatrix } from '../../src/math/mirror';
 import { boundsCenter } from '../../src/scene/group-rotation';
 import { defaultScene } from '../../src/scene/default-scene';
-import { collections } from './helpers/collections';
+import { collections, instrumented } from './helpers/collections';
 
 // Each loop runs once before it is counted: until the optimizing compiler takes a function, the
 // interpreter boxes its doubles, garbage no optimized frame makes.
-describe('per-frame maths allocates nothing', () => {
+describe.skipIf(instrumented)('per-frame maths allocates nothing', () => {
   it('the reflection matrix, 2 M planes', async () => {
     const out = new Float32Array(16), plane = new Float64Array([0, 0, 1, 0]);
     const loop = () => { for (let i = 0; i < 2_000_000; i++) { plane[3] = i * 1e-9; reflectionMatrix(out, plane); } };

@@ -115,6 +115,10 @@ describe('fresnel dispatch and clamping', () => {
     expect(fresnel('classic', 0.6, 1.5)).toBe(fresnelClassic(0.6));
   });
 
+  it('FRESNEL_MODELS, the fresnel attribute\'s keywords, are the three models', () => {
+    expect(FRESNEL_MODELS).toEqual(['exact', 'schlick', 'classic']);
+  });
+
   it('clamps cos outside [0, 1] in every model', () => {
     for (const model of FRESNEL_MODELS) {
       for (const ior of [1, 1.5, 10]) {

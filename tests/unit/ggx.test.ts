@@ -77,6 +77,65 @@ describe('GGX distribution', () => {
   });
 });
 
+describe('ggxNormal about any normal', () => {
+  const dot = (a: ArrayLike<number>, b: ArrayLike<number>) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  // Normals with every component non-zero, on both sides of z = 0, and straight down (the frame's
+  // one special case): (12, 15, 16)/25, (12, −15, −16)/25, (0, 0, −1).
+  const normals = [[0.48, 0.6, 0.64], [0.48, -0.6, -0.64], [0, 0, -1]];
+
+  for (const n of normals) {
+    it(`n = (${n}): unit m at θm = atan(α·√(ξ1/(1 − ξ1))), quarter turns of ξ2 perpendicular about n`, () => {
+      // α = 0.5, ξ1 = 0.8: tanθm = 0.5·√4 = 1, θm = 45°.
+      const ms = [0, 0.25, 0.5].map((xi2) => ggxNormal([0, 0, 0], 0.5, 0.8, xi2, n));
+      const tang = (m: number[]) => m.map((x, k) => x - dot(m, n) * n[k]);
+      for (const m of ms) {
+        expect(Math.hypot(m[0], m[1], m[2])).toBeCloseTo(1, 12);
+        expect(dot(m, n)).toBeCloseTo(Math.SQRT1_2, 12);
+      }
+      expect(dot(tang(ms[0] as number[]), tang(ms[1] as number[]))).toBeCloseTo(0, 12);
+      expect(dot(tang(ms[0] as number[]), tang(ms[2] as number[]))).toBeCloseTo(-0.5, 12); // sin²45°, opposite
+    });
+  }
+});
+
+describe('reflectAbout and refractThin off the xz-plane', () => {
+  // The xz-plane cases turned 30° about z: every component in play, the angles unchanged.
+  const DEG30 = 30 * DEG;
+  const turned = (v: number[]) => [v[0] * Math.cos(DEG30), v[0] * Math.sin(DEG30), v[2]];
+
+  it('reflects d = (0.48, 0.6, −0.64) about m = (0, 0.6, 0.8): d − 2(d·m)m = (0.48, 0.7824, −0.3968)', () => {
+    // d·m = 0.36 − 0.512 = −0.152.
+    const r = reflectAbout([0, 0, 0], [0.48, 0.6, -0.64], [0, 0.6, 0.8]);
+    for (let k = 0; k < 3; k++) expect(r[k]).toBeCloseTo([0.48, 0.7824, -0.3968][k], 14);
+  });
+
+  it('through a facet tilted 10°, turned: the turned result', () => {
+    const inside = Math.asin(Math.sin(35 * DEG) / 1.5) / DEG;
+    const out = Math.asin(1.5 * Math.sin((10 + inside) * DEG)) / DEG;
+    const t = [0, 0, 0];
+    expect(refractThin(t, turned(dir(135)), turned(dir(-10)), N, 1.5)).toBe(true);
+    for (let k = 0; k < 3; k++) expect(t[k]).toBeCloseTo(turned(dir(180 - out))[k], 12);
+  });
+
+  it('a facet seen from behind or edge-on loses the sample, though glass would let it through', () => {
+    // d 20° off −z, m 75° off +z on the same side: d·m = sin20°·sin75° − cos20°·cos75° = 0.087 > 0.
+    // Taken as the front, it would refract in and out (that path is not what is tested).
+    expect(refractThin([0, 0, 0], turned(dir(160)), turned(dir(75)), N, 1.5)).toBe(false);
+    // d = (0.6, 0, −0.8), m = (0.8, 0, 0.6): d·m = 0.48 − 0.48 = 0, edge-on.
+    expect(refractThin([0, 0, 0], [0.6, 0, -0.8], [0.8, 0, 0.6], N, 1.5)).toBe(false);
+  });
+
+  it('a facet that sends the ray back to the viewer\'s side loses it, though the flat face would pass it', () => {
+    // d 60° off +z, m 170° off +z (facing down and against d): inside, the ray runs upward at
+    // about 41° from +z, inside the flat face's critical cone: out of that face alone it would leave.
+    expect(refractThin([0, 0, 0], turned(dir(60)), turned(dir(-170)), N, 1.5)).toBe(false);
+    // The same off every axis: n = (2, 2, 1)/3, d = (1, 2, 0)/√5, m = (−2, −1, 2)/3 (d·m = −0.596):
+    // inside, the ray makes 37.3° with n, under the critical 41.8°.
+    const s5 = Math.sqrt(5);
+    expect(refractThin([0, 0, 0], [1 / s5, 2 / s5, 0], [-2 / 3, -1 / 3, 2 / 3], [2 / 3, 2 / 3, 1 / 3], 1.5)).toBe(false);
+  });
+});
+
 describe('directions off a microfacet', () => {
   it('reflection about a normal tilted 10° turns the mirror direction by 20°', () => {
     // d at 45° incidence (ψ = 135°); about N it leaves at ψ = 45°, about m at ψ = −10° at

@@ -73,6 +73,8 @@ describe('eyeRelativePlane', () => {
     expectClose(eyeRelativePlane(new Float64Array(4), OBLIQUE, [5, 1, 0], -1), [-0.6, 0, -0.8, -1]);
     // rel = (−5, 0, 2.5) is the point (0, 1, 2.5) on the plane: the value there is 0.
     expect(p[0] * -5 + p[2] * 2.5 + p[3]).toBeCloseTo(0, 14);
+    // Eye (8, 1, 0): 0.6·8 − 2 = 2.8 in front; seen from the back, −2.8.
+    expectClose(eyeRelativePlane(new Float64Array(4), OBLIQUE, [8, 1, 0], -1), [-0.6, 0, -0.8, -2.8]);
   });
 });
 

@@ -2,7 +2,7 @@
 // levels below in linear light are the values every colour-management table lists), and the
 // byte encoder the software renderer uses against the formula.
 import { describe, expect, it } from 'vitest';
-import { linearToSrgb, linearToSrgbByte, srgbToLinear, SRGB_BYTE_TO_LINEAR } from '../../src/math/srgb';
+import { COLOR_SPACES, linearToSrgb, linearToSrgbByte, srgbToLinear, SRGB_BYTE_TO_LINEAR } from '../../src/math/srgb';
 
 // 8-bit level → linear light, to 7 digits.
 const PUBLISHED: [number, number][] = [
@@ -48,6 +48,15 @@ describe('linearToSrgb', () => {
     expect(linearToSrgb(NaN)).toBe(0);
     expect(linearToSrgb(0.001)).toBeCloseTo(0.01292, 12);
   });
+
+  it('encodes 1 as exactly 1 (white is byte 255, not 0.9999999999999999 of it)', () => {
+    expect(linearToSrgb(1)).toBe(1);
+  });
+
+  it('takes the linear segment at the joints themselves (≤ 0.0031308 and ≤ 0.04045, as the standard writes)', () => {
+    expect(linearToSrgb(0.0031308)).toBe(12.92 * 0.0031308);
+    expect(srgbToLinear(0.04045)).toBe(0.04045 / 12.92);
+  });
 });
 
 describe('byte tables', () => {
@@ -70,5 +79,20 @@ describe('byte tables', () => {
     expect(linearToSrgbByte(0.2159)).toBe(128);
     expect(linearToSrgbByte(2)).toBe(255);
     expect(linearToSrgbByte(-1)).toBe(0);
+  });
+
+  it('a value exactly at a step, decode((b − ½)/255), is byte b: ties go up', () => {
+    for (let b = 1; b < 256; b++) expect(linearToSrgbByte(srgbToLinear((b - 0.5) / 255)), `byte ${b}`).toBe(b);
+  });
+
+  it('SRGB_BYTE_TO_LINEAR is decode(b/255) at every one of its 256 bytes', () => {
+    expect(SRGB_BYTE_TO_LINEAR.length).toBe(256);
+    for (let b = 0; b < 256; b++) expect(SRGB_BYTE_TO_LINEAR[b], `byte ${b}`).toBe(srgbToLinear(b / 255));
+  });
+});
+
+describe('COLOR_SPACES', () => {
+  it('are the color-space attribute\'s keywords: srgb and none', () => {
+    expect(COLOR_SPACES).toEqual(['srgb', 'none']);
   });
 });

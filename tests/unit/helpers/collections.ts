@@ -2,6 +2,12 @@
 import { PerformanceObserver, performance } from 'node:perf_hooks';
 
 /**
+ * Under StrykerJS (vitest.stryker.config.ts sets GPS_MUTATION_RUN): every function is instrumented
+ * with coverage counters that allocate, so the allocation tests skip there; `npx vitest run` runs them.
+ */
+export const instrumented = process.env.GPS_MUTATION_RUN === '1';
+
+/**
  * Runs `body` and counts the garbage collections that started while it ran (node's 'gc'
  * performance entries, delivered after it). Collections in the wait for that delivery — the
  * test runner's own messages — are not the body's and are not counted.

@@ -1,0 +1,31 @@
+// StrykerJS on some folders of src/ only:
+//   npm run test:mutations:folder -- math [frame …] [--tests "tests/unit/a.test.ts,…"] [stryker flags]
+// Runs `stryker run --mutate "src/math/**/*.ts,src/frame/**/*.ts"`; stryker.config.mjs names the
+// scope from that (reports/mutation/math+frame/: reports and the incremental file of that scope).
+// --tests: only those test files (globs, comma-separated) make the suite (vitest.stryker.config.ts,
+// STRYKER_TESTS): a folder's own tests, much faster than every test that imports the folder. Not
+// Stryker's --testFiles, under which module-level (static) mutants are never switched on and all
+// "survive" (Stryker 9.6.1). Other words starting with "-" go to Stryker as they are (--force).
+import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+
+const args = process.argv.slice(2);
+const firstFlag = args.findIndex((a) => a.startsWith('-'));
+const folders = firstFlag < 0 ? args : args.slice(0, firstFlag);
+const flags = firstFlag < 0 ? [] : args.slice(firstFlag);
+const env = { ...process.env };
+const t = flags.indexOf('--tests');
+if (t >= 0) env.STRYKER_TESTS = flags.splice(t, 2)[1] ?? '';
+if (!folders.length) {
+  console.error('usage: npm run test:mutations:folder -- <folder of src/> [more folders] [--tests globs] [stryker flags]');
+  process.exit(2);
+}
+for (const f of folders) {
+  if (!/^[\w-]+(\/[\w-]+)*$/.test(f) || !fs.statSync(`src/${f}`, { throwIfNoEntry: false })?.isDirectory()) {
+    console.error(`no folder src/${f}`);
+    process.exit(2);
+  }
+}
+const mutate = folders.map((f) => `src/${f}/**/*.ts`).join(',');
+const run = spawnSync('npx', ['stryker', 'run', '--mutate', mutate, ...flags], { stdio: 'inherit', env });
+process.exit(run.status ?? 1);
