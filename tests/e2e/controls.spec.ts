@@ -30,7 +30,7 @@ test.describe('trackball', () => {
     const cdp = await page.context().newCDPSession(page);
     const N = 50, r = Math.min(b.width, b.height) / 2;
     // Resting 200 ms before release: no inertia, so the orientation is the drag's alone.
-    await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + N, y: b.cy }, { t0: 10, steps: 10, dtMs: 16, restMs: 200 });
+    await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + N, y: b.cy }, { t0: 10, steps: 10, dtMs: 16, restMs: 200, handledBy: page });
     const q = await rotationOf(page, selector);
     const angle = 2 * Math.acos(Math.min(1, Math.abs(q[3]))) * DEG;
     expect(angle, 'turn of a 50 px drag over a 90 px radius').toBeCloseTo(Math.asin(N / r) * DEG, 3);
@@ -38,7 +38,9 @@ test.describe('trackball', () => {
     const { up } = cameraAxes((await pose(page, selector)).rotation);
     const s = Math.sin((angle / DEG) / 2);
     for (let i = 0; i < 3; i++) expect(q[i] / s).toBeCloseTo(up[i], 3);
-    // Pixels: the picture moved, and it is the picture of that rotation set directly.
+    // Pixels: the picture moved, and it is the picture of that rotation set directly (a frame
+    // drawn now: on a busy GPU the drag's last frame may still be on its way).
+    await nextFrame(page, selector, new Function('el', 'el.requestRender();') as (el: SceneElement) => void);
     const after = await capture(page, undefined, selector);
     expect(compareImages(before, after).differing, 'pixels changed by the drag').toBeGreaterThan(500);
     await setAttributes(page, selector, { controls: null });
@@ -55,7 +57,7 @@ test.describe('trackball', () => {
     const b = await box(page, selector);
     const cdp = await page.context().newCDPSession(page);
     const N = 40, r = Math.min(b.width, b.height) / 2;
-    await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx, y: b.cy - N }, { t0: 15, steps: 10, dtMs: 16, restMs: 200 });
+    await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx, y: b.cy - N }, { t0: 15, steps: 10, dtMs: 16, restMs: 200, handledBy: page });
     const { right, up } = cameraAxes((await pose(page, selector)).rotation);
     const axisOf = (q: Quat) => { const s = Math.hypot(q[0], q[1], q[2]); return { angle: 2 * Math.atan2(s, q[3]) * DEG, axis: [q[0] / s, q[1] / s, q[2] / s] }; };
     const dragged = axisOf(await rotationOf(page, selector));
@@ -78,8 +80,8 @@ test.describe('trackball', () => {
     const b = await box(page, selector);
     const cdp = await page.context().newCDPSession(page);
     // A flick (inertia after it), then a right-drag (the light).
-    await drag(cdp, { x: b.cx - 20, y: b.cy }, { x: b.cx + 20, y: b.cy }, { t0: 17, steps: 8, dtMs: 16, restMs: 8 });
-    await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 30, y: b.cy }, { t0: 18, steps: 8, dtMs: 16, restMs: 200, button: 'right' });
+    await drag(cdp, { x: b.cx - 20, y: b.cy }, { x: b.cx + 20, y: b.cy }, { t0: 17, steps: 8, dtMs: 16, restMs: 8, handledBy: page });
+    await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 30, y: b.cy }, { t0: 18, steps: 8, dtMs: 16, restMs: 200, button: 'right', handledBy: page });
     await expect.poll(() => page.evaluate((s) => { const el = document.querySelector(s)!; return new Promise((r) => { let n = 0; const f = () => n++; el.addEventListener('frame', f); setTimeout(() => { el.removeEventListener('frame', f); r(n); }, 300); }); }, selector), { message: 'the spin stopped' }).toBe(0);
     expect(await changes(), 'no camera-change for turning objects').toHaveLength(0);
     expect(await page.evaluate((s) => document.querySelector(s)!.hasAttribute('camera-position'), selector), 'camera-position not written').toBe(false);
@@ -94,11 +96,11 @@ test.describe('trackball', () => {
     const b = await box(page, selector);
     const before = await capture(page, undefined, selector);
     const cdp = await page.context().newCDPSession(page);
-    await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 60, y: b.cy + 20 }, { t0: 30, steps: 12, dtMs: 16, restMs: 200, button: 'right' });
+    await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 60, y: b.cy + 20 }, { t0: 30, steps: 12, dtMs: 16, restMs: 200, button: 'right', handledBy: page });
     expect(await rotationOf(page, selector)).toEqual([0, 0, 0, 1]);
     const lit = await capture(page, undefined, selector);
     expect(compareImages(before, lit).differing, 'pixels relit by a right-drag').toBeGreaterThan(200);
-    await drag(cdp, { x: b.cx + 60, y: b.cy + 20 }, { x: b.cx, y: b.cy }, { t0: 31, steps: 12, dtMs: 16, restMs: 200, modifiers: 8 /* Shift */ });
+    await drag(cdp, { x: b.cx + 60, y: b.cy + 20 }, { x: b.cx, y: b.cy }, { t0: 31, steps: 12, dtMs: 16, restMs: 200, modifiers: 8 /* Shift */, handledBy: page });
     expect(await rotationOf(page, selector)).toEqual([0, 0, 0, 1]);
     // Back along the same path: nearly the first lighting again.
     expect(compareImages(before, await capture(page, undefined, selector)).differing).toBeLessThan(compareImages(before, lit).differing / 4);
@@ -114,7 +116,7 @@ test.describe('orbit', () => {
     const b = await box(page, selector);
     const cdp = await page.context().newCDPSession(page);
     // 40 px right and 20 px up.
-    await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 40, y: b.cy - 20 }, { t0: 40, steps: 10, dtMs: 16, restMs: 200 });
+    await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 40, y: b.cy - 20 }, { t0: 40, steps: 10, dtMs: 16, restMs: 200, handledBy: page });
     await expect.poll(async () => (await changes()).length).toBe(1);
     const end = await pose(page, selector);
     expect(end.rotation[0] - start.rotation[0], 'yaw turned right by 40 px × 0.4°').toBeCloseTo(16, 6);
@@ -143,7 +145,7 @@ test.describe('orbit', () => {
     const b = await box(page, selector);
     const cdp = await page.context().newCDPSession(page);
     // 30 px right and 20 px down, from the centre, where the target is drawn.
-    await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 30, y: b.cy + 20 }, { t0: 45, steps: 10, dtMs: 16, restMs: 200, button: 'right' });
+    await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 30, y: b.cy + 20 }, { t0: 45, steps: 10, dtMs: 16, restMs: 200, button: 'right', handledBy: page });
     await expect.poll(async () => (await changes()).length).toBe(1);
     const end = await pose(page, selector);
     expect(end.rotation, 'a pan does not turn the camera').toEqual(start.rotation);
@@ -433,7 +435,7 @@ test('controls set on a drawn element: after the next frame a drag turns the cam
   const start = await pose(page, selector);
   const b = await box(page, selector);
   const cdp = await page.context().newCDPSession(page);
-  await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 40, y: b.cy }, { t0: 40, steps: 10, dtMs: 16, restMs: 200 });
+  await drag(cdp, { x: b.cx, y: b.cy }, { x: b.cx + 40, y: b.cy }, { t0: 40, steps: 10, dtMs: 16, restMs: 200, handledBy: page });
   await expect.poll(async () => (await pose(page, selector)).rotation[0] - start.rotation[0], { message: 'yaw turned by 40 px × 0.4°' }).toBeCloseTo(16, 6);
 });
 
