@@ -60,7 +60,7 @@ test('a sphere child on a page sized by a stylesheet: ready, then two animation 
   }
 });
 
-test('every kind of element, its lazy chunks each held back 0–300 ms at random: ready within 2 s and the page\'s frames never held up (50 fresh pages)', async ({ page }) => {
+test('every kind of element but rough glass, its lazy chunks each held back 0–300 ms at random: ready within 2 s and the page\'s frames never held up (50 fresh pages)', async ({ page }) => {
   test.setTimeout(240_000);
   await page.setViewportSize({ width: 700, height: 800 });
   let seed = 12345;
@@ -72,7 +72,11 @@ test('every kind of element, its lazy chunks each held back 0–300 ms at random
     await new Promise((r) => setTimeout(r, ms));
     await route.continue();
   });
-  const names = Object.keys(KINDS), lines: string[] = [];
+  // Rough glass has a test of its own below: its frames at 640×360 are seconds of SwiftShader's
+  // time, still running in the browser's GPU process after the page is gone, and the next page's
+  // first frame waited behind them (a default element after a rough one not ready within 2 s, in
+  // two full runs of two).
+  const names = Object.keys(KINDS).filter((k) => k !== 'rough'), lines: string[] = [];
   for (let i = 0; i < 50; i++) {
     const kind = names[i % names.length];
     await page.goto('/tests/e2e/pages/first-frame.html');
@@ -80,12 +84,45 @@ test('every kind of element, its lazy chunks each held back 0–300 ms at random
     const line = `run ${i} (${kind}): ${run ? `ready ${run.ready.toFixed(0)} ms, two frames ${run.twoFrames.toFixed(0)} ms, longest wait between frames ${run.longestGap.toFixed(0)} ms` : 'not ready within 2 s'}`;
     lines.push(line);
     expect(run, line).not.toBeNull();
-    // Rough glass aside: its first 640×360 frame is seconds of SwiftShader's time (12 s under a
-    // loaded machine, measured), and the browser holds the page's frames until it is shown.
-    if (kind !== 'rough') expect(run!.longestGap, line).toBeLessThan(1000);
+    expect(run!.longestGap, line).toBeLessThan(1000);
   }
   console.log(lines.join('\n'));
   expect(delays.length, 'chunks held back').toBeGreaterThan(50);
+});
+
+test('rough glass, its chunks held back 0–300 ms at random: ready within 2 s on each of 6 fresh pages', async ({ page }) => {
+  test.setTimeout(240_000);
+  await page.setViewportSize({ width: 700, height: 800 });
+  let seed = 777;
+  const random = () => ((seed = (seed * 1103515245 + 12345) % 2 ** 31) / 2 ** 31);
+  await page.route(/\/dist\/(?!glass-plane-scene\.standalone\.js).*\.js$/, async (route) => {
+    await new Promise((r) => setTimeout(r, Math.floor(random() * 300)));
+    await route.continue();
+  });
+  for (let i = 0; i < 6; i++) {
+    await page.goto('/tests/e2e/pages/first-frame.html');
+    // The page's frames are not held to a bound here: its first rough frame at 640×360 is seconds
+    // of SwiftShader's time (12 s with the machine loaded, 22.7 s of held frames measured), and
+    // the browser holds the page's frames until it is shown.
+    const ready = await page.evaluate(async (html) => {
+      await customElements.whenDefined('glass-plane-scene');
+      const holder = document.createElement('div');
+      holder.innerHTML = html;
+      const el = holder.firstElementChild!, start = performance.now();
+      const ready = await new Promise<number | null>((resolve) => {
+        const t = setTimeout(() => resolve(null), 2000);
+        el.addEventListener('ready', () => { clearTimeout(t); resolve(performance.now() - start); }, { once: true });
+        document.getElementById('stage')!.append(el);
+      });
+      // The next page starts with the GPU idle: this page's rough frames, seconds each, would
+      // otherwise run on in the browser's GPU process ahead of the next page's first frame.
+      el.remove();
+      const gl = (globalThis as { __GLASS_PLANE_SCENE_GL__?: WebGL2RenderingContext }).__GLASS_PLANE_SCENE_GL__;
+      gl?.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
+      return ready;
+    }, KINDS.rough);
+    expect(ready, `run ${i}: ready (ms)`).not.toBeNull();
+  }
 });
 
 test('one browser, two pages: an orbit element swiped with touch on one and removed; on the other, brought to the front, a new orbit element is ready at once', async ({ browser }) => {
