@@ -127,7 +127,9 @@ export class FrameLoop implements Controller {
     if (!this.host.canDraw()) return;
     this.host.frame(now);
     if (this.host.animating()) this.schedule();
-    else this.host.idle();
+    // At rest only once the last frame is drawn: one held back (the GPU busy, a part on its way)
+    // is still owed, and a gesture's write-back must follow the pose it shows.
+    else if (!this.dirty) this.host.idle();
   };
 
   private readonly onResize = (): void => {
