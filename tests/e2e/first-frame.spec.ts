@@ -49,6 +49,22 @@ function mountAndWatch(page: Page, html: string, limit: number): Promise<Run | n
   }, [html, limit] as const);
 }
 
+/**
+ * Holds back every lazy chunk of the build (not its entry) by 0–300 ms, from a seeded sequence:
+ * the same delays in every run. Returns the delays, filled as the chunks are asked for.
+ */
+async function holdChunksAtRandom(page: Page, seed: number): Promise<number[]> {
+  const random = () => ((seed = (seed * 1103515245 + 12345) % 2 ** 31) / 2 ** 31);
+  const delays: number[] = [];
+  await page.route(/\/dist\/(?!glass-plane-scene\.standalone\.js).*\.js$/, async (route) => {
+    const ms = Math.floor(random() * 300);
+    delays.push(ms);
+    await new Promise((r) => setTimeout(r, ms));
+    await route.continue();
+  });
+  return delays;
+}
+
 test('a sphere child on a page sized by a stylesheet: ready, then two animation frames at once (three fresh pages)', async ({ page }) => {
   await page.setViewportSize({ width: 700, height: 800 });
   for (let i = 0; i < 3; i++) {
@@ -63,15 +79,7 @@ test('a sphere child on a page sized by a stylesheet: ready, then two animation 
 test('every kind of element but rough glass, its lazy chunks each held back 0–300 ms at random: ready within 2 s and the page\'s frames never held up (50 fresh pages)', async ({ page }) => {
   test.setTimeout(240_000);
   await page.setViewportSize({ width: 700, height: 800 });
-  let seed = 12345;
-  const random = () => ((seed = (seed * 1103515245 + 12345) % 2 ** 31) / 2 ** 31);
-  const delays: number[] = [];
-  await page.route(/\/dist\/(?!glass-plane-scene\.standalone\.js).*\.js$/, async (route) => {
-    const ms = Math.floor(random() * 300);
-    delays.push(ms);
-    await new Promise((r) => setTimeout(r, ms));
-    await route.continue();
-  });
+  const delays = await holdChunksAtRandom(page, 12345);
   // Rough glass has a test of its own below: its frames at 640×360 are seconds of SwiftShader's
   // time, still running in the browser's GPU process after the page is gone, and the next page's
   // first frame waited behind them (a default element after a rough one not ready within 2 s, in
@@ -93,12 +101,7 @@ test('every kind of element but rough glass, its lazy chunks each held back 0–
 test('rough glass, its chunks held back 0–300 ms at random: ready within 2 s on each of 6 fresh pages', async ({ page }) => {
   test.setTimeout(240_000);
   await page.setViewportSize({ width: 700, height: 800 });
-  let seed = 777;
-  const random = () => ((seed = (seed * 1103515245 + 12345) % 2 ** 31) / 2 ** 31);
-  await page.route(/\/dist\/(?!glass-plane-scene\.standalone\.js).*\.js$/, async (route) => {
-    await new Promise((r) => setTimeout(r, Math.floor(random() * 300)));
-    await route.continue();
-  });
+  await holdChunksAtRandom(page, 777);
   for (let i = 0; i < 6; i++) {
     await page.goto('/tests/e2e/pages/first-frame.html');
     // The page's frames are not held to a bound here: its first rough frame at 640×360 is seconds

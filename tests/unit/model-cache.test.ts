@@ -42,17 +42,26 @@ function connected<T extends GlassObject | GlassLight>(el: T): { el: T; types: s
   return { el, types };
 }
 
+/**
+ * A connected child's `src` set to `url`, which answers 503 then `body`, and set again to the same
+ * URL once the error has fired: the requests made, once its `load` has fired too.
+ */
+async function srcAgainAfter503<T extends GlassObject | GlassLight>(child: T, url: string, body: string): Promise<{ el: T; requests: string[] }> {
+  vi.spyOn(console, 'error').mockImplementation(() => {});
+  vi.stubGlobal('document', { baseURI: 'http://x/page/' });
+  const { requests } = stubFetch({ [url]: [503, body] });
+  const { el, types } = connected(child);
+  el.attributeChangedCallback('src', null, url);
+  await vi.waitFor(() => expect(types).toContain('error'));
+  el.attributeChangedCallback('src', url, url);
+  await vi.waitFor(() => expect(types).toContain('load'));
+  return { el, requests };
+}
+
 describe('<glass-object src> after a failed load', () => {
   it('fetches the model again when src is set again to the same URL', async () => {
-    vi.spyOn(console, 'error').mockImplementation(() => {});
-    vi.stubGlobal('document', { baseURI: 'http://x/page/' });
     const url = 'http://x/element/busy.obj';
-    const { requests } = stubFetch({ [url]: [503, OBJ] });
-    const { el, types } = connected(new GlassObject());
-    el.attributeChangedCallback('src', null, url);
-    await vi.waitFor(() => expect(types).toContain('error'));
-    el.attributeChangedCallback('src', url, url);
-    await vi.waitFor(() => expect(types).toContain('load'));
+    const { el, requests } = await srcAgainAfter503(new GlassObject(), url, OBJ);
     expect(requests).toEqual([url, url]);
     expect(el.toSceneObjects()).toHaveLength(1);
   });
@@ -62,15 +71,8 @@ describe('the course\'s files after a failed load (docs/course-files.md#load-err
   const LIGHTING = '0 0 10\n0.2\n255 255 255\n0.8\n1 1 1\n0.5\n255 255 255\n8\n';
 
   it('<glass-light src> set again to the same URL fetches the lighting file again', async () => {
-    vi.spyOn(console, 'error').mockImplementation(() => {});
-    vi.stubGlobal('document', { baseURI: 'http://x/page/' });
     const url = 'http://x/light/iluminacao.txt';
-    const { requests } = stubFetch({ [url]: [503, LIGHTING] });
-    const { el, types } = connected(new GlassLight());
-    el.attributeChangedCallback('src', null, url);
-    await vi.waitFor(() => expect(types).toContain('error'));
-    el.attributeChangedCallback('src', url, url);
-    await vi.waitFor(() => expect(types).toContain('load'));
+    const { requests } = await srcAgainAfter503(new GlassLight(), url, LIGHTING);
     expect(requests).toEqual([url, url]);
   });
 
