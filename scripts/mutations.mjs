@@ -1,17 +1,25 @@
-// Now holds only what StrykerJS cannot reach (WebGL passes, shaders, the browser): run it as `npm run test:mutations:browser`.
-// Mutation check for the tests: each mutation (scripts/mutations/*.mjs) breaks one pass on purpose in a
-// temporary copy of the repository and runs the tests meant to catch it. A mutation is "caught"
-// when at least one of those tests fails, "missed" when they all pass, "stale" when its search
-// text is no longer in the file exactly once (the code moved: fix the table, never skip it), and
-// "error" when the run failed without a failing test (a server that did not start, a crash).
-// An unmutated baseline runs first; if it fails, the table would mean nothing, so it stops there.
+// The browser's mutation check (`npm run test:mutations:browser`): the hand-written mutations that
+// StrykerJS (`npm run test:mutations`, stryker.config.mjs) cannot reach. Stryker mutates src/**/*.ts
+// and runs the unit tests; what is left here is what only a browser sees or what lies outside
+// src/: the GLSL of shaders/, the WebGL passes, the element in a page (DOM, events, workers, lazy
+// chunks), scripts/ and the build. Each entry says why in its `why`, required (the run stops at
+// load without one); a mutation the unit tests alone catch in src/ belongs to Stryker, not here.
 //
-//   npm run test:mutations              every mutation
-//   npm run test:mutations -- controls  only one area (a file of scripts/mutations/), one mutation by
-//                                       its id (Z14), or those whose name contains the word; several
-//                                       may be given (the baseline still runs)
-//   … -- --area lazy --area build       areas only: a word that names an area is never read as part of a name
-//   KEEP_MUTANTS=1 …                    leave the temporary copies in place
+// Each mutation (scripts/mutations/*.mjs) breaks one pass on purpose in a temporary copy of the
+// repository and runs the tests meant to catch it. A mutation is "caught" when at least one of
+// those tests fails, "missed" when they all pass, "stale" when its search text is no longer in the
+// file exactly once (the code moved: fix the table, never skip it), and "error" when the run failed
+// without a failing test (a server that did not start, a crash). An unmutated baseline runs first;
+// if it fails, the table would mean nothing, so it stops there.
+//
+//   npm run test:mutations:browser                   every mutation
+//   npm run test:mutations:browser -- controls       only one area (a file of scripts/mutations/), one
+//                                                    mutation by its id (Z14), or those whose name
+//                                                    contains the word; several may be given (the
+//                                                    baseline still runs)
+//   … -- --area lazy --area build                    areas only: a word that names an area is never read as part of a name
+//   … -- --list                                      the chosen mutations, each with its why and tests; nothing runs
+//   KEEP_MUTANTS=1 …                                 leave the temporary copies in place
 //
 // Logs: test-results/mutations/<name>.log. Not part of `npm test`: it runs the relevant specs
 // once per mutation, each time with a fresh Vite (about 2–3 minutes on 2 cores).
@@ -26,15 +34,22 @@ const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const LOG_DIR = path.join(ROOT, 'test-results', 'mutations');
 
 /**
- * The mutations, one file per area under scripts/mutations/ (glass, controls, loaders, …): each
- * exports an array of { name, edits: [{ file, find, replace }], tests }. The area is the file's name.
+ * The mutations, one file per area under scripts/mutations/ (glass, controls, lazy, …): each
+ * exports an array of { name, why, edits: [{ file, find, replace }], tests }. The area is the
+ * file's name; `why` says what keeps the mutation out of StrykerJS's reach, and none may lack it.
  */
 const MUTATIONS_DIR = path.join(ROOT, 'scripts', 'mutations');
 const MUTATIONS = [];
 for (const file of fs.readdirSync(MUTATIONS_DIR).filter((f) => f.endsWith('.mjs')).sort()) {
   const area = file.replace(/\.mjs$/, '');
   const { default: list } = await import(pathToFileURL(path.join(MUTATIONS_DIR, file)).href);
-  for (const m of list) MUTATIONS.push({ ...m, area });
+  for (const m of list) {
+    if (typeof m.why !== 'string' || !m.why.trim()) {
+      console.error(`mutations: scripts/mutations/${file}: "${m.name}" has no why (say what keeps it out of StrykerJS's reach, or retire it: Stryker generates what the unit tests alone catch in src/)`);
+      process.exit(2);
+    }
+    MUTATIONS.push({ ...m, area });
+  }
 }
 
 const occurrences = (text, find) => text.split(find).length - 1;
@@ -153,8 +168,8 @@ async function runTests(dir, tests, logName, build = false) {
 }
 
 function table(rows) {
-  const head = ['area', 'mutation', 'result', 'tests failed / run', 'caught by', 'time'];
-  const body = rows.map((r) => [r.area, r.name, r.status, r.counts, r.by, r.time]);
+  const head = ['area', 'mutation', 'why not Stryker', 'result', 'tests failed / run', 'caught by', 'time'];
+  const body = rows.map((r) => [r.area, r.name, r.why, r.status, r.counts, r.by, r.time]);
   const widths = head.map((h, i) => Math.max(h.length, ...body.map((b) => b[i].length)));
   const line = (cells) => `| ${cells.map((c, i) => c.padEnd(widths[i])).join(' | ')} |`;
   return [line(head), `|${widths.map((w) => '-'.repeat(w + 2)).join('|')}|`, ...body.map(line)].join('\n');
@@ -162,21 +177,23 @@ function table(rows) {
 
 const seconds = (t0) => `${((Date.now() - t0) / 1000).toFixed(0)} s`;
 
-/** `--area NAME` pairs (areas) apart from the other words (filters). */
+/** `--area NAME` pairs (areas) apart from the other words (filters); `--list`: list, run nothing. */
 export function parseArguments(args) {
   const areas = [], filters = [];
+  let list = false;
   for (let i = 0; i < args.length; i++) {
-    if (args[i] === '--area') areas.push(args[++i] ?? '');
+    if (args[i] === '--list') list = true;
+    else if (args[i] === '--area') areas.push(args[++i] ?? '');
     else if (args[i].startsWith('--area=')) areas.push(args[i].slice('--area='.length));
     else filters.push(args[i]);
   }
-  return { areas, filters };
+  return { areas, filters, list };
 }
 
 async function main() {
   // Each argument: an area, a mutation's id ("Z14": that one only), or a word of its name;
   // `--area NAME`: that area, and nothing else by that word.
-  const { areas, filters } = parseArguments(process.argv.slice(2));
+  const { areas, filters, list } = parseArguments(process.argv.slice(2));
   const id = (m) => m.name.split(' ')[0];
   const picks = (m, f) => m.area === f || (/^[A-Z]+\d+$/.test(f) ? id(m) === f : m.name.includes(f));
   const chosen = MUTATIONS.filter((m) => (!filters.length && !areas.length) || areas.includes(m.area) || filters.some((f) => picks(m, f)));
@@ -188,6 +205,12 @@ async function main() {
   if (!chosen.length) {
     console.error(`mutations: none matches ${filters.join(' ')}`);
     process.exit(2);
+  }
+  if (list) {
+    for (const m of chosen) console.log(`${m.area}: ${m.name}\n    why: ${m.why}\n    tests: ${m.tests.join(' ')}${m.build ? ' (built first)' : ''}`);
+    const areaCounts = [...new Set(chosen.map((m) => m.area))].map((a) => `${a} ${chosen.filter((m) => m.area === a).length}`);
+    console.log(`\n${chosen.length} mutations (${areaCounts.join(', ')})`);
+    return;
   }
   const started = Date.now();
   const dirs = [];
@@ -222,12 +245,12 @@ async function main() {
     const stale = applyEdits(dir, m.edits);
     let row;
     if (stale) {
-      row = { area: m.area, name: m.name, status: 'STALE', counts: '-', by: stale, time: seconds(t0) };
+      row = { area: m.area, name: m.name, why: m.why, status: 'STALE', counts: '-', by: stale, time: seconds(t0) };
     } else {
       const r = await runTests(dir, m.tests, m.name, m.build === true);
       const status = r.errors.length ? 'ERROR' : r.failed > 0 ? 'caught' : 'MISSED';
       const by = r.errors.length ? r.errors.join('; ') : r.failures.join('; ') || '-';
-      row = { area: m.area, name: m.name, status, counts: `${r.failed} / ${r.failed + r.passed}`, by, time: seconds(t0) };
+      row = { area: m.area, name: m.name, why: m.why, status, counts: `${r.failed} / ${r.failed + r.passed}`, by, time: seconds(t0) };
     }
     cleanup();
     rows.push(row);

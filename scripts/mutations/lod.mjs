@@ -1,24 +1,26 @@
-// The reflection's level of detail, culling and skips.
-// Each: { name, edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
+// The reflection's level of detail, culling and skips in WebGL (their maths in frame/ and math/ is unit-tested: StrykerJS).
+// Each: { name, why (what keeps it out of Stryker's reach), edits: [{ file, find, replace }], tests: Playwright specs (*.spec.ts) or vitest files (*.test.ts) }.
 const LEAKS = 'tests/e2e/gl-leaks.spec.ts';
 const ON_DEMAND = 'tests/e2e/on-demand.spec.ts';
 const LOD = 'tests/e2e/reflection-lod.spec.ts';
-const SCISSOR = 'tests/unit/reflection-scissor.test.ts';
 const PASSES = 'tests/e2e/passes.spec.ts';
 
 export default [
   {
     name: '12 a dense mesh\'s clustered reflection copies never released',
+    why: 'WebGL mesh copies released: only a browser counts them (gl-leaks)',
     edits: [{ file: 'src/render/object-meshes.ts', find: '    for (const entry of slot.reflection.values()) if (entry) this.shared.releaseMesh(entry.key);\n', replace: '' }],
     tests: [LEAKS],
   },
   {
     name: 'D1 the reflection pass runs with the glass off screen or edge-on (the optimize test inverted)',
+    why: 'the element in a page: the WebGL passes it skips (frame reports)',
     edits: [{ file: 'src/frame/pass-reports.ts', find: ': !optimize ? undefined', replace: ': optimize ? undefined' }],
     tests: [ON_DEMAND],
   },
   {
     name: 'D2 reflection culling ignores the camera\'s side: from behind the glass the wrong objects are culled',
+    why: 'the element in a page: the WebGL reflection\'s culling (frame reports)',
     edits: [{
       file: 'src/frame/frame-setup.ts',
       find: 'out.viewerDistance = this.side * signedDistance(this.glass.plane, out.center);',
@@ -27,17 +29,8 @@ export default [
     tests: [ON_DEMAND],
   },
   {
-    name: 'D3 the reflection scissor loses its texel of margin on the low side (off by one)',
-    edits: [{ file: 'src/frame/reflection-scissor.ts', find: 'Math.max(0, Math.floor(rect.x0 * sx) - 1)', replace: 'Math.max(0, Math.floor(rect.x0 * sx))' }],
-    tests: [SCISSOR],
-  },
-  {
-    name: 'D4 the reflection scissor scales y by the width ratio (wrong once the target is clamped)',
-    edits: [{ file: 'src/frame/reflection-scissor.ts', find: 'const sy = targetHeight / height;', replace: 'const sy = targetWidth / width;' }],
-    tests: [SCISSOR],
-  },
-  {
     name: 'D5 the reflection LOD\'s pixel size from tan(fov) instead of tan(fov / 2)',
+    why: 'WebGL reflection pass (its level of detail): only a browser draws it',
     edits: [{
       file: 'src/render/passes/draw-objects.ts',
       find: 'const focal = focalPixels(targetHeight, ctx.state.fov);',
@@ -47,16 +40,13 @@ export default [
   },
   {
     name: 'D6 the clustered copy chosen by the real eye\'s distance, not the mirrored eye\'s',
+    why: 'WebGL reflection pass (its level of detail): only a browser draws it',
     edits: [{ file: 'src/render/passes/draw-objects.ts', find: 'const eye = setup.mirroredEye;', replace: 'const eye = setup.eye;' }],
     tests: [LOD],
   },
   {
-    name: 'D7 the sphere\'s auto tessellation sizes it with tan(fov) instead of tan(fov / 2)',
-    edits: [{ file: 'src/frame/sphere-screen.ts', find: 'focalPixels(state.height, state.fov)', replace: 'focalPixels(state.height, 2 * state.fov)' }],
-    tests: ['tests/unit/quality-knobs.test.ts'],
-  },
-  {
     name: 'D8 the reflection scissored to the glass rectangle with x and y swapped',
+    why: 'WebGL scissor of the reflection pass: only a browser draws it',
     edits: [{
       file: 'src/render/passes/reflection-pass.ts',
       find: 'gl.scissor(scissor.x, scissor.y, scissor.width, scissor.height);',
@@ -66,12 +56,8 @@ export default [
   },
   {
     name: 'D9 culling by the wrong sign of the radius: an object straddling the glass is dropped from the reflection',
+    why: 'WebGL reflection pass (its culling): only a browser draws it',
     edits: [{ file: 'src/render/passes/draw-objects.ts', find: '<= -m.radius) continue;', replace: '<= m.radius) continue;' }],
     tests: [PASSES],
-  },
-  {
-    name: 'D10 tan(fov / 2), written once, becomes tan(fov): the orthographic size (and every size on screen) off',
-    edits: [{ file: 'src/math/camera.ts', find: 'return Math.tan((fovDeg * DEG) / 2);', replace: 'return Math.tan(fovDeg * DEG);' }],
-    tests: ['tests/unit/orthographic.test.ts'],
   },
 ];

@@ -5,7 +5,7 @@
 //
 // Each bound sits 2 dB under the figure measured here (SwiftShader, 320×180, deterministic: the
 // same to 0.1 dB run after run; helpers/bounds.ts), far above the figures under the mutations of
-// `npm run test:mutations` (scripts/mutations/); the comments give both.
+// `npm run test:mutations:browser` (scripts/mutations/glass.mjs); the comments give both.
 import type { Page } from '@playwright/test';
 import { test, expect, mount, openPage, capture, type Attrs, type RgbaImage } from './fixtures';
 import { renderReference, regionOfKey, REGION_CUBE, REGION_EDGE, type ReferenceImage } from '../../src/reference';

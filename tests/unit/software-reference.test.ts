@@ -15,12 +15,13 @@ const SAMPLES = 4;
 
 /**
  * Each bound is the figure measured less this. Rounding both images to 8 bits alone caps a
- * region near 54–59 dB, so the figures sit there and a real defect drops one by far more
- * (scripts/mutations/software.mjs): T and 1 − T swapped takes the glass from 58.6 to 26.1 dB at
- * T = 0.2; kt and 1 − kt swapped takes the transparent spheres' objects from 57.5 to 31.8; the
- * exact model's F where Schlick's is asked takes the fresnel view's glass from 58.5 to 35.9 (and
- * the final image's glass at T = 0.2 from 58.6 to 56.1). Regions count too, since a small object
- * drawn wrong hardly moves the whole image's figure.
+ * region near 54–59 dB, so the figures sit there and a real defect drops one by far more (the hand
+ * mutations once in scripts/mutations/software.mjs, retired: StrykerJS mutates src/ now): T and
+ * 1 − T swapped takes the glass from 58.6 to 26.1 dB at T = 0.2; kt and 1 − kt swapped takes the
+ * transparent spheres' objects from 57.5 to 31.8; the exact model's F where Schlick's is asked
+ * takes the fresnel view's glass from 58.5 to 35.9 (and the final image's glass at T = 0.2 from
+ * 58.6 to 56.1). Regions count too, since a small object drawn wrong hardly moves the whole
+ * image's figure.
  */
 const MARGIN_DB = 2;
 
@@ -103,11 +104,12 @@ describe(`software renderer against the reference (${STATE.width}×${STATE.heigh
  * transparent spheres 55.4 (objects 55.6, glass 56.6), Schlick at T = 0.2 53.4 (glass 56.5, edges
  * 48.0): the edge band crosses the glass and a cube face seen at a slant, whose texture one
  * isotropic level blurred. The fresnel view's figures are 'none''s to the digit: F is unencoded
- * on both sides. Defects drop a region by far more than the margin (scripts/mutations/software.mjs,
- * S13–S20): the procedural texture not decoded takes the default scene's objects from 56.4 to
- * 20.7 dB; the background not decoded, its background from 54.2 to 12.1; samples encoded before
- * the box filter, its objects to 39.2; an image not decoded, the textured mesh's objects from 58.8
- * to 17.6; colour held as 8-bit linear levels, the default scene's objects to 51.1.
+ * on both sides. Defects drop a region by far more than the margin (the retired hand mutations
+ * S13–S20 of scripts/mutations/software.mjs): the procedural texture not decoded takes the
+ * default scene's objects from 56.4 to 20.7 dB; the background not decoded, its background from
+ * 54.2 to 12.1; samples encoded before the box filter, its objects to 39.2; an image not decoded,
+ * the textured mesh's objects from 58.8 to 17.6; colour held as 8-bit linear levels, the default
+ * scene's objects to 51.1.
  */
 describe(`software renderer against the reference in linear light (colorSpace srgb, ${STATE.width}×${STATE.height}, ${SAMPLES}×${SAMPLES} samples)`, () => {
   const renderer = new SoftwareRenderer({ samplesPerAxis: SAMPLES });
