@@ -1,5 +1,5 @@
 // The Gaussian surface and truly per-face flat meshes (docs/scene-model.md#built-in-shapes, docs/scene-model.md#shading-modes).
-import { describe, expect, it } from 'vitest';
+import { beforeEach, describe, expect, it } from 'vitest';
 import { gaussianHeight, gaussianMesh } from '../../src/scene/geometry/gaussian';
 import { flatMesh } from '../../src/scene/geometry/flat';
 import { sphereMesh } from '../../src/scene/geometry/sphere';
@@ -74,8 +74,11 @@ describe('gaussianMesh', () => {
 });
 
 describe('flatMesh', () => {
-  const sphere = sphereMesh(0.75, 16);
-  const flat = flatMesh(sphere);
+  let sphere: ReturnType<typeof sphereMesh>, flat: ReturnType<typeof flatMesh>;
+  beforeEach(() => {
+    sphere = sphereMesh(0.75, 16);
+    flat = flatMesh(sphere);
+  });
 
   it('keeps every triangle and corner position, each triangle with three vertices of its own', () => {
     expect(flat.indices.length).toBe(sphere.indices.length);

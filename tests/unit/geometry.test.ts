@@ -1,5 +1,5 @@
 // Box, sphere and glass meshes of the default scene (docs/default-scene.md): winding, normals, UVs, index width.
-import { describe, expect, it } from 'vitest';
+import { beforeEach, describe, expect, it } from 'vitest';
 import { boxMesh } from '../../src/scene/geometry/box';
 import { MAX_SEGMENTS, MIN_SEGMENTS, segmentsForScreenRadius, sphereMesh } from '../../src/scene/geometry/sphere';
 import { glassMesh } from '../../src/scene/geometry/rectangle';
@@ -33,7 +33,9 @@ function expectIndicesInRange(m: MeshData): void {
 }
 
 describe('boxMesh', () => {
-  const box = boxMesh(1);
+  // Built in each test (not once per file): mutation testing runs only the tests that ran the code.
+  let box: ReturnType<typeof boxMesh>;
+  beforeEach(() => { box = boxMesh(1); });
 
   it('has 24 vertices and 36 indices', () => {
     expect(box.positions.length).toBe(24 * 3);
@@ -80,8 +82,11 @@ describe('boxMesh', () => {
 
 describe('sphereMesh', () => {
   const r = 0.75;
-  const s = sphereMesh(r, 32);
-  const count = s.positions.length / 3;
+  let s: ReturnType<typeof sphereMesh>, count: number;
+  beforeEach(() => {
+    s = sphereMesh(r, 32);
+    count = s.positions.length / 3;
+  });
 
   it('puts every vertex at the radius with unit normals along the position', () => {
     expectIndicesInRange(s);
@@ -180,7 +185,8 @@ describe('segmentsForScreenRadius', () => {
 });
 
 describe('glassMesh', () => {
-  const g = glassMesh(glassFrame(DEFAULT_GLASS));
+  let g: ReturnType<typeof glassMesh>;
+  beforeEach(() => { g = glassMesh(glassFrame(DEFAULT_GLASS)); });
 
   it('spans x ∈ [−4, 4], y ∈ [−1, 3] on z = 0 with u = (x+4)/8, v = (y+1)/4', () => {
     expect(g.positions.length).toBe(12);

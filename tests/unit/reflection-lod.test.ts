@@ -1,6 +1,6 @@
 // The reflection's coarser mesh (docs/knobs.md#level-of-detail: a 100k-triangle model's reflection within 1.25× of the
 // scene pass): vertex clustering and the grid chosen for a size on screen.
-import { describe, expect, it } from 'vitest';
+import { beforeEach, describe, expect, it } from 'vitest';
 import { clusterMesh, meshExtent } from '../../src/scene/geometry/cluster';
 import { gaussianMesh } from '../../src/scene/geometry/gaussian';
 import { boxMesh } from '../../src/scene/geometry/box';
@@ -19,7 +19,8 @@ function faceNormal(m: MeshData, t: number): number[] {
 }
 
 describe('clusterMesh', () => {
-  const fine = gaussianMesh(225);
+  let fine: ReturnType<typeof gaussianMesh>;
+  beforeEach(() => { fine = gaussianMesh(225); });
 
   it('cuts a 100k-triangle Gaussian to 2–3·G² triangles on a G grid (its slopes add cells in y)', () => {
     const coarse = clusterMesh(fine, 64);

@@ -1,5 +1,5 @@
 // The seeded checker-plus-noise texture of docs/default-scene.md#the-procedural-texture.
-import { describe, expect, it } from 'vitest';
+import { beforeEach, describe, expect, it } from 'vitest';
 import { buildProceduralTexture, proceduralTexture, texel, textureNoise } from '../../src/scene/procedural-texture';
 import { TEXTURE_SIZE } from '../../src/scene/default-scene';
 import { differingBytes } from './helpers/pixel-diff';
@@ -70,7 +70,8 @@ describe('texel', () => {
 });
 
 describe('proceduralTexture', () => {
-  const data = proceduralTexture();
+  let data: ReturnType<typeof proceduralTexture>;
+  beforeEach(() => { data = proceduralTexture(); });
 
   it('is 512×512 RGBA8, grey, opaque, row y = 0 first', () => {
     expect(TEXTURE_SIZE).toBe(512);
