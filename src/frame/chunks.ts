@@ -5,6 +5,7 @@
 // chunks take the name of their entry module (rough-glass-gl.ts → rough-glass-gl). A group takes
 // what its modules import too, unless an earlier group has it: shared modules' groups come first.
 // Plain data, no imports: vite.config.ts and scripts/size.mjs read it too.
+// Stryker disable all: build data; `npm run size` and the build check it against the built files (no unit test builds)
 
 export interface Chunk {
   /** Largest size allowed, bytes of min+gzip. */
