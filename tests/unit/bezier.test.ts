@@ -106,6 +106,13 @@ describe('evaluateBezierPatch', () => {
     expect(() => checkBezierPatch({ degreeU: 0, degreeV: 3, points: new Float64Array(12) })).toThrow(RangeError);
     expect(() => checkBezierPatch({ degreeU: 1.5, degreeV: 1, points: new Float64Array(12) })).toThrow(RangeError);
     expect(() => checkBezierPatch({ degreeU: 1, degreeV: 1, points: new Float64Array(9) })).toThrow(/4 control points/);
+    // Either degree alone, and what the messages say.
+    expect(() => checkBezierPatch({ degreeU: 3, degreeV: 0, points: new Float64Array(12) }))
+      .toThrow('glass-plane-scene: Bézier degrees must be integers ≥ 1, got (3, 0)');
+    expect(() => checkBezierPatch({ degreeU: 1, degreeV: 1.5, points: new Float64Array(12) })).toThrow(/got \(1, 1\.5\)/);
+    expect(() => checkBezierPatch({ degreeU: 1, degreeV: 2, points: new Float64Array(9) }))
+      .toThrow('glass-plane-scene: a (1, 2) Bézier patch needs 6 control points, got 3');
+    expect(() => checkBezierPatch({ degreeU: 1, degreeV: 2, points: new Float64Array(18) })).not.toThrow();
   });
 });
 
@@ -140,6 +147,31 @@ describe('bezierPatchNormal', () => {
       expect(Math.abs(n[2])).toBeGreaterThan(1 - 1e-6);
       // Same side as the normals just inside the patch.
       expect(dot(n, bezierPatchNormal(patch, 0.05, v))).toBeGreaterThan(0.9);
+    }
+  });
+
+  it('on a degenerate edge takes exactly the normal 10⁻⁴ of the way towards the patch centre (½, ½)', () => {
+    const patch = dome();
+    for (const v of [0, 0.4, 1]) {
+      // The first nearby step: (u + 1e-4·(½ − u), v + 1e-4·(½ − v)), not degenerate there.
+      expect(bezierPatchNormal(patch, 0, v)).toEqual(bezierPatchNormal(patch, 0 + 1e-4 * 0.5, v + 1e-4 * (0.5 - v)));
+    }
+    // Off the edge it is the point's own normal, not a nearby one.
+    expect(bezierPatchNormal(patch, 0.3, 0.4)).not.toEqual(bezierPatchNormal(patch, 0.3 + 1e-4 * 0.2, 0.4 + 1e-4 * 0.1));
+  });
+
+  it('is the same at any scale of the control net: the degeneracy bound grows with the net\'s size squared', () => {
+    const scaled = (p: BezierPatch, k: number): BezierPatch => ({ ...p, points: Array.from(p.points, (x) => x * k) });
+    const moved = (p: BezierPatch): BezierPatch => ({ ...p, points: Array.from(p.points, (x, i) => x + [3e3, -2e3, 1e3][i % 3]) });
+    for (const patch of [dome(), heightPatch(3, 2, 4)]) {
+      // Far from the origin: the bound comes from the net's extent, not its position.
+      for (const [u, v] of [[0, 0.4], [0.3, 0.7]]) expectNear(bezierPatchNormal(moved(patch), u, v), bezierPatchNormal(patch, u, v), 1e-6);
+      for (const k of [1e-6, 1e6]) {
+        for (const [u, v] of [[0, 0.4], [0.3, 0.7], [1, 1], [0.5, 0]]) {
+          expectNear(bezierPatchNormal(scaled(patch, k), u, v), bezierPatchNormal(patch, u, v), 1e-6);
+        }
+        expectNear(bezierPatchMesh(scaled(patch, k), 5).normals, bezierPatchMesh(patch, 5).normals, 1e-6);
+      }
     }
   });
 
