@@ -23,6 +23,7 @@ export function glassFrame(glass: Glass): GlassFrame {
   // +Y × n = (nz, 0, −nx)
   let ax = nz, ay = 0, az = -nx;
   let len = Math.hypot(ax, az);
+  // Stryker disable next-line EqualityOperator: at |n × Y| = 1e-9 exactly both branches give a unit a ⊥ n (an exact tie no input reaches in practice)
   if (len < PARALLEL) { ax = 1; az = 0; len = 1; }
   ax /= len; az /= len;
   const b: [number, number, number] = [ny * az - nz * ay, nz * ax - nx * az, nx * ay - ny * ax];

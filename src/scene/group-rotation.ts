@@ -66,6 +66,7 @@ export function quatToEuler(q: ReadonlyQuat): Vec3 {
   const xx = x * x2, yx = q[1] * x2, yy = q[1] * y2, zx = z * x2, zy = z * y2, zz = z * z2, wx = w * x2, wy = w * y2, wz = w * z2;
   const r20 = zx - wy, r21 = zy + wx, r22 = 1 - xx - yy, r10 = yx + wz, r00 = 1 - yy - zz, r01 = yx - wz, r11 = 1 - xx - zz;
   const y = Math.asin(Math.max(-1, Math.min(1, -r20)));
+  // Stryker disable next-line EqualityOperator: only an exact tie |r20| = 0.9999999 tells < from <=, and there either branch decomposes the turn to ~0.02°
   if (Math.abs(r20) < 0.9999999) return [Math.atan2(r21, r22) / DEG, y / DEG, Math.atan2(r10, r00) / DEG];
   return [0, y / DEG, Math.atan2(-r01, r11) / DEG];
 }
@@ -73,13 +74,16 @@ export function quatToEuler(q: ReadonlyQuat): Vec3 {
 /** Centre of the box around the objects' world bounding spheres (their spin aside); the origin for none. */
 export function boundsCenter<T extends [number, number, number] | Float64Array | Float32Array>(objects: readonly SceneObject[], out: T): T {
   out[0] = 0; out[1] = 0; out[2] = 0;
+  // Stryker disable next-line ConditionalExpression: without objects lo + hi is NaN and the loop below writes the same zeros
   if (objects.length === 0) return out;
   const lo = BOX_LO.fill(Infinity), hi = BOX_HI.fill(-Infinity), q = BOX_Q, c = BOX_C;
   for (let k = 0; k < objects.length; k++) {
     const o = objects[k], { position, rotation, scale } = o.transform, b = o.bounds.center;
     rotateVector(c, eulerToQuat(q, rotation), b[0] * scale[0], b[1] * scale[1], b[2] * scale[2]);
+    // Stryker disable next-line EqualityOperator: index 3 of a Float64Array(3) is dropped
     for (let i = 0; i < 3; i++) c[i] += position[i];
     const r = o.bounds.radius * Math.max(Math.abs(scale[0]), Math.abs(scale[1]), Math.abs(scale[2]));
+    // Stryker disable next-line EqualityOperator: index 3 of a Float64Array(3) is dropped
     for (let i = 0; i < 3; i++) {
       lo[i] = Math.min(lo[i], c[i] - r);
       hi[i] = Math.max(hi[i], c[i] + r);
@@ -100,6 +104,7 @@ export function rotateObjects(objects: readonly SceneObject[], q: ReadonlyQuat, 
   return objects.map((o) => {
     const t = o.transform.position;
     rotateVector(p, q, t[0] - center[0], t[1] - center[1], t[2] - center[2]);
+    // Stryker disable next-line EqualityOperator: index 3 of a Float64Array(3) is dropped
     for (let i = 0; i < 3; i++) p[i] += center[i];
     multiply(r, q, eulerToQuat(r, o.transform.rotation));
     return { ...o, transform: { ...o.transform, position: [p[0], p[1], p[2]], rotation: quatToEuler(r) } };
@@ -112,6 +117,7 @@ export function rotateLight(light: Light, q: ReadonlyQuat, center: Vec3): Light 
   const l = light.vector, point = light.kind === 'point', v = new Float64Array(3);
   if (point) rotateVector(v, q, l[0] - center[0], l[1] - center[1], l[2] - center[2]);
   else rotateVector(v, q, l[0], l[1], l[2]);
+  // Stryker disable next-line EqualityOperator: index 3 of a Float64Array(3) is dropped
   if (point) for (let i = 0; i < 3; i++) v[i] += center[i];
   return { ...light, vector: [v[0], v[1], v[2]] };
 }
@@ -119,6 +125,7 @@ export function rotateLight(light: Light, q: ReadonlyQuat, center: Vec3): Light 
 /** `scene` with the trackball's object and light rotations applied about the objects' centre. */
 export function rotateScene(scene: Scene, objects: ReadonlyQuat, light: ReadonlyQuat): Scene {
   if (isIdentity(objects) && isIdentity(light)) return scene;
+  // Stryker disable next-line ArrayDeclaration: boundsCenter writes all three
   const center = boundsCenter(scene.objects, [0, 0, 0]);
   return {
     ...scene,

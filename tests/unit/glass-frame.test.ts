@@ -36,4 +36,17 @@ describe('glassFrame', () => {
     expectClose(ceiling.a, [1, 0, 0]);
     expectClose(ceiling.b, [0, 0, 1]);
   });
+  it('a tilted glass whose normal leans towards Y: n = (0.48, 0.6, 0.64), centre (1, 2, 3), 4 × 2', () => {
+    const f = glassFrame({ center: [1, 2, 3], normal: [0.48, 0.6, 0.64], size: [4, 2] });
+    // d = −n·c = −(0.48 + 1.2 + 1.92) = −3.6.
+    expectClose(f.plane, [0.48, 0.6, 0.64, -3.6], 1e-12);
+    // +Y × n = (0.64, 0, −0.48), of length 0.8: a = (0.8, 0, −0.6).
+    expectClose(f.a, [0.8, 0, -0.6], 1e-12);
+    // b = n × a = (0.6·(−0.6) − 0, 0.64·0.8 + 0.48·0.6, 0 − 0.6·0.8) = (−0.36, 0.8, −0.48).
+    expectClose(f.b, [-0.36, 0.8, -0.48], 1e-12);
+    // c ∓ 2a ∓ b, with 2a = (1.6, 0, −1.2).
+    expectClose(f.corners.flat(), [
+      -0.24, 1.2, 4.68, 2.96, 1.2, 2.28, 2.24, 2.8, 1.32, -0.96, 2.8, 3.72,
+    ], 1e-12);
+  });
 });

@@ -27,6 +27,7 @@ export function boxMesh(edge = 1): MeshData {
   BOX_FACES.forEach(([n, a, b], f) => {
     CORNERS.forEach(([u, v], c) => {
       const i = f * 4 + c;
+      // Stryker disable next-line EqualityOperator: k = 3 writes the next vertex's x, written again after it (the last one past the end: dropped)
       for (let k = 0; k < 3; k++) {
         positions[i * 3 + k] = h * n[k] + (u - 0.5) * edge * a[k] + (v - 0.5) * edge * b[k];
         normals[i * 3 + k] = n[k];
