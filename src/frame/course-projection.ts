@@ -23,6 +23,7 @@ export class CourseProjection {
   private key: { cam: CourseCamera; scene: Scene; time: number } | null = null;
   private readonly lastTurn = new Float64Array(4);
   private range: CourseDepthRange | null = null;
+  // Stryker disable next-line ArrayDeclaration: n, v and u are replaced by the camera's before each use
   private readonly eyeRelative: CourseCamera = { c: [0, 0, 0], n: [0, 0, 1], v: [0, 1, 0], u: [1, 0, 0], d: 1, hx: 1, hy: 1 };
 
   /**
@@ -47,6 +48,7 @@ export class CourseProjection {
     courseViewProjection(out.viewProjection, e, range);
     out.projection.set(out.viewProjection);
     // One negative half-size mirrors the picture; so does looking away (x/z, y/z with z < 0).
+    // Stryker disable next-line EqualityOperator: a course camera's half-sizes are never 0 (camera.cfg refuses them)
     out.mirrorsWinding = (cam.hx < 0) !== (cam.hy < 0) !== range.behind;
   }
 }

@@ -54,6 +54,7 @@ export class FrameSetup {
    */
   side = 1;
   /** Whether this frame's projection is orthographic (docs/interaction.md#orthographic-projection). */
+  // Stryker disable next-line BooleanLiteral: update() sets it before anything reads it
   orthographic = false;
   /** Orthographic half-height in world units (orthoHalfHeight); 0 in perspective. */
   halfHeight = 0;
@@ -73,12 +74,14 @@ export class FrameSetup {
   /** The glass this frame (the default one's frame when the scene has none). */
   glass: GlassFrame = glassFrame(DEFAULT_GLASS);
   /** Whether the scene has a glass at all. */
+  // Stryker disable next-line BooleanLiteral: the first update() sets it (lastGlass starts undefined, unlike any scene's glass)
   hasGlass = true;
   /**
    * True when the projection mirrors the picture (a course camera with one negative half-size,
    * or looking away from everything, docs/course-files.md#cameras-that-look-away): a triangle counter-clockwise as seen from the
    * eye is clockwise on screen, so whoever culls back faces swaps its front face.
    */
+  // Stryker disable next-line BooleanLiteral: viewAndProjection() sets it every frame before anything reads it
   mirrorsWinding = false;
   /** The course camera's near, far and `behind` this frame; null for the flyby camera. */
   courseRange: CourseDepthRange | null = null;
@@ -135,6 +138,7 @@ export class FrameSetup {
 
   update(s: FrameState, scene: Scene): void {
     const { eye, mirroredEye } = this;
+    // Stryker disable next-line ConditionalExpression: the glass's frame worked out every frame is the same numbers; the test saves the work
     if (scene.glass !== this.lastGlass) {
       this.lastGlass = scene.glass;
       this.hasGlass = scene.glass !== null;
@@ -147,6 +151,7 @@ export class FrameSetup {
     reflectPoint(mirroredEye, eye, plane);
     this.eyeDistance = signedDistance(plane, eye);
     const forward = course ? this.copyForward(course.n) : forwardFromYawPitch(this.forward, s.yaw, s.pitch);
+    // Stryker disable next-line StringLiteral: only 'orthographic' is told apart below
     const projection = course || !this.ortho ? 'perspective' : s.projection ?? 'perspective';
     this.orthographic = projection === 'orthographic';
     this.side = viewerSide(plane, eye, forward, projection);
@@ -203,6 +208,7 @@ export class FrameSetup {
   private drawMatrices(scene: Scene, time: number): void {
     const { eye, mirroredEye } = this;
     const objects = scene.objects;
+    // Stryker disable next-line EqualityOperator: one spare slot more is never read
     while (this.objects.length < objects.length) this.objects.push(new ObjectMatrices());
     for (let i = 0; i < objects.length; i++) {
       const o = this.objects[i];
@@ -234,6 +240,7 @@ export class FrameSetup {
     for (let i = 0; i < this.lightCount; i++) {
       const l = scene.lights[i];
       if (l.kind === 'point') this.pointMask |= 1 << i;
+      // Stryker disable next-line EqualityOperator: c = 3 writes the next light's first slot, written after it (past the 4th: dropped)
       for (let c = 0; c < 3; c++) {
         this.lightAmbient[3 * i + c] = l.ambient[c];
         this.lightDiffuse[3 * i + c] = l.diffuse[c];
@@ -252,9 +259,13 @@ export class FrameSetup {
     const m = out.model as unknown as mat4;
     const { position, rotation, scale, spin } = object.transform;
     mat4.fromTranslation(m, position);
+    // Stryker disable next-line ConditionalExpression: a turn by 0 is exactly the identity (cos 0 = 1, sin 0 = 0); the tests skip work
     if (rotation[2] !== 0) mat4.rotateZ(m, m, rotation[2] * DEG);
+    // Stryker disable next-line ConditionalExpression: as above
     if (rotation[1] !== 0) mat4.rotateY(m, m, rotation[1] * DEG);
+    // Stryker disable next-line ConditionalExpression: as above
     if (rotation[0] !== 0) mat4.rotateX(m, m, rotation[0] * DEG);
+    // Stryker disable next-line ConditionalExpression: spin 0 turns by 0 (or by 0 when 0·time is NaN): the identity
     if (spin !== 0) {
       // spin·time may overflow (both finite, product not): any angle is then as good as another.
       const angle = spin * time;

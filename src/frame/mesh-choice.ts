@@ -27,6 +27,7 @@ export function sphereSegments(
   if (state.tessellation !== 'auto') return state.tessellation;
   const screen = sphereScreenRadius(state, centre, worldRadius, orthoHalfHeight) * pixelScale;
   const wanted = segmentsForScreenRadius(Math.min(screen, 1e6), AUTO_SILHOUETTE_ERROR_PX);
+  // Stryker disable next-line EqualityOperator: at current = wanted both answers are the same number
   return current >= wanted && current <= 2 * wanted ? current : wanted;
 }
 

@@ -35,8 +35,11 @@ export const ROUGH_MAX_RINGS = 12;
 
 /** Rings for a lobe whose longer axis spans `texelsPerSlope` texels per unit of microfacet slope. */
 export function roughRings(alpha: number, texelsPerSlope: number): number {
+  // Stryker disable next-line ArithmeticOperator: ROUGH_FIRST_RING is 1 (frame-rules.test.ts pins it)
   const reach = (ROUGH_REACH * alpha * texelsPerSlope) / ROUGH_FIRST_RING;
+  // Stryker disable next-line EqualityOperator: at reach 1 both give one ring (⌈log2 1⌉ + 1 = 1)
   const rings = reach > 1 ? Math.ceil(Math.log2(reach)) + 1 : 1;
+  // Stryker disable next-line EqualityOperator: equal, both are the same number
   return rings < ROUGH_MAX_RINGS ? rings : ROUGH_MAX_RINGS;
 }
 
@@ -45,5 +48,6 @@ export function roughRings(alpha: number, texelsPerSlope: number): number {
  * storage and box-filtered mips: u = h / (1 + h); 1 = nothing there (the background).
  */
 export function distanceCode(h: number): number {
+  // Stryker disable next-line EqualityOperator: h = 0 gives 0 / 1 = 0 either way
   return h > 0 ? (Number.isFinite(h) ? h / (1 + h) : 1) : 0;
 }

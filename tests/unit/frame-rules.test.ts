@@ -12,6 +12,11 @@ import {
   distanceCode, ROUGH_FIRST_RING, ROUGH_GATHER, ROUGH_MAX_RINGS, ROUGH_REACH, ROUGHNESS_QUALITIES, roughRings,
 } from '../../src/frame/rough-glass';
 import { isRough } from '../../src/frame/roughness';
+import { buildMesh, meshKey } from '../../src/frame/mesh-choice';
+import { boxMesh } from '../../src/scene/geometry/box';
+import { gaussianMesh } from '../../src/scene/geometry/gaussian';
+import { reflectionGrid } from '../../src/frame/reflection-lod';
+import { sphereScreenRadius } from '../../src/frame/sphere-screen';
 import type { FrameState } from '../../src/frame/types';
 
 describe('passesFor: the frozen pass reports a frame gives', () => {
@@ -221,5 +226,43 @@ describe('rough or polished, encoded at the end or not', () => {
       expect(encodesAtEnd({ colorSpace: 'none', view })).toBe(false);
     }
     expect(encodesAtEnd({ colorSpace: 'srgb', view: 'fresnel' })).toBe(false);
+  });
+});
+
+describe('boundaries of the level-of-detail rules', () => {
+  it('reflectionGrid: the coarsest grid whose cells span at most 4 px — exactly 16 cells is grid 16', () => {
+    // cells = extent · px per unit / 4.
+    expect(reflectionGrid(64, 1)).toBe(16);
+    expect(reflectionGrid(64.01, 1)).toBe(32);
+    expect(reflectionGrid(256 * 4, 1)).toBe(256);
+    expect(reflectionGrid(256 * 4 + 1, 1)).toBe(0);
+  });
+
+  it('sphereScreenRadius: an eye within 1.0001 radii is inside (Infinity), just outside it is finite', () => {
+    const state = { cameraPosition: [0, 0, 0] as const, height: 100, fov: 90 };
+    expect(sphereScreenRadius(state, [1.0001, 0, 0], 1)).toBe(Infinity);
+    expect(sphereScreenRadius(state, [1.00005, 0, 0], 1)).toBe(Infinity);
+    const just = sphereScreenRadius(state, [1.0002, 0, 0], 1);
+    expect(Number.isFinite(just)).toBe(true);
+    // focal 50 px (fov 90°, 100 px): 50 · tan(asin(1/1.0002)).
+    expect(just).toBeCloseTo(50 * Math.tan(Math.asin(1 / 1.0002)), 6);
+  });
+
+  it('glassSkipReason: an edge-on eye with 0.5 px² of glass still draws it', () => {
+    const setup = { hasGlass: true, orthographic: false, viewDot: -1, eyeDistance: 0 } as FrameSetup;
+    expect(glassSkipReason(setup, { x0: 10, y0: 10, x1: 11, y1: 11, area: 0.5 } as ScreenRect, true)).toBeUndefined();
+  });
+});
+
+describe('meshKey and buildMesh', () => {
+  it('names each geometry\'s content; builds a Gaussian only with its generator', () => {
+    expect(meshKey({ kind: 'box', size: 2 })).toBe('box:2');
+    expect(meshKey({ kind: 'gaussian', resolution: 64 })).toBe('gaussian:64');
+    const data = boxMesh(1);
+    expect(meshKey({ kind: 'mesh', key: 'a.obj', data })).toBe('mesh:a.obj');
+    expect(meshKey({ kind: 'sphere', radius: 0.5 }, 24)).toBe('sphere:0.5:24');
+    expect(buildMesh({ kind: 'mesh', key: 'a.obj', data })).toBe(data);
+    expect(() => buildMesh({ kind: 'gaussian', resolution: 8 })).toThrow('buildMesh: a Gaussian needs its generator');
+    expect(buildMesh({ kind: 'gaussian', resolution: 8 }, 0, gaussianMesh).positions.length).toBe(8 * 8 * 3);
   });
 });

@@ -5,6 +5,8 @@
 // the mirrored eye and its clip plane, and a scene's glass changing between frames.
 import { describe, expect, it } from 'vitest';
 import { FrameSetup } from '../../src/frame/frame-setup';
+import { orthographicView } from '../../src/frame/orthographic-view';
+import { orthoHalfHeight } from '../../src/math/orthographic';
 import { MIRROR_CONTACT } from '../../src/math/mirror';
 import { defaultMaterial } from '../../src/scene/default-scene';
 import type { Glass, Light, Scene, SceneObject, Vec3 } from '../../src/scene/scene';
@@ -210,5 +212,63 @@ describe('FrameSetup: the glass', () => {
     expect(f.projection[0]).toBeCloseTo(1 / 3, 12);
     expect(f.mirrorsWinding).toBe(false);
     expect(f.courseRange).toBeNull();
+  });
+});
+
+describe('FrameSetup: more by hand', () => {
+  it('the first light turned about a centre off every axis: a point light through all of the turn\'s matrix', () => {
+    // 120° about (1, 1, 1)/√3, q = (½, ½, ½, ½): (x, y, z) → (z, x, y). Centre c = (1, 3, 7):
+    // R c = (7, 1, 3), so the turn is R p + (−6, 2, 4). The point light at (2, 0, 0) → (−6, 4, 4).
+    const f = new FrameSetup();
+    const turn: SceneTurn = { objects: [0, 0, 0, 1], light: [0.5, 0.5, 0.5, 0.5], center: [1, 3, 7] };
+    f.update({ ...STATE, turn }, scene([], [light('point', [2, 0, 0])]));
+    expectClose(Array.from(f.lightWorld.slice(0, 3)), [-6, 4, 4], 1e-12);
+  });
+
+  it('the third light\'s slots: 4·2 = 8 onwards, a direction normalized by its length', () => {
+    const f = new FrameSetup();
+    f.update(STATE, scene([], [light('directional', [0, 0, 1]), light('directional', [0, 1, 0]), light('point', [1, 2, 3]), light('directional', [3, 0, 4])]));
+    // From the eye (0, 0, 5): the point light at (1, 2, −2); the fourth's (3, 0, 4)/5.
+    expectClose(Array.from(f.lightsMain.vectors), [0, 0, 1, 0, 0, 1, 0, 0, 1, 2, -2, 1, 0.6, 0, 0.8, 0], 1e-7);
+    expect(f.pointMask).toBe(0b100);
+  });
+
+  it('a scale along y alone, or z alone, is applied; the bounds\' centre through every entry of the model', () => {
+    const f = new FrameSetup();
+    f.update(STATE, scene([object([0, 0, 0], [0, 0, 0], [1, 2, 1]), object([0, 0, 0], [0, 0, 0], [1, 1, 3])]));
+    expectClose(apply(f.objects[0].model, [1, 1, 1]), [1, 2, 1], 1e-12);
+    expectClose(apply(f.objects[1].model, [1, 1, 1]), [1, 1, 3], 1e-12);
+    // Bounds centre (1, 2, 3) through 120° about (1, 1, 1) (Rz 90°·Rx 90° is that turn: (x, y, z) → (z, x, y))
+    // and T (10, 20, 30): (3, 1, 2) + T.
+    f.update(STATE, scene([object([10, 20, 30], [90, 0, 90], [1, 1, 1], 0, [1, 2, 3], 1)]));
+    expectClose(Array.from(f.objects[0].center), [13, 21, 32], 1e-12);
+  });
+
+  it('viewDot is the glass normal · the view direction, every component', () => {
+    const f = new FrameSetup();
+    // yaw −45°, pitch 30°: forward (cos30·cos45, sin30, −cos30·sin45); n = (0.48, 0.6, 0.64).
+    f.update({ ...STATE, yaw: -45, pitch: 30 }, scene([], [], { center: [0, 1, 0], normal: [0.48, 0.6, 0.64], size: [8, 4] }));
+    const c30 = Math.cos(Math.PI / 6), s45 = Math.SQRT1_2;
+    expect(f.viewDot).toBeCloseTo(0.48 * c30 * s45 + 0.6 * 0.5 - 0.64 * c30 * s45, 12);
+  });
+
+  it('orthographic only with its part loaded and no course camera: (−forward, 0) as the view vector, its mirror image for the mirrored eye', () => {
+    const ortho = { ...STATE, projection: 'orthographic' as const, yaw: -45, pitch: 30 };
+    const without = new FrameSetup();
+    without.update(ortho, scene([]));
+    expect(without.orthographic).toBe(false);
+    const f = new FrameSetup(null, orthographicView);
+    f.update(ortho, scene([]));
+    expect(f.orthographic).toBe(true);
+    const c30 = Math.cos(Math.PI / 6), s45 = Math.SQRT1_2;
+    const forward = [c30 * s45, 0.5, -c30 * s45];
+    expectClose(Array.from(f.viewVectorMain), [-forward[0], -forward[1], -forward[2], 0], 1e-7);
+    // Mirrored in z = 0: the z component flips.
+    expectClose(Array.from(f.viewVectorMirrored), [-forward[0], -forward[1], forward[2], 0], 1e-7);
+    // Sized at the glass's centre (0, 1, 0) when there is no target; with no glass, at the origin.
+    expect(f.halfHeight).toBeCloseTo(orthoHalfHeight(ortho, [0, 1, 0]), 12);
+    f.update(ortho, scene([], [], null));
+    expect(f.halfHeight).toBeCloseTo(orthoHalfHeight(ortho, null), 12);
+    expect(f.halfHeight).not.toBeCloseTo(orthoHalfHeight(ortho, [0, 1, 0]), 6);
   });
 });

@@ -258,3 +258,74 @@ describe('LazyParts, edges', () => {
     expect(() => parts.get(part('g', true, () => Promise.resolve('G')))).toThrow(/not a part/);
   });
 });
+
+describe('LazyParts: the edges of the question', () => {
+  it('a part needed later gets a new promise that waits for it too, not the one already answered', async () => {
+    const a = deferred<string>(), b = deferred<string>();
+    const host = { wants: true, got: [] as string[] };
+    const wantsB = { on: false };
+    const specA = part('a', true, () => a.promise);
+    const specB: LazyPartSpec<Host, string> = { ...part('b', true, () => b.promise), needed: () => wantsB.on };
+    const parts = new LazyParts([specA, specB], host, recorder());
+    const first = parts.request();
+    wantsB.on = true;
+    const second = parts.request();
+    expect(second).not.toBe(first);
+    expect(parts.request()).toBe(second);
+    let done = false;
+    void second!.then(() => { done = true; });
+    a.resolve('A');
+    await first;
+    await Promise.resolve();
+    expect(done).toBe(false); // b is still on its way
+    b.resolve('B');
+    await second;
+    expect(host.got).toEqual(['A', 'B']);
+  });
+
+  it('waits only for parts that hold the frame: another part on its way does not delay the answer', async () => {
+    const held = deferred<string>(), free = deferred<string>();
+    const host = { wants: true, got: [] as string[] };
+    const parts = new LazyParts([part('free', false, () => free.promise), part('held', true, () => held.promise)], host, recorder());
+    const p = parts.request()!;
+    held.resolve('H');
+    await p; // settles though `free` never does
+    expect(host.got).toEqual(['H']);
+    expect(parts.loading).toBe(true);
+  });
+
+  it('a part without `arrived` loads, and is provided, without complaint', async () => {
+    const listener = recorder();
+    const host = { wants: true, got: [] as string[] };
+    const plain = (name: string): LazyPartSpec<Host, string> => {
+      const { arrived: _, ...rest } = part(name, true, () => Promise.resolve(name.toUpperCase()));
+      return rest;
+    };
+    const a = plain('a'), b = plain('b');
+    const parts = new LazyParts([a, b], host, listener);
+    await parts.fetch(a);
+    expect(parts.get(a)).toBe('A');
+    parts.provide(b, 'given');
+    expect(parts.get(b)).toBe('given');
+    expect(listener.warnings).toEqual([]);
+  });
+
+  it('provided twice: the first value stays and is handed over once', () => {
+    const host = { wants: false, got: [] as string[] };
+    const spec = part('a', true, () => Promise.resolve('fetched'));
+    const parts = new LazyParts([spec], host, recorder());
+    parts.provide(spec, 'one');
+    parts.provide(spec, 'two');
+    expect(parts.get(spec)).toBe('one');
+    expect(host.got).toEqual(['one']);
+  });
+
+  it('a failure\'s warning quotes at most 200 characters of the error', async () => {
+    const listener = recorder();
+    const host = { wants: true, got: [] as string[] };
+    const long = 'x'.repeat(300);
+    const parts = new LazyParts([part('a', true, () => Promise.reject(new Error(long)))], host, listener);
+    await parts.request();
+    expect(listener.warnings).toEqual([`a could not load (${`Error: ${long}`.slice(0, 200)}); drawn without a`]);
+  });
+});
