@@ -7,6 +7,26 @@
 // Stryker's --testFiles, under which module-level (static) mutants are never switched on and all
 // "survive" (Stryker 9.6.1). Other words starting with "-" go to Stryker as they are (--force).
 import { spawnSync } from 'node:child_process';
+
+/**
+ * Each folder's own tests: the suite a folder's mutants are judged by when no --tests is given
+ * (the README's scores). Every test that merely imports the folder would run too, much slower:
+ * the software and reference renders take seconds each, and code run outside a test (a module's
+ * constants, a describe body) makes Stryker run the whole suite for each of its mutants.
+ */
+const OWN_TESTS = {
+  scene: [
+    'compose-scene', 'course-depth', 'glass-frame', 'mapping', 'reference-scene', 'scene-turn', 'texture', 'reference-pixels',
+    'orthographic', 'lights-rule', 'scaled-objects', 'child-attributes', 'controls', 'course-view', 'bezier', 'bvh',
+    'course-byu-bezier', 'geometry-flat-gaussian', 'geometry', 'mesh-choice', 'reflection-lod', 'stability', 'deep-freeze',
+    'cluster-by-hand', 'flat-by-hand', 'default-scene-cache', 'scene-rules',
+  ],
+  frame: [
+    'frame-rules', 'frame-setup', 'lazy-parts', 'mesh-choice', 'orthographic', 'reflection-lod', 'reflection-scissor',
+    'stability', 'quality-knobs', 'scene-turn', 'course-view', 'programs', 'glass-tie', 'glass-bounds', 'course-projection',
+  ],
+};
+for (const [folder, names] of Object.entries(OWN_TESTS)) OWN_TESTS[folder] = names.map((n) => `tests/unit/${n}.test.ts`);
 import fs from 'node:fs';
 
 const args = process.argv.slice(2);
@@ -16,6 +36,7 @@ const flags = firstFlag < 0 ? [] : args.slice(firstFlag);
 const env = { ...process.env };
 const t = flags.indexOf('--tests');
 if (t >= 0) env.STRYKER_TESTS = flags.splice(t, 2)[1] ?? '';
+else if (folders.every((f) => OWN_TESTS[f])) env.STRYKER_TESTS = [...new Set(folders.flatMap((f) => OWN_TESTS[f]))].join(',');
 if (!folders.length) {
   console.error('usage: npm run test:mutations:folder -- <folder of src/> [more folders] [--tests globs] [stryker flags]');
   process.exit(2);

@@ -38,6 +38,7 @@ export class CourseProjection {
     const turned = q[0] !== last[0] || q[1] !== last[1] || q[2] !== last[2] || q[3] !== last[3];
     if (!key || key.cam !== cam || key.scene !== scene || (spins && key.time !== time) || turned || !this.range) {
       this.key = { cam, scene, time };
+      // Stryker disable next-line EqualityOperator: index 4 of a Float64Array(4) is dropped
       for (let i = 0; i < 4; i++) last[i] = q[i];
       this.range = courseSceneRange(cam, scene, time, turn);
     }

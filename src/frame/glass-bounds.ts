@@ -25,9 +25,11 @@ function clip(src: Float64Array, n: number, dst: Float64Array, axis: number, sig
     const j = (i + 1) % n;
     const di = src[i * 4 + 3] + sign * src[i * 4 + axis];
     const dj = src[j * 4 + 3] + sign * src[j * 4 + axis];
+    // Stryker disable next-line EqualityOperator: k = 4 writes the next vertex's x, written after it or never read
     if (di >= 0) { for (let k = 0; k < 4; k++) dst[m * 4 + k] = src[i * 4 + k]; m++; }
     if ((di >= 0) !== (dj >= 0)) {
       const t = di / (di - dj);
+      // Stryker disable next-line EqualityOperator: as above
       for (let k = 0; k < 4; k++) dst[m * 4 + k] = src[i * 4 + k] + t * (src[j * 4 + k] - src[i * 4 + k]);
       m++;
     }
@@ -47,13 +49,16 @@ export function glassScreenRect(
   for (let i = 0; i < 4; i++) {
     const c = corners[i];
     const x = c[0] - eye[0], y = c[1] - eye[1], z = c[2] - eye[2];
+    // Stryker disable next-line EqualityOperator: r = 4 writes the next corner's x, written after it (the fifth slot is never read)
     for (let r = 0; r < 4; r++) a[i * 4 + r] = m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r];
   }
   let n = 4;
+  // Stryker disable next-line EqualityOperator,ConditionalExpression: a fourth axis (w ≥ 0, w ≥ w) cuts nothing |z| ≤ w kept; an empty polygon clips to empty
   for (let axis = 0; axis < 3 && n > 0; axis++) {
     for (const sign of SIGNS) {
       n = clip(a, n, b, axis, sign);
       [a, b] = [b, a];
+      // Stryker disable next-line ConditionalExpression: an empty polygon clips to empty
       if (n === 0) break;
     }
   }
@@ -67,9 +72,13 @@ export function glassScreenRect(
     const w = a[i * 4 + 3];
     const px = (a[i * 4] / w * 0.5 + 0.5) * width;
     const py = (a[i * 4 + 1] / w * 0.5 + 0.5) * height;
+    // Stryker disable next-line EqualityOperator: a tie assigns the same value
     if (px < out.x0) out.x0 = px;
+    // Stryker disable next-line EqualityOperator: a tie assigns the same value
     if (px > out.x1) out.x1 = px;
+    // Stryker disable next-line EqualityOperator: a tie assigns the same value
     if (py < out.y0) out.y0 = py;
+    // Stryker disable next-line EqualityOperator: a tie assigns the same value
     if (py > out.y1) out.y1 = py;
     if (i === 0) { px0 = px; py0 = py; } else twice += pxPrev * py - px * pyPrev;
     pxPrev = px; pyPrev = py;

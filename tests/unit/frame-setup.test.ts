@@ -242,6 +242,9 @@ describe('FrameSetup: more by hand', () => {
     // and T (10, 20, 30): (3, 1, 2) + T.
     f.update(STATE, scene([object([10, 20, 30], [90, 0, 90], [1, 1, 1], 0, [1, 2, 3], 1)]));
     expectClose(Array.from(f.objects[0].center), [13, 21, 32], 1e-12);
+    // Through a turn with no zero entry: the centre is the model matrix applied to it.
+    f.update(STATE, scene([object([1, -2, 3], [30, 45, 60], [1, 2, 3], 0, [0.5, -1.5, 2], 1)]));
+    expectClose(Array.from(f.objects[0].center), apply(f.objects[0].model, [0.5, -1.5, 2]), 1e-12);
   });
 
   it('viewDot is the glass normal · the view direction, every component', () => {

@@ -23,9 +23,10 @@ describe('glassScreenRect', () => {
   });
 
   it('relative to the eye, through every entry of the matrix (scale, translation)', () => {
-    // clip x = 2(x − 1) + 0.1, y = 2(y − 1) − 0.2, w = 1: corners 0.8..1.2 → x ∈ [−0.3, 0.5], y ∈ [−0.6, 0.2].
+    // clip x = 2(x − 1) + 0.1, y = 2(y − 1) − 0.2, z = z − 3, w = 1 (the eye at (1, 1, 3)): corners
+    // 0.8..1.2 at z = 3 → x ∈ [−0.3, 0.5], y ∈ [−0.6, 0.2], z = 0.
     const m = rows([[2, 0, 0, 0.1], [0, 2, 0, -0.2], [0, 0, 1, 0], [0, 0, 0, 1]]);
-    const r = screen(m, quad(0.8, 0.8, 1.2, 1.2), new Float64Array([1, 1, 0]));
+    const r = screen(m, quad(0.8, 0.8, 1.2, 1.2, 3), new Float64Array([1, 1, 3]));
     expect({ ...r, area: 0 }).toEqual({ x0: 35, y0: 10, x1: 75, y1: 30, area: 0 });
     expect(r.area).toBeCloseTo(800, 9);
   });
