@@ -50,6 +50,7 @@ export class CourseProjection {
     out.projection.set(out.viewProjection);
     // One negative half-size mirrors the picture; so does looking away (x/z, y/z with z < 0).
     // Stryker disable next-line EqualityOperator: a course camera's half-sizes are never 0 (camera.cfg refuses them)
-    out.mirrorsWinding = (cam.hx < 0) !== (cam.hy < 0) !== range.behind;
+    const flipsX = cam.hx < 0, flipsY = cam.hy < 0;
+    out.mirrorsWinding = flipsX !== flipsY !== range.behind;
   }
 }

@@ -271,8 +271,9 @@ export class FrameSetup {
       const angle = spin * time;
       mat4.rotateY(m, m, Number.isFinite(angle) ? angle % TWO_PI : 0);
     }
+    const scaled = scale[0] !== 1 || scale[1] !== 1 || scale[2] !== 1;
     // Stryker disable next-line ConditionalExpression: a scale by (1, 1, 1) multiplies by exactly 1; the test skips work
-    if (scale[0] !== 1 || scale[1] !== 1 || scale[2] !== 1) mat4.scale(m, m, scale);
+    if (scaled) mat4.scale(m, m, scale);
     if (turn) mat4.multiply(m, turn as unknown as mat4, m);
     const c = object.bounds.center;
     const t = this.scratch3;

@@ -53,8 +53,8 @@ export function glassScreenRect(
     for (let r = 0; r < 4; r++) a[i * 4 + r] = m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r];
   }
   let n = 4;
-  // Stryker disable next-line EqualityOperator,ConditionalExpression: a fourth axis (w ≥ 0, w ≥ w) cuts nothing |z| ≤ w kept; an empty polygon clips to empty
-  for (let axis = 0; axis < 3 && n > 0; axis++) {
+  // Stryker disable next-line EqualityOperator: a fourth axis (w ≥ 0, w ≥ w) cuts nothing |z| ≤ w kept
+  for (let axis = 0; axis < 3; axis++) {
     for (const sign of SIGNS) {
       n = clip(a, n, b, axis, sign);
       [a, b] = [b, a];

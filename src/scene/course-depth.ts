@@ -39,8 +39,7 @@ export function courseSceneRange(cam: CourseCamera, scene: Scene, time: number, 
     for (const c of frame.corners) points.push(c[0], c[1], c[2]);
   }
   const range = courseDepthRange(cam, points);
-  // Stryker disable next-line ConditionalExpression,EqualityOperator: with a glass its four corners are among the points
-  if (glassPlane && points.length > 0) {
+  if (glassPlane) {
     const s = range.behind ? -1 : 1;
     const p = new Float64Array(3);
     let far = range.far;
