@@ -125,7 +125,7 @@ describe('parseObj: never hangs', { timeout: 30_000 }, () => {
 
   it('drops a 10 MB face (5 million corners) with a warning naming its line, keeping the rest', () => {
     // Four collinear vertices walked 1.25 million times: every triangle of it has zero area.
-    const walks = instrumented ? 20_000 : 1_250_000;
+    const walks = instrumented ? 16_385 : 1_250_000; // 65,540 corners under StrykerJS: just past the most
     const oneFace = `v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf${' 1 2 3 4'.repeat(walks)}`;
     const e = expectLoadError(() => parseObj(oneFace, { url: 'model.obj' }), 5, /^no faces to draw: 1 face dropped/);
     expect(e.message.length).toBeLessThan(200);
@@ -135,7 +135,8 @@ describe('parseObj: never hangs', { timeout: 30_000 }, () => {
     expect(r.warnings).toEqual([{ line: 5, message: `face of ${4 * walks} vertices, more than the 65536 a face may have; face dropped` }]);
   });
 
-  it('triangulates a face of 65 536 corners (the most a face may have), dropping one of 65 537', () => {
+  // Triangulating 65,536 corners: seconds for each mutant it covers under StrykerJS, skipped there.
+  it.skipIf(instrumented)('triangulates a face of 65 536 corners (the most a face may have), dropping one of 65 537', () => {
     // Triangle 1 2 3 walked over and over: every corner turns left, so it is fanned from the
     // first, (1, k, k+1); only where k, k+1 are vertices 2, 3 does a triangle have area.
     const r = parseObj(`${TRI}f${' 1 2 3'.repeat(21_845)} 1\n`);

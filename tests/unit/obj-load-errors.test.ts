@@ -117,7 +117,7 @@ describe('parseByuModel and bezierObj', () => {
     expect(model.obj.positions.length).toBe(3 * 9);
     expect(model.obj.bounds).toEqual({ min: [0, 0, 0], max: [4, 2, 6] });
     expect(model.bezier).toMatchObject({ order: 'second-fastest', fileResolution: 3, patch: { degreeU: 1, degreeV: 1 } });
-    expect([...model.bezier!.patch.points]).toEqual([0, 0, 0, 0, 2, 0, 4, 0, 0, 4, 2, 6]);
+    expect(Array.from(model.bezier!.patch.points)).toEqual([0, 0, 0, 0, 2, 0, 4, 0, 0, 4, 2, 6]);
     const again = bezierObj(model.bezier!, 5);
     expect(again.positions.length).toBe(3 * 25);
     expect(again.bounds).toEqual({ min: [0, 0, 0], max: [4, 2, 6] });
