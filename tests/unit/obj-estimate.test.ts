@@ -4,6 +4,7 @@
 import { describe, expect, it } from 'vitest';
 import { estimateCapacities } from '../../src/loaders/obj/estimate';
 import { parseObjBytes } from '../../src/loaders/obj';
+import { instrumented } from './helpers/collections';
 
 const utf8 = (text: string): Uint8Array => new TextEncoder().encode(text);
 
@@ -55,7 +56,8 @@ describe('estimateCapacities', () => {
     expect(estimateCapacities(utf8(`#${'x'.repeat(300_000)}\n`))).toBeNull();
   });
 
-  it('leaves the parsed model as it would be without the guess', () => {
+  // 262 KB parsed: under StrykerJS (seconds for each reader mutant) skipped; the sizes are speed only there.
+  it.skipIf(instrumented)('leaves the parsed model as it would be without the guess', () => {
     // Two triangles a block, over three vertices written first.
     const text = `v 0 0 0\nv 1 0 0\nv 0 1 0\n${BLOCK.replace('f 1 2 3 4 5\n', 'f 1 2 3\n      ').repeat(4096)}`;
     const r = parseObjBytes(utf8(text));
