@@ -81,6 +81,8 @@ describe('rejectNonText', () => {
       .toEqual({ type: 'load', url: 'b', line: 3, message: 'binary content, not a .byu file' });
     expect(errorOf(() => rejectNonText('1 2\n3', 'c', 'x', 'binary')).line).toBe(1);
     expect(errorOf(() => rejectNonText('   ', 'c', 'x', 'html')).line).toBe(1);
+    expect(errorOf(() => rejectNonText('\n1', 'c', 'x', 'binary')).line).toBe(1);
+    expect(errorOf(() => rejectNonText('\n\n', 'c', 'x', 'html')).line).toBe(1);
     expect(() => rejectNonText('1 2\n', 'd', 'x')).not.toThrow();
     expect(() => rejectNonText('<html>', 'd', 'x', 'obj')).not.toThrow();
   });
@@ -99,6 +101,9 @@ describe('sniffCourse', () => {
     expect(sniffCourse('', CAMERA.replace('0 1 0', '0 1 x'))).toBe('unknown');
     expect(sniffCourse('', LIGHTING.replace('0.5', '0.5 0.5'))).toBe('unknown');
     expect(sniffCourse('', '0 0 0\n0.2\n1 1 1\n')).toBe('unknown');
+    // A word counts as no number: lines of three words are no camera, a word is no lighting value.
+    expect(sniffCourse('', 'a b c\nd e f\ng h i\nj k l\n')).toBe('unknown');
+    expect(sniffCourse('', LIGHTING.replace('0.2', 'x'))).toBe('unknown');
   });
 
   it('returns what sniffModel said for HTML and binary, whatever the name', () => {
@@ -122,6 +127,7 @@ describe('sniffCourse', () => {
     expect(sniffCourse('', '4 2 1\n0 0 0\n0 0 0\n0 0 0\n')).toBe('camera'); // three numbers first: a camera's shape
     expect(sniffCourse('', '4 2.0\n0 0 0\n')).toBe('unknown');
     expect(sniffCourse('', '3 3\n5\n')).toBe('byu-bezier');
+    expect(sniffCourse('', '3 3')).toBe('byu-mesh');
     expect(sniffCourse('', '3 3\n5 5\n')).toBe('byu-mesh');
   });
 });

@@ -2,8 +2,9 @@
 // parser says, on which line, for extra values and lines, clamped values, bad counts and numbers.
 import { describe, expect, it } from 'vitest';
 import { LoadError } from '../../src/loaders/load-error';
-import { parseByuBezier } from '../../src/loaders/course/byu-bezier';
-import { parseByuMesh } from '../../src/loaders/course/byu-mesh';
+import { netLength, parseByuBezier } from '../../src/loaders/course/byu-bezier';
+import { parseByu } from '../../src/loaders/course/byu';
+import { courseVertexNormals, parseByuMesh } from '../../src/loaders/course/byu-mesh';
 import { parseCameraCfg } from '../../src/loaders/course/camera-cfg';
 import { parseLightingTxt } from '../../src/loaders/course/lighting-txt';
 
@@ -18,6 +19,24 @@ function detail(run: () => unknown): LoadError['detail'] {
 }
 
 const PATCH = '0 0 0\n0 1 0\n1 0 0\n1 1 0\n';
+
+describe('every course parser', () => {
+  it('names a file read without a URL by an empty URL, and says what it expected instead of markup', () => {
+    const html = '\n<html>';
+    const want = (what: string) => ({ type: 'load', url: '', line: 2, message: `an HTML page (or other markup), not ${what}` });
+    expect(detail(() => parseByuBezier(html))).toEqual(want('a .byu file'));
+    expect(detail(() => parseByuMesh(html))).toEqual(want('a .byu file'));
+    expect(detail(() => parseCameraCfg(html))).toEqual(want('a camera .cfg file'));
+    expect(detail(() => parseLightingTxt(html))).toEqual(want('a lighting file (iluminacao.txt)'));
+  });
+
+  it('parseByu: refuses content that is a camera or lighting file, by content or by name, without a URL too', () => {
+    expect(detail(() => parseByu('0 0 10\n0 0 -1\n0 1 0\n1 1 1\n'))).toEqual({ type: 'load', url: '', message: 'a camera .cfg file, not a .byu model' });
+    expect(detail(() => parseByu('0 0 0\n1\n1 1 1\n1\n1 1 1\n1\n1 1 1\n1\n'))).toEqual({ type: 'load', url: '', message: 'a lighting file, not a .byu model' });
+    expect(detail(() => parseByu('oops\n', { url: 'x/cam.cfg' }))).toEqual({ type: 'load', url: 'x/cam.cfg', message: 'a camera .cfg file, not a .byu model' });
+    expect(detail(() => parseByu('oops\n'))).toEqual({ type: 'load', url: '', line: 1, message: 'the header needs two counts, "NV NT"; the face count is missing' });
+  });
+});
 
 describe('parseByuBezier: messages', () => {
   it('warns about values after "m n", after E, after a point (once) and lines after the points', () => {
@@ -45,6 +64,22 @@ describe('parseByuBezier: messages', () => {
     expect(parseByuBezier(`1 1\n4\n${PATCH}`, { resolution: 1025 }).resolution).toBe(1024);
   });
 
+  it('names degree n when it is the bad one, and takes n = 32', () => {
+    expect(detail(() => parseByuBezier('1 0\n2\n'))).toEqual({ type: 'load', url: '', line: 1, message: 'degree n: "0" is not a whole number ≥ 1' });
+    const points = Array.from({ length: 66 }, (_, k) => `${k % 33} ${Math.floor(k / 33)} 0`).join('\n');
+    expect(parseByuBezier(`1 32\n2\n${points}\n`).patch.degreeV).toBe(32);
+  });
+
+  it('reads a net of one repeated point (both lengths 0) row by row', () => {
+    const r = parseByuBezier(`1 2\n2\n${'1 1 1\n'.repeat(6)}`);
+    expect([r.order, r.netLength, r.otherNetLength]).toEqual(['second-fastest', 0, 0]);
+  });
+
+  it('measures edges in z too', () => {
+    expect(netLength([0, 0, 1, 0, 0, 3], 1, 0)).toBe(2);
+    expect(netLength([0, 0, 1, 0, 0, 3], 0, 1)).toBe(2);
+  });
+
   it('refuses degrees above 32 in either direction, and takes 32', () => {
     expect(detail(() => parseByuBezier('33 1\n2\n', { url: 'd.byu' })))
       .toEqual({ type: 'load', url: 'd.byu', line: 1, message: 'degrees (33, 1): above 32 is not supported' });
@@ -70,6 +105,18 @@ describe('parseByuBezier: messages', () => {
 });
 
 describe('parseByuMesh: messages', () => {
+  it('reads as many vertices as a short file holds before saying where it ends', () => {
+    expect(detail(() => parseByuMesh('4 1\n0 0 0\n1 0 0'))).toEqual({
+      type: 'load', url: '', line: 3, message: 'the file ends here, after 2 of the 4 vertices the header (line 1) counts',
+    });
+  });
+
+  it('gives a vertex the normal of its one face though a zero-area face also uses it', () => {
+    const n = courseVertexNormals([1, 1, 1, 1, 2, 1, 1, 1, 2], [0, 1, 2, 0, 0, 1]);
+    expect(Array.from(n.subarray(0, 6))).toEqual([1, 0, 0, 1, 0, 0]);
+    expect(Array.from(n.subarray(6, 9))).toEqual([1, 0, 0]);
+  });
+
   it('warns about values after "NV NT", extra values once per kind of line, and lines after the counts', () => {
     const r = parseByuMesh('3 1 9\n0 0 0 1\n1 0 0 1\n0 1 0\n1 2 3 4\n\n7\n8\n', { url: 'm.byu' });
     expect(r.warnings).toEqual([

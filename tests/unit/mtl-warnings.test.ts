@@ -3,6 +3,7 @@
 import { describe, expect, it } from 'vitest';
 import { LoadError } from '../../src/loaders/load-error';
 import { parseMtl, parseMtlBytes } from '../../src/loaders/mtl';
+import { readMapStatement } from '../../src/loaders/mtl-map';
 
 const parse = (text: string) => parseMtl(text, { url: 'a.mtl' });
 const material = (text: string, name = 'm') => parse(text).materials.get(name);
@@ -146,6 +147,14 @@ describe('parseMtl: texture options', () => {
     const r = parseMtl('newmtl m\nmap_Ka -s a.png\nmap_Kd b.png\n', { url: 'a.mtl' });
     expect(r.materials.get('m')).toEqual({ name: 'm', ambientMap: { path: 'a.png' }, diffuseMap: { path: 'b.png' } });
     expect(r.warnings).toEqual([{ line: 2, message: 'map_Ka: -s without a number' }]);
+  });
+
+  it('warns about a map with no path in a file with a URL, and reads on', () => {
+    expect(map('-s 1', 'https://h/a.mtl')).toEqual({ map: undefined, warnings: ['map_Kd: no file name; ignored'] });
+  });
+
+  it('readMapStatement: the path is the rest of the statement, trimmed', () => {
+    expect(readMapStatement('-clamp on  a b.png  ', () => {})).toEqual({ path: 'a b.png', clamp: true });
   });
 
   it('resolves a path only against an absolute URL', () => {

@@ -56,7 +56,13 @@ describe('parseObj and parseObjBytes: load errors', () => {
     expect(errorOf(() => parseObjBytes(bytes, { url: 'a.obj', sniffed: 'html' })).line).toBe(5001);
     expect(errorOf(() => parseObjBytes(utf8('\n\n<p>'), { url: 'a.obj', sniffed: 'html' })).line).toBe(3);
     expect(errorOf(() => parseObj('   ', { url: 'a.obj', sniffed: 'html' })).line).toBe(1);
+    expect(errorOf(() => parseObj('\n\n', { url: 'a.obj', sniffed: 'html' })).line).toBe(1);
     expect(errorOf(() => parseObj('   ', { url: 'a.obj', sniffed: 'byu-mesh' })).line).toBe(1);
+  });
+
+  it('skips a second byte-order mark in bytes as the text parser skips it', () => {
+    const r = parseObjBytes(utf8(`\uFEFF\uFEFF${TRI}f 1 2 3\n`));
+    expect([r.warnings, Array.from(r.indices)]).toEqual([[], [0, 1, 2]]);
   });
 
   it('trusts what was sniffed: OBJ text sniffed as OBJ is read even if it would sniff otherwise', () => {
@@ -125,6 +131,11 @@ describe('parseByuModel and bezierObj', () => {
     // The centre of the patch: the average of its four corners.
     const centre = [0, 1, 2].map((a) => again.positions.filter((_, i) => i % 3 === a)).map((xs) => xs[12]);
     expect(centre).toEqual([2, 1, 1.5]);
+  });
+
+  it('gives a Bézier patch the largest value of each axis, wherever its corner', () => {
+    const model = parseByuModel(utf8('1 1\n2\n4 0 0\n0 2 0\n0 0 6\n0 0 0\n'), 'c.byu');
+    expect(model.obj.bounds).toEqual({ min: [0, 0, 0], max: [4, 2, 6] });
   });
 
   it('keeps bounds of negative coordinates (min and max start from ±Infinity, not 0)', () => {

@@ -52,6 +52,7 @@ describe('decodeSpan', () => {
   });
 
   it('decodes non-ASCII, keeps a mark U+FEFF as text and reads a stray byte as U+FFFD, in short spans and long', () => {
+    expect(decodeSpan(utf8('ñé'), 0, 4)).toBe('ñé');
     const b = utf8('o Zoë');
     expect(decodeSpan(b, 2, b.length)).toBe('Zoë');
     expect(decodeSpan(bytes(0xef, 0xbb, 0xbf, 0x61), 0, 4)).toBe('\uFEFFa');
