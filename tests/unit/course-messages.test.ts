@@ -49,8 +49,8 @@ describe('parseByuBezier: messages', () => {
     ]);
   });
 
-  it('says where E or resolution was moved to 2..1024, and leaves 2 and 1024 alone', () => {
-    expect(parseByuBezier(`1 1\n5000\n${PATCH}`).warnings).toEqual([{ line: 2, message: 'E = 5000 (line 2) is outside 2..1024; using 1024' }]);
+  // E above 1024 (a 1024 × 1024 grid, half a second): course-byu-bezier.test.ts.
+  it('says where resolution was moved to 2..1024, and leaves 2 alone', () => {
     expect(parseByuBezier(`1 1\n\n4\n${PATCH}`, { resolution: 1 }).warnings)
       .toEqual([{ line: 3, message: 'resolution 1 is outside 2..1024; using 2' }]);
     const half = parseByuBezier(`1 1\n4\n${PATCH}`, { resolution: 2.5 });
@@ -61,7 +61,6 @@ describe('parseByuBezier: messages', () => {
     expect(nan.mesh.positions.length).toBe(3 * 4);
     const two = parseByuBezier(`1 1\n2\n${PATCH}`);
     expect([two.resolution, two.fileResolution, two.warnings]).toEqual([2, 2, []]);
-    expect(parseByuBezier(`1 1\n4\n${PATCH}`, { resolution: 1025 }).resolution).toBe(1024);
   });
 
   it('names degree n when it is the bad one, and takes n = 32', () => {
