@@ -95,6 +95,13 @@ describe('parseMtl: warnings, word for word', () => {
     expect(() => parseMtlBytes(new Uint8Array(64).fill(2), { url: 'c.mtl' })).toThrow('glass-plane-scene: c.mtl: binary content');
   });
 
+  it('names a file read without a URL by an empty URL', () => {
+    expect(() => parseMtl('<html>')).toThrow(new LoadError('', 'an HTML page (or other markup), not an MTL file'));
+    let url: string | undefined;
+    try { parseMtl('<html>'); } catch (e) { url = (e as LoadError).url; }
+    expect(url).toBe('');
+  });
+
   it('reads what was sniffed as given: an OBJ-looking MTL is still read', () => {
     expect(parseMtl('newmtl m\nKd 1 1 1\n', { sniffed: 'obj' }).materials.get('m')).toEqual({ name: 'm', diffuse: [1, 1, 1] });
     expect(parseMtlBytes(new TextEncoder().encode('newmtl q\nd 0.5\n'), { url: 'q.mtl' }).materials.get('q')).toEqual({ name: 'q', opacity: 0.5 });
