@@ -14,7 +14,6 @@ export function decodeSpan(b: Uint8Array, from: number, to: number): string {
     let s = '';
     for (let p = from; p < to; p++) {
       const c = b[p];
-      // Stryker disable next-line ConditionalExpression: decoding ASCII too gives the same text (speed only)
       if (c >= 0x80) return utf8.decode(b.subarray(from, to));
       s += String.fromCharCode(c);
     }

@@ -68,7 +68,6 @@ export function parseMtl(text: string, options: { url?: string; sniffed?: ModelF
       warnings.add(line, `${shown(keyword)} before any newmtl; ignored`);
       continue;
     }
-    // Stryker disable next-line ConditionalExpression,StringLiteral,ArrayDeclaration: [''] or any non-number is refused by numbers() with the same words; maps read `rest`
     const args = rest === '' ? [] : rest.split(/\s+/);
     readStatement({ m: current, keyword, key, rest, args, line, warnings, fromD, base });
   }
@@ -191,7 +190,6 @@ function clamped(s: Statement, value: number, lo: number, hi: number, what: stri
 /** Parses MTL bytes (UTF-8 or UTF-16 with a BOM), their content sniffed once. */
 export function parseMtlBytes(bytes: Bytes, options: { url?: string } = {}): MtlResult {
   const sniffed = sniffModel(bytes);
-  // Stryker disable next-line ConditionalExpression,StringLiteral: parseMtl throws the same error for content sniffed 'binary'; this only spares the decoding
   if (sniffed === 'binary') throw new LoadError(options.url ?? '', 'binary content, not an MTL file');
   return parseMtl(decodeText(bytes), { ...options, sniffed });
 }

@@ -11,7 +11,6 @@ export function normalizeObj(result: ObjResult): ObjResult {
   const longest = Math.max(max[0] - min[0], max[1] - min[1], max[2] - min[2]);
   const scale = longest > 0 ? 2 / longest : 1;
   const positions = new Float32Array(result.positions.length);
-  // Stryker disable next-line EqualityOperator: i = length writes past the end of a typed array: nothing
   for (let i = 0; i < positions.length; i++) positions[i] = (result.positions[i] - centre[i % 3]) * scale;
   const at = (a: number, v: number): number => (v - centre[a]) * scale;
   return {

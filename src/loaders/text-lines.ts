@@ -20,7 +20,6 @@ export function logicalLines(text: string): TextLine[] {
       continue;
     }
     parts.push(p);
-    // Stryker disable next-line ConditionalExpression: one part joined is that part (speed only)
     out.push({ line: start, text: parts.length === 1 ? parts[0] : parts.join(' ') });
     parts = [];
   }

@@ -67,7 +67,6 @@ export function parseByuBezier(text: string, options: { url?: string; resolution
   for (let k = 0; k < count; k++) {
     const l = lines.require(3, `after ${k} of the ${count} control points of a (${m}, ${n}) patch`);
     file.set(lines.numbers(l, 3, `control point ${k + 1}`), 3 * k);
-    // Stryker disable next-line StringLiteral: 'point' only keys the once-only set: any constant says it once
     if (l.tokens.length > 3) warnings.addOncePerKeyword('point', l.line, 'control point lines with more than 3 values: the rest ignored (the first such line)');
   }
   const rest = lines.rest();
@@ -104,7 +103,6 @@ export function parseByuBezier(text: string, options: { url?: string; resolution
 /** The file's points read with i (0..m) fastest, rearranged to P(i, j) at i·(n + 1) + j. */
 function firstFastestNet(file: Float64Array, m: number, n: number): Float64Array {
   const out = new Float64Array(file.length);
-  // Stryker disable next-line EqualityOperator: k = count copies an empty subarray (past the file's points): nothing
   for (let k = 0; k < (m + 1) * (n + 1); k++) {
     const i = k % (m + 1), j = Math.floor(k / (m + 1));
     out.set(file.subarray(3 * k, 3 * k + 3), 3 * (i * (n + 1) + j));

@@ -46,7 +46,6 @@ export function parseByuMesh(text: string, options: { url?: string; sniffed?: Mo
 
   // Sized by the text too: a header claiming 10¹² vertices in a small file fails on reading,
   // not on allocating.
-  // Stryker disable next-line ArithmeticOperator: `*` only raises the bound: a header counting more vertices than the text holds fails on reading either way
   const room = Math.floor(text.length / MIN_LINE) + 1;
   const positions = new Float32Array(3 * Math.min(nv, room));
   for (let k = 0; k < nv; k++) {
@@ -101,7 +100,6 @@ export function parseByuMesh(text: string, options: { url?: string; sniffed?: Mo
  */
 export function courseVertexNormals(positions: ArrayLike<number>, indices: ArrayLike<number>): Float32Array {
   const sum = new Float64Array(positions.length);
-  // Stryker disable next-line EqualityOperator: t = length reads undefined indices: a NaN normal, which the length test skips
   for (let t = 0; t < indices.length; t += 3) {
     const a = 3 * indices[t], b = 3 * indices[t + 1], c = 3 * indices[t + 2];
     const ux = positions[b] - positions[a], uy = positions[b + 1] - positions[a + 1], uz = positions[b + 2] - positions[a + 2];
@@ -114,7 +112,6 @@ export function courseVertexNormals(positions: ArrayLike<number>, indices: Array
     }
   }
   const normals = new Float32Array(positions.length);
-  // Stryker disable next-line EqualityOperator: o = length reads NaN and writes past the end of a typed array: nothing
   for (let o = 0; o < sum.length; o += 3) {
     const length = Math.hypot(sum[o], sum[o + 1], sum[o + 2]);
     if (length > 1e-12) {
@@ -134,13 +131,11 @@ function extra(l: ContentLine, used: number, warnings: Warnings, kind: string): 
 function usedBounds(p: Float32Array, indices: ArrayLike<number>): ByuMeshResult['bounds'] {
   const min: [number, number, number] = [Infinity, Infinity, Infinity];
   const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
-  // Stryker disable EqualityOperator: past the end (t, c) the value or bound is undefined, no comparison holds; an equal value changes no bound
   for (let t = 0; t < indices.length; t++) {
     for (let c = 0; c < 3; c++) {
       const x = p[3 * indices[t] + c];
       if (x < min[c]) min[c] = x;
       if (x > max[c]) max[c] = x;
-      // Stryker restore EqualityOperator
     }
   }
   return { min, max };

@@ -48,12 +48,10 @@ function meshToObj(mesh: MeshData, warnings: LoadWarning[], bounds: Bounds = bou
 function boundsOf(p: Float32Array): Bounds {
   const min: [number, number, number] = [Infinity, Infinity, Infinity];
   const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
-  // Stryker disable EqualityOperator: p[length] is undefined, no comparison holds; an equal value changes no bound
   for (let i = 0; i < p.length; i++) {
     const a = i % 3;
     if (p[i] < min[a]) min[a] = p[i];
     if (p[i] > max[a]) max[a] = p[i];
-    // Stryker restore EqualityOperator
   }
   return { min, max };
 }

@@ -56,7 +56,6 @@ export class CourseLines {
   constructor(text: string, url: string) {
     this.text = text;
     this.url = url;
-    // Stryker disable next-line ConditionalExpression: a BOM left in is blank to the tokens (JavaScript's \s includes U+FEFF) and to physical()'s callers
     this.pos = text.charCodeAt(0) === 0xfeff ? 1 : 0;
   }
 
@@ -66,17 +65,14 @@ export class CourseLines {
    */
   private physical(): { first: number; end: number } | null {
     const t = this.text, n = t.length;
-    // Stryker disable next-line EqualityOperator: at pos = n the line left is empty, which next() and rest() skip as blank
     if (this.pos > n) return null;
     let p = this.pos, first = -1;
-    // Stryker disable next-line EqualityOperator: charCodeAt(n) is NaN: no token starts there, so the line's tokens are the same
     for (; p < n; p++) {
       const c = t.charCodeAt(p);
       if (c === 10 || c === 13) break;
       if (first < 0 && c !== 32 && c !== 9) first = p;
     }
     this.line++;
-    // Stryker disable next-line ConditionalExpression,EqualityOperator: at p = n the other branch also gives n + 1 (charCodeAt(n) is NaN, not CR)
     this.pos = p >= n ? n + 1 : p + (t.charCodeAt(p) === 13 && t.charCodeAt(p + 1) === 10 ? 2 : 1);
     return { first: first < 0 ? p : first, end: p };
   }
@@ -88,7 +84,6 @@ export class CourseLines {
       const tokens: string[] = [];
       const re = this.token;
       re.lastIndex = l.first;
-      // Stryker disable next-line EqualityOperator: at l.end is a line end or the text's end, where no token (\S+) starts
       for (let m = re.exec(this.text); m !== null && m.index < l.end && tokens.length <= max; m = re.exec(this.text)) {
         tokens.push(m[0]);
       }

@@ -24,7 +24,6 @@ export function sniffCourse(url: string, text: string, model: ModelFormat = snif
   const lines = new CourseLines(text, url);
   const shape: number[] = []; // numbers per line, −1 for a line with anything else
   const first: string[][] = [];
-  // Stryker disable next-line EqualityOperator,UpdateOperator: more lines read change no result (matches() looks at the first 8): speed only
   for (let k = 0; k < 9; k++) {
     const l = lines.next(3);
     if (l === null) break;
@@ -36,7 +35,6 @@ export function sniffCourse(url: string, text: string, model: ModelFormat = snif
   }
   if (matches(shape, LIGHTING)) return 'lighting';
   if (matches(shape, CAMERA)) return 'camera';
-  // Stryker disable next-line StringLiteral: split gives at least one piece, so pop() is never undefined
   const name = (url.split(/[?#]/, 1)[0].split('/').pop() ?? '').toLowerCase();
   if (name.endsWith('.cfg')) return 'camera';
   if (/^ilumina[cç][aã]o.*\.txt$/.test(name)) return 'lighting';
