@@ -66,9 +66,13 @@ function rejectNonObj(url: string, format: ModelFormat, text: () => string): voi
   if (format === 'byu-mesh' || format === 'byu-bezier') throw new LoadError(url, 'a .byu model, not an OBJ file', lineOfFirstContent(text()));
 }
 
+/** The 1-based line of the first non-blank character: CRLF, CR or LF ends a line, as the reader counts them. */
 function lineOfFirstContent(text: string): number {
   const start = Math.max(0, text.search(/\S/));
   let line = 1;
-  for (let i = 0; i < start; i++) if (text.charCodeAt(i) === 10) line++;
+  for (let i = 0; i < start; i++) {
+    const c = text.charCodeAt(i);
+    if (c === 10 || (c === 13 && text.charCodeAt(i + 1) !== 10)) line++;
+  }
   return line;
 }

@@ -8,10 +8,13 @@ import { expectLoadError, sample, xyz } from './helpers/course';
 
 const S3 = 1 / Math.sqrt(3);
 
-describe('parseByuMesh: the tetrahedron', () => {
-  const r = parseByuMesh(sample('tetra.byu'), { url: 'tetra.byu' });
+// Parsed in each test, not once per describe: StrykerJS counts code run outside a test as
+// run by none, and a mutant in it then meets only the unmutated result.
+const tetra = () => parseByuMesh(sample('tetra.byu'), { url: 'tetra.byu' });
 
+describe('parseByuMesh: the tetrahedron', () => {
   it('reads NV vertices and NT 1-based faces, in file order', () => {
+    const r = tetra();
     expect(r.vertexCount).toBe(4);
     expect(r.declaredFaceCount).toBe(4);
     expect(r.faceCount).toBe(4);
@@ -24,6 +27,7 @@ describe('parseByuMesh: the tetrahedron', () => {
   });
 
   it('gives each vertex the normalised sum of its faces\' unit normals, not the area-weighted one', () => {
+    const r = tetra();
     expect(xyz(r.mesh.normals, 0).map((c) => c / -S3)).toEqual([1, 1, 1].map(() => expect.closeTo(1, 6)));
     // Vertex 2 touches −z, −y and the slanted face (1, 1, 1)/√3 of area √3/2: weighting by
     // area would give exactly +x.
@@ -33,6 +37,7 @@ describe('parseByuMesh: the tetrahedron', () => {
   });
 
   it('reads the CRLF + BOM + blank lines + tabs + exponents variant and the one without a final newline alike', () => {
+    const r = tetra();
     for (const [name, low, top] of [['tetra-crlf-bom.byu', -1e-14, 0.95], ['tetra-no-final-newline.byu', 0, 1]] as const) {
       const v = parseByuMesh(sample(name), { url: name });
       expect(v.warnings).toEqual([]);
@@ -122,9 +127,10 @@ describe('courseVertexNormals', () => {
 describe('the generated chalice', () => {
   // Its parse time is in `npm run bench` (bench/parse-course.md), not asserted here.
   const chalice = makeChalice();
-  const r = parseByuMesh(chalice.text, { url: 'chalice.byu' });
+  const parsed = () => parseByuMesh(chalice.text, { url: 'chalice.byu' });
 
   it('has the counts of its header, a few thousand triangles, no warnings', () => {
+    const r = parsed();
     expect(r.vertexCount).toBe(chalice.vertexCount);
     expect(r.faceCount).toBe(chalice.faceCount);
     expect(r.faceCount).toBeGreaterThan(3000);
@@ -132,6 +138,7 @@ describe('the generated chalice', () => {
   });
 
   it('has unit normals pointing to the outer side of the sheet: down under the foot, out on the stem', () => {
+    const r = parsed();
     for (let k = 0; k < r.vertexCount; k++) expect(length(xyz(r.mesh.normals, k))).toBeCloseTo(1, 5);
     expect(xyz(r.mesh.normals, 0).map((c) => Math.round(c * 1e6) / 1e6 + 0)).toEqual([0, -1, 0]);
     const stem = chalice.rings.findIndex(([radius, y]) => radius === 0.15 && y > 0.6 && y < 1);

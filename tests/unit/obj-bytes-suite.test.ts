@@ -5,6 +5,7 @@
 import { afterAll, expect, vi } from 'vitest';
 import type * as Obj from '../../src/loaders/obj';
 import { expectSameOutcome, outcomeOf, type Outcome } from './helpers/obj-same';
+import { instrumented } from './helpers/collections';
 
 const compared = { text: 0, bytes: 0 };
 
@@ -47,7 +48,8 @@ vi.mock('../../src/loaders/obj', async (importOriginal) => {
 await import('./obj.test');
 await import('./obj-faults.test');
 await import('./obj-polygons.test');
-await import('./obj-data.test');
+// The scans (seconds each under StrykerJS, for every mutant they cover) only outside it.
+if (!instrumented) await import('./obj-data.test');
 await import('./obj-job.test');
 await import('./mesh-parts.test');
 

@@ -10,6 +10,7 @@ import { parseObj, parseObjBytes, type ObjOptions, type ObjResult } from '../../
 import { sniffModel } from '../../src/loaders/sniff';
 import { bunnyObj, dragonObj } from '../data/make-obj';
 import { expectSameOutcome, outcomeOf, type Outcome } from './helpers/obj-same';
+import { instrumented } from './helpers/collections';
 
 const utf8 = (text: string): Uint8Array => new TextEncoder().encode(text);
 
@@ -79,7 +80,8 @@ describe('parseObjBytes: the same result as the text parser', () => {
     for (const f of files) expectBytesAsText(new Uint8Array(fs.readFileSync(path.join(dir, f))), f);
   });
 
-  it('on the bunny and the dragon at every resolution', { timeout: 120_000 }, () => {
+  // Over 120 s under StrykerJS (every call instrumented): skipped there; the files below reach the same code.
+  it.skipIf(instrumented)('on the bunny and the dragon at every resolution', { timeout: 120_000 }, () => {
     for (const [label, text] of [['bunny', bunnyObj()], ...([4, 3, 2, 1] as const).map((r) => [`dragon res${r}`, dragonObj(r)])]) {
       const got = expectBytesAsText(utf8(text), label);
       expect(got.ok && got.result.warnings).toEqual([]);
@@ -123,7 +125,8 @@ describe('parseObjBytes: the same result as the text parser', () => {
       '123456789012345678901', '1e400', '4.9e-324', '+', '-', 'nan', 'inf', '<'];
     const head = `${TRI}vt 0 0\nvn 0 0 1\n`;
     let ok = 0;
-    for (let k = 0; k < 3000; k++) {
+    const files = instrumented ? 90 : 3000; // StrykerJS: fewer, for its time a mutant
+    for (let k = 0; k < files; k++) {
       let text = head;
       const n = 1 + random(60);
       for (let i = 0; i < n; i++) text += pieces[random(pieces.length)];
@@ -133,6 +136,6 @@ describe('parseObjBytes: the same result as the text parser', () => {
       if (random(4) === 0) bytes[head.length + random(bytes.length - head.length)] = 0x80 + random(128);
       if (expectBytesAsText(bytes, JSON.stringify(text)).ok) ok++;
     }
-    expect(ok).toBeGreaterThan(1000); // most files draw, so the comparison reaches the mesh
+    expect(ok).toBeGreaterThan(files / 3); // most files draw, so the comparison reaches the mesh
   });
 });

@@ -64,12 +64,15 @@ class ObjReader {
   constructor(private readonly sc: ObjScanner, capacities: Capacities | null = null) {
     this.byteScanner = sc instanceof ByteScanner ? sc : null;
     const c = capacities;
+    // An initial size only: a list too small grows (growable.ts), so no size changes what is read.
+    // Stryker disable MethodExpression,LogicalOperator: initial sizes, see above
     this.positions = new F64List(Math.max(1024, c?.positions ?? 0));
     this.uvs = new F64List(Math.max(1024, c?.uvs ?? 0));
     this.normals = new F64List(Math.max(1024, c?.normals ?? 0));
     this.cornerLists = new CornerLists(Math.max(1024, c?.corners ?? 0));
     this.triangles = new I32List(Math.max(1024, c?.triangles ?? 0));
     this.faces = new I32List(Math.max(1024, c?.faces ?? 0));
+    // Stryker restore MethodExpression,LogicalOperator
   }
 
   read(): ObjRaw {
