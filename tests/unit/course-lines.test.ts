@@ -4,23 +4,13 @@
 import { describe, expect, it } from 'vitest';
 import { CourseLines, rejectNonText } from '../../src/loaders/course/course-text';
 import { sniffCourse } from '../../src/loaders/course/sniff-course';
-import { LoadError } from '../../src/loaders/load-error';
+import { loadErrorOf } from './helpers/course';
 
 function lines(text: string, max = 3): { line: number; tokens: string[] }[] {
   const c = new CourseLines(text, 'f');
   const out = [];
   for (let l = c.next(max); l !== null; l = c.next(max)) out.push(l);
   return out;
-}
-
-function errorOf(run: () => unknown): LoadError {
-  try {
-    run();
-  } catch (e) {
-    expect(e).toBeInstanceOf(LoadError);
-    return e as LoadError;
-  }
-  throw new Error('expected a LoadError');
 }
 
 describe('CourseLines', () => {
@@ -47,7 +37,7 @@ describe('CourseLines', () => {
     const c = new CourseLines('1\n\n2\n\n\n', 'f.txt');
     c.next(1);
     c.next(1);
-    const e = errorOf(() => c.require(1, 'no line for n'));
+    const e = loadErrorOf(() => c.require(1, 'no line for n'));
     expect(e.detail).toEqual({ type: 'load', url: 'f.txt', line: 3, message: 'the file ends here, no line for n' });
   });
 
@@ -62,27 +52,27 @@ describe('CourseLines', () => {
   it('reads numbers and whole-number counts, naming what each was to be', () => {
     const c = new CourseLines('', 'f');
     expect(c.number('-2.5e1', 4, 'x')).toBe(-25);
-    expect(errorOf(() => c.number('1e400', 4, 'Pl')).detail).toEqual({ type: 'load', url: 'f', line: 4, message: 'Pl: "1e400" is too large' });
-    expect(errorOf(() => c.number('1.1.1', 5, 'Pl')).detail.message).toBe('Pl: "1.1.1" is not a number');
+    expect(loadErrorOf(() => c.number('1e400', 4, 'Pl')).detail).toEqual({ type: 'load', url: 'f', line: 4, message: 'Pl: "1e400" is too large' });
+    expect(loadErrorOf(() => c.number('1.1.1', 5, 'Pl')).detail.message).toBe('Pl: "1.1.1" is not a number');
     expect(c.count('3', 1, 'NV', 3)).toBe(3);
     expect(c.count('0', 1, 'NV', 0)).toBe(0);
-    expect(errorOf(() => c.count('2', 1, 'NV', 3)).detail.message).toBe('NV: "2" is not a whole number ≥ 3');
-    expect(errorOf(() => c.count('2.5', 2, 'NT', 1)).detail).toEqual({ type: 'load', url: 'f', line: 2, message: 'NT: "2.5" is not a whole number ≥ 1' });
+    expect(loadErrorOf(() => c.count('2', 1, 'NV', 3)).detail.message).toBe('NV: "2" is not a whole number ≥ 3');
+    expect(loadErrorOf(() => c.count('2.5', 2, 'NT', 1)).detail).toEqual({ type: 'load', url: 'f', line: 2, message: 'NT: "2.5" is not a whole number ≥ 1' });
     expect(c.numbers({ line: 1, tokens: ['1', '2', '3', '4'] }, 3, 'C')).toEqual([1, 2, 3]);
-    expect(errorOf(() => c.numbers({ line: 6, tokens: [] }, 1, 'ka')).detail.message).toBe('ka needs 1 number, the line has 0');
+    expect(loadErrorOf(() => c.numbers({ line: 6, tokens: [] }, 1, 'ka')).detail.message).toBe('ka needs 1 number, the line has 0');
   });
 });
 
 describe('rejectNonText', () => {
   it('names the line of the markup or of the first control character, CR and CRLF counted once each', () => {
-    expect(errorOf(() => rejectNonText('\r\n\r \n<x>', 'a', 'a camera .cfg file')).detail)
+    expect(loadErrorOf(() => rejectNonText('\r\n\r \n<x>', 'a', 'a camera .cfg file')).detail)
       .toEqual({ type: 'load', url: 'a', line: 4, message: 'an HTML page (or other markup), not a camera .cfg file' });
-    expect(errorOf(() => rejectNonText('1 2\r3 4\r\n\u0000\u0001\u0002', 'b', 'a .byu file')).detail)
+    expect(loadErrorOf(() => rejectNonText('1 2\r3 4\r\n\u0000\u0001\u0002', 'b', 'a .byu file')).detail)
       .toEqual({ type: 'load', url: 'b', line: 3, message: 'binary content, not a .byu file' });
-    expect(errorOf(() => rejectNonText('1 2\n3', 'c', 'x', 'binary')).line).toBe(1);
-    expect(errorOf(() => rejectNonText('   ', 'c', 'x', 'html')).line).toBe(1);
-    expect(errorOf(() => rejectNonText('\n1', 'c', 'x', 'binary')).line).toBe(1);
-    expect(errorOf(() => rejectNonText('\n\n', 'c', 'x', 'html')).line).toBe(1);
+    expect(loadErrorOf(() => rejectNonText('1 2\n3', 'c', 'x', 'binary')).line).toBe(1);
+    expect(loadErrorOf(() => rejectNonText('   ', 'c', 'x', 'html')).line).toBe(1);
+    expect(loadErrorOf(() => rejectNonText('\n1', 'c', 'x', 'binary')).line).toBe(1);
+    expect(loadErrorOf(() => rejectNonText('\n\n', 'c', 'x', 'html')).line).toBe(1);
     expect(() => rejectNonText('1 2\n', 'd', 'x')).not.toThrow();
     expect(() => rejectNonText('<html>', 'd', 'x', 'obj')).not.toThrow();
   });

@@ -1,63 +1,53 @@
 // The OBJ loader's load errors word for word (docs/scene-model.md#loading): what was rejected and on which line,
 // the worker job's error detail for any exception, and a course .byu as the model the element draws.
 import { describe, expect, it } from 'vitest';
-import { LoadError } from '../../src/loaders/load-error';
 import { parseObj, parseObjBytes } from '../../src/loaders/obj';
 import { runObjJob } from '../../src/loaders/obj-job';
 import { bezierObj, parseByuModel } from '../../src/loaders/course/byu-model';
+import { loadErrorOf } from './helpers/course';
 
 const TRI = 'v 0 0 0\nv 1 0 0\nv 0 1 0\n';
 const utf8 = (text: string): Uint8Array => new TextEncoder().encode(text);
 
-function errorOf(run: () => unknown): LoadError {
-  try {
-    run();
-  } catch (e) {
-    expect(e).toBeInstanceOf(LoadError);
-    return e as LoadError;
-  }
-  throw new Error('expected a LoadError');
-}
-
 describe('parseObj and parseObjBytes: load errors', () => {
   it('says how many faces were dropped, one or several, on the line of the first', () => {
-    expect(errorOf(() => parseObj(`${TRI}f 1 2 7\n`, { url: 'm.obj' })).message)
+    expect(loadErrorOf(() => parseObj(`${TRI}f 1 2 7\n`, { url: 'm.obj' })).message)
       .toBe('glass-plane-scene: m.obj line 4: no faces to draw: 1 face dropped, the first here');
-    expect(errorOf(() => parseObj(`${TRI}\nf 1 2\nf 1 2 9\n`, { url: 'm.obj' })).message)
+    expect(loadErrorOf(() => parseObj(`${TRI}\nf 1 2\nf 1 2 9\n`, { url: 'm.obj' })).message)
       .toBe('glass-plane-scene: m.obj line 5: no faces to draw: 2 faces dropped, the first here');
-    expect(errorOf(() => parseObjBytes(utf8(`${TRI}f 1 2 7\n`))).detail)
+    expect(loadErrorOf(() => parseObjBytes(utf8(`${TRI}f 1 2 7\n`))).detail)
       .toEqual({ type: 'load', url: '', line: 4, message: 'no faces to draw: 1 face dropped, the first here' });
-    expect(errorOf(() => parseObj(TRI)).detail).toEqual({ type: 'load', url: '', message: 'no faces to draw' });
+    expect(loadErrorOf(() => parseObj(TRI)).detail).toEqual({ type: 'load', url: '', message: 'no faces to draw' });
   });
 
   it('names an HTML page, a .byu model and binary content, with the line where content starts', () => {
-    expect(errorOf(() => parseObj('\n\n <html>', { url: 'a.obj' })).message)
+    expect(loadErrorOf(() => parseObj('\n\n <html>', { url: 'a.obj' })).message)
       .toBe('glass-plane-scene: a.obj line 3: an HTML page (or other markup), not an OBJ file');
-    expect(errorOf(() => parseObj('\n3 1\n0 0 0\n1 0 0\n0 1 0\n1 2 3\n', { url: 'a.obj' })).message)
+    expect(loadErrorOf(() => parseObj('\n3 1\n0 0 0\n1 0 0\n0 1 0\n1 2 3\n', { url: 'a.obj' })).message)
       .toBe('glass-plane-scene: a.obj line 2: a .byu model, not an OBJ file');
-    expect(errorOf(() => parseObj('\n\n2 2\n4\n', { url: 'a.obj' })).message)
+    expect(loadErrorOf(() => parseObj('\n\n2 2\n4\n', { url: 'a.obj' })).message)
       .toBe('glass-plane-scene: a.obj line 3: a .byu model, not an OBJ file');
-    expect(errorOf(() => parseObjBytes(utf8('\n\n\n3 1\n'), { url: 'b.obj' })).detail)
+    expect(loadErrorOf(() => parseObjBytes(utf8('\n\n\n3 1\n'), { url: 'b.obj' })).detail)
       .toEqual({ type: 'load', url: 'b.obj', line: 4, message: 'a .byu model, not an OBJ file' });
-    expect(errorOf(() => parseObj(TRI, { url: 'c.obj', sniffed: 'binary' })).detail)
+    expect(loadErrorOf(() => parseObj(TRI, { url: 'c.obj', sniffed: 'binary' })).detail)
       .toEqual({ type: 'load', url: 'c.obj', message: 'binary content, not an OBJ file' });
-    expect(errorOf(() => parseObjBytes(utf8(TRI), { url: 'c.obj', sniffed: 'binary' })).detail)
+    expect(loadErrorOf(() => parseObjBytes(utf8(TRI), { url: 'c.obj', sniffed: 'binary' })).detail)
       .toEqual({ type: 'load', url: 'c.obj', message: 'binary content, not an OBJ file' });
   });
 
   it('counts CR-only and CRLF line ends alike when naming the line where markup starts', () => {
-    expect(errorOf(() => parseObj('\r\r <html>', { url: 'a.obj' })).line).toBe(3);
-    expect(errorOf(() => parseObj('\r\n\r\n <html>', { url: 'a.obj' })).line).toBe(3);
-    expect(errorOf(() => parseObjBytes(utf8('\r\r\r<html>'), { url: 'a.obj' })).line).toBe(4);
+    expect(loadErrorOf(() => parseObj('\r\r <html>', { url: 'a.obj' })).line).toBe(3);
+    expect(loadErrorOf(() => parseObj('\r\n\r\n <html>', { url: 'a.obj' })).line).toBe(3);
+    expect(loadErrorOf(() => parseObjBytes(utf8('\r\r\r<html>'), { url: 'a.obj' })).line).toBe(4);
   });
 
   it('finds the line of markup past the sniffed 4 KB when the caller sniffed it, and line 1 in a blank file', () => {
     const bytes = utf8(`${'\n'.repeat(5000)}<html>`);
-    expect(errorOf(() => parseObjBytes(bytes, { url: 'a.obj', sniffed: 'html' })).line).toBe(5001);
-    expect(errorOf(() => parseObjBytes(utf8('\n\n<p>'), { url: 'a.obj', sniffed: 'html' })).line).toBe(3);
-    expect(errorOf(() => parseObj('   ', { url: 'a.obj', sniffed: 'html' })).line).toBe(1);
-    expect(errorOf(() => parseObj('\n\n', { url: 'a.obj', sniffed: 'html' })).line).toBe(1);
-    expect(errorOf(() => parseObj('   ', { url: 'a.obj', sniffed: 'byu-mesh' })).line).toBe(1);
+    expect(loadErrorOf(() => parseObjBytes(bytes, { url: 'a.obj', sniffed: 'html' })).line).toBe(5001);
+    expect(loadErrorOf(() => parseObjBytes(utf8('\n\n<p>'), { url: 'a.obj', sniffed: 'html' })).line).toBe(3);
+    expect(loadErrorOf(() => parseObj('   ', { url: 'a.obj', sniffed: 'html' })).line).toBe(1);
+    expect(loadErrorOf(() => parseObj('\n\n', { url: 'a.obj', sniffed: 'html' })).line).toBe(1);
+    expect(loadErrorOf(() => parseObj('   ', { url: 'a.obj', sniffed: 'byu-mesh' })).line).toBe(1);
   });
 
   it('skips a second byte-order mark in bytes as the text parser skips it', () => {

@@ -30,3 +30,14 @@ export function expectLoadError(run: () => unknown, url: string, line: number | 
 }
 
 export const xyz = (a: ArrayLike<number>, k: number): [number, number, number] => [a[3 * k], a[3 * k + 1], a[3 * k + 2]];
+
+/** The LoadError `run` throws (failing the test if it throws anything else, or nothing). */
+export function loadErrorOf(run: () => unknown): LoadError {
+  try {
+    run();
+  } catch (e) {
+    expect(e).toBeInstanceOf(LoadError);
+    return e as LoadError;
+  }
+  throw new Error('expected a LoadError');
+}
