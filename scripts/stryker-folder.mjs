@@ -25,6 +25,16 @@ const OWN_TESTS = {
     'frame-rules', 'frame-setup', 'lazy-parts', 'mesh-choice', 'orthographic', 'reflection-lod', 'reflection-scissor',
     'stability', 'quality-knobs', 'scene-turn', 'course-view', 'programs', 'glass-tie', 'glass-bounds', 'course-projection',
   ],
+  software: [
+    'software-anisotropic', 'software-bands', 'software-protocol', 'software-baseline', 'software-caches', 'software-glass', 'software-msaa',
+    'software-pixels', 'software-raster', 'software-reference', 'software-rough', 'software-srgb', 'glass-tie', 'lights-rule',
+    'mesh-choice', 'scaled-objects', 'scene-turn', 'course-view',
+  ],
+  reference: [
+    'reference-any-scene', 'reference-convergence', 'reference-metrics', 'reference-pixels', 'reference-rough',
+    'reference-scene', 'reference-srgb', 'reference-texture', 'bvh', 'stability', 'glass-tie', 'lights-rule', 'scaled-objects',
+    'course-view',
+  ],
 };
 for (const [folder, names] of Object.entries(OWN_TESTS)) OWN_TESTS[folder] = names.map((n) => `tests/unit/${n}.test.ts`);
 import fs from 'node:fs';
