@@ -14,6 +14,7 @@ import { SoftwareRenderer, putBand, renderBand, splitRows, type Band } from '../
 import { CASES, IMAGES, STATE } from './helpers/software-cases';
 import { differingBytes } from './helpers/pixel-diff';
 import { Rasterizer, VARYINGS } from '../../src/software/raster';
+import { instrumented } from './helpers/collections';
 
 /** The whole frame from `bands`, each drawn by its renderer of `renderers` (one per band). */
 function banded(renderers: SoftwareRenderer[], bands: Band[], state: FrameState, scene: Scene): Uint8ClampedArray {
@@ -98,7 +99,9 @@ describe('a frame in bands is the whole frame, bit for bit', () => {
     ['gouraud', { shading: 'gouraud' }], ['flat, samples 4', { shading: 'flat', samples: 4 }],
   ];
   for (const [name, over, n] of variants) {
-    it(`default scene, ${name}: 2 bands, 4 uneven ones (one empty), one row each`, () => {
+    // Under StrykerJS the instrumented rough gather draws a 160×90 frame in seconds, and this test draws
+    // seven: software-baseline.test.ts holds the rough frames to the bit there.
+    it.skipIf(instrumented && over.roughness)(`default scene, ${name}: 2 bands, 4 uneven ones (one empty), one row each`, () => {
       const state: FrameState = { ...STATE, ...over };
       const want = whole(state, scene, n);
       expect(differing(banded(renderersOf(2, n), splitRows(state.height, 2), state, scene), want)).toBe(0);

@@ -12,6 +12,7 @@ import { defaultScene } from '../../src/scene/default-scene';
 import { DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import { defaultFrameState } from './helpers/frame-state';
 import { differingBytes } from './helpers/pixel-diff';
+import { instrumented } from './helpers/collections';
 import { courseBasis, type CourseCamera } from '../../src/math/course-camera';
 
 const key = (...values: number[]) => {
@@ -138,7 +139,8 @@ describe('the software renderer across resizes', () => {
   for (const [label, over] of [
     ['default', {}], ['multisampled', { samples: 4 }], ['rough', { roughness: 0.3 }], ['the course\'s camera', { courseCamera: course }],
   ] as const) {
-    it(`${label}: every frame of a run of sizes (a height alone changing among them) is a fresh renderer's`, () => {
+    // Under StrykerJS the instrumented rough gather takes minutes for this run: small-frames.test.ts's run holds rough there.
+    it.skipIf(instrumented && label === 'rough')(`${label}: every frame of a run of sizes (a height alone changing among them) is a fresh renderer's`, () => {
       const live = new SoftwareRenderer(), scene = defaultScene(DEFAULT_CUBE_DISTANCE, 0);
       for (const [width, height] of sizes) {
         const state = defaultFrameState({ width, height, spin: 0, ...over });
