@@ -16,7 +16,7 @@ import { courseBasis, type CourseCamera } from '../../src/math/course-camera';
 import type { FrameState } from '../../src/frame/types';
 import { DEFAULT_GLASS, DEFAULT_LIGHT, defaultScene } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
-import { SoftwareRenderer } from '../../src/software';
+import { SoftwareRenderer, putBand, renderBand, splitRows, type Band } from '../../src/software';
 import { renderScene } from '../../src/reference';
 import { CASES, IMAGES, STATE } from './helpers/software-cases';
 
@@ -121,4 +121,45 @@ describe('small frames: a run of frames by one software renderer, each as a fres
       }
     }
   });
+});
+
+/** Bands (bands.ts): every band's rows drawn by a renderer of its own and put together are the whole frame. */
+describe('small frames in bands, each band by its own renderer, are the whole frame bit for bit', () => {
+  const banded = (state: FrameState, bands: Band[], n: number, renderers = bands.map(() => new SoftwareRenderer({ samplesPerAxis: n }))) => {
+    const frame = new Uint8ClampedArray(4 * state.width * state.height);
+    bands.forEach((band, i) => putBand(frame, renderBand(renderers[i], scene, state, IMAGES, band), band, state.width));
+    return Buffer.from(frame);
+  };
+  for (const [name, over, n] of [
+    ['plain', {}, 1], ['samples 4', { samples: 4 }, 1], ['2×2, 33×19', { width: 33, height: 19 }, 2], ['rough 0.3', { roughness: 0.3 }, 1],
+    ['course camera', { courseCamera: courseCamera() }, 1], ['view passes, 33×19', { view: 'passes', width: 33, height: 19 }, 1],
+  ] as [string, Partial<FrameState>, number][]) {
+    it(`${name}: 2 even bands, 4 uneven ones (one empty), one row each`, () => {
+      const state: FrameState = { ...SMALL, ...over };
+      const whole = Buffer.from(renderBand(new SoftwareRenderer({ samplesPerAxis: n }), scene, state, IMAGES, null));
+      expect(whole.length).toBe(4 * state.width * state.height);
+      expect(banded(state, splitRows(state.height, 2), n).equals(whole)).toBe(true);
+      expect(banded(state, splitRows(state.height, 4, [1, 0.01, 3, 2]), n).equals(whole)).toBe(true);
+      expect(banded(state, [{ top: 0, bottom: 5 }, { top: 5, bottom: 5 }, { top: 5, bottom: 11 }, { top: 11, bottom: state.height }], n).equals(whole)).toBe(true);
+      const rows = Array.from({ length: state.height }, (_, y) => ({ top: y, bottom: y + 1 }));
+      const one = new SoftwareRenderer({ samplesPerAxis: n });
+      expect(banded(state, rows, n, rows.map(() => one)).equals(whole)).toBe(true);
+    });
+  }
+});
+
+/** A run of sizes by one renderer (its caches sized for the largest): each frame a fresh renderer's. */
+describe('small frames: a run of sizes by one software renderer', () => {
+  const sizes: [number, number][] = [[32, 24], [32, 24], [32, 24], [32, 18], [32, 18], [24, 32], [24, 32], [32, 18], [32, 18], [40, 18], [40, 18]];
+  for (const [label, over] of [['plain', {}], ['samples 4', { samples: 4 }], ['rough 0.3', { roughness: 0.3 }], ['course camera', { courseCamera: courseCamera() }]] as [string, Partial<FrameState>][]) {
+    it(`${label}: every frame, a height alone changing among them, is a fresh renderer's`, () => {
+      const live = new SoftwareRenderer();
+      for (const [width, height] of sizes) {
+        const state: FrameState = { ...SMALL, spin: 0, ...over, width, height };
+        const got = Buffer.from(live.render(scene, state, IMAGES));
+        expect(got.length, `${width}×${height}`).toBe(4 * width * height);
+        expect(got.equals(Buffer.from(new SoftwareRenderer().render(scene, state, IMAGES))), `${width}×${height}`).toBe(true);
+      }
+    });
+  }
 });
