@@ -141,6 +141,7 @@ describe('small frames in bands, each band by its own renderer, are the whole fr
       expect(banded(state, splitRows(state.height, 2), n).equals(whole)).toBe(true);
       expect(banded(state, splitRows(state.height, 4, [1, 0.01, 3, 2]), n).equals(whole)).toBe(true);
       expect(banded(state, [{ top: 0, bottom: 5 }, { top: 5, bottom: 5 }, { top: 5, bottom: 11 }, { top: 11, bottom: state.height }], n).equals(whole)).toBe(true);
+      if (state.roughness) return; // rough glass draws the whole frame for each band: a frame per row shows nothing more
       const rows = Array.from({ length: state.height }, (_, y) => ({ top: y, bottom: y + 1 }));
       const one = new SoftwareRenderer({ samplesPerAxis: n });
       expect(banded(state, rows, n, rows.map(() => one)).equals(whole)).toBe(true);
