@@ -71,8 +71,10 @@ test('a sphere child on a page sized by a stylesheet: ready, then two animation 
     await page.goto('/tests/e2e/pages/first-frame.html');
     const run = await mountAndWatch(page, KINDS.children, 10_000);
     expect(run, 'ready').not.toBeNull();
-    // Measured: ready ≈ (run.ready) ms, two frames ≈ 17–35 ms.
-    expect(run!.twoFrames, JSON.stringify(run)).toBeLessThan(500);
+    // Measured: two frames ≈ 17–35 ms on a quiet machine; 1,067 ms once with a StrykerJS run
+    // holding one of the two cores (2026-11-28; 500 ms was the bound then). The stall this guards
+    // against held them 25 s: 2 s tells the two apart with room for a loaded machine.
+    expect(run!.twoFrames, JSON.stringify(run)).toBeLessThan(2000);
   }
 });
 
