@@ -69,6 +69,7 @@ export function unpackScene(scene: Scene, store: ReadonlyMap<string, MeshData>):
     ...scene,
     objects: scene.objects.map((o) => {
       const g = o.geometry;
+      // Stryker disable next-line ConditionalExpression: without the kind test a box or sphere reads store.get(undefined), which no key is, and is returned as it came
       if (g.kind !== 'mesh' || g.data) return o;
       const data = store.get(g.key);
       return data ? { ...o, geometry: { ...g, data } } : o;

@@ -12,13 +12,12 @@
 import { createHash } from 'node:crypto';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { courseBasis, type CourseCamera } from '../../src/math/course-camera';
 import type { FrameState } from '../../src/frame/types';
 import { DEFAULT_GLASS, DEFAULT_LIGHT, defaultScene } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
 import { SoftwareRenderer, putBand, renderBand, splitRows, type Band } from '../../src/software';
 import { renderScene } from '../../src/reference';
-import { CASES, IMAGES, STATE } from './helpers/software-cases';
+import { CASES, IMAGES, STATE, courseCamera } from './helpers/software-cases';
 
 const FILE = new URL('./small-frames.json', import.meta.url);
 const UPDATE = process.env.UPDATE_BASELINE === '1';
@@ -26,12 +25,6 @@ const stored: Record<string, string> = UPDATE ? {} : JSON.parse(readFileSync(FIL
 const recorded: Record<string, string> = {};
 
 const SMALL: FrameState = { ...STATE, width: 32, height: 18 };
-
-function courseCamera(): CourseCamera {
-  const basis = courseBasis([-3.6, -1.4, -4], [0, 1, 0]);
-  if (typeof basis === 'string') throw new Error(basis);
-  return { c: [3.6, 2.4, 4], ...basis, d: 1, hx: 0.6, hy: 0.5 };
-}
 
 interface Frame { name: string; scene: Scene; state: FrameState; samplesPerAxis: number }
 

@@ -6,12 +6,11 @@
 // each debug view, rough (drawn whole in one band's renderer, sliced), with a course camera, on
 // odd sizes and uneven or empty bands, and a run of frames whose caches each band keeps.
 import { describe, expect, it } from 'vitest';
-import { courseBasis, type CourseCamera } from '../../src/math/course-camera';
 import type { FrameState } from '../../src/frame/types';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
 import { SoftwareRenderer, putBand, renderBand, splitRows, type Band } from '../../src/software';
-import { CASES, IMAGES, STATE } from './helpers/software-cases';
+import { CASES, IMAGES, STATE, courseCamera } from './helpers/software-cases';
 import { differingBytes } from './helpers/pixel-diff';
 import { Rasterizer, VARYINGS } from '../../src/software/raster';
 import { instrumented } from './helpers/collections';
@@ -31,12 +30,6 @@ function differing(a: Uint8ClampedArray, b: Uint8ClampedArray): number {
 
 const whole = (state: FrameState, scene: Scene, samplesPerAxis = 1) => new SoftwareRenderer({ samplesPerAxis }).render(scene, state, IMAGES).slice();
 const renderersOf = (count: number, samplesPerAxis = 1) => Array.from({ length: count }, () => new SoftwareRenderer({ samplesPerAxis }));
-
-function courseCamera(): CourseCamera {
-  const basis = courseBasis([-3.6, -1.4, -4], [0, 1, 0]);
-  if (typeof basis === 'string') throw new Error(basis);
-  return { c: [3.6, 2.4, 4], ...basis, d: 1, hx: 0.6, hy: 0.5 };
-}
 
 describe('Rasterizer.top and bottom', () => {
   /** Fragments (and repeated samples) per row of a 40×30 target covered by two triangles, with rows top..bottom drawn. */

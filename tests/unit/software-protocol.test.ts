@@ -132,7 +132,9 @@ describe('the worker (src/software/worker.ts) under a stand-in worker scope', ()
     const scene = meshScene('box', data);
     const sent = new SentResources().pack(scene, new Map());
     const band = { top: 6, bottom: 15 };
+    const before = performance.now();
     onmessage({ data: request({ id: 8, ...sent, band, samplesPerAxis: 2 }) });
+    const took = performance.now() - before;
     const { message, transfer } = posted.pop()!;
     const expected = new SoftwareRenderer();
     expected.samplesPerAxis = 2;
@@ -142,6 +144,7 @@ describe('the worker (src/software/worker.ts) under a stand-in worker scope', ()
     expect(ok.pixels.length).toBe(4 * 40 * 9);
     expect(Buffer.from(ok.pixels).equals(Buffer.from(want))).toBe(true);
     expect(ok.ms).toBeGreaterThanOrEqual(0);
+    expect(ok.ms).toBeLessThanOrEqual(took);
     expect(transfer).toEqual([ok.pixels.buffer]);
 
     // No scene this time: the one it holds, its mesh from the store; the whole frame.

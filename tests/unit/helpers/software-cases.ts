@@ -7,6 +7,7 @@ import type { FrameState } from '../../../src/frame/types';
 import type { DecodedImage } from '../../../src/reference';
 import { bezierPatchMesh } from '../../../src/scene/geometry/bezier';
 import { defaultFrameState } from './frame-state';
+import { courseBasis, type CourseCamera } from '../../../src/math/course-camera';
 
 /** A bicubic Bézier bump (docs/software-renderer.md#bezier-surfaces) at E = 40, as the course's .byu loader makes it. */
 function bezierBump() {
@@ -149,3 +150,10 @@ export const CASES: Case[] = [
     ], [DEFAULT_LIGHT, { kind: 'point', vector: [1, 2.5, 2], ambient: [0, 0, 0], diffuse: [0.5, 0.4, 0.3], specular: [0.6, 0.6, 0.6] }]),
   },
 ];
+
+/** The course's camera the CPU renderers' tests draw with: from (3.6, 2.4, 4) towards (0, 1, 0), a 1.2 × 1 window at d = 1. */
+export function courseCamera(): CourseCamera {
+  const basis = courseBasis([-3.6, -1.4, -4], [0, 1, 0]);
+  if (typeof basis === 'string') throw new Error(basis);
+  return { c: [3.6, 2.4, 4], ...basis, d: 1, hx: 0.6, hy: 0.5 };
+}
