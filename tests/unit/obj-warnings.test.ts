@@ -107,6 +107,12 @@ describe('OBJ warnings: statements not drawn', () => {
     ]);
   });
 
+  it('counts unknown keywords by their first 64 characters (a binary file read as OBJ warns once per prefix)', () => {
+    const long = 'k'.repeat(64);
+    const got = warnings(`${TRI}${long}a 1\n${long}b 2\n${'k'.repeat(63)}c\nf 1 2 3\n`);
+    expect(got.map(([line]) => line)).toEqual([4, 6]);
+  });
+
   it('reads o, g, s, usemtl and mtllib without a warning', () => {
     expect(warnings(`o a\ng b c\ns 1\ns off\nusemtl m\nmtllib a.mtl\n${TRI}f 1 2 3\n`)).toEqual([]);
   });

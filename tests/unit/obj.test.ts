@@ -101,6 +101,13 @@ describe('parseObj: statements', () => {
     expect(r.mtllibs).toEqual(['a.mtl', 'b.MTL', 'my model.mtl', 'other.mtl', 'tex/sub/c.mtl', 'plain', 'names']);
   });
 
+  it('reads a bare o, g or mtllib as no name, and a name ends only at a token ending in .mtl', () => {
+    const r = parseObj(`o\ng\nmtllib\nmtllib  \no  \n${TRI}f 1 2 3\n`);
+    expect([r.objects, r.groupNames, r.mtllibs]).toEqual([[], [], []]);
+    expect(parseObj(`mtllib old.mtl.bak b.mtl\n${TRI}f 1 2 3\n`).mtllibs).toEqual(['old.mtl.bak b.mtl']);
+    expect(parseObj(`o a\ng x y\no b\ng y z\no a\n${TRI}f 1 2 3\n`)).toMatchObject({ objects: ['a', 'b'], groupNames: ['x', 'y', 'z'] });
+  });
+
   it('ignores # comments, whole-line and after a statement', () => {
     const r = parseObj(`# v 9 9 9\n${TRI}f 1 2 3 # f 3 2 1\n  # indented comment\n`);
     expect(r.positions.length).toBe(9);
