@@ -3,6 +3,7 @@
 // than its scratch list holds, with every normal and triangle checked.
 import { describe, expect, it } from 'vitest';
 import { parseObj, type ObjResult } from '../../src/loaders/obj';
+import { F64List, I32List } from '../../src/loaders/obj/growable';
 import { normal, polygonArea, position, triangleNormal, triangles, unit, type V3 } from './helpers/obj';
 
 /** A 6 × 6 grid on z = x² + y²/2: 36 positions, 50 triangles of different normals. */
@@ -71,6 +72,31 @@ describe('buildMesh past its first allocations', () => {
       // Every corner of the polygon is used.
       const used = new Set(triangles(r).flat().map((p: V3) => `${p[0]},${p[1]}`));
       expect(used.size).toBe(n);
+    }
+  });
+});
+
+describe('the growable lists the readers fill (src/loaders/obj/growable.ts)', () => {
+  it('keeps every value pushed one, three or reserved at a time past any starting capacity', () => {
+    for (const capacity of [1, 2, 3, 4, 1024]) {
+      const f = new F64List(capacity), i = new I32List(capacity);
+      const wantF: number[] = [], wantI: number[] = [];
+      for (let k = 0; k < 700; k++) {
+        if (k % 3 === 0) { f.push(k / 4); i.push(k); wantF.push(k / 4); wantI.push(k); }
+        else { f.push3(k, -k, k / 2); i.push3(k, -k, 2 * k); wantF.push(k, -k, k / 2); wantI.push(k, -k, 2 * k); }
+      }
+      expect([...f.data.subarray(0, f.length)], `F64List(${capacity})`).toEqual(wantF);
+      expect([...i.data.subarray(0, i.length)], `I32List(${capacity})`).toEqual(wantI);
+      const ones = new F64List(capacity), onesI = new I32List(capacity);
+      for (let k = 0; k < 3000; k++) { ones.push(k + 0.5); onesI.push(k); }
+      expect([...ones.data.subarray(0, ones.length)]).toEqual(Array.from({ length: 3000 }, (_, k) => k + 0.5));
+      expect([...onesI.data.subarray(0, onesI.length)]).toEqual(Array.from({ length: 3000 }, (_, k) => k));
+      const at = i.length;
+      const room = i.reserve(10_000);
+      expect(room.length - at, `I32List(${capacity}).reserve`).toBeGreaterThanOrEqual(10_000);
+      expect([...room.subarray(0, at)]).toEqual([...i.data.subarray(0, at)]);
+      i.clear();
+      expect(i.length).toBe(0);
     }
   });
 });

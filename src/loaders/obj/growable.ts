@@ -11,11 +11,13 @@ export class F64List {
   }
 
   push(x: number): void {
+    // Stryker disable next-line ArithmeticOperator: a full list's doubling is always more than one more
     if (this.length === this.data.length) this.grow(this.length + 1);
     this.data[this.length++] = x;
   }
 
   push3(x: number, y: number, z: number): void {
+    // Stryker disable next-line EqualityOperator,ArithmeticOperator: growing one push early, or asking for less than the doubling gives, only moves when memory is taken
     if (this.length + 3 > this.data.length) this.grow(this.length + 3);
     const d = this.data;
     d[this.length] = x;
@@ -40,11 +42,13 @@ export class I32List {
   }
 
   push(x: number): void {
+    // Stryker disable next-line ArithmeticOperator: a full list's doubling is always more than one more
     if (this.length === this.data.length) this.grow(this.length + 1);
     this.data[this.length++] = x;
   }
 
   push3(x: number, y: number, z: number): void {
+    // Stryker disable next-line EqualityOperator,ArithmeticOperator: growing one push early, or asking for less than the doubling gives, only moves when memory is taken
     if (this.length + 3 > this.data.length) this.grow(this.length + 3);
     const d = this.data;
     d[this.length] = x;
@@ -55,6 +59,7 @@ export class I32List {
 
   /** Room for `extra` more; returns `data` (written from `length` on, then `length` set by the caller). */
   reserve(extra: number): Int32Array {
+    // Stryker disable next-line EqualityOperator: growing when exactly full changes only when memory is taken
     if (this.length + extra > this.data.length) this.grow(this.length + extra);
     return this.data;
   }
