@@ -33,7 +33,7 @@ const OWN_TESTS = {
   // Stryker's instrumentation, where a rough 160×90 frame takes seconds: the bigger frames of
   // software-baseline, software-reference, software-rough and reference-rough are left to npm test.
   software: [
-    'small-frames', 'software-protocol', 'software-raster', 'software-anisotropic', 'software-glass', 'software-pixels',
+    'small-frames', 'software-protocol', 'software-clip', 'software-raster', 'software-anisotropic', 'software-glass', 'software-pixels',
     'software-srgb', 'software-caches', 'software-bands', 'glass-tie', 'mesh-choice', 'scene-turn',
   ],
   reference: [
