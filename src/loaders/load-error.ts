@@ -10,7 +10,10 @@ export interface LoadWarning {
 export interface LoadErrorDetail {
   type: 'load';
   url: string;
+  /** The line of a text format (OBJ, MTL, the course's files), 1-based. */
   line?: number;
+  /** The place in a glTF file's JSON, e.g. `accessors[3].bufferView` (docs/gltf.md#errors). */
+  path?: string;
   message: string;
 }
 
@@ -22,14 +25,18 @@ export interface LoadErrorDetail {
 export class LoadError extends Error {
   readonly url: string;
   readonly line: number | undefined;
+  readonly path: string | undefined;
   readonly detail: LoadErrorDetail;
 
-  constructor(url: string, message: string, line?: number) {
-    super(`glass-plane-scene: ${where(url, line)}: ${message}`);
+  /** `at`: the line (a number) of a text format, or the JSON path (a string) of a glTF file. */
+  constructor(url: string, message: string, at?: number | string) {
+    super(`glass-plane-scene: ${where(url, at)}: ${message}`);
     this.name = 'LoadError';
     this.url = url;
-    this.line = line;
-    this.detail = line === undefined ? { type: 'load', url, message } : { type: 'load', url, line, message };
+    this.line = typeof at === 'number' ? at : undefined;
+    this.path = typeof at === 'string' ? at : undefined;
+    this.detail = at === undefined ? { type: 'load', url, message }
+      : typeof at === 'number' ? { type: 'load', url, line: at, message } : { type: 'load', url, path: at, message };
   }
 }
 
@@ -38,7 +45,7 @@ export function warningText(url: string, warning: LoadWarning): string {
   return `glass-plane-scene: ${where(url, warning.line)}: ${warning.message}`;
 }
 
-function where(url: string, line: number | undefined): string {
+function where(url: string, at: number | string | undefined): string {
   const name = url === '' ? '(inline)' : url;
-  return line === undefined ? name : `${name} line ${line}`;
+  return at === undefined ? name : typeof at === 'number' ? `${name} line ${at}` : `${name} at ${at}`;
 }

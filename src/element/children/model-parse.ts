@@ -66,7 +66,7 @@ function parseInWorker(bytes: Uint8Array, url: string, format: 'obj' | 'byu', sn
       worker.terminate();
       const r = e.data;
       if (r.ok) resolve({ obj: r.result, bezier: r.bezier ?? null, byu: format === 'byu' });
-      else reject(new LoadError(r.error.url, r.error.message, r.error.line));
+      else reject(new LoadError(r.error.url, r.error.message, r.error.line ?? r.error.path));
     };
     // A worker that fails to load (CSP, no module workers) reports here: parse on this thread.
     worker.onerror = (e) => {

@@ -1,0 +1,93 @@
+// A glTF file's buffers and buffer views (docs/gltf.md#buffers): the GLB's BIN chunk, data: URIs
+// and external files (fetched by the caller, relative to the model's URL). A buffer's declared
+// byteLength is compared with the bytes there are before it is used: a 2 GB declaration over a
+// 1 kB file is an error, and nothing is allocated for it.
+import { GltfFile, int, object, optionalInt, str, type Obj } from './fields';
+
+export interface ExternalBuffer {
+  index: number;
+  /** As written in the file (percent-encoded, relative): the caller resolves it against the model's URL. */
+  uri: string;
+}
+
+/** The buffers the caller must fetch: those with a uri that is not a data: URI. */
+export function externalBuffers(file: GltfFile): ExternalBuffer[] {
+  const out: ExternalBuffer[] = [];
+  file.list('buffers').forEach((b, index) => {
+    const buffer = object(file, b, `buffers[${index}]`);
+    if (buffer.uri === undefined) return;
+    const uri = str(file, buffer, 'uri', `buffers[${index}]`);
+    if (!/^data:/i.test(uri)) out.push({ index, uri });
+  });
+  return out;
+}
+
+/** Each buffer's bytes, exactly its declared byteLength long. */
+export function resolveBuffers(file: GltfFile, bin: Uint8Array | null, external: ReadonlyMap<number, Uint8Array>): Uint8Array[] {
+  return file.list('buffers').map((b, index) => {
+    const path = `buffers[${index}]`;
+    const buffer = object(file, b, path);
+    const declared = int(file, buffer, 'byteLength', path);
+    let bytes: Uint8Array;
+    let source: string;
+    if (buffer.uri === undefined) {
+      if (index !== 0 || bin === null) file.fail(path, `${path} has no uri and the file has no BIN chunk for it`);
+      bytes = bin;
+      source = 'the BIN chunk';
+    } else {
+      const uri = str(file, buffer, 'uri', path);
+      if (/^data:/i.test(uri)) {
+        bytes = dataUri(file, uri, `${path}.uri`);
+        source = 'its data: URI';
+      } else {
+        const got = external.get(index);
+        if (!got) file.fail(`${path}.uri`, `${path}: ${JSON.stringify(uri)} was not loaded`);
+        bytes = got;
+        source = JSON.stringify(uri);
+      }
+    }
+    if (bytes.length < declared) {
+      file.fail(`${path}.byteLength`, `${path} declares ${declared} bytes, ${source} has ${bytes.length}`);
+    }
+    return bytes.subarray(0, declared);
+  });
+}
+
+export interface View {
+  bytes: Uint8Array;
+  /** Bytes between elements, or undefined for tightly packed. */
+  stride: number | undefined;
+}
+
+/** bufferViews[index], checked to lie inside its buffer. */
+export function bufferView(file: GltfFile, buffers: readonly Uint8Array[], index: number, from: string): View {
+  const path = `bufferViews[${index}]`;
+  const v: Obj = file.item('bufferViews', index, from);
+  const buffer = int(file, v, 'buffer', path);
+  if (buffer >= buffers.length) file.fail(`${path}.buffer`, `buffers[${buffer}] does not exist (buffers has ${buffers.length})`);
+  const offset = int(file, v, 'byteOffset', path, 0);
+  const length = int(file, v, 'byteLength', path);
+  const size = buffers[buffer].length;
+  if (offset + length > size) {
+    file.fail(path, `${path} (bytes ${offset} to ${offset + length}) runs past the end of buffers[${buffer}] (${size} bytes)`);
+  }
+  const stride = optionalInt(file, v, 'byteStride', path);
+  if (stride !== undefined && (stride < 4 || stride > 252)) file.fail(`${path}.byteStride`, `${path}.byteStride is ${stride}, outside [4, 252]`);
+  return { bytes: buffers[buffer].subarray(offset, offset + length), stride };
+}
+
+function dataUri(file: GltfFile, uri: string, path: string): Uint8Array {
+  const comma = uri.indexOf(',');
+  const head = uri.slice(0, comma < 0 ? 0 : comma);
+  if (comma < 0 || !/;base64$/i.test(head)) file.fail(path, `${path} is a data: URI that is not base64`);
+  const body = uri.slice(comma + 1).replace(/\s+/g, '');
+  let text: string;
+  try {
+    text = atob(body);
+  } catch {
+    file.fail(path, `${path}: its base64 does not decode`);
+  }
+  const out = new Uint8Array(text.length);
+  for (let i = 0; i < text.length; i++) out[i] = text.charCodeAt(i);
+  return out;
+}
