@@ -40,7 +40,7 @@ export function positionCount(file: GltfFile, p: Obj, path: string): number {
 export function readPiece(file: GltfFile, buffers: readonly Uint8Array[], p: Obj, path: string, at: MeshInstance): Piece | null {
   const mode = int(file, p, 'mode', path, TRIANGLES);
   if (mode < TRIANGLES) {
-    file.warn(`${path}.mode`, `points and lines are not drawn (${path} and any others)`);
+    file.warn(`${path}.mode`, 'points and lines are not drawn (the first named; any others too)');
     return null;
   }
   if (mode > TRIANGLE_FAN) file.fail(`${path}.mode`, `${path}.mode is ${mode}, not a glTF primitive mode`);
