@@ -4,6 +4,8 @@
 export interface LoadWarning {
   line: number;
   message: string;
+  /** A glTF warning's JSON path (its `line` is 0): named instead of a line. */
+  path?: string;
 }
 
 /** What the element puts in its `error` event's detail (docs/scene-model.md#loading). */
@@ -42,7 +44,7 @@ export class LoadError extends Error {
 
 /** Console text for a warning, in the same shape as a LoadError's message. */
 export function warningText(url: string, warning: LoadWarning): string {
-  return `glass-plane-scene: ${where(url, warning.line)}: ${warning.message}`;
+  return `glass-plane-scene: ${where(url, warning.path ?? warning.line)}: ${warning.message}`;
 }
 
 function where(url: string, at: number | string | undefined): string {

@@ -2,6 +2,7 @@
 // float64 reference read. The element builds it from its attributes and children; nothing
 // downstream knows what an object is called, only its geometry, transform and material.
 import type { MeshData } from './geometry/mesh-data';
+import type { PbrMaterial } from './pbr-material';
 
 export type Vec3 = readonly [number, number, number];
 
@@ -25,6 +26,11 @@ export interface Material {
   opacity: number;
   texture: TextureSource;
   mapping: Mapping;
+  /**
+   * A glTF model's material as the file has it (docs/gltf.md#materials); the fields above are its
+   * Blinn-Phong stand-in until PBR shading. Absent for everything else.
+   */
+  pbr?: PbrMaterial;
 }
 
 /** Built-ins are centred on the origin before the transform. */

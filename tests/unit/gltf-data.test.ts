@@ -104,7 +104,7 @@ describe('materials', () => {
     root.setMesh(doc.createMesh().addPrimitive(primitive(doc, TRI, null, { TEXCOORD_0: uv, TEXCOORD_1: uv }, m)));
     const r = parse(await glbOf(doc));
     const image = (name: string) => r.images.findIndex((i) => i.name.includes(name));
-    const ref = (name: string, texCoord = 0) => ({ image: image(name), texCoord, transform: null, sampler: { magFilter: undefined, minFilter: undefined, wrapS: 10497, wrapT: 10497 } });
+    const ref = (name: string, texCoord = 0) => ({ source: { image: image(name) }, texCoord, transform: null, sampler: { magFilter: undefined, minFilter: undefined, wrapS: 10497, wrapT: 10497 } });
     expect(r.materials).toEqual([{
       name: 'every field', baseColor: [0.5, 0.25, 1, 0.75],
       baseColorTexture: { ...ref('base'), sampler: { magFilter: 9728, minFilter: 9987, wrapS: 33071, wrapT: 33648 } },

@@ -58,9 +58,20 @@ describe('sniffModel', () => {
 
   it('says unknown for text that is none of these, and for an empty file', () => {
     expect(sniffModel('hello world\n')).toBe('unknown');
-    expect(sniffModel('{"positions": []}')).toBe('unknown');
+    // JSON is read as glTF, whose reader names what a JSON that is not glTF lacks (gltf-errors.test.ts).
+    expect(sniffModel('{"positions": []}')).toBe('gltf');
     expect(sniffModel('1 2 3\n')).toBe('unknown');
     expect(sniffModel('')).toBe('unknown');
     expect(sniffModel('   \n\n')).toBe('unknown');
+  });
+
+  it('recognises a GLB by its header and a .gltf by its JSON, BOM or not, whatever the URL says', () => {
+    const glb = new Uint8Array([0x67, 0x6c, 0x54, 0x46, 2, 0, 0, 0, 12, 0, 0, 0]);
+    expect(sniffModel(glb)).toBe('gltf');
+    expect(sniffModel(glb.buffer)).toBe('gltf');
+    // Version 1 (and any other) is not a GLB 2.0 header: binary, as before.
+    expect(sniffModel(new Uint8Array([0x67, 0x6c, 0x54, 0x46, 1, 0, 0, 0, 12, 0, 0, 0]))).toBe('binary');
+    expect(sniffModel(new TextEncoder().encode('\uFEFF\r\n  {"asset": {"version": "2.0"}}'))).toBe('gltf');
+    expect(sniffModel(' {"asset":')).toBe('gltf');
   });
 });

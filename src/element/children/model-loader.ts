@@ -6,6 +6,7 @@ import { parseMtlBytes } from '../../loaders/mtl';
 import type { ObjResult } from '../../loaders/obj';
 import { fetchBytes, type Progress } from './model-fetch';
 import { parseModelBytes } from './model-parse';
+import { sniffModel } from '../../loaders/sniff';
 import type { MtlValues } from './object-material';
 import { bezierObj, type ByuBezierInfo } from '../../loaders/course/byu-model';
 import { absoluteUrl } from '../absolute-url';
@@ -27,7 +28,10 @@ export interface LoadedModel {
 
 export async function loadModel(url: string, signal: AbortSignal, onProgress: (p: Progress) => void): Promise<LoadedModel> {
   const bytes = await fetchBytes(url, signal, onProgress);
-  const { obj, bezier, byu } = await parseModelBytes(bytes, url);
+  // glTF's reader is a chunk of its own, fetched by the first glTF model (docs/gltf.md#loading).
+  const sniffed = sniffModel(bytes);
+  if (sniffed === 'gltf') return import('./gltf-model').then(({ loadGltfModel }) => loadGltfModel(bytes, url, signal));
+  const { obj, bezier, byu } = await parseModelBytes(bytes, url, sniffed);
   signal.throwIfAborted();
   const warnings = obj.warnings.map((w) => warningText(url, w));
   const materials = new Map<string, MtlValues>();

@@ -28,8 +28,8 @@ export interface ParsedModel {
   byu: boolean;
 }
 
-export async function parseModelBytes(bytes: Uint8Array, url: string): Promise<ParsedModel> {
-  const sniffed = sniffModel(bytes);
+/** `sniffed`: the content's format, when the caller has sniffed it (a load sniffs once). */
+export async function parseModelBytes(bytes: Uint8Array, url: string, sniffed: ModelFormat = sniffModel(bytes)): Promise<ParsedModel> {
   const problem = formatProblem(sniffed);
   if (problem) throw new LoadError(url, problem);
   // Content too broken to say (a .byu without its face count) is named by the URL, so that

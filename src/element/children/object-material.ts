@@ -1,5 +1,6 @@
 // An object's Material by precedence (docs/scene-model.md#material-precedence): attribute over MTL over default. Pure.
 import type { Mapping, Material, TextureSource, Vec3 } from '../../scene/scene';
+import type { PbrMaterial } from '../../scene/pbr-material';
 import { OBJECT_DEFAULTS, type ObjectAttributes } from './object-attributes';
 
 /** The MTL values that matter here, with map_Kd already resolved to an absolute URL. */
@@ -10,6 +11,8 @@ export interface MtlValues {
   shininess?: number;
   opacity?: number;
   texture?: string;
+  /** A glTF material, carried into the scene value as it is (docs/gltf.md#materials). */
+  pbr?: PbrMaterial;
 }
 
 export type MaterialAttributes = Pick<ObjectAttributes, 'ambient' | 'diffuse' | 'specular' | 'shininess' | 'opacity' | 'texture' | 'mapping'>;
@@ -43,5 +46,6 @@ export function resolveMaterial(
     opacity: attrs.opacity ?? mtl?.opacity ?? file?.opacity ?? OBJECT_DEFAULTS.opacity,
     texture,
     mapping,
+    ...(mtl?.pbr ? { pbr: mtl.pbr } : {}),
   };
 }

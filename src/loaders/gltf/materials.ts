@@ -3,47 +3,13 @@
 // KHR_texture_transform, defaults as the specification states them. Textures name their image
 // by index; the element turns images into URLs.
 import { GltfFile, int, num, numbers, object, optionalObject, str, type Obj } from './fields';
+import type { AlphaMode, PbrMaterialOf, PbrSampler, PbrTextureOf } from '../../scene/pbr-material';
 
-/** The GL sampler enums glTF uses (undefined filters: the renderer's choice). */
-export interface GltfSampler {
-  magFilter: number | undefined;
-  minFilter: number | undefined;
-  wrapS: number;
-  wrapT: number;
-}
-
-export interface GltfTextureRef {
-  /** images[i]. */
-  image: number;
-  texCoord: number;
-  sampler: GltfSampler;
-  /** KHR_texture_transform as a 3×3 affine map of glTF UVs, row-major [a, b, c, d, e, f]: u' = a·u + b·v + c, v' = d·u + e·v + f. */
-  transform: readonly number[] | null;
-}
-
-export type AlphaMode = 'opaque' | 'mask' | 'blend';
-
-export interface GltfMaterial {
-  name: string;
-  /** Linear RGBA. */
-  baseColor: readonly [number, number, number, number];
-  baseColorTexture: GltfTextureRef | null;
-  metallic: number;
-  roughness: number;
-  metallicRoughnessTexture: GltfTextureRef | null;
-  normalTexture: GltfTextureRef | null;
-  normalScale: number;
-  occlusionTexture: GltfTextureRef | null;
-  occlusionStrength: number;
-  /** Linear RGB, times `emissiveStrength`. */
-  emissive: readonly [number, number, number];
-  emissiveTexture: GltfTextureRef | null;
-  emissiveStrength: number;
-  alphaMode: AlphaMode;
-  alphaCutoff: number;
-  doubleSided: boolean;
-  unlit: boolean;
-}
+export type GltfSampler = PbrSampler;
+/** A texture as the file has it: images[image]. */
+export type GltfTextureRef = PbrTextureOf<{ image: number }>;
+export type GltfMaterial = PbrMaterialOf<{ image: number }>;
+export type { AlphaMode };
 
 const REPEAT = 10497;
 const WRAPS = new Set([33071, 33648, REPEAT]);
@@ -128,7 +94,7 @@ function textureRef(file: GltfFile, o: Obj, key: string, path: string): GltfText
     file.warn(`${at}.texCoord`, `${at} reads TEXCOORD_${texCoord}: only TEXCOORD_0 and TEXCOORD_1 are read; drawn without it`);
     return null;
   }
-  return { image, texCoord, sampler, transform };
+  return { source: { image }, texCoord, sampler, transform };
 }
 
 /** The image a texture draws: its source, or a supported extension's (EXT_texture_webp); null for KTX2 alone. */

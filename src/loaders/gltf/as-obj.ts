@@ -1,0 +1,42 @@
+// A glTF model in the shape the element draws a loaded model in (an ObjResult: one vertex buffer,
+// a draw group per material), so that it takes the path OBJ models take (docs/gltf.md#in-the-scene).
+// Texture coordinates turn to the OBJ convention (v = 0 the image's bottom row); a group names
+// its material `#i` (materials[i]), the default material null.
+import type { LoadWarning } from '../load-error';
+import type { ObjResult } from '../obj/types';
+import type { GltfResult } from './index';
+
+export function materialKey(index: number): string {
+  return `#${index}`;
+}
+
+export function gltfAsObj(r: GltfResult): ObjResult {
+  const vertexCount = r.positions.length / 3;
+  let uvs: Float32Array | null = null;
+  if (r.uv0) {
+    uvs = new Float32Array(r.uv0.length);
+    for (let i = 0; i < uvs.length; i += 2) {
+      uvs[i] = r.uv0[i];
+      uvs[i + 1] = 1 - r.uv0[i + 1];
+    }
+  }
+  let colors: Float32Array | null = null;
+  if (r.colors) {
+    colors = new Float32Array(vertexCount * 3);
+    for (let v = 0; v < vertexCount; v++) colors.set(r.colors.subarray(4 * v, 4 * v + 3), 3 * v);
+  }
+  const indices = vertexCount > 65535 ? r.indices : Uint16Array.from(r.indices);
+  const min: [number, number, number] = [Infinity, Infinity, Infinity];
+  const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < r.positions.length; i++) {
+    const a = i % 3;
+    if (r.positions[i] < min[a]) min[a] = r.positions[i];
+    if (r.positions[i] > max[a]) max[a] = r.positions[i];
+  }
+  const warnings: LoadWarning[] = r.warnings.map((w) => ({ line: 0, path: w.path, message: w.message }));
+  return {
+    positions: r.positions, normals: r.normals, uvs, colors, indices,
+    groups: r.groups.map((g) => ({ material: g.material === null ? null : materialKey(g.material), start: g.start, count: g.count })),
+    mtllibs: [], objects: [], groupNames: [], bounds: { min, max }, warnings,
+  };
+}

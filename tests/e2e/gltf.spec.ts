@@ -1,0 +1,113 @@
+// glTF through the element (docs/gltf.md): a GLB served as text/plain (sniffed by content), its
+// node hierarchy, materials and embedded texture drawn by each renderer as the float64 reference
+// draws the element's own scene value; a broken GLB is an `error` naming the file and the place,
+// the rest of the scene drawn; and only a glTF model fetches glTF's chunk.
+import { PNG } from 'pngjs';
+import { test, expect, openPage, capture } from './fixtures';
+import { mountHtml } from './helpers/scene-children';
+import { fetchedChunks } from './helpers/chunks';
+import { productGlb } from './helpers/gltf-models';
+import { renderScene, compareImages, type DecodedImage } from '../../src/reference';
+import type { Scene, SceneObject } from '../../src/scene/scene';
+import type { FrameState } from '../../src/frame/types';
+import { defaultFrameState } from '../unit/helpers/frame-state';
+import { expectPsnr, note } from './helpers/bounds';
+
+/** PSNR measured here (dB), the bounds 2 dB under (helpers/bounds.ts). */
+const MEASURED = {
+  webgl: { all: 42.1, objects: 43.0, glass: 52.7 },
+  software: { all: 41.9, objects: 43.3, glass: 54.0 },
+} as const;
+
+interface JsonMesh { kind: 'mesh'; key: string; data: Record<string, number[]> }
+
+for (const renderer of ['webgl', 'software'] as const) {
+  test(`${renderer}: a GLB product on the glass, drawn as the reference draws the element's scene value`, async ({ page, consoleLog }) => {
+    const glb = await productGlb();
+    await page.route('**/wild/product.glb', (route) => route.fulfill({ status: 200, contentType: 'text/plain', body: Buffer.from(glb) }));
+    await openPage(page);
+    const seen = await mountHtml(page, `<glass-plane-scene renderer="${renderer}" time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
+      <glass-object src="/wild/product.glb" position="0 0.3 1.2"></glass-object>
+    </glass-plane-scene>`);
+    expect(seen.filter((e) => e.target === 'glass-object' && e.type !== 'progress').map((e) => e.type)).toEqual(['load']);
+    await page.evaluate(() => new Promise((r) => {
+      const el = document.querySelector('glass-plane-scene') as unknown as HTMLElement & { requestRender(): void };
+      el.addEventListener('frame', r, { once: true });
+      el.requestRender();
+    }));
+    if (renderer === 'software') {
+      // The software renderer decodes the image on its own side, then draws again.
+      await page.waitForTimeout(300);
+      await page.evaluate(() => new Promise((r) => {
+        const el = document.querySelector('glass-plane-scene') as unknown as HTMLElement & { requestRender(): void };
+        el.addEventListener('frame', r, { once: true });
+        el.requestRender();
+      }));
+    }
+    const image = await capture(page);
+    const { scene, view } = await page.evaluate(() => {
+      const el = document.querySelector('glass-plane-scene') as unknown as {
+        scene: Scene; cameraPosition: number[]; cameraRotation: number[]; fov: number; transparency: number; ior: number;
+      };
+      const s = el.scene;
+      const objects = s.objects.map((o) => {
+        if (o.geometry.kind !== 'mesh') return o;
+        const d = o.geometry.data;
+        return { ...o, geometry: { ...o.geometry, data: { positions: [...d.positions], normals: [...d.normals], uvs: [...d.uvs], indices: [...d.indices] } } };
+      });
+      return { scene: { ...s, objects } as unknown as Scene, view: { position: el.cameraPosition, rotation: el.cameraRotation, fov: el.fov, transparency: el.transparency, ior: el.ior } };
+    });
+    const objects = scene.objects.map((o): SceneObject => {
+      const g = o.geometry as unknown as JsonMesh;
+      const data = { positions: new Float32Array(g.data.positions), normals: new Float32Array(g.data.normals), uvs: new Float32Array(g.data.uvs), indices: new Uint32Array(g.data.indices) };
+      return { ...o, geometry: { kind: 'mesh', key: g.key, data } };
+    });
+    expect(objects.length, 'one scene object per material').toBe(2);
+    expect(objects.map((o) => o.material.pbr?.name)).toEqual(['plinth', 'box']);
+    const textured = objects.find((o) => o.material.texture.kind === 'image')!;
+    const url = (textured.material.texture as { url: string }).url;
+    expect(url, 'the embedded PNG as a blob: URL').toMatch(/^blob:/);
+    const png = PNG.sync.read(Buffer.from(await page.evaluate((u) => fetch(u).then((r) => r.arrayBuffer()).then((b) => [...new Uint8Array(b)]), url)));
+    const images = new Map<string, DecodedImage>([[url, { width: png.width, height: png.height, data: new Uint8ClampedArray(png.data) }]]);
+    const state: FrameState = defaultFrameState({
+      width: image.width, height: image.height, spin: 0, transparency: view.transparency, ior: view.ior, fov: view.fov,
+      cameraPosition: view.position as [number, number, number], yaw: view.rotation[0], pitch: view.rotation[1],
+    });
+    const ref = renderScene({ ...scene, objects }, state, images, { samplesPerAxis: 4 });
+    const cmp = compareImages(ref, image.data);
+    const line = `${renderer}: GLB product (nodes, two materials, embedded PNG): PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}, glass ${cmp.psnr.glass.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;
+    note(line);
+    expect(cmp.pixels.objects, 'the model covers part of the frame').toBeGreaterThan(300);
+    expectPsnr(cmp, MEASURED[renderer], renderer);
+    expect(consoleLog.take('pageerror')).toEqual([]);
+  });
+}
+
+test('a truncated GLB is an error naming the file and the place; the cube beside it is drawn', async ({ page, consoleLog }) => {
+  const glb = await productGlb();
+  await page.route('**/wild/cut.glb', (route) => route.fulfill({ status: 200, contentType: 'model/gltf-binary', body: Buffer.from(glb.subarray(0, glb.length - 100)) }));
+  await openPage(page);
+  const seen = await mountHtml(page, `<glass-plane-scene time="0" spin="0">
+    <glass-object shape="cube" position="-1 1 1"></glass-object>
+    <glass-object src="/wild/cut.glb" position="1 1 1"></glass-object>
+  </glass-plane-scene>`);
+  const ending = seen.filter((e) => e.target === 'glass-object' && (e.type === 'load' || e.type === 'error'));
+  expect(ending.map((e) => e.type)).toEqual(['error']);
+  expect(ending[0].detail).toMatchObject({ url: expect.stringMatching(/\/wild\/cut\.glb$/), path: 'GLB header', message: expect.stringContaining('truncated') });
+  const img = await capture(page);
+  let lit = 0;
+  for (let i = 0; i < img.data.length; i += 4) if (Math.abs(img.data[i] - 26) + Math.abs(img.data[i + 1] - 26) > 30) lit++;
+  expect(lit, 'pixels other than the background').toBeGreaterThan(100);
+  expect(consoleLog.take('pageerror')).toEqual([]);
+  expect(consoleLog.take('error').filter((e) => e.includes('cut.glb'))).toHaveLength(1);
+});
+
+test("only a glTF model fetches glTF's chunk; an OBJ model does not", async ({ page }) => {
+  const glb = await productGlb();
+  await page.route('**/wild/product.glb', (route) => route.fulfill({ status: 200, contentType: 'text/plain', body: Buffer.from(glb) }));
+  await openPage(page);
+  await mountHtml(page, `<glass-plane-scene time="0" spin="0"><glass-object src="/tests/e2e/pages/models/ngon-textured.obj"></glass-object></glass-plane-scene>`);
+  expect(await fetchedChunks(page, ['gltf-model', 'gltf-worker'])).toEqual([]);
+  await mountHtml(page, `<glass-plane-scene time="0" spin="0"><glass-object src="/wild/product.glb"></glass-object></glass-plane-scene>`);
+  expect(await fetchedChunks(page, ['gltf-model'])).toEqual(['gltf-model']);
+});

@@ -1,0 +1,52 @@
+// glTF models the browser specs serve (docs/gltf.md#test-models): made here with glTF-Transform,
+// the same way the unit tests make theirs (tests/unit/helpers/gltf.ts), and validated there.
+import { Document, NodeIO, type Material } from '@gltf-transform/core';
+import { PNG } from 'pngjs';
+
+/** A box of half-size `h` around the origin: 24 vertices with their face normals and UVs. */
+export function boxArrays(h: number): { positions: Float32Array<ArrayBuffer>; normals: Float32Array<ArrayBuffer>; uvs: Float32Array<ArrayBuffer>; indices: Uint16Array<ArrayBuffer> } {
+  const faces: [number[], number[], number[]][] = [
+    [[1, 0, 0], [0, 0, -1], [0, 1, 0]], [[-1, 0, 0], [0, 0, 1], [0, 1, 0]], [[0, 1, 0], [1, 0, 0], [0, 0, -1]],
+    [[0, -1, 0], [1, 0, 0], [0, 0, 1]], [[0, 0, 1], [1, 0, 0], [0, 1, 0]], [[0, 0, -1], [-1, 0, 0], [0, 1, 0]],
+  ];
+  const positions: number[] = [], normals: number[] = [], uvs: number[] = [], indices: number[] = [];
+  faces.forEach(([n, u, v], f) => {
+    for (const [a, b] of [[-1, -1], [1, -1], [1, 1], [-1, 1]]) {
+      positions.push(...[0, 1, 2].map((k) => h * (n[k] + a * u[k] + b * v[k])));
+      normals.push(...n);
+      uvs.push((a + 1) / 2, (1 - b) / 2);
+    }
+    indices.push(4 * f, 4 * f + 1, 4 * f + 2, 4 * f, 4 * f + 2, 4 * f + 3);
+  });
+  return { positions: new Float32Array(positions), normals: new Float32Array(normals), uvs: new Float32Array(uvs), indices: new Uint16Array(indices) };
+}
+
+/** A 4×4 PNG checker of two colours. */
+export function checkerPng(a: [number, number, number], b: [number, number, number]): Uint8Array {
+  const png = new PNG({ width: 4, height: 4 });
+  for (let i = 0; i < 16; i++) png.data.set([...((((i % 4) + (i >> 2)) % 2) ? a : b), 255], 4 * i);
+  return new Uint8Array(PNG.sync.write(png));
+}
+
+/**
+ * A "product": a box on a plinth — the box textured (an embedded PNG), the plinth a plain red
+ * material — in a node hierarchy (a parent scaled and turned, the box moved up inside it).
+ */
+export async function productGlb(): Promise<Uint8Array> {
+  const doc = new Document();
+  const buffer = doc.createBuffer();
+  const mesh = (h: number, material: Material) => {
+    const b = boxArrays(h);
+    const acc = (type: "VEC3" | "VEC2" | "SCALAR", a: Float32Array<ArrayBuffer> | Uint16Array<ArrayBuffer>) => doc.createAccessor().setType(type).setArray(a).setBuffer(buffer);
+    return doc.createMesh().addPrimitive(doc.createPrimitive().setAttribute('POSITION', acc('VEC3', b.positions))
+      .setAttribute('NORMAL', acc('VEC3', b.normals)).setAttribute('TEXCOORD_0', acc('VEC2', b.uvs)).setIndices(acc('SCALAR', b.indices)).setMaterial(material));
+  };
+  const texture = doc.createTexture('checker').setImage(checkerPng([230, 200, 40], [30, 60, 200])).setMimeType('image/png');
+  const boxMaterial = doc.createMaterial('box').setBaseColorTexture(texture).setMetallicFactor(0).setRoughnessFactor(0.5);
+  const red = doc.createMaterial('plinth').setBaseColorFactor([0.8, 0.1, 0.1, 1]).setMetallicFactor(0).setRoughnessFactor(0.8);
+  const parent = doc.createNode('product').setScale([1.2, 1.2, 1.2]).setRotation([0, Math.sin(Math.PI / 12), 0, Math.cos(Math.PI / 12)]);
+  parent.addChild(doc.createNode('plinth').setMesh(mesh(0.5, red)).setScale([1, 0.2, 1]));
+  parent.addChild(doc.createNode('box').setMesh(mesh(0.3, boxMaterial)).setTranslation([0, 0.45, 0]));
+  doc.createScene('scene').addChild(parent);
+  return new NodeIO().writeBinary(doc);
+}
