@@ -1,7 +1,7 @@
 // The glTF worker's work as a plain function (testable without a worker): the file's bytes and
 // its external buffers in, the model out, with the buffers to transfer rather than copy.
 import { LoadError, type LoadErrorDetail } from './load-error';
-import { openGltf, readGltf, type GltfResult } from './gltf';
+import { decompressGltf, openGltf, readGltf, type GltfResult } from './gltf';
 
 export interface GltfJobRequest {
   id: number;
@@ -13,10 +13,12 @@ export interface GltfJobRequest {
 
 export type GltfJobResponse = { id: number; ok: true; result: GltfResult } | { id: number; ok: false; error: LoadErrorDetail };
 
-export function runGltfJob(request: GltfJobRequest): { response: GltfJobResponse; transfer: ArrayBuffer[] } {
+export async function runGltfJob(request: GltfJobRequest): Promise<{ response: GltfJobResponse; transfer: ArrayBuffer[] }> {
   try {
     const open = openGltf(new Uint8Array(request.bytes), request.url);
-    const result = readGltf(open, new Map(request.external.map(([i, b]) => [i, new Uint8Array(b)])));
+    const external = new Map(request.external.map(([i, b]) => [i, new Uint8Array(b)]));
+    await decompressGltf(open, external);
+    const result = readGltf(open, external);
     // An embedded image is a view of the whole file: sliced, so that only its bytes cross over.
     result.images = result.images.map((im) => (im.kind === 'bytes' ? { ...im, bytes: im.bytes.slice() } : im));
     const arrays = [result.positions, result.normals, result.uv0, result.uv1, result.colors, result.indices,

@@ -8,6 +8,5 @@ const scope = self as unknown as {
 };
 
 scope.addEventListener('message', (e) => {
-  const { response, transfer } = runGltfJob(e.data);
-  scope.postMessage(response, transfer);
+  void runGltfJob(e.data).then(({ response, transfer }) => scope.postMessage(response, transfer));
 });

@@ -3,7 +3,7 @@
 // URL; the file is read in a worker (on this thread where no worker can start); its images become
 // URLs (embedded ones blob: URLs) and its materials the values an object's material is made from.
 import { LoadError, warningText } from '../../loaders/load-error';
-import { gltfBuffers, openGltf, readGltf, type GltfImage, type GltfMaterial, type GltfResult } from '../../loaders/gltf';
+import { decompressGltf, gltfBuffers, openGltf, readGltf, type GltfImage, type GltfMaterial, type GltfResult, type OpenGltf } from '../../loaders/gltf';
 import { gltfAsObj, materialKey } from '../../loaders/gltf/as-obj';
 import type { GltfJobRequest, GltfJobResponse } from '../../loaders/gltf-job';
 import type { PbrMaterial, PbrTextureOf } from '../../scene/pbr-material';
@@ -32,7 +32,7 @@ export async function loadGltfModel(bytes: Uint8Array, url: string, signal: Abor
   }
   let size = bytes.length;
   for (const b of external.values()) size += b.length;
-  const result = (size >= GLTF_WORKER_THRESHOLD ? await readInWorker(bytes, url, external) : null) ?? readGltf(open, external);
+  const result = (size >= GLTF_WORKER_THRESHOLD ? await readInWorker(bytes, url, external) : null) ?? await readHere(open, external);
   signal.throwIfAborted();
   return modelOf(result, url);
 }
@@ -83,6 +83,11 @@ export function standIn(m: PbrMaterial): MtlValues {
     ambient: base, diffuse: base, specular: [f0[0] * fade, f0[1] * fade, f0[2] * fade], shininess,
     opacity: m.alphaMode === 'blend' ? a : 1, texture, pbr: m,
   };
+}
+
+async function readHere(open: OpenGltf, external: Map<number, Uint8Array>): Promise<GltfResult> {
+  await decompressGltf(open, external);
+  return readGltf(open, external);
 }
 
 let nextId = 1;

@@ -3,6 +3,7 @@
 // byteLength is compared with the bytes there are before it is used: a 2 GB declaration over a
 // 1 kB file is an error, and nothing is allocated for it.
 import { GltfFile, int, object, optionalInt, str, type Obj } from './fields';
+import { isFallback } from './meshopt';
 
 export interface ExternalBuffer {
   index: number;
@@ -17,7 +18,8 @@ export function externalBuffers(file: GltfFile): ExternalBuffer[] {
     const buffer = object(file, b, `buffers[${index}]`);
     if (buffer.uri === undefined) return;
     const uri = str(file, buffer, 'uri', `buffers[${index}]`);
-    if (!/^data:/i.test(uri)) out.push({ index, uri });
+    // A meshopt fallback holds what the decoder gives: never fetched (docs/gltf.md#compression).
+    if (!/^data:/i.test(uri) && !isFallback(file, buffer, `buffers[${index}]`)) out.push({ index, uri });
   });
   return out;
 }
@@ -30,6 +32,11 @@ export function resolveBuffers(file: GltfFile, bin: Uint8Array | null, external:
     const declared = int(file, buffer, 'byteLength', path);
     let bytes: Uint8Array;
     let source: string;
+    if (isFallback(file, buffer, path)) {
+      // A meshopt fallback is read only where its bytes are at hand; its views are decoded instead.
+      const at = buffer.uri === undefined ? index === 0 && bin !== null : /^data:/i.test(String(buffer.uri)) || external.has(index);
+      if (!at) return new Uint8Array(0);
+    }
     if (buffer.uri === undefined) {
       if (index !== 0 || bin === null) file.fail(path, `${path} has no uri and the file has no BIN chunk for it`);
       bytes = bin;
@@ -63,6 +70,11 @@ export interface View {
 export function bufferView(file: GltfFile, buffers: readonly Uint8Array[], index: number, from: string): View {
   const path = `bufferViews[${index}]`;
   const v: Obj = file.item('bufferViews', index, from);
+  const decoded = file.decodedViews.get(index);
+  if (decoded) {
+    const stride = optionalInt(file, v, 'byteStride', path);
+    return { bytes: decoded.subarray(0, Math.min(decoded.length, int(file, v, 'byteLength', path))), stride };
+  }
   const buffer = int(file, v, 'buffer', path);
   if (buffer >= buffers.length) file.fail(`${path}.buffer`, `buffers[${buffer}] does not exist (buffers has ${buffers.length})`);
   const offset = int(file, v, 'byteOffset', path, 0);

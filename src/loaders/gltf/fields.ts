@@ -16,6 +16,8 @@ const MAX_WARNINGS = 100;
 /** The file being read: its URL (for errors), its top-level arrays, its warnings. */
 export class GltfFile {
   readonly warnings: GltfWarning[] = [];
+  /** Buffer views decoded from a compressed form (EXT_meshopt_compression), by index: read instead of their range. */
+  decodedViews: ReadonlyMap<number, Uint8Array> = new Map();
   private readonly said = new Set<string>();
 
   constructor(readonly url: string, readonly json: Obj) {}

@@ -9,6 +9,8 @@ import { meshInstances } from './nodes';
 import { positionCount, readPiece, type Piece } from './primitives';
 import { readImages, type GltfImage } from './images';
 import { mergePieces } from './merge';
+import { DECODERS, type GltfDecoders } from './decoders';
+import { decodeMeshopt, meshoptViews, type MeshoptDecoderLike } from './meshopt';
 
 export type { GltfMaterial, GltfTextureRef, GltfSampler, AlphaMode } from './materials';
 export type { GltfImage } from './images';
@@ -18,7 +20,7 @@ export { isGlb } from './container';
 
 /** Extensions read (docs/gltf.md#extensions); any other that a file requires is an error naming it. */
 export const SUPPORTED_EXTENSIONS: readonly string[] = [
-  'KHR_mesh_quantization', 'KHR_texture_transform', 'KHR_materials_emissive_strength', 'KHR_materials_unlit', 'EXT_texture_webp',
+  'EXT_meshopt_compression', 'KHR_mesh_quantization', 'KHR_texture_transform', 'KHR_materials_emissive_strength', 'KHR_materials_unlit', 'EXT_texture_webp',
 ];
 
 /** Vertices a model may have once its nodes are flattened: beyond, the file is refused before anything is read. */
@@ -63,6 +65,20 @@ export function openGltf(bytes: Uint8Array, url: string): OpenGltf {
 /** The buffers to fetch before `readGltf`: their uri as written (relative to the model's URL). */
 export function gltfBuffers(open: OpenGltf): ExternalBuffer[] {
   return externalBuffers(open.file);
+}
+
+/**
+ * Decodes what the file compresses (EXT_meshopt_compression's views), loading each decoder only
+ * if the file needs it; `readGltf` then reads the decoded bytes. A decoder that cannot load is
+ * an error naming the extension.
+ */
+export async function decompressGltf(open: OpenGltf, external: ReadonlyMap<number, Uint8Array> = new Map(), decoders: GltfDecoders = DECODERS): Promise<void> {
+  const { file, container } = open;
+  if (meshoptViews(file).length === 0) return;
+  const buffers = resolveBuffers(file, container.bin, external);
+  const decoder: MeshoptDecoderLike = await decoders.meshopt().catch((e: unknown) =>
+    file.fail('extensionsUsed', `the meshopt decoder could not be loaded (${e instanceof Error ? e.message : String(e)})`));
+  file.decodedViews = await decodeMeshopt(file, buffers, decoder);
 }
 
 export function readGltf(open: OpenGltf, external: ReadonlyMap<number, Uint8Array> = new Map()): GltfResult {

@@ -6,7 +6,7 @@ import { Accessor, Document, NodeIO, Primitive, type Node as GltfNode, type Mate
 import { ALL_EXTENSIONS } from '@gltf-transform/extensions';
 import { validateBytes } from 'gltf-validator';
 import { expect } from 'vitest';
-import { openGltf, readGltf, gltfBuffers, type GltfResult } from '../../../src/loaders/gltf';
+import { decompressGltf, openGltf, readGltf, gltfBuffers, type GltfResult } from '../../../src/loaders/gltf';
 
 export const io = () => new NodeIO().registerExtensions(ALL_EXTENSIONS);
 
@@ -65,6 +65,15 @@ export function parse(bytes: Uint8Array, url = 'model.glb', resources: Record<st
   const open = openGltf(bytes, url);
   const external = new Map<number, Uint8Array>();
   for (const b of gltfBuffers(open)) if (resources[b.uri]) external.set(b.index, resources[b.uri]);
+  return readGltf(open, external);
+}
+
+/** As `parse`, decoding what the file compresses first (its decoders loaded as the element loads them). */
+export async function parseDecoded(bytes: Uint8Array, url = 'model.glb', resources: Record<string, Uint8Array> = {}): Promise<GltfResult> {
+  const open = openGltf(bytes, url);
+  const external = new Map<number, Uint8Array>();
+  for (const b of gltfBuffers(open)) if (resources[b.uri]) external.set(b.index, resources[b.uri]);
+  await decompressGltf(open, external);
   return readGltf(open, external);
 }
 
