@@ -5,6 +5,7 @@ import { defineConfig, type Plugin } from 'vite';
 import { demoModels } from './demo/demo-models.ts';
 import { glslMinify } from './scripts/glsl-minify.ts';
 import { chunkGroups } from './scripts/chunk-groups.ts';
+import { dracoWasm } from './scripts/draco-wasm.ts';
 
 /** `/` opens the demo, so `npm run demo` lands on it. */
 const demoAtRoot: Plugin = {
@@ -27,10 +28,11 @@ export default defineConfig(({ mode, command }) => {
   return {
     // Built files find their workers and chunks relative to their own URL, wherever they are served.
     base: command === 'build' ? './' : '/',
-    plugins: [demoAtRoot, demoModels(), glslMinify()],
+    plugins: [demoAtRoot, demoModels(), glslMinify(), dracoWasm()],
+    // The glTF worker imports the Draco decoder's wasm URL too (scripts/draco-wasm.ts).
+    worker: { format: 'es' as const, plugins: () => [dracoWasm()] },
     appType: 'mpa',
     // The software renderer's worker is a module worker (it imports the renderer's chunk).
-    worker: { format: 'es' as const },
     server: { host: '127.0.0.1', port: 5173 },
     // The dev server's dependency scan reads every HTML file but the framework apps' (tests/frameworks/,
     // built on their own by tests/e2e/frameworks.spec.ts): the demo pre-bundles no React, Vue or Svelte.

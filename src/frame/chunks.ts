@@ -63,18 +63,27 @@ export const CHUNKS = {
   'model-fetch': { budget: 2400, when: 'a model file' },
   'assets/obj-worker': { budget: 13800, when: 'a model file' },
   // glTF's reader (docs/gltf.md#loading): on the page for small files, in its worker for big ones.
-  'gltf-model': { budget: 10100, when: 'a glTF model' },
-  'assets/gltf-worker': { budget: 9200, when: 'a glTF model of 256 kB or more' },
+  'gltf-model': { budget: 11200, when: 'a glTF model' },
+  'assets/gltf-worker': { budget: 10500, when: 'a glTF model of 256 kB or more' },
   // meshoptimizer's decoder (its wasm inlined as text), on the page or in the glTF worker.
   meshopt_decoder: { budget: 7300, when: 'a glTF model with EXT_meshopt_compression' },
   'assets/meshopt_decoder': { budget: 7300, when: 'the same, read in the glTF worker' },
+  // draco3d's decoder (its emscripten glue; the wasm, 82.6 kB gzipped, is a file beside it).
+  'draco-decoder': {
+    budget: 12800, when: 'a glTF model with KHR_draco_mesh_compression',
+    modules: ['node_modules/draco3d/draco_decoder_nodejs.js', 'virtual/draco-wasm-url.js'],
+  },
+  // The worker's build takes no chunk groups: the glue and the wasm URL are two chunks there.
+  'assets/draco_decoder_nodejs': { budget: 12800, when: 'the same, read in the glTF worker' },
+  'assets/draco-wasm-url': { budget: 150, when: 'the same, read in the glTF worker' },
   'course-files': { budget: 1200, when: 'a course file' },
   'software-start': { budget: 2150, when: 'the CPU renderer' },
   'software-renderer': { budget: 15400, when: 'the CPU renderer' },
   // 23,850 until rough glass's gather read its centre on the fragment's footprint (23,864).
   'assets/worker': { budget: 23900, when: 'the CPU renderer' },
   // The bundler's glue for lazy chunks that share modules: written by rolldown, not by us.
-  'rolldown-runtime': { budget: 200, when: 'with the first lazy chunk' },
+  // 200 until glTF's chunks shared modules with the others (+229 B).
+  'rolldown-runtime': { budget: 450, when: 'with the first lazy chunk' },
 } as const satisfies Record<string, Chunk>;
 
 export type ChunkName = keyof typeof CHUNKS;

@@ -121,3 +121,23 @@ test("only a glTF model fetches glTF's chunk, and only a compressed one its deco
     .reduce((n, o) => n + (o.geometry.kind === 'mesh' ? o.geometry.data.indices.length / 3 : 0), 0));
   expect(triangles).toBe(4212);
 });
+
+// The built bundle (npm test builds first): each decoder is its own chunk, Draco's wasm a file
+// beside it (dist/draco_decoder.wasm), fetched only by the Draco model.
+test('the standalone bundle loads a plain, a meshopt and a Draco GLB, each decoder only with its file', async ({ page }) => {
+  const glb = await productGlb();
+  await page.route('**/wild/product.glb', (route) => route.fulfill({ status: 200, contentType: 'text/plain', body: Buffer.from(glb) }));
+  await openPage(page, 'standalone');
+  const loads = async (src: string) => {
+    const seen = await mountHtml(page, `<glass-plane-scene time="0" spin="0"><glass-object src="${src}"></glass-object></glass-plane-scene>`);
+    return seen.filter((e) => e.target === 'glass-object' && e.type !== 'progress').map((e) => e.type);
+  };
+  const fetched = () => page.evaluate(() => performance.getEntriesByType('resource').map((e) => e.name.split('/').pop()!)
+    .filter((n) => /^(gltf-model|meshopt_decoder|draco-decoder|draco_decoder)/.test(n)).map((n) => n.replace(/-[\w-]{8}\.|\./, '.').split('.')[0]));
+  expect(await loads('/wild/product.glb')).toEqual(['load']);
+  expect(await fetched()).toEqual(['gltf-model']);
+  expect(await loads('/tests/data/gltf/Duck-meshopt.glb')).toEqual(['load']);
+  expect(await fetched()).toEqual(['gltf-model', 'meshopt_decoder']);
+  expect(await loads('/tests/data/gltf/Box_Draco.glb')).toEqual(['load']);
+  expect((await fetched()).sort()).toEqual(['draco-decoder', 'draco_decoder', 'gltf-model', 'meshopt_decoder']);
+});

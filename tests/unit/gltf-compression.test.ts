@@ -1,14 +1,15 @@
 // Compressed glTF (docs/gltf.md#compression): EXT_meshopt_compression decoded by meshoptimizer's own
 // decoder, loaded only when a file has such a view; a model written compressed reads as the same
 // model written plain; a meshopt stream that does not decode is an error naming its view.
-import { EXTMeshoptCompression, KHRMeshQuantization } from '@gltf-transform/extensions';
+import { EXTMeshoptCompression, KHRDracoMeshCompression, KHRMeshQuantization } from '@gltf-transform/extensions';
+import draco3d from 'draco3d';
 import { MeshoptDecoder, MeshoptEncoder } from 'meshoptimizer';
 import { readFileSync } from 'node:fs';
 import { describe, expect, it, vi } from 'vitest';
 import { decompressGltf, openGltf, readGltf } from '../../src/loaders/gltf';
 import type { GltfDecoders } from '../../src/loaders/gltf/decoders';
 import { LoadError } from '../../src/loaders/load-error';
-import { accessor, glbBin, glbJson, io, makeGlb, newDocument, parse, parseDecoded, primitive, validationErrors } from './helpers/gltf';
+import { NODE_DECODERS, accessor, glbBin, glbJson, io, makeGlb, newDocument, parse, parseDecoded, primitive, validationErrors } from './helpers/gltf';
 
 const file = (name: string) => new Uint8Array(readFileSync(new URL(`../data/gltf/${name}`, import.meta.url)));
 
@@ -77,12 +78,13 @@ describe('EXT_meshopt_compression', () => {
   });
 
   it('loads the meshopt decoder only for a file that has a compressed view', async () => {
-    const decoders: GltfDecoders = { meshopt: vi.fn(async () => MeshoptDecoder) };
+    const decoders: GltfDecoders = { meshopt: vi.fn(async () => MeshoptDecoder), draco: vi.fn(NODE_DECODERS.draco) };
     const plain = openGltf(await io().writeBinary(model()), 'plain.glb');
     await decompressGltf(plain, new Map(), decoders);
     expect(decoders.meshopt).not.toHaveBeenCalled();
     await decompressGltf(openGltf(await meshoptGlb(), 'packed.glb'), new Map(), decoders);
     expect(decoders.meshopt).toHaveBeenCalledTimes(1);
+    expect(decoders.draco).not.toHaveBeenCalled();
   });
 
   it('refuses a compressed view that does not decode, or lies past its buffer, naming it; and a decoder that cannot load', async () => {
@@ -93,7 +95,7 @@ describe('EXT_meshopt_compression', () => {
     const ext = json.bufferViews[index].extensions.EXT_meshopt_compression;
     const refusal = async (bytes: Uint8Array, decoders?: GltfDecoders) => {
       const open = openGltf(bytes, 'bad.glb');
-      const e = await decompressGltf(open, new Map(), decoders).then(() => readGltf(open)).then(() => null, (x: unknown) => x);
+      const e = await decompressGltf(open, new Map(), decoders ?? NODE_DECODERS).then(() => readGltf(open)).then(() => null, (x: unknown) => x);
       expect(e).toBeInstanceOf(LoadError);
       return (e as LoadError).detail;
     };
@@ -103,7 +105,64 @@ describe('EXT_meshopt_compression', () => {
     const past = structuredClone(json);
     past.bufferViews[index].extensions.EXT_meshopt_compression.byteLength = bin.length + 64;
     expect(await refusal(makeGlb(past, bin))).toMatchObject({ path: `bufferViews[${index}].extensions.EXT_meshopt_compression`, message: expect.stringContaining('past the end') });
-    const failing: GltfDecoders = { meshopt: () => Promise.reject(new Error('blocked by CSP')) };
+    const failing: GltfDecoders = { ...NODE_DECODERS, meshopt: () => Promise.reject(new Error('blocked by CSP')) };
     expect(await refusal(glb, failing)).toMatchObject({ path: 'extensionsUsed', message: expect.stringContaining('blocked by CSP') });
+  });
+});
+
+async function dracoGlb(): Promise<Uint8Array> {
+  const doc = model();
+  doc.createExtension(KHRDracoMeshCompression).setRequired(true).setEncoderOptions({ quantizationBits: { POSITION: 16, NORMAL: 12, TEX_COORD: 14 } } as never);
+  const bytes = await io().registerDependencies({
+    'draco3d.encoder': await draco3d.createEncoderModule(), 'draco3d.decoder': await draco3d.createDecoderModule(),
+  }).writeBinary(doc);
+  expect(await validationErrors(bytes), 'the test model is valid glTF').toEqual([]);
+  return bytes;
+}
+
+/** Each triangle as its three positions (rounded), sorted: the same mesh whatever the point order. */
+function shape(r: { positions: Float32Array; indices: Uint32Array }, digits = 3): string[] {
+  const out: string[] = [];
+  for (let t = 0; t < r.indices.length; t += 3) {
+    const corners = [0, 1, 2].map((k) => [...r.positions.subarray(3 * r.indices[t + k], 3 * r.indices[t + k] + 3)].map((x) => x.toFixed(digits)).join(' '));
+    const k = corners.indexOf([...corners].sort()[0]);
+    out.push([corners[k], corners[(k + 1) % 3], corners[(k + 2) % 3]].join(' | '));
+  }
+  return out.sort();
+}
+
+describe('KHR_draco_mesh_compression', () => {
+  it('reads a model written with Draco as the same model written plain (positions to 16 bits)', async () => {
+    const compressed = await dracoGlb();
+    expect(glbJson(compressed).extensionsRequired).toContain('KHR_draco_mesh_compression');
+    const plain = parse(await io().writeBinary(model()));
+    const decoded = await parseDecoded(compressed);
+    // Draco orders points and triangles its own way: compare triangles by their corners, same winding.
+    expect(shape(decoded)).toEqual(shape(plain));
+    expect(decoded.uv0!.length).toBe(decoded.positions.length / 3 * 2);
+  });
+
+  it("reads Draco's own test box (tests/data/gltf/Box_Draco.glb): 12 triangles of a unit cube, normals on its axes", async () => {
+    const r = await parseDecoded(file('Box_Draco.glb'), 'Box_Draco.glb');
+    expect(r.indices.length / 3).toBe(12);
+    expect(Math.max(...r.positions.map(Math.abs))).toBeCloseTo(0.5, 5);
+    for (let i = 0; i < r.normals.length; i += 3) {
+      expect([...r.normals.subarray(i, i + 3)].map((x) => Math.abs(Math.round(x))).reduce((a, b) => a + b)).toBe(1);
+    }
+  });
+
+  it('loads the Draco decoder only for a Draco file; refuses a stream that does not decode, naming the primitive', async () => {
+    const decoders: GltfDecoders = { meshopt: vi.fn(NODE_DECODERS.meshopt), draco: vi.fn(NODE_DECODERS.draco) };
+    const glb = await dracoGlb();
+    await decompressGltf(openGltf(glb, 'a.glb'), new Map(), decoders);
+    expect([vi.mocked(decoders.meshopt).mock.calls.length, vi.mocked(decoders.draco).mock.calls.length]).toEqual([0, 1]);
+    const json = glbJson(glb);
+    const bin = glbBin(glb).slice();
+    const view = json.bufferViews[json.meshes[0].primitives[0].extensions.KHR_draco_mesh_compression.bufferView];
+    bin.fill(0x5a, (view.byteOffset ?? 0) + 4, (view.byteOffset ?? 0) + view.byteLength);
+    const open = openGltf(makeGlb(json, bin), 'bad.glb');
+    const e = await decompressGltf(open, new Map(), NODE_DECODERS).then(() => null, (x: unknown) => x);
+    expect(e).toBeInstanceOf(LoadError);
+    expect((e as LoadError).detail).toMatchObject({ path: 'meshes[0].primitives[0].extensions.KHR_draco_mesh_compression' });
   });
 });

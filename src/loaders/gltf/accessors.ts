@@ -50,7 +50,9 @@ export function readAccessor(file: GltfFile, buffers: readonly Uint8Array[], ind
   if (count < 1) file.fail(`${path}.count`, `${path}.count is 0`);
   if (count > MAX_ELEMENTS) file.fail(`${path}.count`, `${path}.count is ${count}, above the ${MAX_ELEMENTS} elements read`);
   const values = new Float32Array(count * layout.size);
-  if (a.bufferView !== undefined) {
+  const decoded = file.decodedAccessors.get(index);
+  if (decoded) readInto(values, 0, decoded, 0, layout.size * layout.bytes, count, layout);
+  else if (a.bufferView !== undefined) {
     const viewIndex = int(file, a, 'bufferView', path);
     const view = bufferView(file, buffers, viewIndex, `${path}.bufferView`);
     const offset = int(file, a, 'byteOffset', path, 0);

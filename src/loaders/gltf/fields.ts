@@ -18,6 +18,8 @@ export class GltfFile {
   readonly warnings: GltfWarning[] = [];
   /** Buffer views decoded from a compressed form (EXT_meshopt_compression), by index: read instead of their range. */
   decodedViews: ReadonlyMap<number, Uint8Array> = new Map();
+  /** Accessors decoded from a Draco primitive (KHR_draco_mesh_compression), by index: their elements, tightly packed. */
+  decodedAccessors: ReadonlyMap<number, Uint8Array> = new Map();
   private readonly said = new Set<string>();
 
   constructor(readonly url: string, readonly json: Obj) {}

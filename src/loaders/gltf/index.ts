@@ -11,6 +11,7 @@ import { readImages, type GltfImage } from './images';
 import { mergePieces } from './merge';
 import { DECODERS, type GltfDecoders } from './decoders';
 import { decodeMeshopt, meshoptViews, type MeshoptDecoderLike } from './meshopt';
+import { decodeDraco, dracoPrimitives } from './draco';
 
 export type { GltfMaterial, GltfTextureRef, GltfSampler, AlphaMode } from './materials';
 export type { GltfImage } from './images';
@@ -20,7 +21,7 @@ export { isGlb } from './container';
 
 /** Extensions read (docs/gltf.md#extensions); any other that a file requires is an error naming it. */
 export const SUPPORTED_EXTENSIONS: readonly string[] = [
-  'EXT_meshopt_compression', 'KHR_mesh_quantization', 'KHR_texture_transform', 'KHR_materials_emissive_strength', 'KHR_materials_unlit', 'EXT_texture_webp',
+  'EXT_meshopt_compression', 'KHR_draco_mesh_compression', 'KHR_mesh_quantization', 'KHR_texture_transform', 'KHR_materials_emissive_strength', 'KHR_materials_unlit', 'EXT_texture_webp',
 ];
 
 /** Vertices a model may have once its nodes are flattened: beyond, the file is refused before anything is read. */
@@ -68,17 +69,24 @@ export function gltfBuffers(open: OpenGltf): ExternalBuffer[] {
 }
 
 /**
- * Decodes what the file compresses (EXT_meshopt_compression's views), loading each decoder only
+ * Decodes what the file compresses (EXT_meshopt_compression's views, KHR_draco_mesh_compression's
+ * primitives), loading each decoder only
  * if the file needs it; `readGltf` then reads the decoded bytes. A decoder that cannot load is
  * an error naming the extension.
  */
 export async function decompressGltf(open: OpenGltf, external: ReadonlyMap<number, Uint8Array> = new Map(), decoders: GltfDecoders = DECODERS): Promise<void> {
   const { file, container } = open;
-  if (meshoptViews(file).length === 0) return;
+  const meshopt = meshoptViews(file).length > 0;
+  const draco = dracoPrimitives(file).length > 0;
+  if (!meshopt && !draco) return;
   const buffers = resolveBuffers(file, container.bin, external);
-  const decoder: MeshoptDecoderLike = await decoders.meshopt().catch((e: unknown) =>
-    file.fail('extensionsUsed', `the meshopt decoder could not be loaded (${e instanceof Error ? e.message : String(e)})`));
-  file.decodedViews = await decodeMeshopt(file, buffers, decoder);
+  const unavailable = (name: string) => (e: unknown) =>
+    file.fail('extensionsUsed', `the ${name} decoder could not be loaded (${e instanceof Error ? e.message : String(e)})`);
+  if (meshopt) {
+    const decoder: MeshoptDecoderLike = await decoders.meshopt().catch(unavailable('meshopt'));
+    file.decodedViews = await decodeMeshopt(file, buffers, decoder);
+  }
+  if (draco) file.decodedAccessors = decodeDraco(file, buffers, await decoders.draco().catch(unavailable('Draco')));
 }
 
 export function readGltf(open: OpenGltf, external: ReadonlyMap<number, Uint8Array> = new Map()): GltfResult {

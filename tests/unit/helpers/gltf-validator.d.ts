@@ -7,3 +7,11 @@ declare module 'gltf-validator' {
     externalResourceFunction?: (uri: string) => Promise<Uint8Array>;
   }): Promise<ValidationReport>;
 }
+
+// draco3d's npm package ships no types: its two factories, as the tests use them.
+declare module 'draco3d' {
+  export function createDecoderModule(options?: object): Promise<unknown>;
+  export function createEncoderModule(options?: object): Promise<unknown>;
+  const draco3d: { createDecoderModule: typeof createDecoderModule; createEncoderModule: typeof createEncoderModule };
+  export default draco3d;
+}

@@ -7,6 +7,8 @@ import { ALL_EXTENSIONS } from '@gltf-transform/extensions';
 import { validateBytes } from 'gltf-validator';
 import { expect } from 'vitest';
 import { decompressGltf, openGltf, readGltf, gltfBuffers, type GltfResult } from '../../../src/loaders/gltf';
+import type { GltfDecoders } from '../../../src/loaders/gltf/decoders';
+import type { DracoModule } from '../../../src/loaders/gltf/draco';
 
 export const io = () => new NodeIO().registerExtensions(ALL_EXTENSIONS);
 
@@ -68,12 +70,21 @@ export function parse(bytes: Uint8Array, url = 'model.glb', resources: Record<st
   return readGltf(open, external);
 }
 
-/** As `parse`, decoding what the file compresses first (its decoders loaded as the element loads them). */
+/**
+ * The decoders in Node: meshoptimizer's as the page imports it; draco3d's module reading its wasm
+ * from disk (the page's fetches it beside its chunk, src/loaders/gltf/decoders.ts).
+ */
+export const NODE_DECODERS: GltfDecoders = {
+  meshopt: () => import('meshoptimizer/decoder').then((m) => m.MeshoptDecoder),
+  draco: () => import('draco3d').then((m) => (m.default ?? m).createDecoderModule() as Promise<DracoModule>),
+};
+
+/** As `parse`, decoding what the file compresses first. */
 export async function parseDecoded(bytes: Uint8Array, url = 'model.glb', resources: Record<string, Uint8Array> = {}): Promise<GltfResult> {
   const open = openGltf(bytes, url);
   const external = new Map<number, Uint8Array>();
   for (const b of gltfBuffers(open)) if (resources[b.uri]) external.set(b.index, resources[b.uri]);
-  await decompressGltf(open, external);
+  await decompressGltf(open, external, NODE_DECODERS);
   return readGltf(open, external);
 }
 
