@@ -64,6 +64,8 @@ for (const renderer of ['webgl', 'software'] as const) {
     });
     expect(objects.length, 'one scene object per material').toBe(2);
     expect(objects.map((o) => o.material.pbr?.name)).toEqual(['plinth', 'box']);
+    // A glTF material without a texture is plain: no procedural checker (docs/gltf.md#in-the-scene).
+    expect(objects.map((o) => o.material.texture.kind)).toEqual(['none', 'image']);
     const textured = objects.find((o) => o.material.texture.kind === 'image')!;
     const url = (textured.material.texture as { url: string }).url;
     expect(url, 'the embedded PNG as a blob: URL').toMatch(/^blob:/);

@@ -8,6 +8,7 @@ import { test, expect, mount, openPage, capture, nextFrame, type RgbaImage } fro
 import { mountHtml } from './helpers/scene-children';
 import { compareToGolden, GOLDEN_DIR, readPng } from './helpers/golden';
 import { differingBytes } from '../unit/helpers/pixel-diff';
+import { bunnyGlb } from './helpers/gltf-models';
 
 const SIZE = { width: 320, height: 180 };
 const VIEWS = ['none', 'reflection', 'scene', 'fresnel', 'passes'] as const;
@@ -72,4 +73,23 @@ test('README picture: a rough glass floor at 640×360', async ({ page }) => {
   const image = await capture(page);
   expect([image.width, image.height]).toEqual([640, 360]);
   compareToGolden('readme-rough-floor', image);
+});
+
+// The README's glTF picture (docs/gltf.md): a GLB made by the tests — the Stanford bunny, gold, its
+// node scaling and turning it — standing on a glass floor, drawn with the glTF material's Blinn-Phong
+// stand-in until PBR shading lands.
+test('README picture: a GLB on a glass floor at 640×360', async ({ page }) => {
+  const glb = await bunnyGlb();
+  await page.route('**/wild/bunny.glb', (route) => route.fulfill({ status: 200, contentType: 'model/gltf-binary', body: Buffer.from(glb) }));
+  await openPage(page);
+  await mountHtml(page, `<glass-plane-scene time="0" spin="0" pixel-ratio="1" ior="1.5" samples="4"
+    glass-center="0 0 0" glass-normal="0 1 0" glass-size="8 8" background="0.1 0.1 0.12"
+    camera-position="0.2 1.5 3.4" camera-target="0 0.55 0">
+    <glass-object src="/wild/bunny.glb"></glass-object>
+    <glass-light direction="0.5 1 0.8"></glass-light>
+  </glass-plane-scene>`);
+  await nextFrame(page, 'glass-plane-scene', (el) => { el.style.width = '640px'; el.style.height = '360px'; });
+  const image = await capture(page);
+  expect([image.width, image.height]).toEqual([640, 360]);
+  compareToGolden('readme-gltf-floor', image);
 });

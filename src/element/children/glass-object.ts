@@ -115,7 +115,7 @@ export class GlassObject extends ChildElement<ObjectAttributes> {
       const model = this.model;
       // `resolution` re-evaluates a Bézier .byu only when set: its default is the Gaussian's.
       const resolution = this.hasAttribute('resolution') ? v.resolution : null;
-      const context = { file: fileMaterial, plain: model.byu };
+      const context = { file: fileMaterial, plain: model.byu || model.gltf };
       return partsOf(model, v.normalizeModel, resolution).map((part) => ({
         geometry: part.geometry,
         transform,

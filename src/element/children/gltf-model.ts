@@ -44,7 +44,7 @@ export function modelOf(result: GltfResult, url: string): LoadedModel {
   const materials = new Map<string, MtlValues>();
   result.materials.forEach((m, i) => materials.set(materialKey(i), standIn(withUrls(m, imageUrls))));
   const warnings = obj.warnings.map((w) => warningText(url, w));
-  return { url, obj, bezier: null, bezierAt: null, byu: false, materials, warnings };
+  return { url, obj, bezier: null, bezierAt: null, byu: false, gltf: true, materials, warnings };
 }
 
 function imageUrl(image: GltfImage, base: string): string | null {

@@ -20,6 +20,8 @@ export interface LoadedModel {
   bezierAt: ((resolution: number) => ObjResult) | null;
   /** A course `.byu`: no texture unless the object's `texture` sets one (docs/course-files.md#mesh-byu). */
   byu: boolean;
+  /** A glTF model: its materials name their own textures, so none gets the procedural checker (docs/gltf.md#in-the-scene). */
+  gltf: boolean;
   /** By material name; the first MTL file that defines a name gives it. */
   materials: Map<string, MtlValues>;
   /** Console-ready text (prefix, URL and line), as in the `load` event's detail. */
@@ -59,5 +61,5 @@ export async function loadModel(url: string, signal: AbortSignal, onProgress: (p
     }
   }
   const bezierAt = bezier ? (resolution: number) => bezierObj(bezier, resolution) : null;
-  return { url, obj, bezier, bezierAt, byu, materials, warnings };
+  return { url, obj, bezier, bezierAt, byu, gltf: false, materials, warnings };
 }

@@ -2,6 +2,7 @@
 // the same way the unit tests make theirs (tests/unit/helpers/gltf.ts), and validated there.
 import { Document, NodeIO, type Material } from '@gltf-transform/core';
 import { PNG } from 'pngjs';
+import { bunnyMesh } from '../../data/make-obj';
 
 /** A box of half-size `h` around the origin: 24 vertices with their face normals and UVs. */
 export function boxArrays(h: number): { positions: Float32Array<ArrayBuffer>; normals: Float32Array<ArrayBuffer>; uvs: Float32Array<ArrayBuffer>; indices: Uint16Array<ArrayBuffer> } {
@@ -48,5 +49,36 @@ export async function productGlb(): Promise<Uint8Array> {
   parent.addChild(doc.createNode('plinth').setMesh(mesh(0.5, red)).setScale([1, 0.2, 1]));
   parent.addChild(doc.createNode('box').setMesh(mesh(0.3, boxMaterial)).setTranslation([0, 0.45, 0]));
   doc.createScene('scene').addChild(parent);
+  return new NodeIO().writeBinary(doc);
+}
+
+/**
+ * The Stanford bunny (the `bunny` package) as a GLB "product": smooth normals computed here (area
+ * weighted), a gold base colour, a node scaling it to 1.2 units tall and turning it 30° about +Y,
+ * standing on y = 0.
+ */
+export async function bunnyGlb(): Promise<Uint8Array> {
+  const { positions, faces: cells } = bunnyMesh();
+  const p = Array.from({ length: positions.length / 3 }, (_, i) => [positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]]);
+  const normals = new Float32Array(p.length * 3);
+  for (const [a, b, c] of cells) {
+    const u = [0, 1, 2].map((k) => p[b][k] - p[a][k]), v = [0, 1, 2].map((k) => p[c][k] - p[a][k]);
+    const n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+    for (const i of [a, b, c]) for (let k = 0; k < 3; k++) normals[3 * i + k] += n[k];
+  }
+  for (let i = 0; i < normals.length; i += 3) {
+    const l = Math.hypot(normals[i], normals[i + 1], normals[i + 2]) || 1;
+    for (let k = 0; k < 3; k++) normals[i + k] /= l;
+  }
+  const doc = new Document();
+  const buffer = doc.createBuffer();
+  const acc = (type: 'VEC3' | 'SCALAR', a: Float32Array<ArrayBuffer> | Uint16Array<ArrayBuffer>) => doc.createAccessor().setType(type).setArray(a).setBuffer(buffer);
+  const gold = doc.createMaterial('gold').setBaseColorFactor([0.95, 0.64, 0.22, 1]).setMetallicFactor(1).setRoughnessFactor(0.35);
+  const prim = doc.createPrimitive().setAttribute('POSITION', acc('VEC3', new Float32Array(p.flat())))
+    .setAttribute('NORMAL', acc('VEC3', normals)).setIndices(acc('SCALAR', new Uint16Array(cells.flat()))).setMaterial(gold);
+  const s = 1.2 / 9.66;
+  const node = doc.createNode('bunny').setMesh(doc.createMesh('bunny').addPrimitive(prim)).setScale([s, s, s])
+    .setRotation([0, Math.sin(Math.PI / 12), 0, Math.cos(Math.PI / 12)]).setTranslation([0, 0.003149 * s, 0]);
+  doc.createScene('scene').addChild(node);
   return new NodeIO().writeBinary(doc);
 }
