@@ -6,12 +6,14 @@ import type { CameraRig } from './camera-rig';
 import type { BackendController } from './backend-controller';
 import type { FrameLoop } from './frame-loop';
 import type { Failure } from './failure';
+import type { LoadingView } from './loading-view';
 
 export interface AttributeRoutes {
   readonly rig: CameraRig;
   readonly backend: BackendController;
   readonly loop: FrameLoop;
   readonly failure: Failure;
+  readonly loading: LoadingView;
   readonly element: HTMLElement;
   requestRender(): void;
 }
@@ -24,6 +26,7 @@ export function routeAttribute(p: keyof SceneAttributes, r: AttributeRoutes): vo
   if (p === 'controls') r.rig.controlsChanged();
   if (p === 'renderer' && r.element.isConnected) r.backend.rendererChanged();
   if (p === 'cameraSrc') r.rig.cameraSrcChanged();
+  if (p === 'poster') r.loading.posterChanged();
   // Resize only: drawing here, mid-way through a script's batch of attribute changes, would
   // show a frame with half of them applied (the next animation frame comes before paint).
   if (p === 'pixelRatio') r.loop.resize();

@@ -73,6 +73,8 @@ export interface SceneAttributes {
   glassSize: [number, number];
   /** Clear colour (also of the reflection), RGB in 0..1. */
   background: Vec3Tuple;
+  /** URL of an image shown until the first frame with the content is drawn (docs/element.md#loading-a-person-can-see). */
+  poster: string | null;
 }
 
 export type AttributeName = keyof SceneAttributes;
@@ -263,6 +265,11 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
     parse: (raw) => ({ value: raw === null || raw.trim() === '' ? null : raw.trim() }),
     format: (v) => v,
   } satisfies AttributeSpec<'cameraSrc'>,
+  {
+    property: 'poster', attribute: 'poster', default: null,
+    parse: (raw) => ({ value: raw === null || raw.trim() === '' ? null : raw.trim() }),
+    format: (v) => v,
+  } satisfies AttributeSpec<'poster'>,
   finiteSpec('spin', 'spin', 0.8),
   {
     property: 'time', attribute: 'time', default: null,

@@ -9,7 +9,10 @@ canvas{display:block;width:100%;height:100%}
 [part=message]{position:absolute;inset:0;display:flex;align-items:center;justify-content:center;
 box-sizing:border-box;padding:1em;font:14px/1.4 system-ui,sans-serif;color:#ddd;
 background:#1a1a1a;text-align:center;overflow:hidden}
-[part=message][hidden]{display:none}`;
+[part=poster]{position:absolute;inset:0;width:100%;height:100%;object-fit:cover}
+[part=progress]{position:absolute;inset:auto 0 0;height:3px;background:#fff3}
+[part=progress-bar]{height:100%;width:30%;background:#4a9eff}
+[hidden]{display:none!important}`;
 
 let sheet: CSSStyleSheet | null | undefined;
 

@@ -25,6 +25,7 @@ import { BackendController } from './backend-controller';
 import { Failure } from './failure';
 import { FrameEvents } from './frame-events';
 import { routeAttribute, type AttributeRoutes } from './attribute-routes';
+import { LoadingView } from './loading-view';
 
 const DEFAULT_LABEL = 'A dark glass plane reflecting a cube, with a sphere behind it';
 
@@ -64,6 +65,7 @@ export interface GlassPlaneScene extends SceneAttributes {}
  * @attr {string} [glass-normal="0 0 1"] - "x y z": normal of the glass; "0 1 0" makes a glass floor
  * @attr {string} [glass-size="8 4"] - "w h": width and height of the glass; "0 0" means no glass
  * @attr {string} [background="0.1 0.1 0.1"] - any CSS colour, or "r g b" in 0..1: the clear colour, also of the reflection
+ * @attr {string} [poster=null] - URL of an image shown until the first frame with the content is drawn
  * @attr {string} [alt="A dark glass plane reflecting a cube, with a sphere behind it"] - text alternative; becomes the aria-label
  * @fires {CustomEvent<FrameReport>} ready - once, after the first frame is on the canvas
  * @fires {CustomEvent<FrameReport>} frame - after every frame drawn
@@ -71,6 +73,8 @@ export interface GlassPlaneScene extends SceneAttributes {}
  * @fires {CustomEvent<CameraChangeDetail>} camera-change - after a gesture moved the camera, or the page set a camera attribute
  * @csspart canvas - the canvas the scene is drawn on
  * @csspart message - the message shown when the scene cannot be drawn
+ * @csspart progress - the bar shown while children's models load; its fill is `progress-bar`
+ * @csspart poster - the `poster` image, until the first frame with the content is drawn
  */
 export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implements AttributeHost {
   static get observedAttributes(): string[] {
@@ -153,7 +157,8 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     // A frame drawn clears a shader failure's message and is kept for capture.
     const drawn = (state: FrameState) => { this.failure.drawn(); this.states.drawn(state); };
     this.events = new FrameEvents({ element: this, drawn, loading: () => this.source.loading || this.rig.loading || this.parts.loading });
-    this.routes = { rig: this.rig, backend: this.backend, loop: this.loop, failure: this.failure, element: this, requestRender };
+    const loading = new LoadingView({ element: this, root, poster: () => this.values.poster });
+    this.routes = { rig: this.rig, backend: this.backend, loop: this.loop, failure: this.failure, loading, element: this, requestRender };
     this.controllers = [this.rig, this.loop, this.source, this.backend];
     // An upgrade: what the page set before the definition goes through the accessors now, so it
     // holds before the element is connected; the attributes it writes get no callback meanwhile.
@@ -250,8 +255,6 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
   readAttributeValue(property: keyof SceneAttributes): unknown {
     return this.rig.liveValue(property) ?? this.values[property];
   }
-
-  // ---- frames ------------------------------------------------------------------------------
 
   /**
    * One frame: the controls advance, then the backend draws, unless its last frame is still on its

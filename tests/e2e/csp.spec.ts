@@ -174,8 +174,9 @@ test.describe('attribute values are text, never HTML', () => {
       const root = el.shadowRoot!;
       return {
         pwned: (window as unknown as { __pwned?: unknown }).__pwned,
-        imgs: document.querySelectorAll('img').length + root.querySelectorAll('img, [onerror]').length,
-        shadowHtmlHasImg: root.innerHTML.includes('<img'),
+        // The poster part is the element's own <img> (its src the attribute's text); any other is injected.
+        imgs: document.querySelectorAll('img').length + root.querySelectorAll('img:not([part=poster]), [onerror]').length,
+        shadowHtmlHasImg: root.innerHTML.replace(/<img part="poster"[^>]*>/, '').includes('<img'),
         messageChildren: root.querySelector('[part=message]')?.childElementCount ?? 0,
         ariaLabel: el.getAttribute('aria-label'),
       };
@@ -198,6 +199,8 @@ test.describe('attribute values are text, never HTML', () => {
     expect(r.imgs, '<img> elements').toBe(0);
     expect(r.shadowHtmlHasImg).toBe(false);
     expect(r.ariaLabel, 'aria-label mirrors alt, as text').toBe(PAYLOAD);
+    // The poster is fetched at its URL, the markup read as a relative URL: the browser's 404 line.
+    expect(consoleLog.take('error').every((e) => /Failed to load resource/.test(e))).toBe(true);
     // Bad values fall back with one warning each (docs/element.md#bad-values); the warnings quote the value as text.
     const warnings = consoleLog.take('warning');
     expect(warnings.length).toBeGreaterThan(0);

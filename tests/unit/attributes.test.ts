@@ -59,7 +59,7 @@ describe('defaults', () => {
     expect(new Set(names).size).toBe(names.length);
     expect([...names].sort()).toEqual([
       'background', 'camera-position', 'camera-rotation', 'camera-src', 'camera-target', 'color-space', 'controls', 'cube-distance', 'debug-view', 'fov',
-      'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'projection', 'reflection-format',
+      'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'poster', 'projection', 'reflection-format',
       'reflection-scale', 'renderer', 'roughness', 'roughness-quality', 'samples', 'shading', 'spin', 'tessellation', 'time', 'transparency',
     ]);
     for (const s of ATTRIBUTES) {
@@ -279,7 +279,7 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
             if (v !== 'auto') expect((v as number) >= 0.25 && (v as number) <= 4).toBe(true);
             break;
           case 'time': expect(v === null || Number.isFinite(v)).toBe(true); break;
-          case 'cameraSrc': expect(v === null || (typeof v === 'string' && v.trim() === v && v !== '')).toBe(true); break;
+          case 'cameraSrc': case 'poster': expect(v === null || (typeof v === 'string' && v.trim() === v && v !== '')).toBe(true); break;
           case 'cameraPosition':
             expect(v).toHaveLength(3);
             for (const x of v as number[]) expect(Math.abs(x)).toBeLessThanOrEqual(1e7);

@@ -8,6 +8,8 @@ export interface Progress {
 }
 
 export async function fetchBytes(url: string, signal: AbortSignal, onProgress?: (p: Progress) => void): Promise<Uint8Array> {
+  // A first report before the request: the loading bar (loading-view.ts) shows from here, not the first byte.
+  onProgress?.({ loaded: 0 });
   let response: Response;
   try {
     response = await fetch(url, { signal });
