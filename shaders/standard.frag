@@ -1,11 +1,12 @@
 #version 300 es
-// colour = tex ⊙ Σ(Ka⊙Ia + Kd⊙Id·max(N·L, 0)) + Σ Ks⊙Is·(N·H)^n, alpha = opacity; the light sums
+// colour = tex ⊙ Σ(Ka⊙Ia + Kd⊙Id·max(N·L, 0)) + Σ Ks⊙Is·(N·H)^n + E, alpha = opacity; the light sums
 // come from blinnPhong (lighting.glsl), per fragment (phong), interpolated from the vertices
 // (gouraud), or one per triangle (flat).
 precision highp float;
 
 uniform sampler2D uTexture;
 uniform float uOpacity;
+uniform vec3 uEmissive;        // light given off, added to the lit colour (docs/gltf.md#drawing)
 uniform float uImageTexture;   // 1: an image, read at (u, 1 − v) (OBJ: v = 0 is its bottom row)
 #ifndef MAPPING_UV
 uniform vec4 uBounds;          // the object's bounding sphere (object space): centre, radius
@@ -76,5 +77,5 @@ void main() {
 #else
   vec3 a = vLightA, s = vLightS;
 #endif
-  outColor = vec4(surfaceTexture() * a + s, uOpacity);
+  outColor = vec4(surfaceTexture() * a + s + uEmissive, uOpacity);
 }

@@ -74,12 +74,13 @@ export function shadeObject(
       for (let k = 0; k < 3; k++) sums[6 + k] += ks[k] * light.specular[k] * s;
     }
   }
-  const ka = material.ambient, kd = material.diffuse;
+  const ka = material.ambient, kd = material.diffuse, e = material.emissive;
   for (let k = 0; k < 3; k++) {
     const lit = ka[k] === kd[k]
       ? kd[k] * tex[k] * (sums[k] + sums[3 + k])
       : ka[k] * tex[k] * sums[k] + kd[k] * tex[k] * sums[3 + k];
-    out[k] = lit + sums[6 + k];
+    // Emitted light adds to the lit colour (docs/gltf.md#drawing); a material without it adds nothing.
+    out[k] = e === undefined ? lit + sums[6 + k] : lit + sums[6 + k] + e[k];
   }
   return out;
 }

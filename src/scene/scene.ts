@@ -26,6 +26,8 @@ export interface Material {
   opacity: number;
   texture: TextureSource;
   mapping: Mapping;
+  /** Light the surface gives off, linear RGB added to its lit colour (a glTF material's emissive; absent: none). */
+  emissive?: Vec3;
   /**
    * A glTF model's material as the file has it (docs/gltf.md#materials); the fields above are its
    * Blinn-Phong stand-in until PBR shading. Absent for everything else.

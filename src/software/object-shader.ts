@@ -160,6 +160,7 @@ export class ObjectShader implements FragmentShader {
     i = put(k, i, m.diffuse, 3);
     i = put(k, i, m.specular, 3);
     k[i++] = m.shininess; k[i++] = m.opacity; k[i++] = d.twoSided ? 1 : 0;
+    if (m.emissive) i = put(k, i, m.emissive, 3); else i += 3;
     k[i++] = r.width; k[i++] = r.height; k[i++] = r.shadeEvery; k[i++] = r.frontCCW ? 1 : 0; k[i++] = r.cull === 'back' ? 1 : 0;
     k[i++] = l.count;
     for (let j = 0; j < l.count; j++) {
@@ -255,7 +256,10 @@ export class ObjectShader implements FragmentShader {
     }
     const tex = this.texture(r);
     // The 8-bit target's clamp, inline (a helper's double result is boxed when not inlined).
+    // Emitted light adds to the lit colour (docs/gltf.md#drawing); without it, nothing is added.
+    const e = d.material.emissive;
     let cr = tex[0] * sums[0] + sums[3], cg = tex[1] * sums[1] + sums[4], cb = tex[2] * sums[2] + sums[5];
+    if (e !== undefined) { cr += e[0]; cg += e[1]; cb += e[2]; }
     this.cr = cr < 0 ? 0 : cr > 1 ? 1 : cr;
     this.cg = cg < 0 ? 0 : cg > 1 ? 1 : cg;
     this.cb = cb < 0 ? 0 : cb > 1 ? 1 : cb;

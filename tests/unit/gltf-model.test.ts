@@ -62,6 +62,12 @@ describe('the Blinn-Phong stand-in of a glTF material (docs/gltf.md#drawing)', (
     expect(m.shininess).toBe(30);
   });
 
+  it('gives off its emissive factor times its strength; none when the factor is black', () => {
+    expect(standIn(material({ emissive: [1, 0.5, 0], emissiveStrength: 4 })).emissive).toEqual([4, 2, 0]);
+    expect('emissive' in standIn(material({ emissive: [0, 0, 0], emissiveStrength: 4 }))).toBe(false);
+    expect(standIn(material({ emissive: [0, 0, 0.25] })).emissive).toEqual([0, 0, 0.25]);
+  });
+
   it('draws the base colour texture when it reads TEXCOORD_0, not TEXCOORD_1; carries the material whole', () => {
     const tex = { source: { url: 'blob:x' }, texCoord: 0, sampler: { magFilter: undefined, minFilter: undefined, wrapS: 10497, wrapT: 10497 }, transform: null };
     const m = material({ baseColorTexture: tex, alphaMode: 'mask' });

@@ -69,7 +69,8 @@ function withUrls(m: GltfMaterial, urls: (string | null)[]): PbrMaterial {
  * The Blinn-Phong stand-in a glTF material is drawn with until PBR shading (docs/gltf.md#drawing):
  * base colour as Ka and Kd, its alpha as the opacity when blended, a highlight from the
  * specular colour at normal incidence (0.04 for a dielectric, the base colour for a metal) fading
- * with roughness, its exponent 2/α² − 2 (α = roughness²), the base colour texture on TEXCOORD_0.
+ * with roughness, its exponent 2/α² − 2 (α = roughness²), the base colour texture on TEXCOORD_0,
+ * and its emissive factor times its strength as light given off.
  */
 export function standIn(m: PbrMaterial): MtlValues {
   const [r, g, b, a] = m.baseColor;
@@ -79,9 +80,11 @@ export function standIn(m: PbrMaterial): MtlValues {
   const alpha = Math.max(m.roughness * m.roughness, 0.05);
   const shininess = Math.min(Math.max(2 / (alpha * alpha) - 2, 1), 800);
   const texture = m.baseColorTexture && m.baseColorTexture.texCoord === 0 ? m.baseColorTexture.source.url : undefined;
+  const [er, eg, eb] = m.emissive.map((c) => c * m.emissiveStrength);
   return {
     ambient: base, diffuse: base, specular: [f0[0] * fade, f0[1] * fade, f0[2] * fade], shininess,
     opacity: m.alphaMode === 'blend' ? a : 1, texture, pbr: m,
+    ...(er > 0 || eg > 0 || eb > 0 ? { emissive: [er, eg, eb] as const } : {}),
   };
 }
 

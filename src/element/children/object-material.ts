@@ -13,6 +13,8 @@ export interface MtlValues {
   texture?: string;
   /** A glTF material, carried into the scene value as it is (docs/gltf.md#materials). */
   pbr?: PbrMaterial;
+  /** Light given off (a glTF material's emissive factor times its strength). */
+  emissive?: Vec3;
 }
 
 export type MaterialAttributes = Pick<ObjectAttributes, 'ambient' | 'diffuse' | 'specular' | 'shininess' | 'opacity' | 'texture' | 'mapping'>;
@@ -46,6 +48,7 @@ export function resolveMaterial(
     opacity: attrs.opacity ?? mtl?.opacity ?? file?.opacity ?? OBJECT_DEFAULTS.opacity,
     texture,
     mapping,
+    ...(mtl?.emissive ? { emissive: mtl.emissive } : {}),
     ...(mtl?.pbr ? { pbr: mtl.pbr } : {}),
   };
 }

@@ -77,7 +77,11 @@ export function setMaterial(gl: WebGL2RenderingContext, p: Program, o: SceneObje
   gl.uniform3f(p.location('uKs'), s[0], s[1], s[2]);
   gl.uniform1f(p.location('uShininess'), m.shininess);
   gl.uniform1f(p.location('uOpacity'), m.opacity);
+  const e = m.emissive ?? NO_EMISSION;
+  gl.uniform3f(p.location('uEmissive'), e[0], e[1], e[2]);
 }
+
+const NO_EMISSION = [0, 0, 0] as const;
 
 export function setMatrices(gl: WebGL2RenderingContext, p: Program, m: DrawMatrices): void {
   gl.uniformMatrix4fv(p.location('uModelViewProjection'), false, m.modelViewProjection);
