@@ -257,7 +257,10 @@ export class SampleTracer {
     const plane = this.plane;
     let best: SurfaceHit | null = null;
     let spare = layer.a;
+    const objects = this.scene.scene.objects;
     for (let i = 0; i < tracers.length; i++) {
+      // A mirrored path (clipSide ≠ 0) passes through an object kept out of the reflection.
+      if (clipSide !== 0 && objects[i].reflected === false) continue;
       if (!tracers[i].hit(ray, tMin, clipSide, plane, spare)) continue;
       if (best === null || spare.t < best.t) {
         const free: SurfaceHit = best ?? (spare === layer.a ? layer.b : layer.a);

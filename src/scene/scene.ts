@@ -66,6 +66,8 @@ export interface SceneObject {
   transform: Transform;
   material: Material;
   bounds: Bounds;
+  /** False: kept out of the glass's reflection, drawn everywhere else (docs/scene-model.md#glass-object). Absent: reflected. */
+  reflected?: boolean;
 }
 
 export interface Light {

@@ -355,6 +355,8 @@ export class SoftwareRenderer {
       const i = order ? order[k] : k;
       const o: SceneObject = objects[i];
       if (selection === 'opaque' && o.material.opacity < 1) continue;
+      // Selection: an object kept out of the reflection (docs/scene-model.md#glass-object).
+      if (mirrored && o.reflected === false) continue;
       const m = s.objects[i];
       // Culling, not selection (docs/rendering.md#what-is-skipped): bounds wholly beyond the glass cannot be reflected.
       if (mirrored && m.viewerDistance <= -m.radius) continue;

@@ -22,14 +22,14 @@ const light = (a: string) => row(LIGHT_ATTRIBUTES as readonly ChildAttributeSpec
 describe('<glass-object> table', () => {
   it('declares exactly the attributes of docs/scene-model.md#glass-object', () => {
     expect(OBJECT_ATTRIBUTES.map((r) => r.attribute).sort()).toEqual([
-      'ambient', 'diffuse', 'mapping', 'normalize', 'opacity', 'position', 'resolution', 'rotation', 'scale',
+      'ambient', 'diffuse', 'mapping', 'normalize', 'opacity', 'position', 'reflect', 'resolution', 'rotation', 'scale',
       'shape', 'shininess', 'specular', 'src', 'texture',
     ]);
   });
 
   it('has the defaults of docs/scene-model.md#glass-object', () => {
     const d = defaultObjectAttributes();
-    expect(d).toMatchObject({ src: null, shape: null, resolution: 40, position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], normalizeModel: false });
+    expect(d).toMatchObject({ src: null, shape: null, resolution: 40, position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], normalizeModel: false, reflect: true });
     // Material rows are null: the MTL's value, else OBJECT_DEFAULTS.
     expect([d.ambient, d.diffuse, d.specular, d.shininess, d.opacity, d.texture, d.mapping]).toEqual([null, null, null, null, null, null, null]);
   });
@@ -43,6 +43,7 @@ describe('<glass-object> table', () => {
     expect(obj('diffuse').parse('0.2 0.5 0.9')).toEqual({ value: [0.2, 0.5, 0.9] });
     expect(obj('normalize').parse('')).toEqual({ value: true });
     expect(obj('src').parse(' models/a.obj ')).toEqual({ value: 'models/a.obj' });
+    expect([' FALSE ', 'false', 'true', ''].map((raw) => obj('reflect').parse(raw))).toEqual([{ value: false }, { value: false }, { value: true }, { value: true }]);
   });
 
   it('falls back with a problem: clamps ranges, defaults the unusable', () => {
@@ -51,6 +52,7 @@ describe('<glass-object> table', () => {
       expect(r.value, `${a}="${raw}"`).toEqual(value);
       expect(r.problem, `${a}="${raw}"`).toMatch(/./);
     };
+    bad('reflect', 'no', true);
     bad('shininess', '20000', 10000);
     bad('shininess', 'shiny', null);
     bad('opacity', '-1', 0);

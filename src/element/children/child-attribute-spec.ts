@@ -90,6 +90,20 @@ export function flag<P extends string>(property: P, attribute: string, doc: stri
   return { property, attribute, default: false, doc, boolean: true, parse: (raw) => ({ value: raw !== null }) };
 }
 
+/** "true" or "false" (any case, blank meaning true): a yes/no whose absence is `def`, unlike a flag's. */
+export function truth<P extends string>(property: P, attribute: string, def: boolean, doc: string): ChildAttributeSpec<boolean, P> {
+  return {
+    property, attribute, default: def, doc,
+    parse(raw) {
+      if (raw === null) return { value: def };
+      const w = raw.trim().toLowerCase();
+      if (w === 'false') return { value: false };
+      if (w === 'true' || w === '') return { value: true };
+      return { value: def, problem: `expected true or false, using ${def}` };
+    },
+  };
+}
+
 /** A URL as written (resolved against the document by whoever fetches it); blank = absent. */
 export function url<P extends string>(property: P, attribute: string, doc: string): ChildAttributeSpec<string | null, P> {
   return {

@@ -60,6 +60,7 @@ export interface GlassObject extends ObjectAttributes {}
  * @attr {number} [opacity=null] - 1 − kt, 0..1; the MTL's d, else 1
  * @attr {string} [texture=null] - URL of an image multiplying Ka and Kd; the MTL's map_Kd, else the procedural texture
  * @attr {'uv' | 'triplanar' | 'cylindrical' | 'spherical'} [mapping=null] - uv where the model has UVs, else spherical
+ * @attr {boolean} [reflect=true] - "false" keeps the object out of the glass's reflection (it is drawn everywhere else)
  * @fires {CustomEvent<ModelProgress>} progress - bytes of the model received (bubbles, composed)
  * @fires {CustomEvent<{ url: string; warnings: string[] }>} load - the model is loaded and shown (bubbles, composed)
  * @fires {CustomEvent<LoadErrorDetail>} error - the model could not be loaded or read (bubbles, composed)
@@ -121,10 +122,11 @@ export class GlassObject extends ChildElement<ObjectAttributes> {
         transform,
         material: resolveMaterial(v, part.material === null ? undefined : model.materials.get(part.material), part.hasUvs, texture, context),
         bounds: part.bounds,
+        ...(v.reflect ? {} : { reflected: false }),
       }));
     }
     const { geometry, bounds } = builtinShape(v.shape ?? 'cube', v.resolution);
-    return [{ geometry, transform, material: resolveMaterial(v, undefined, true, texture, { file: fileMaterial }), bounds }];
+    return [{ geometry, transform, material: resolveMaterial(v, undefined, true, texture, { file: fileMaterial }), bounds, ...(v.reflect ? {} : { reflected: false }) }];
   }
 
   /** The first scene part (a built-in shape is one), or null while no model is shown. */

@@ -3,7 +3,7 @@
 // that an attribute wins over the MTL and the MTL over the default (nothing is written back).
 import { MAPPINGS, type Mapping, type Vec3 } from '../../scene/scene';
 import { MAX_RESOLUTION, MIN_RESOLUTION } from '../../scene/geometry/gaussian';
-import { clampedNumber, flag, keyword, url, vec3, type ChildAttributeSpec } from './child-attribute-spec';
+import { clampedNumber, flag, keyword, truth, url, vec3, type ChildAttributeSpec } from './child-attribute-spec';
 
 export const SHAPES = ['cube', 'sphere', 'gaussian'] as const;
 export type Shape = (typeof SHAPES)[number];
@@ -24,6 +24,8 @@ export interface ObjectAttributes {
   opacity: number | null;
   texture: string | null;
   mapping: Mapping | null;
+  /** False keeps the object out of the glass's reflection. */
+  reflect: boolean;
 }
 
 /** Material values of an object with neither attribute nor MTL value (docs/scene-model.md#glass-object). */
@@ -55,6 +57,7 @@ export const OBJECT_ATTRIBUTES: readonly Row[] = [
   clampedNumber('opacity', 'opacity', null, 0, 1, '1 − kt, 0..1; the MTL\'s d, else 1'),
   url('texture', 'texture', 'URL of an image multiplying Ka and Kd; the MTL\'s map_Kd, else the procedural texture'),
   keyword('mapping', 'mapping', MAPPINGS, null, 'uv, triplanar, cylindrical or spherical; uv where the model has UVs, else spherical'),
+  truth('reflect', 'reflect', true, '"false" keeps the object out of the glass\'s reflection (it is drawn everywhere else)'),
 ];
 
 export function defaultObjectAttributes(): ObjectAttributes {

@@ -56,6 +56,8 @@ export function drawObjects(
     for (let i = 0; i < objects.length; i++) {
       const o = objects[i];
       if ((o.material.opacity < 1) !== transparent) continue;
+      // Selection: an object kept out of the reflection (docs/scene-model.md#glass-object).
+      if (mirrored && o.reflected === false) continue;
       const m = setup.objects[i];
       // Culling, not selection (docs/rendering.md#what-is-skipped): bounds wholly beyond the glass cannot be reflected.
       if (mirrored && ctx.cull && m.viewerDistance <= -m.radius) continue;
