@@ -16,35 +16,13 @@ import zlib from 'node:zlib';
 import os from 'node:os';
 import { fileURLToPath } from 'node:url';
 import { build } from 'rolldown';
+import { graph, nameOf } from './chunk-graph.mjs';
 
 const ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const DIST = path.join(ROOT, 'dist');
 const ENTRY = 'glass-plane-scene.standalone.js';
 const gz = (s) => zlib.gzipSync(s, { level: 9 }).length;
 const kB = (n) => (n / 1000).toFixed(1);
-
-/** The chunks the entry reaches: static imports (loaded with it) and dynamic ones (lazy), and workers. */
-function graph(entry, dir = DIST) {
-  const chunks = new Map();
-  const visit = (file, lazy, from) => {
-    if (chunks.has(file)) return;
-    // The bundler's build leaves workers and assets where our dist has them: only its eager files count.
-    if (lazy && dir !== DIST && !fs.existsSync(path.join(dir, file))) return;
-    const text = fs.readFileSync(path.join(dir, file), 'utf8');
-    chunks.set(file, { file, text, lazy, from });
-    // Quotes of either kind (the minifier writes template literals).
-    const q = '["\'`]';
-    const rel = (m) => path.posix.join(path.posix.dirname(file), m[1]);
-    for (const m of text.matchAll(new RegExp(`(?:from|^import)\\s*${q}\\.\\/([^"'\`]+\\.js)${q}`, 'gm'))) visit(rel(m), lazy, file);
-    for (const m of text.matchAll(new RegExp(`import\\(\\s*${q}\\.\\/([^"'\`]+\\.js)${q}\\s*\\)`, 'g'))) visit(rel(m), true, file);
-    for (const m of text.matchAll(new RegExp(`new URL\\(\\s*(?:/\\*[^*]*\\*/\\s*)?(?:new URL\\(\\s*)?${q}\\.?\\/?(assets\\/[^"'\`]+\\.js)${q}`, 'g'))) visit(m[1], true, file);
-  };
-  visit(entry, false, null);
-  return [...chunks.values()];
-}
-
-/** A chunk's name without its hash: "model-loader", "assets/worker". */
-const nameOf = (file) => file.replace(/-[A-Za-z0-9_-]{8}\.js$/, '').replace(/\.js$/, '');
 
 function modules(text) {
   const parts = text.split(/^(?=\/\/ (?:src|node_modules|shaders|\.\.)\/)/m);
