@@ -13,6 +13,11 @@ export interface Merged {
 }
 
 export function mergePieces(pieces: readonly Piece[]): Merged {
+  if (pieces.length === 1) {
+    // One primitive (most product models): its arrays as they are.
+    const [p] = pieces;
+    return { positions: p.positions, normals: p.normals, uv0: p.uv0, uv1: p.uv1, colors: p.colors, indices: p.indices, groups: [{ material: p.material, start: 0, count: p.indices.length }] };
+  }
   const vertexCount = pieces.reduce((n, p) => n + p.positions.length / 3, 0);
   const positions = new Float32Array(vertexCount * 3);
   const normals = new Float32Array(vertexCount * 3);

@@ -64,7 +64,8 @@ export function readPiece(file: GltfFile, buffers: readonly Uint8Array[], p: Obj
   const color = same('COLOR_0', COLOR);
   const listed = p.indices === undefined ? null : readIndices(file, buffers, int(file, p, 'indices', path), `${path}.indices`, n);
   let indices = triangles(mode, listed, n);
-  const positions = transformPoints(position.values, at.matrix);
+  const identity = isIdentity(at.matrix);
+  const positions = identity ? position.values : transformPoints(position.values, at.matrix);
   indices = dropBad(file, positions, indices, `${path}.attributes.POSITION`);
   if (det3(at.matrix) < 0) for (let t = 0; t < indices.length; t += 3) [indices[t + 1], indices[t + 2]] = [indices[t + 2], indices[t + 1]];
   const material = p.material === undefined ? null : int(file, p, 'material', path);
@@ -72,7 +73,7 @@ export function readPiece(file: GltfFile, buffers: readonly Uint8Array[], p: Obj
   const colors = color ? rgba(color.values, color.size) : null;
   const piece: Piece = { positions, normals: new Float32Array(0), uv0: uv0?.values ?? null, uv1: uv1?.values ?? null, colors, indices, material };
   if (normal) {
-    piece.normals = transformNormals(normal.values, at.matrix);
+    piece.normals = transformNormals(normal.values, at.matrix, identity);
     return piece;
   }
   return flatShaded(piece);
@@ -99,6 +100,11 @@ export function triangles(mode: number, listed: Uint32Array | null, vertexCount:
   return out;
 }
 
+function isIdentity(m: Float64Array): boolean {
+  for (let i = 0; i < 16; i++) if (m[i] !== (i % 5 === 0 ? 1 : 0)) return false;
+  return true;
+}
+
 function transformPoints(v: Float32Array, m: Float64Array): Float32Array {
   const out = new Float32Array(v.length);
   for (let i = 0; i < v.length; i += 3) {
@@ -114,8 +120,21 @@ function det3(m: Float64Array): number {
   return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[4] * (m[1] * m[10] - m[2] * m[9]) + m[8] * (m[1] * m[6] - m[2] * m[5]);
 }
 
-/** Normals through the inverse transpose of the matrix's 3×3 part (its cofactors, signed by its determinant), unit length. */
-function transformNormals(v: Float32Array, m: Float64Array): Float32Array {
+/**
+ * Normals through the inverse transpose of the matrix's 3×3 part (its cofactors, signed by its
+ * determinant), unit length; under the identity, the file's normals made unit in place.
+ */
+function transformNormals(v: Float32Array, m: Float64Array, identity: boolean): Float32Array {
+  if (identity) {
+    for (let i = 0; i < v.length; i += 3) {
+      const len = Math.sqrt(v[i] * v[i] + v[i + 1] * v[i + 1] + v[i + 2] * v[i + 2]);
+      const k = len > 0 ? 1 / len : 0;
+      v[i] *= k;
+      v[i + 1] *= k;
+      v[i + 2] *= k;
+    }
+    return v;
+  }
   const s = Math.sign(det3(m)) || 1;
   const c = [
     m[5] * m[10] - m[6] * m[9], m[6] * m[8] - m[4] * m[10], m[4] * m[9] - m[5] * m[8],
@@ -126,7 +145,7 @@ function transformNormals(v: Float32Array, m: Float64Array): Float32Array {
   for (let i = 0; i < v.length; i += 3) {
     const x = v[i], y = v[i + 1], z = v[i + 2];
     const nx = c[0] * x + c[3] * y + c[6] * z, ny = c[1] * x + c[4] * y + c[7] * z, nz = c[2] * x + c[5] * y + c[8] * z;
-    const len = Math.hypot(nx, ny, nz);
+    const len = Math.sqrt(nx * nx + ny * ny + nz * nz);
     // A zero normal stays zero: the renderers light it as facing nowhere rather than dividing by 0.
     const k = len > 0 ? 1 / len : 0;
     out[i] = nx * k;
@@ -138,6 +157,9 @@ function transformNormals(v: Float32Array, m: Float64Array): Float32Array {
 
 /** Triangles whose three positions are finite and within MAX_COORDINATE; one warning if any is not. */
 function dropBad(file: GltfFile, p: Float32Array, indices: Uint32Array, path: string): Uint32Array {
+  let all = true;
+  for (let i = 0; i < p.length && all; i++) all = Math.abs(p[i]) <= MAX_COORDINATE;
+  if (all) return indices;
   const good = (i: number) => {
     for (let a = 3 * i; a < 3 * i + 3; a++) if (!(Math.abs(p[a]) <= MAX_COORDINATE)) return false;
     return true;
