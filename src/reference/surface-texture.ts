@@ -49,7 +49,7 @@ export class SurfaceTexture {
   /** An image texture by URL, decoded once; the procedural texture when it is missing or malformed. */
   textureOf(material: Material): ChannelTexture {
     const source = material.texture;
-    if (source.kind === 'none') return (this.white ??= imageTexture({ width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }, this.colorSpace)!);
+    if (source.kind === 'none') return this.plain();
     if (source.kind !== 'image') return this.procedural;
     let tex = this.images.get(source.url);
     if (tex === undefined) {
@@ -57,7 +57,12 @@ export class SurfaceTexture {
       tex = image === undefined ? null : imageTexture(image, this.colorSpace);
       this.images.set(source.url, tex);
     }
-    return tex ?? this.procedural;
+    return tex ?? (source.fallback === 'none' ? this.plain() : this.procedural);
+  }
+
+  /** 1×1 white: no texture. */
+  private plain(): ChannelTexture {
+    return (this.white ??= imageTexture({ width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }, this.colorSpace)!);
   }
 
   /** The texture (RGB, 0..1, linear light with srgb) of `material` at an object hit, through its mapping, into `out`. */

@@ -63,12 +63,14 @@ export class TextureCache {
 
   /** The texture for `source`, and whether it is an image (read at (u, 1 − v)). */
   textureFor(source: TextureSource): Texture {
-    if (source.kind === 'none') {
-      // Made before the caller binds what this returns, so its creation unbinds nothing in use.
-      return (this.white ??= new Texture(this.gl, this.counter, { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]), repeat: true }));
-    }
+    if (source.kind === 'none') return this.plain();
     if (source.kind !== 'image') return this.procedural;
-    return this.images.get(source.url)?.texture ?? this.procedural;
+    return this.images.get(source.url)?.texture ?? (source.fallback === 'none' ? this.plain() : this.procedural);
+  }
+
+  /** 1×1 white: no texture. Made before the caller binds what textureFor returns, so its creation unbinds nothing in use. */
+  private plain(): Texture {
+    return (this.white ??= new Texture(this.gl, this.counter, { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]), repeat: true }));
   }
 
   isImage(texture: Texture): boolean {

@@ -14,7 +14,11 @@ export const MAPPINGS: readonly Mapping[] = ['uv', 'triplanar', 'cylindrical', '
  * The seeded checker of docs/default-scene.md#the-procedural-texture, an image (by URL, decoded by whoever draws it), or none: a
  * plain material, tex = 1 (the course's `.byu` objects, docs/course-files.md#mesh-byu).
  */
-export type TextureSource = { kind: 'procedural' } | { kind: 'image'; url: string } | { kind: 'none' };
+export type TextureSource =
+  | { kind: 'procedural' }
+  /** `fallback: 'none'`: drawn plain (white) while the image is missing or if it failed, not with the checker (a glTF's or a course file's). */
+  | { kind: 'image'; url: string; fallback?: 'none' }
+  | { kind: 'none' };
 
 /** Blinn-Phong with the names Ka, Kd, Ks and shininess; the texture multiplies Ka and Kd. */
 export interface Material {

@@ -388,11 +388,12 @@ export class SoftwareRenderer {
     const source = o.material.texture, space = this.space;
     if (source.kind === 'none') return WHITE;
     if (source.kind !== 'image') return proceduralMipTexture(space);
+    const missing = source.fallback === 'none' ? WHITE : proceduralMipTexture(space);
     const image = images?.get(source.url);
-    if (image === undefined) return proceduralMipTexture(space);
+    if (image === undefined) return missing;
     const built = this.images[space];
     let t = built.get(image);
     if (t === undefined) built.set(image, (t = imageMipTexture(image, space)));
-    return t ?? proceduralMipTexture(space);
+    return t ?? missing;
   }
 }

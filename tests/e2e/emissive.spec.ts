@@ -1,4 +1,4 @@
-// Emitted light in the GLSL (docs/gltf.md#drawing): the same box as tests/unit/emissive.test.ts, lit
+// Emitted light and a missing image's fallback in the GLSL (docs/gltf.md#drawing, #images): the same box as tests/unit/emissive.test.ts, lit
 // from the camera, drawn by the WebGL renderer: its face is Kd·(Ia + Id) + E to the 8-bit level,
 // as the reference and the software renderer draw it; without emissive, Kd·(Ia + Id) alone.
 import { test, expect } from './fixtures';
@@ -32,4 +32,21 @@ test('WebGL: a material\'s emissive adds to its lit colour', async ({ page }) =>
     // The 8-bit target rounds; a GPU may land one level either side of the exact value.
     got.forEach((g, k) => expect(Math.abs(g - want[k] * 255), `channel ${k}: ${got} against ${want.map((c) => c * 255)}`).toBeLessThanOrEqual(1));
   }
+});
+
+// A missing image (docs/gltf.md#images): with `fallback: 'none'` WebGL draws the object plain, as
+// `kind: 'none'`; without it, with the procedural checker. The same rule as the CPU renderers'
+// (tests/unit/texture-fallback.test.ts).
+test('WebGL: a missing image with fallback none draws plain, without it the checker', async ({ page }) => {
+  await openRendererPage(page);
+  const state = defaultFrameState({ width: 33, height: 33, cameraPosition: [0, 0, 4], yaw: -90, pitch: 0, colorSpace: 'none', time: 0, spin: 0, samples: 0 });
+  const withTexture = (texture: Material['texture']): Scene => {
+    const s = scene();
+    return { ...s, objects: s.objects.map((o) => ({ ...o, material: { ...o.material, texture } })) };
+  };
+  const draw = async (texture: Material['texture']) => [...(await drawScene(page, state, withTexture(texture))).data];
+  const plain = await draw({ kind: 'none' }), checker = await draw({ kind: 'procedural' });
+  expect(plain).not.toEqual(checker);
+  expect(await draw({ kind: 'image', url: 'gone.png', fallback: 'none' })).toEqual(plain);
+  expect(await draw({ kind: 'image', url: 'gone.png' })).toEqual(checker);
 });

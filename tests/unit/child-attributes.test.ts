@@ -164,7 +164,7 @@ describe('the course lighting file in the scene terms (docs/course-files.md#ligh
     expect(m.ambient).toEqual([0.2, 0.2, 0.2]); // file
     expect(m.specular).toEqual([0.5, 0.5, 0.5]); // default
     expect(m.texture).toEqual({ kind: 'none' });
-    expect(resolveMaterial(none, undefined, false, 'http://x/t.png', { plain: true }).texture).toEqual({ kind: 'image', url: 'http://x/t.png' });
+    expect(resolveMaterial(none, undefined, false, 'http://x/t.png', { plain: true }).texture).toEqual({ kind: 'image', url: 'http://x/t.png', fallback: 'none' });
     expect(resolveMaterial(none, undefined, true, null).texture).toEqual({ kind: 'procedural' });
   });
 });

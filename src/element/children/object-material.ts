@@ -37,7 +37,9 @@ export function resolveMaterial(
   context: MaterialContext = {},
 ): Material {
   const image = textureUrl ?? mtl?.texture ?? null;
-  const texture: TextureSource = image !== null ? { kind: 'image', url: image } : context.plain ? { kind: 'none' } : { kind: 'procedural' };
+  // A plain object (a glTF's, a course file's) is never drawn with the checker: plain while its image is missing.
+  const texture: TextureSource = image !== null ? { kind: 'image', url: image, ...(context.plain ? { fallback: 'none' as const } : {}) }
+    : context.plain ? { kind: 'none' } : { kind: 'procedural' };
   const mapping: Mapping = attrs.mapping ?? (hasUvs ? 'uv' : 'spherical');
   const file = context.file ?? undefined;
   return {
