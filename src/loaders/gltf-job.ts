@@ -21,7 +21,7 @@ export async function runGltfJob(request: GltfJobRequest): Promise<{ response: G
     const result = readGltf(open, external);
     // An embedded image is a view of the whole file: sliced, so that only its bytes cross over.
     result.images = result.images.map((im) => (im.kind === 'bytes' ? { ...im, bytes: im.bytes.slice() } : im));
-    const arrays = [result.positions, result.normals, result.uv0, result.uv1, result.colors, result.indices,
+    const arrays = [result.positions, result.normals, result.uv0, result.uv1, result.colors, result.tangents, result.indices,
       ...result.images.map((im) => (im.kind === 'bytes' ? im.bytes : null))];
     const transfer = [...new Set(arrays.flatMap((a) => (a ? [a.buffer as ArrayBuffer] : [])))];
     return { response: { id: request.id, ok: true, result }, transfer };

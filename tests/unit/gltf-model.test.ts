@@ -11,7 +11,7 @@ import type { PbrMaterial } from '../../src/scene/pbr-material';
 function result(over: Partial<GltfResult> = {}): GltfResult {
   return {
     positions: new Float32Array([0, 0, 0, 2, -1, 0, 0, 3, 5]), normals: new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1]),
-    uv0: new Float32Array([0, 0, 1, 0.25, 0.5, 1]), uv1: null, colors: new Float32Array([1, 0, 0, 0.5, 0, 1, 0, 1, 0, 0, 1, 1]),
+    uv0: new Float32Array([0, 0, 1, 0.25, 0.5, 1]), uv1: null, colors: new Float32Array([1, 0, 0, 0.5, 0, 1, 0, 1, 0, 0, 1, 1]), tangents: null,
     indices: new Uint32Array([0, 1, 2]), groups: [{ material: 1, start: 0, count: 3 }], materials: [], images: [],
     warnings: [{ path: 'meshes[0].primitives[1].mode', message: 'points and lines are not drawn (the first named; any others too)' }],
     ...over,

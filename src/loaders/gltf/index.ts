@@ -37,6 +37,8 @@ export interface GltfResult {
   uv1: Float32Array | null;
   /** COLOR_0 as linear RGBA, or null when no primitive has one (1 where one primitive lacks it). */
   colors: Float32Array | null;
+  /** TANGENT (or computed, docs/gltf.md#tangents) xyzw where a material has a normal map, else null. */
+  tangents: Float32Array | null;
   indices: Uint32Array;
   /** One index range per material (materials[i], or null: the default material), in order of first use. */
   groups: { material: number | null; start: number; count: number }[];

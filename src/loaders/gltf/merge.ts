@@ -8,6 +8,8 @@ export interface Merged {
   uv0: Float32Array | null;
   uv1: Float32Array | null;
   colors: Float32Array | null;
+  /** xyzw per vertex where some primitive's material has a normal map (zeros for the others), else null. */
+  tangents: Float32Array | null;
   indices: Uint32Array;
   groups: { material: number | null; start: number; count: number }[];
 }
@@ -16,7 +18,7 @@ export function mergePieces(pieces: readonly Piece[]): Merged {
   if (pieces.length === 1) {
     // One primitive (most product models): its arrays as they are.
     const [p] = pieces;
-    return { positions: p.positions, normals: p.normals, uv0: p.uv0, uv1: p.uv1, colors: p.colors, indices: p.indices, groups: [{ material: p.material, start: 0, count: p.indices.length }] };
+    return { positions: p.positions, normals: p.normals, uv0: p.uv0, uv1: p.uv1, colors: p.colors, tangents: p.tangents, indices: p.indices, groups: [{ material: p.material, start: 0, count: p.indices.length }] };
   }
   const vertexCount = pieces.reduce((n, p) => n + p.positions.length / 3, 0);
   const positions = new Float32Array(vertexCount * 3);
@@ -24,6 +26,7 @@ export function mergePieces(pieces: readonly Piece[]): Merged {
   const uv0 = pieces.some((p) => p.uv0) ? new Float32Array(vertexCount * 2) : null;
   const uv1 = pieces.some((p) => p.uv1) ? new Float32Array(vertexCount * 2) : null;
   const colors = pieces.some((p) => p.colors) ? new Float32Array(vertexCount * 4).fill(1) : null;
+  const tangents = pieces.some((p) => p.tangents) ? new Float32Array(vertexCount * 4) : null;
   const first: number[] = [];
   let at = 0;
   for (const p of pieces) {
@@ -33,6 +36,7 @@ export function mergePieces(pieces: readonly Piece[]): Merged {
     if (uv0 && p.uv0) uv0.set(p.uv0, 2 * at);
     if (uv1 && p.uv1) uv1.set(p.uv1, 2 * at);
     if (colors && p.colors) colors.set(p.colors, 4 * at);
+    if (tangents && p.tangents) tangents.set(p.tangents, 4 * at);
     at += p.positions.length / 3;
   }
   // Materials in order of first use; each group the pieces of one material, in file order.
@@ -49,5 +53,5 @@ export function mergePieces(pieces: readonly Piece[]): Merged {
     });
     groups.push({ material, start: from, count: start - from });
   }
-  return { positions, normals, uv0, uv1, colors, indices, groups };
+  return { positions, normals, uv0, uv1, colors, tangents, indices, groups };
 }

@@ -5,6 +5,7 @@
 import { FLOAT, SHORT, BYTE, UNSIGNED_BYTE, UNSIGNED_SHORT, readAccessor, readIndices, type Expect } from './accessors';
 import { GltfFile, int, object, type Obj } from './fields';
 import type { MeshInstance } from './nodes';
+import { computeTangents } from './tangents';
 
 /** A primitive in model space: per-vertex arrays and triangles (3 indices each). */
 export interface Piece {
@@ -17,6 +18,8 @@ export interface Piece {
   indices: Uint32Array;
   /** materials[i], or null for the default material. */
   material: number | null;
+  /** xyzw per vertex where the material has a normal map (the file's, else computed: tangents.ts), else null. */
+  tangents: Float32Array | null;
 }
 
 /** Coordinates beyond this (after the node's matrix) are a corrupt file, not a model: their triangles are dropped. */
@@ -26,6 +29,7 @@ const POSITION: Expect = { types: ['VEC3'], components: [FLOAT, BYTE, UNSIGNED_B
 const NORMAL: Expect = { types: ['VEC3'], components: [FLOAT, BYTE, SHORT] };
 const TEXCOORD: Expect = { types: ['VEC2'], components: [FLOAT, BYTE, UNSIGNED_BYTE, SHORT, UNSIGNED_SHORT] };
 const COLOR: Expect = { types: ['VEC3', 'VEC4'], components: [FLOAT, UNSIGNED_BYTE, UNSIGNED_SHORT] };
+const TANGENT: Expect = { types: ['VEC4'], components: [FLOAT, BYTE, SHORT] };
 
 const TRIANGLES = 4, TRIANGLE_STRIP = 5, TRIANGLE_FAN = 6;
 
@@ -71,12 +75,38 @@ export function readPiece(file: GltfFile, buffers: readonly Uint8Array[], p: Obj
   const material = p.material === undefined ? null : int(file, p, 'material', path);
   if (material !== null) file.item('materials', material, `${path}.material`);
   const colors = color ? rgba(color.values, color.size) : null;
-  const piece: Piece = { positions, normals: new Float32Array(0), uv0: uv0?.values ?? null, uv1: uv1?.values ?? null, colors, indices, material };
-  if (normal) {
-    piece.normals = transformNormals(normal.values, at.matrix, identity);
-    return piece;
+  const piece: Piece = { positions, normals: new Float32Array(0), uv0: uv0?.values ?? null, uv1: uv1?.values ?? null, colors, indices, material, tangents: null };
+  const shaded = normal ? { ...piece, normals: transformNormals(normal.values, at.matrix, identity) } : flatShaded(piece);
+  const mapUv = normalMapUv(file, material);
+  if (mapUv !== null) {
+    const given = normal ? same('TANGENT', TANGENT) : null;
+    const uvs = mapUv === 0 ? shaded.uv0 : shaded.uv1;
+    if (given) shaded.tangents = transformTangents(given.values, at.matrix);
+    else if (uvs) shaded.tangents = computeTangents(shaded.positions, shaded.normals, uvs, shaded.indices);
   }
-  return flatShaded(piece);
+  return shaded;
+}
+
+/** The UV set a material's normal map reads, or null when it has none. */
+function normalMapUv(file: GltfFile, material: number | null): number | null {
+  if (material === null) return null;
+  const m = file.item('materials', material, `materials[${material}]`);
+  if (m.normalTexture === undefined) return null;
+  return int(file, object(file, m.normalTexture, `materials[${material}].normalTexture`), 'texCoord', `materials[${material}].normalTexture`, 0);
+}
+
+/** The file's tangents through the matrix's 3×3 part, unit; w turned where the matrix mirrors. */
+function transformTangents(v: Float32Array, m: Float64Array): Float32Array {
+  const out = new Float32Array(v.length), mirror = det3(m) < 0 ? -1 : 1;
+  for (let i = 0; i < v.length; i += 4) {
+    const x = m[0] * v[i] + m[4] * v[i + 1] + m[8] * v[i + 2];
+    const y = m[1] * v[i] + m[5] * v[i + 1] + m[9] * v[i + 2];
+    const z = m[2] * v[i] + m[6] * v[i + 1] + m[10] * v[i + 2];
+    const len = Math.sqrt(x * x + y * y + z * z) || 1;
+    out[i] = x / len; out[i + 1] = y / len; out[i + 2] = z / len;
+    out[i + 3] = (v[i + 3] < 0 ? -1 : 1) * mirror;
+  }
+  return out;
 }
 
 /** The triangle list of a primitive's vertex order (glTF's strip and fan rules). */
@@ -214,5 +244,5 @@ function flatShaded(p: Piece): Piece {
     }
   }
   const indices = Uint32Array.from({ length: t.length }, (_, i) => i);
-  return { positions, normals, uv0: expand(p.uv0, 2), uv1: expand(p.uv1, 2), colors: expand(p.colors, 4), indices, material: p.material };
+  return { positions, normals, uv0: expand(p.uv0, 2), uv1: expand(p.uv1, 2), colors: expand(p.colors, 4), indices, material: p.material, tangents: null };
 }
