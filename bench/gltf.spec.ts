@@ -71,7 +71,7 @@ test('bench: glTF decode, ours against three.js GLTFLoader', async ({ page }) =>
   test.setTimeout(30 * 60_000);
   const models = await files();
   for (const [name, bytes] of Object.entries(models)) {
-    await page.route(`**/bench-models/${name}.glb`, (route) => route.fulfill({ body: Buffer.from(bytes), contentType: 'model/gltf-binary' }));
+    await page.route(`**/bench-models/${name}.glb*`, (route) => route.fulfill({ body: Buffer.from(bytes), contentType: 'model/gltf-binary' }));
   }
   await page.goto('/bench/gltf.html');
   await page.waitForFunction(() => '__gltf' in window);
@@ -104,6 +104,20 @@ test('bench: glTF decode, ours against three.js GLTFLoader', async ({ page }) =>
     const mtri = (m: number) => (ours.triangles / 1e3 / m).toFixed(2);
     lines.push(`| ${name} | ${ours.triangles.toLocaleString('en')} | ${(size / 1e6).toFixed(2)} MB | ${ours.median.toFixed(0)} [${ours.iqr.toFixed(0)}] | ${mb(ours.median)} | ${mtri(ours.median)} | ` +
       `${three.median.toFixed(0)} [${three.iqr.toFixed(0)}] | ${mb(three.median)} | ${mtri(three.median)} | ${(three.median / ours.median).toFixed(2)}× |`);
+  }
+  // Load to first frame, fresh URLs (no cache), interleaved pairs.
+  lines.push('', '## Load to first frame (640×360)', '',
+    'Ours: `<glass-object src>` appended to `ready` (fetch, reader, glass, reflection and scene drawn). three.js: `GLTFLoader.load` to a WebGLRenderer frame of the model (antialias, a hemisphere and a directional light), finished by a pixel read. Median [IQR] of the runs, ms.', '',
+    '| file | ours, ms | three.js, ms | three ÷ ours |', '|---|---|---|---|');
+  let run = 0;
+  for (const name of Object.keys(models)) {
+    const first = (who: 'ours' | 'three') => page.evaluate(({ url, who }) =>
+      (window as unknown as { __gltf: { firstFrame(u: string, w: string): Promise<number> } }).__gltf.firstFrame(url, who), { url: `/bench-models/${name}.glb?run=${run++}`, who });
+    for (let w = 0; w < WARM_UPS; w++) { await first('ours'); await first('three'); }
+    const ours: number[] = [], three: number[] = [];
+    for (let r = 0; r < REPETITIONS; r++) { ours.push(await first('ours')); three.push(await first('three')); }
+    const a = summary(ours), b = summary(three);
+    lines.push(`| ${name} | ${a.median.toFixed(0)} [${a.iqr.toFixed(0)}] | ${b.median.toFixed(0)} [${b.iqr.toFixed(0)}] | ${(b.median / a.median).toFixed(2)}× |`);
   }
   // Script a page fetches to show a plain GLB, a meshopt one, a Draco one (gzipped, from dist/ as npm run build leaves it).
   const base = ['rolldown-runtime', 'scene-extras', 'child-elements', 'model-fetch', 'model-loader', 'gltf-model'];
