@@ -37,6 +37,7 @@ export function App() {
       glass-normal="0 0 1"
       glass-size="8 4"
       background="#202020"
+      poster="poster.jpg"
       onready={(e) => console.log(e.detail.width)}
       onframe={(e) => console.log(e.detail.time)}
       onerror={(e) => console.log(e.detail.type)}
@@ -57,6 +58,7 @@ export function App() {
         opacity={0.5}
         texture="wood.png"
         mapping="triplanar"
+        reflect={false}
         onload={(e) => console.log(e.detail.url)}
         onprogress={(e) => console.log(e.detail.loaded)}
         onerror={(e) => console.log(e.detail.message)}
