@@ -29,13 +29,16 @@ const OWN_TESTS = {
     'obj', 'obj-bytes', 'obj-bytes-numbers', 'obj-bytes-suite', 'obj-data', 'obj-estimate', 'obj-fast', 'obj-faults', 'obj-job',
     'obj-load-errors', 'obj-mesh-growth', 'obj-polygons', 'obj-settings', 'obj-warnings', 'mesh-parts', 'sniff-once',
   ],
-  'loaders/gltf': ['gltf-load', 'gltf-errors', 'gltf-data', 'gltf-real-files', 'gltf-compression', 'gltf-model', 'sniff'],
+  'loaders/gltf': [
+    'gltf-load', 'gltf-errors', 'gltf-data', 'gltf-real-files', 'gltf-compression', 'gltf-model', 'gltf-tangents', 'sniff',
+    'gltf-container', 'gltf-fields', 'gltf-buffers', 'gltf-accessors', 'gltf-nodes', 'gltf-primitives',
+  ],
   // Frames of 32×18 (small-frames) judge a mutant of either CPU renderer in a fraction of a second under
   // Stryker's instrumentation, where a rough 160×90 frame takes seconds: the bigger frames of
   // software-baseline, software-reference, software-rough and reference-rough are left to npm test.
   software: [
     'small-frames', 'software-protocol', 'software-clip', 'software-raster', 'software-anisotropic', 'software-glass', 'software-pixels',
-    'software-srgb', 'software-caches', 'software-bands', 'glass-tie', 'mesh-choice', 'scene-turn',
+    'software-srgb', 'software-caches', 'software-bands', 'glass-tie', 'mesh-choice', 'scene-turn', 'software-lighting',
   ],
   reference: [
     'small-frames', 'reference-pixels', 'reference-metrics', 'reference-texture', 'reference-srgb', 'reference-scene', 'bvh',

@@ -30,6 +30,7 @@ export class Lights {
       }
       this.vector[3 * i] = x; this.vector[3 * i + 1] = y; this.vector[3 * i + 2] = z;
       this.point[i] = l.kind === 'point' ? 1 : 0;
+      // Stryker disable next-line EqualityOperator: k = 3 writes NaN to light i + 1's first value (written next) or past the last: unread
       for (let k = 0; k < 3; k++) {
         this.ambient[3 * i + k] = l.ambient[k];
         this.diffuse[3 * i + k] = l.diffuse[k];
@@ -57,9 +58,11 @@ export function blinnPhong(lights: Lights, m: Material, twoSided: boolean, g: Fl
     if (lights.point[i] === 1) {
       lx -= px; ly -= py; lz -= pz;
       const len = Math.sqrt(lx * lx + ly * ly + lz * lz);
+      // Stryker disable next-line ConditionalExpression,EqualityOperator: at len = 0, L = 0 or NaN (0/0): N·L > 0 fails either way, m0 = 0
       if (len > 0) { lx /= len; ly /= len; lz /= len; }
     }
     const nl = nx * lx + ny * ly + nz * lz;
+    // Stryker disable next-line EqualityOperator: at nl = 0 both give 0
     const m0 = nl > 0 ? nl : 0;
     const ia = lights.ambient, id = lights.diffuse;
     ar += ka[0] * ia[3 * i] + kd[0] * id[3 * i] * m0;
@@ -68,7 +71,9 @@ export function blinnPhong(lights: Lights, m: Material, twoSided: boolean, g: Fl
     if (nl > 0) {
       const hx = lx + vx, hy = ly + vy, hz = lz + vz;
       const hl = Math.sqrt(hx * hx + hy * hy + hz * hz);
+      // Stryker disable next-line ConditionalExpression,EqualityOperator: at hl = 0, nh = 0/0 = NaN, which nh > 0 below turns into 0 too
       const nh = hl > 0 ? (nx * hx + ny * hy + nz * hz) / hl : 0;
+      // Stryker disable next-line EqualityOperator: at nh = 0 both give 0
       const p = (nh > 0 ? nh : 0) ** m.shininess;
       const is = lights.specular;
       sr += ks[0] * is[3 * i] * p;

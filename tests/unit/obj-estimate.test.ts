@@ -45,10 +45,30 @@ describe('estimateCapacities', () => {
     expect(only('f 1  2  3  4   \n')).toEqual({
       positions: 0, uvs: 0, normals: 0, corners: 72090, triangles: 3 * (72090 - 2 * 18023), faces: 36045,
     });
-    // Lines that open no statement the reader keeps a list for.
-    for (const block of ['vp 12 3\n', 'vx 12 3\n', 'fo 12 3\n', '# v 1 2\n']) {
+    // Corners of more than one byte, with slashes: one a space before each, 16 bytes a triangle,
+    // 4096 of them: ⌈12288 × 4.4⌉ = 54068 corners, ⌈4096 × 4.4⌉ = 18023 faces.
+    expect(only('f 1/1 2/2 33/33\n')).toEqual({ positions: 0, uvs: 0, normals: 0, corners: 54068, triangles: 0, faces: 18023 });
+    // Lines that open no statement the reader keeps a list for: the second letter of mtllib is
+    // that of vt, the free-form end's that of vn.
+    for (const block of ['vp 12 3\n', 'vx 12 3\n', 'fo 12 3\n', '# v 1 2\n', 'mtllib abcd.mtl\n', 'end\n']) {
       expect(only(block), block).toEqual({ positions: 0, uvs: 0, normals: 0, corners: 0, triangles: 0, faces: 0 });
     }
+  });
+
+  it('spreads the windows over the whole file, the last one reading its end', () => {
+    // 262,144 bytes of 8-byte lines: vertices, then 256 triangles in the last 2 KB. The windows
+    // start 17,203 bytes apart (⌊(262,144 − 4096) / 15⌋), each on 512 lines: the first 15 on
+    // vertices only; the last, from 258,048 to the end, on 256 vertices and the 256 triangles.
+    // 7936 vertices and 256 triangles in 65,536 bytes: the scale is 4.4 again.
+    const c = estimateCapacities(utf8('v 1 2 3\n'.repeat(32_512) + 'f 1 2 3\n'.repeat(256)));
+    expect(c).toEqual({
+      positions: 3 * 34919, // ⌈7936 × 4.4⌉ = ⌈34918.4⌉
+      uvs: 0,
+      normals: 0,
+      corners: 3380, // ⌈768 × 4.4⌉ = ⌈3379.2⌉
+      triangles: 0,
+      faces: 1127, // ⌈256 × 4.4⌉ = ⌈1126.4⌉
+    });
   });
 
   it('makes no guess when no window holds a whole line', () => {

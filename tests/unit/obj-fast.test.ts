@@ -2,11 +2,13 @@
 // into the lists, the weld by position alone for a file of one smoothing group with neither uvs
 // nor normals, and the byte scanner's reads past a file that ends without a line end. Each must
 // give exactly what the general way gives: the bytes against the text (which never takes a fast
-// path), the weld by position against the general weld.
+// path), the weld by position against the general weld. And the corner lists both ways write
+// (corners.ts) by hand: a plain face added as `add` adds it, each corner's uv and normal index.
 import { describe, expect, it, vi } from 'vitest';
 import { decodeText } from '../../src/loaders/decode-text';
 import { parseObj, parseObjBytes } from '../../src/loaders/obj';
 import { buildMesh, newellNormal } from '../../src/loaders/obj/build-mesh';
+import { CornerLists, resolve } from '../../src/loaders/obj/corners';
 import { ByteScanner } from '../../src/loaders/obj/byte-scanner';
 import { readPositionCorners } from '../../src/loaders/obj/position-corners';
 import { readObj } from '../../src/loaders/obj/reader';
@@ -44,6 +46,8 @@ const CASES: [string, string][] = [
   // Bare position indices (position-corners.ts): each read as a double, checked against the vertices read so far.
   ['bare indices: leading zeros, the last vertex and one past, signs, long runs of digits', `${QUAD}f 001 02 0003\nf 2 3 4\nf 1 2 5\n` +
     `f +1 2 3\nf 1 2 ${'9'.repeat(400)}\nf 1 2 ${'0'.repeat(30)}3\nf 4 3 2 1\nv 2 2 0\nf 1 2 5\nf 1 2 0\n`],
+  ['bare indices after the first uv', `${TRI}vt 0 0\nf 1/1 2/1 3/1\nf 1 2 3\n`],
+  ['bare indices after the first normal', `${TRI}vn 0 0 1\nf 1//1 2//1 3//1\nf 3 2 1\n`],
   ['bare indices after a bad texture coordinate or normal', `${TRI}f 1 2 3\nvt x\nf 3 2 1\n${TRI}vn 0 0\nf 4 5 6\nf 1 2 3\n`],
 ];
 
@@ -114,6 +118,19 @@ describe('OBJ fast paths: the same result as the general way', () => {
     expect(readPositionCorners(sc, room, 0, 5, 5)).toBe(5);
   });
 
+  it('reads bare indices of all ten digits up to a CR line end, and hands back digits run into a letter', () => {
+    const room = new Int32Array(8);
+    const sc = new ByteScanner(utf8(`f 1094 23 8765\rf 1 2 3x\r\n`));
+    sc.pos = 1;
+    expect(readPositionCorners(sc, room, 0, 8, 9000)).toBe(3);
+    expect([...room.slice(0, 3)]).toEqual([1093, 22, 8764]);
+    expect(sc.code(sc.pos)).toBe(13);
+    // `3x` is no index, though 3 × 10 + (x − 0) = 102 would be one of 200 vertices.
+    sc.pos = 16;
+    expect(readPositionCorners(sc, room, 0, 8, 200)).toBe(-1);
+    expect(sc.pos).toBe(16);
+  });
+
   it("sums a triangle's Newell normal exactly as the loop over a polygon's edges does", () => {
     // The loop newellNormal runs for a polygon, here on 3 corners: edge last→first, then in order.
     const loop = (pos: Float64Array, corners: Int32Array): number[] => {
@@ -161,5 +178,64 @@ describe('OBJ fast paths: the same result as the general way', () => {
     expect(flat.positions.length / 3).toBe(6);
     const uv = parseObj(`${QUAD}vt 0 0\nvt 1 1\nf 1/1 2/1 3/1\nf 1/2 3/1 4/1\n`);
     expect(uv.positions.length / 3).toBe(5);
+  });
+});
+
+/** A list's elements (up to its length); null for none. */
+const elements = (list: { data: Int32Array; length: number } | null) => (list ? [...list.data.slice(0, list.length)] : null);
+
+describe('the corner lists (corners.ts)', () => {
+  it('resolves 1-based and negative indices, −2 for any outside the elements read so far', () => {
+    expect([1, 3, -1, -3].map((i) => resolve(i, 3))).toEqual([0, 2, 2, 0]);
+    expect([0, 4, -4, -6].map((i) => resolve(i, 3))).toEqual([-2, -2, -2, -2]);
+  });
+
+  it('starts the uv and normal lists at the first corner with one: −1 for each corner without', () => {
+    const c = new CornerLists(4);
+    expect(c.positionsOnly()).toBe(true);
+    // add(v, t, n, and the vertices, uvs and normals read so far): 0 for no uv or normal.
+    expect([c.add(1, 0, 0, 3, 2, 2), c.add(-1, 0, 0, 3, 2, 2)]).toEqual(['', '']);
+    expect([elements(c.corners), c.uvs, c.normals, c.positionsOnly()]).toEqual([[0, 2], null, null, true]);
+    expect(c.add(2, 2, 0, 3, 2, 2)).toBe('');
+    expect([elements(c.uvs), c.normals, c.positionsOnly()]).toEqual([[-1, -1, 1], null, false]);
+    expect([c.add(3, 0, -1, 3, 2, 2), c.add(1, 0, 0, 3, 2, 2)]).toEqual(['', '']);
+    expect([elements(c.corners), elements(c.uvs), elements(c.normals)]).toEqual([
+      [0, 2, 1, 2, 0], [-1, -1, 1, -1, -1], [-1, -1, -1, 1, -1],
+    ]);
+    // A normal first, no uv.
+    const n = new CornerLists(4);
+    expect(n.add(1, 0, 2, 3, 2, 2)).toBe('');
+    expect([n.uvs, elements(n.normals), n.positionsOnly()]).toEqual([null, [1], false]);
+  });
+
+  it("forgets a dropped face's corners from every list", () => {
+    const c = new CornerLists(4);
+    for (const v of [1, 2, 3]) expect(c.add(v, 1, 1, 3, 1, 1)).toBe('');
+    c.truncate(1);
+    expect([elements(c.corners), elements(c.uvs), elements(c.normals)]).toEqual([[0], [0], [0]]);
+  });
+
+  it('writes a plain face as add would; else false, the lists as they were', () => {
+    // Raw v, t, n of each corner, 0 for none.
+    const face = (...corners: number[]) => new Int32Array(corners);
+    const c = new CornerLists(4);
+    expect(c.addPlain(face(1, 0, 0, -1, 0, 0, 2, 0, 0), 3, 3, 0, 0)).toBe(true);
+    expect([elements(c.corners), c.uvs, c.normals]).toEqual([[0, 2, 1], null, null]);
+    // A corner out of range, or one that would start the uv or the normal list: add's to do.
+    for (const raw of [face(1, 0, 0, 4, 0, 0), face(1, 0, 0, 2, 1, 0), face(1, 0, 0, 2, 0, 1)]) {
+      expect(c.addPlain(raw, 2, 3, 1, 1), `${raw}`).toBe(false);
+      expect(c.corners.length).toBe(3);
+    }
+    // Once both lists are there, corners with and without a uv or normal.
+    expect(c.add(1, 1, 1, 3, 2, 2)).toBe('');
+    expect(c.addPlain(face(2, 2, 0, 3, 0, -1, 1, -2, 2), 3, 3, 2, 2)).toBe(true);
+    expect([elements(c.corners), elements(c.uvs), elements(c.normals)]).toEqual([
+      [0, 2, 1, 0, 1, 2, 0], [-1, -1, -1, 0, 1, -1, 0], [-1, -1, -1, 0, -1, 1, 1],
+    ]);
+    // A uv or a normal out of range.
+    for (const raw of [face(1, 3, 1), face(1, 1, 3), face(1, -3, 1), face(1, 1, -3)]) {
+      expect(c.addPlain(raw, 1, 3, 2, 2), `${raw}`).toBe(false);
+      expect([c.corners.length, c.uvs?.length, c.normals?.length]).toEqual([7, 7, 7]);
+    }
   });
 });

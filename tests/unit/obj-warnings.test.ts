@@ -90,6 +90,17 @@ describe('OBJ warnings: faces', () => {
     expect([...parsed(text).indices]).toEqual([0, 1, 2]);
   });
 
+  it('a corner on the first texture coordinate or normal, when that one is bad', () => {
+    const text = `${TRI}vt y\nvn z 0 1\nvt 0 0\nvn 0 0 1\nf 1/1 2/2 3/2\nf 1//1 2//2 3//2\nf 1/2/2 2/2/2 3/2/2\n`;
+    expect(warnings(text)).toEqual([
+      [4, 'texture coordinate that is not a number ("vt y"); faces using it are dropped'],
+      [5, 'normal with a value that is not a number; faces using it are dropped'],
+      [8, 'texture coordinate 1 (line 4) is not usable; face dropped'],
+      [9, 'normal 1 (line 5) is not usable; face dropped'],
+    ]);
+    expect([...parsed(text).indices]).toEqual([0, 1, 2]);
+  });
+
   it('a polygon of no area, with its corner count', () => {
     expect(warnings(`${TRI}v 2 0 0\nv 3 0 0\nf 1 2 4 5\nf 1 2 3\n`)).toEqual([
       [6, 'face of 4 vertices with no area (its corners are repeated or on one line); face dropped'],

@@ -74,6 +74,7 @@ export function readAccessor(file: GltfFile, buffers: readonly Uint8Array[], ind
 export function readIndices(file: GltfFile, buffers: readonly Uint8Array[], index: number, from: string, vertexCount: number): Uint32Array {
   const { values } = readAccessor(file, buffers, index, from, { types: ['SCALAR'], components: [UNSIGNED_BYTE, UNSIGNED_SHORT, UNSIGNED_INT] });
   const out = new Uint32Array(values.length);
+  // Stryker disable next-line EqualityOperator: values[length] is undefined, never >= the vertex count, and out[length] is no element
   for (let i = 0; i < values.length; i++) {
     const v = values[i];
     if (v >= vertexCount) file.fail(`accessors[${index}]`, `accessors[${index}][${i}] is ${v}: past the primitive's ${vertexCount} vertices`);
@@ -109,6 +110,7 @@ function readInto(out: Float32Array, first: number, bytes: Uint8Array, offset: n
   const elementBytes = l.size * l.bytes;
   let source = bytes.buffer as ArrayBuffer;
   let start = bytes.byteOffset + offset;
+  // Stryker disable next-line ConditionalExpression,ArithmeticOperator: packing an aligned accessor too reads the same values
   if (start % l.bytes !== 0 || stride % l.bytes !== 0) {
     // Unaligned (a hand-made file's offset or stride): its elements copied once, packed and aligned.
     const packed = new Uint8Array(count * elementBytes);
@@ -120,10 +122,13 @@ function readInto(out: Float32Array, first: number, bytes: Uint8Array, offset: n
   const step = stride / l.bytes;
   const src = new ARRAYS[l.componentType as keyof typeof ARRAYS](source, start, step * (count - 1) + l.size);
   const scale = l.normalized ? normalizer(l.componentType) : 1;
+  // Stryker disable next-line ConditionalExpression: a normalized unsigned value is never below -1 (FLOAT and UNSIGNED_INT are refused)
   const signed = l.normalized && (l.componentType === BYTE || l.componentType === SHORT);
+  // Stryker disable next-line ArithmeticOperator,EqualityOperator: first is 0 in every call; an extra k writes NaN past out's end
   for (let k = 0, o = first * l.size; k < count; k++) {
     for (let c = 0, s = k * step; c < l.size; c++, o++) {
       const v = src[s + c] * scale;
+      // Stryker disable next-line EqualityOperator: at v = -1 both branches give -1
       out[o] = signed && v < -1 ? -1 : v;
     }
   }
@@ -153,8 +158,10 @@ function applySparse(file: GltfFile, buffers: readonly Uint8Array[], s: Obj, pat
   readSparsePart(file, buffers, indices, `${path}.indices`, at, n, indexLayout);
   const replaced = new Float32Array(n * l.size);
   readSparsePart(file, buffers, values, `${path}.values`, replaced, n, l);
+  // Stryker disable next-line EqualityOperator: at i = n the target is undefined (no check fails) and an empty subarray is set
   for (let i = 0; i < n; i++) {
     const target = at[i];
+    // Stryker disable next-line ConditionalExpression,EqualityOperator: at i = 0, at[-1] is undefined: target <= undefined is false
     if (target >= count || (i > 0 && target <= at[i - 1])) {
       file.fail(`${path}.indices`, `${path}.indices[${i}] is ${target}: indices must increase and stay below ${count}`);
     }

@@ -64,6 +64,7 @@ export function optionalObject(file: GltfFile, o: Obj, key: string, path: string
 export function num(file: GltfFile, o: Obj, key: string, path: string, fallback?: number, min = -Infinity, max = Infinity): number {
   const v = o[key];
   if (v === undefined && fallback !== undefined) return fallback;
+  // Stryker disable next-line ConditionalExpression: without the typeof test, Number.isFinite is false for every non-number too
   if (typeof v !== 'number' || !Number.isFinite(v)) file.fail(`${path}.${key}`, `${path}.${key} is ${shownValue(v)}, not a number`);
   if (v < min || v > max) file.fail(`${path}.${key}`, `${path}.${key} is ${v}, outside [${min}, ${max}]`);
   return v;
@@ -84,7 +85,9 @@ export function optionalInt(file: GltfFile, o: Obj, key: string, path: string): 
 /** A fixed-length array of finite numbers, or `fallback` when absent. */
 export function numbers(file: GltfFile, o: Obj, key: string, path: string, length: number, fallback: readonly number[]): number[] {
   const v = o[key];
+  // Stryker disable next-line MethodExpression: every caller passes a fresh literal or copies the result, and none writes to it
   if (v === undefined) return fallback.slice();
+  // Stryker disable next-line ConditionalExpression: without the typeof test, Number.isFinite is false for every non-number too
   if (!Array.isArray(v) || v.length !== length || !v.every((x) => typeof x === 'number' && Number.isFinite(x))) {
     file.fail(`${path}.${key}`, `${path}.${key} is not an array of ${length} numbers`);
   }

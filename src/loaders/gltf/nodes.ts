@@ -26,11 +26,13 @@ function roots(file: GltfFile): { roots: number[]; from: string } {
   const child = new Uint8Array(file.list('nodes').length);
   file.list('nodes').forEach((n, i) => {
     const node = object(file, n, `nodes[${i}]`);
+    // Stryker disable next-line ConditionalExpression,EqualityOperator: child[c] for c >= child.length is past the typed array's end: a no-op
     if (node.children !== undefined) for (const c of indexList(file, node, 'children', `nodes[${i}]`)) if (c < child.length) child[c] = 1;
   });
   const all: number[] = [];
   child.forEach((isChild, i) => { if (!isChild) all.push(i); });
   if (all.length > 0) file.warn('scenes', 'the file has no scene: every node that is no one\'s child is drawn');
+  // Stryker disable next-line StringLiteral: `from` names only a root that is missing or reached twice, and these roots are neither
   return { roots: all, from: 'nodes' };
 }
 
@@ -45,6 +47,7 @@ export function meshInstances(file: GltfFile): MeshInstance[] {
   while (stack.length > 0) {
     const { node: index, parent, from: where } = stack.pop()!;
     const path = `nodes[${index}]`;
+    // Stryker disable next-line ConditionalExpression,EqualityOperator: file.item below refuses the same index with the same path and message
     if (index >= count) file.fail(where, `${path} does not exist (nodes has ${count})`);
     if (seen[index]) file.fail(where, `${path} is reached a second time: the node graph has a cycle, or a node with two parents`);
     seen[index] = 1;
@@ -95,7 +98,9 @@ export function localMatrix(file: GltfFile, node: Obj, path: string): Float64Arr
 /** a × b, column-major. */
 export function multiply(a: Float64Array, b: Float64Array): Float64Array {
   const out = new Float64Array(16);
+  // Stryker disable next-line EqualityOperator: c = 4 writes only past out's 16 elements, a no-op
   for (let c = 0; c < 4; c++) {
+    // Stryker disable next-line EqualityOperator: r = 4 writes the next column's first element before it is written, or past the end
     for (let r = 0; r < 4; r++) {
       out[4 * c + r] = a[r] * b[4 * c] + a[4 + r] * b[4 * c + 1] + a[8 + r] * b[4 * c + 2] + a[12 + r] * b[4 * c + 3];
     }

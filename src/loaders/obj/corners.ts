@@ -28,6 +28,7 @@ export class CornerLists {
     if (vi < 0) return `vertex index ${v} is outside the ${vCount} vertices read so far`;
     if (t !== 0 && ti < 0) return `texture coordinate index ${t} is outside the ${tCount} read so far`;
     if (nn !== 0 && ni < 0) return `normal index ${nn} is outside the ${nCount} read so far`;
+    // Stryker disable next-line ConditionalExpression: with no bad element, unusable() finds none in its empty maps: ''
     if (this.anyBad) {
       const unusable = this.unusable(vi, ti, ni);
       if (unusable !== '') return unusable;
@@ -80,6 +81,7 @@ export class CornerLists {
   /** A list of −1 for each corner before the one just pushed: the first uv or normal of the file. */
   private absentSoFar(): I32List {
     const list = new I32List(this.corners.data.length);
+    // Stryker disable next-line ArithmeticOperator: the 2 slots more filled are written by push before length lets them be read
     list.data.fill(-1, 0, this.corners.length - 1);
     list.length = this.corners.length - 1;
     return list;
@@ -89,7 +91,9 @@ export class CornerLists {
   private unusable(vi: number, ti: number, ni: number): string {
     const badLine = this.badLine;
     if (badLine[0].has(vi)) return `vertex ${vi + 1} (line ${badLine[0].get(vi)}) is not usable`;
+    // Stryker disable next-line ConditionalExpression: markBad's indices count from 0: ti = −1 (no uv) is never bad
     if (ti >= 0 && badLine[1].has(ti)) return `texture coordinate ${ti + 1} (line ${badLine[1].get(ti)}) is not usable`;
+    // Stryker disable next-line ConditionalExpression: the same (no normal −1 is ever bad)
     if (ni >= 0 && badLine[2].has(ni)) return `normal ${ni + 1} (line ${badLine[2].get(ni)}) is not usable`;
     return '';
   }
@@ -97,6 +101,8 @@ export class CornerLists {
 
 /** 1-based or negative (relative) OBJ index → 0-based, or −2 when outside 0 .. count − 1. */
 export function resolve(index: number, count: number): number {
+  // Stryker disable next-line EqualityOperator: index 0 gives −2 below (index !== 0) from either branch
   const i = index > 0 ? index - 1 : count + index;
+  // Stryker disable next-line ConditionalExpression: index 0 takes i = count above, which i < count refuses too
   return index !== 0 && i >= 0 && i < count ? i : -2;
 }
