@@ -14,6 +14,7 @@ import draco3d from 'draco3d';
 import { test, expect } from '../tests/e2e/fixtures';
 import { dragonMesh, type DragonResolution } from '../tests/data/make-obj';
 import { summary } from './stats';
+import { smoothNormals } from '../tests/e2e/helpers/gltf-models';
 import { graph, nameOf } from '../scripts/chunk-graph.mjs';
 
 const SMOKE = process.env.BENCH_SMOKE === '1';
@@ -24,18 +25,8 @@ const RESOLUTION: DragonResolution = SMOKE ? 4 : 2;
 /** The dragon as a document: float positions, area-weighted smooth normals, 32-bit indices. */
 function dragonDocument(): Document {
   const { positions, faces } = dragonMesh(RESOLUTION);
-  const normals = new Float32Array(positions.length);
-  const indices = new Uint32Array(faces.length * 3);
-  faces.forEach(([a, b, c], f) => {
-    indices.set([a, b, c], 3 * f);
-    const u = [0, 1, 2].map((k) => positions[3 * b + k] - positions[3 * a + k]), v = [0, 1, 2].map((k) => positions[3 * c + k] - positions[3 * a + k]);
-    const n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
-    for (const i of [a, b, c]) for (let k = 0; k < 3; k++) normals[3 * i + k] += n[k];
-  });
-  for (let i = 0; i < normals.length; i += 3) {
-    const l = Math.hypot(normals[i], normals[i + 1], normals[i + 2]) || 1;
-    for (let k = 0; k < 3; k++) normals[i + k] /= l;
-  }
+  const normals = smoothNormals(positions, faces);
+  const indices = Uint32Array.from(faces.flat());
   const doc = new Document();
   const buffer = doc.createBuffer();
   const acc = (type: 'VEC3' | 'SCALAR', a: Float32Array<ArrayBuffer> | Uint32Array<ArrayBuffer>) => doc.createAccessor().setType(type).setArray(a).setBuffer(buffer);

@@ -8,7 +8,7 @@ import { readMaterials, type GltfMaterial } from './materials';
 import { meshInstances } from './nodes';
 import { positionCount, readPiece, type Piece } from './primitives';
 import { readImages, type GltfImage } from './images';
-import { mergePieces } from './merge';
+import { mergePieces, type Merged } from './merge';
 import { DECODERS, type GltfDecoders } from './decoders';
 import { decodeMeshopt, meshoptViews, type MeshoptDecoderLike } from './meshopt';
 import { decodeDraco, dracoPrimitives } from './draco';
@@ -27,21 +27,8 @@ export const SUPPORTED_EXTENSIONS: readonly string[] = [
 /** Vertices a model may have once its nodes are flattened: beyond, the file is refused before anything is read. */
 export const MAX_VERTICES = 1 << 23;
 
-export interface GltfResult {
-  /** xyz per vertex, in the model's space (node matrices applied). */
-  positions: Float32Array;
-  /** Unit xyz per vertex: the file's, or flat where it has none. */
-  normals: Float32Array;
-  /** TEXCOORD_0 as glTF has it (v = 0 the image's top row), or null when no primitive has one. */
-  uv0: Float32Array | null;
-  uv1: Float32Array | null;
-  /** COLOR_0 as linear RGBA, or null when no primitive has one (1 where one primitive lacks it). */
-  colors: Float32Array | null;
-  /** TANGENT (or computed, docs/gltf.md#tangents) xyzw where a material has a normal map, else null. */
-  tangents: Float32Array | null;
-  indices: Uint32Array;
-  /** One index range per material (materials[i], or null: the default material), in order of first use. */
-  groups: { material: number | null; start: number; count: number }[];
+/** The model's geometry (merge.ts: one vertex buffer, an index range per material) with its materials, images and warnings. */
+export interface GltfResult extends Merged {
   materials: GltfMaterial[];
   images: GltfImage[];
   warnings: GltfWarning[];

@@ -3,14 +3,19 @@
 import type { Piece } from './primitives';
 
 export interface Merged {
+  /** xyz per vertex, in the model's space (node matrices applied). */
   positions: Float32Array;
+  /** Unit xyz per vertex: the file's, or flat where it has none. */
   normals: Float32Array;
+  /** TEXCOORD_0 as glTF has it (v = 0 the image's top row), or null when no primitive has one. */
   uv0: Float32Array | null;
   uv1: Float32Array | null;
+  /** COLOR_0 as linear RGBA, or null when no primitive has one (1 where one primitive lacks it). */
   colors: Float32Array | null;
   /** xyzw per vertex where some primitive's material has a normal map (zeros for the others), else null. */
   tangents: Float32Array | null;
   indices: Uint32Array;
+  /** One index range per material (materials[i], or null: the default material), in order of first use. */
   groups: { material: number | null; start: number; count: number }[];
 }
 

@@ -52,6 +52,21 @@ export async function productGlb(): Promise<Uint8Array> {
   return new NodeIO().writeBinary(doc);
 }
 
+/** Area-weighted vertex normals of a triangle mesh (xyz per vertex, faces as index triples), unit. */
+export function smoothNormals(positions: ArrayLike<number>, faces: readonly number[][]): Float32Array<ArrayBuffer> {
+  const normals = new Float32Array(positions.length);
+  for (const [a, b, c] of faces) {
+    const u = [0, 1, 2].map((k) => positions[3 * b + k] - positions[3 * a + k]), v = [0, 1, 2].map((k) => positions[3 * c + k] - positions[3 * a + k]);
+    const n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+    for (const i of [a, b, c]) for (let k = 0; k < 3; k++) normals[3 * i + k] += n[k];
+  }
+  for (let i = 0; i < normals.length; i += 3) {
+    const l = Math.hypot(normals[i], normals[i + 1], normals[i + 2]) || 1;
+    for (let k = 0; k < 3; k++) normals[i + k] /= l;
+  }
+  return normals;
+}
+
 /**
  * The Stanford bunny (the `bunny` package) as a GLB "product": smooth normals computed here (area
  * weighted), a gold base colour, a node scaling it to 1.2 units tall and turning it 30° about +Y,
@@ -60,16 +75,7 @@ export async function productGlb(): Promise<Uint8Array> {
 export async function bunnyGlb(): Promise<Uint8Array> {
   const { positions, faces: cells } = bunnyMesh();
   const p = Array.from({ length: positions.length / 3 }, (_, i) => [positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]]);
-  const normals = new Float32Array(p.length * 3);
-  for (const [a, b, c] of cells) {
-    const u = [0, 1, 2].map((k) => p[b][k] - p[a][k]), v = [0, 1, 2].map((k) => p[c][k] - p[a][k]);
-    const n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
-    for (const i of [a, b, c]) for (let k = 0; k < 3; k++) normals[3 * i + k] += n[k];
-  }
-  for (let i = 0; i < normals.length; i += 3) {
-    const l = Math.hypot(normals[i], normals[i + 1], normals[i + 2]) || 1;
-    for (let k = 0; k < 3; k++) normals[i + k] /= l;
-  }
+  const normals = smoothNormals(positions, cells);
   const doc = new Document();
   const buffer = doc.createBuffer();
   const acc = (type: 'VEC3' | 'SCALAR', a: Float32Array<ArrayBuffer> | Uint16Array<ArrayBuffer>) => doc.createAccessor().setType(type).setArray(a).setBuffer(buffer);
