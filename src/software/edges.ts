@@ -26,14 +26,18 @@ export function edgeFunctions(e: Float64Array, fx: Float64Array, fy: Float64Arra
   e[6] = ax0 * SUB; e[7] = ax1 * SUB; e[8] = ax2 * SUB;
   // Top-left rule (y down, interior on the right of each edge as walked): a top edge runs
   // exactly horizontally rightwards, a left edge upwards. Pixels on other edges are left out.
+  // Stryker disable next-line EqualityOperator: ax0 = 0 = ay0 is an edge of no length, of a triangle of no area: raster.ts scans none
   e[9] = (ay0 === 0 && ax0 > 0) || ay0 < 0 ? 0 : -1;
+  // Stryker disable next-line EqualityOperator: the same for ax1 = 0 = ay1
   e[10] = (ay1 === 0 && ax1 > 0) || ay1 < 0 ? 0 : -1;
+  // Stryker disable next-line EqualityOperator: the same for ax2 = 0 = ay2
   e[11] = (ay2 === 0 && ax2 > 0) || ay2 < 0 ? 0 : -1;
   return e;
 }
 
 /** First k ≥ 0 (one early) where e + k·step ≥ 0 can hold; a value past any span when it never can. */
 export function runStart(e: number, step: number): number {
+  // Stryker disable next-line EqualityOperator: at step = 0 (e < 0) it gives ⌈∞⌉ − 1 = ∞, past any span as 1 << 30 is
   if (step > 0) return e >= 0 ? 0 : Math.ceil(-e / step) - 1;
   return e >= 0 ? 0 : 1 << 30;
 }

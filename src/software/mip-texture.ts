@@ -66,7 +66,9 @@ export class MipTexture {
       // The anisotropy: Pmax over the footprint's width across the major axis, |det|/Pmax. A
       // zero-area footprint gives Infinity (the most taps); a NaN or infinite derivative, NaN (one tap).
       const ratio = rho2 / Math.abs(sx * ty - tx * sy);
+      // Stryker disable next-line EqualityOperator: at ratio = 1, r = 1: one tap at (u, v), ρ² as it was: the isotropic read
       if (ratio > 1) {
+        // Stryker disable next-line EqualityOperator: at ratio = MAX_ANISOTROPY both give it
         const r = ratio < MAX_ANISOTROPY ? ratio : MAX_ANISOTROPY;
         n = Math.round(r) | 0;
         rho2 /= r * r;
@@ -74,17 +76,21 @@ export class MipTexture {
       }
     }
     // λ = ½·log2(ρ²); NaN (a degenerate derivative) reads the base level.
+    // Stryker disable next-line ConditionalExpression,EqualityOperator: ρ² ≤ 1 or NaN gives λ ≤ 0 or NaN: level 0 below, as λ = 0
     const lambda = rho2 > 1 ? 0.5 * Math.log2(rho2) : 0;
     const top = levels.length - 1;
     // Both start as numbers (an unassigned `let` would make them tagged, boxed on every write).
     let first = 0, f = 0;
+    // Stryker disable next-line EqualityOperator: at λ = top the branch below gives first = top, f = 0 too
     if (lambda >= top) first = top;
+    // Stryker disable next-line ConditionalExpression,EqualityOperator: λ ≤ 0 here is λ = 0: first = 0, f = 0 either way
     else if (lambda > 0) { first = Math.floor(lambda) | 0; f = lambda - first; }
     // Sums in locals (one add per tap for grey, not three stores), in the order the taps come.
     let r = 0, g = 0, b = 0;
     const u = a[0], v = a[1], grey = this.channels === 1, share = 1 / n;
     for (let l = first, levelWeight = 1 - f; l <= first + 1 && levelWeight > 0; l++, levelWeight = f) {
       const level = levels[l], W = level.width, H = level.height, data = level.data;
+      // Stryker disable next-line ConditionalExpression: as false, powers of two take the remainder: the mask's texel
       const weight = levelWeight * share, pow2W = (W & (W - 1)) === 0, pow2H = (H & (H - 1)) === 0;
       for (let k = 0; k < n; k++) {
         // The midpoint of part k of n along the major axis, −½..½ of it (0 with one tap).
@@ -94,7 +100,9 @@ export class MipTexture {
         const x = s - fi, y = t - fj;
         // REPEAT: a mask for powers of two, a remainder otherwise.
         let i0: number, j0: number;
+        // Stryker disable next-line ConditionalExpression: pow2W false: the remainder of a power of two is the mask's texel
         if (pow2W) i0 = fi & (W - 1); else { i0 = fi % W; if (i0 < 0) i0 += W; }
+        // Stryker disable next-line ConditionalExpression: the same for pow2H
         if (pow2H) j0 = fj & (H - 1); else { j0 = fj % H; if (j0 < 0) j0 += H; }
         const i1 = i0 + 1 === W ? 0 : i0 + 1, j1 = j0 + 1 === H ? 0 : j0 + 1;
         const w00 = (1 - x) * (1 - y) * weight, w10 = x * (1 - y) * weight, w01 = (1 - x) * y * weight, w11 = x * y * weight;
@@ -119,10 +127,15 @@ function halve(level: Level, channels: number): Level {
   const W = level.width, H = level.height, src = level.data;
   const w = Math.max(1, W >> 1), h = Math.max(1, H >> 1);
   const data = new Float32Array(w * h * channels);
+  // Stryker disable next-line EqualityOperator: j = h writes past data's end, which a Float32Array drops
   for (let j = 0; j < h; j++) {
+    // Stryker disable next-line ArithmeticOperator: 2j ≤ H − 1 < H + 1: j0 = 2j either way
     const j0 = Math.min(2 * j, H - 1), j1 = Math.min(2 * j + 1, H - 1);
+    // Stryker disable next-line EqualityOperator: i = w writes the next row's first texel, written again with that row (or past the end)
     for (let i = 0; i < w; i++) {
+      // Stryker disable next-line ArithmeticOperator: 2i ≤ W − 1 < W + 1: i0 = 2i either way
       const i0 = Math.min(2 * i, W - 1), i1 = Math.min(2 * i + 1, W - 1);
+      // Stryker disable next-line EqualityOperator: k = channels: the next texel's first value, written again with it (or past the end)
       for (let k = 0; k < channels; k++) {
         data[(j * w + i) * channels + k] = 0.25 * (
           src[(j0 * W + i0) * channels + k] + src[(j0 * W + i1) * channels + k]
@@ -146,6 +159,7 @@ export function proceduralMipTexture(space: ColorSpace): MipTexture {
   const rgba = proceduralTexture(), level = byteTable(space);
   const n = TEXTURE_SIZE;
   const grey = new Float32Array(n * n);
+  // Stryker disable next-line EqualityOperator: i = grey.length writes past its end, which a Float32Array drops
   for (let i = 0; i < grey.length; i++) grey[i] = level[rgba[4 * i]];
   return (procedural[space] = new MipTexture(1, n, n, grey, space === 'srgb'));
 }
@@ -160,9 +174,12 @@ export function imageMipTexture(image: DecodedImage, space: ColorSpace): MipText
   const { width: w, height: h, data } = image;
   if (!(w >= 1 && h >= 1 && Number.isInteger(w) && Number.isInteger(h)) || data.length < w * h * 4) return null;
   const rgb = new Float32Array(w * h * 3), level = byteTable(space);
+  // Stryker disable next-line EqualityOperator: j = h writes past rgb's end, which a Float32Array drops
   for (let j = 0; j < h; j++) {
     const row = (h - 1 - j) * w;
+    // Stryker disable next-line EqualityOperator: i = w writes the next row's first texel, written again with that row (or past the end)
     for (let i = 0; i < w; i++) {
+      // Stryker disable next-line EqualityOperator: k = 3 writes the next texel's red, written again with it (or past the end)
       for (let k = 0; k < 3; k++) rgb[(j * w + i) * 3 + k] = level[data[(row + i) * 4 + k]];
     }
   }

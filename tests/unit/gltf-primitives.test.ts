@@ -142,6 +142,11 @@ describe('placed by the node matrix', () => {
     expect(round(r.normals, 5)).toEqual(round([...unit([-6, 7, -3]), ...unit([-6, 7, -3]), ...unit([-6, 7, -3])], 5));
   });
 
+  it('keeps a zero normal zero under a matrix', () => {
+    const r = read(model({ POSITION: [3, P], NORMAL: [3, [0, 0, 0, 1, 0, 0, 0, 0, 0]] }, [0, 1, 2]), M)!;
+    expect(round(r.normals, 5)).toEqual(round([0, 0, 0, ...unit([18, -2, -10]), 0, 0, 0], 5));
+  });
+
   it('keeps the winding under a matrix that flattens the model (determinant 0)', () => {
     const flat = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1];
     const r = read(model({ POSITION: [3, TRI], NORMAL: [3, [0, 0, 1, 0, 0, 1, 0, 0, 1]] }, [0, 1, 2]), flat)!;
@@ -168,7 +173,7 @@ describe('positions and colours', () => {
     const f = Math.fround(big);
     expect(f).toBeLessThanOrEqual(big);
     const positions = [0, 0, 0, 1, 0, 0, 0, 1, 0, f, 0, 0, 2e15, 0, 0];
-    const r = read(model({ POSITION: [3, positions], NORMAL: [3, new Array(15).fill(0).map((_, i) => (i % 3 === 2 ? 1 : 0))] }, [0, 1, 2, 3, 1, 2, 4, 1, 2, 2, 1, 0]))!;
+    const r = read(model({ POSITION: [3, positions], NORMAL: [3, new Array(15).fill(0).map((_, i) => (i % 3 === 2 ? 1 : 0))] }, [0, 1, 2, 3, 1, 2, 1, 2, 4, 2, 1, 0]))!;
     expect(Array.from(r.indices)).toEqual([0, 1, 2, 3, 1, 2, 2, 1, 0]);
   });
 

@@ -123,6 +123,15 @@ describe('parseObj: never hangs', { timeout: 30_000 }, () => {
     expect(r.warnings.every((w) => w.message.length < 200)).toBe(true);
   });
 
+  it("leaves nothing of a dropped face's corners: the next face reads its own", () => {
+    // Vertex 4 is (1, 1, 0); the face kept, 4 3 2, gives (1, 1, 0), (0, 1, 0), (1, 0, 0) in that order.
+    for (const dropped of ['f 1 2', 'f 1 2 3 9']) {
+      const r = parseObj(`${TRI}v 1 1 0\n${dropped}\nf 4 3 2\n`, { url: 'model.obj' });
+      expect([...r.positions], dropped).toEqual([1, 1, 0, 0, 1, 0, 1, 0, 0]);
+      expect([...r.indices], dropped).toEqual([0, 1, 2]);
+    }
+  });
+
   it('drops a 10 MB face (5 million corners) with a warning naming its line, keeping the rest', () => {
     // Four collinear vertices walked 1.25 million times: every triangle of it has zero area.
     const walks = instrumented ? 16_385 : 1_250_000; // 65,540 corners under StrykerJS: just past the most
@@ -132,6 +141,7 @@ describe('parseObj: never hangs', { timeout: 30_000 }, () => {
     // Beside a triangle: that triangle alone is drawn, and the warning names the line and why.
     const r = parseObj(`${oneFace}\nv 0 1 0\nf 1 2 5\n`, { url: 'model.obj' });
     expect([...r.indices]).toEqual([0, 1, 2]);
+    expect([...r.positions]).toEqual([0, 0, 0, 1, 0, 0, 0, 1, 0]); // vertices 1, 2 and 5: none of the dropped face's
     expect(r.warnings).toEqual([{ line: 5, message: `face of ${4 * walks} vertices, more than the 65536 a face may have; face dropped` }]);
   });
 

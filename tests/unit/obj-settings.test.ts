@@ -1,7 +1,9 @@
 // The OBJ statements that set what the next faces are drawn with (src/loaders/obj/settings.ts):
-// smoothing groups by name, coming back to one, turning smoothing off; materials by name.
+// smoothing groups by name, coming back to one, turning smoothing off; materials by name; and the
+// reader's runs of faces where either changes.
 import { describe, expect, it } from 'vitest';
 import { parseObj } from '../../src/loaders/obj';
+import { readObj } from '../../src/loaders/obj/reader';
 
 /** Two triangles sharing the edge 1–3 of a bent square: a vertex a position when smoothed together. */
 const BENT = 'v 0 0 0\nv 1 0 0\nv 1 1 1\nv 0 1 0\n';
@@ -49,5 +51,13 @@ describe('usemtl', () => {
   it('keeps a material name with spaces, and one run for repeated usemtl of the same name', () => {
     const r = parseObj(`${BENT}usemtl red glass\nf 1 2 3\nusemtl red glass\nf 1 3 4\n`);
     expect(r.groups).toEqual([{ material: 'red glass', start: 0, count: 6 }]);
+  });
+});
+
+describe('runs of faces (reader.ts)', () => {
+  it('starts a run only where the smoothing slot or the material changes: first face, slot, material', () => {
+    // Faces 0–1 smoothed (slot 0), no material (0); face 2 material a (1); faces 3–4 in s 1 (slot 1); face 5 flat (−1).
+    const raw = readObj(`${BENT}f 1 2 3\nf 1 3 4\nusemtl a\nf 1 2 3\ns 1\nf 1 3 4\nf 1 2 3\ns off\nf 1 3 4\n`);
+    expect([...raw.runs.data.slice(0, raw.runs.length)]).toEqual([0, 0, 0, 2, 0, 1, 3, 1, 1, 5, -1, 1]);
   });
 });

@@ -24,6 +24,11 @@ describe('OBJ warnings: elements', () => {
       [5, 'vertex with 2 of its 3 coordinates; faces using it are dropped'],
     ]);
     expect(warnings(`${TRI}v\nf 1 2 3\n`)).toEqual([[4, 'vertex with 0 of its 3 coordinates; faces using it are dropped']]);
+    // A letter right after an exponent's digits, or after a number's.
+    expect(warnings(`${TRI}v 1e5x 0 0\nv 0 2: 0\nf 1 2 3\n`)).toEqual([
+      [4, 'vertex with a coordinate that is not a number ("v 1e5x 0 0"); faces using it are dropped'],
+      [5, 'vertex with a coordinate that is not a number ("v 0 2: 0"); faces using it are dropped'],
+    ]);
   });
 
   it('quotes at most the last 60 characters of a long bad vertex line', () => {
@@ -90,6 +95,10 @@ describe('OBJ warnings: faces', () => {
     expect([...parsed(text).indices]).toEqual([0, 1, 2]);
   });
 
+  it('a corner whose normal index is not a number, quoted as written', () => {
+    expect(warnings(`${TRI}vn 0 0 1\nf 1//x 2//1 3//1\nf 1//1 2//1 3//1\n`)).toEqual([[5, '"1//x" is not a face corner; face dropped']]);
+  });
+
   it('a corner on the first texture coordinate or normal, when that one is bad', () => {
     const text = `${TRI}vt y\nvn z 0 1\nvt 0 0\nvn 0 0 1\nf 1/1 2/2 3/2\nf 1//1 2//2 3//2\nf 1/2/2 2/2/2 3/2/2\n`;
     expect(warnings(text)).toEqual([
@@ -116,6 +125,22 @@ describe('OBJ warnings: statements not drawn', () => {
       [7, '"curv" statements are not supported; ignored'],
       [8, 'unknown statement "foo"; ignored'],
     ]);
+  });
+
+  it('reads vp, and two-letter keywords ending as vt or vn does, by their whole keyword', () => {
+    expect(warnings(`${TRI}vp 0.5 0.5\nxt 0 0\nxn 0 0 1\nf 1 2 3\n`)).toEqual([
+      [4, '"vp" statements are not supported; ignored'],
+      [5, 'unknown statement "xt"; ignored'],
+      [6, 'unknown statement "xn"; ignored'],
+    ]);
+  });
+
+  it('reads a bare v ended by a CR or by the end of the file, and a v followed by a vertical tab, as vertices', () => {
+    expect(warnings(`${TRI}v\r\nf 1 2 3\nv`)).toEqual([
+      [4, 'vertex with 0 of its 3 coordinates; faces using it are dropped'],
+      [6, 'vertex with 0 of its 3 coordinates; faces using it are dropped'],
+    ]);
+    expect(warnings(`${TRI}v\v1 1 0\nf 1 2 4\n`)).toEqual([]);
   });
 
   it('counts unknown keywords by their first 64 characters (a binary file read as OBJ warns once per prefix)', () => {

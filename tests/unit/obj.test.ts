@@ -26,6 +26,8 @@ describe('parseObj: statements', () => {
     const r = parseObj('v 0 0 0 1 0 0\nv 1 0 0 0 0.5 0\nv 0 1 0\nf 1 2 3\n');
     expect([...r.colors!]).toEqual(f32([1, 0, 0, 0, 0.5, 0, 1, 1, 1]));
     expect([...r.positions]).toEqual([0, 0, 0, 1, 0, 0, 0, 1, 0]);
+    // The first colour on the second vertex: white for the one before.
+    expect([...parseObj('v 0 0 0\nv 1 0 0 0 0.5 0\nv 0 1 0\nf 1 2 3\n').colors!]).toEqual(f32([1, 1, 1, 0, 0.5, 0, 1, 1, 1]));
   });
 
   it('reads a w after x y z as no colour', () => {
@@ -108,6 +110,12 @@ describe('parseObj: statements', () => {
     expect(parseObj(`o a\ng x y\no b\ng y z\no a\n${TRI}f 1 2 3\n`)).toMatchObject({ objects: ['a', 'b'], groupNames: ['x', 'y', 'z'] });
   });
 
+  it('ends a name at a # right after the keyword or after a blank (space, tab, vertical tab, form feed), not inside it', () => {
+    const r = parseObj(`o#c\ng a\t#c\nusemtl red #c\n${TRI}f 1 2 3\nusemtl blue\v#c\nf 1 2 3\nusemtl red#1\f#c\nf 1 2 3\n`);
+    expect([r.objects, r.groupNames]).toEqual([[], ['a']]);
+    expect(r.groups.map((g) => g.material)).toEqual(['red', 'blue', 'red#1']);
+  });
+
   it('ignores # comments, whole-line and after a statement', () => {
     const r = parseObj(`# v 9 9 9\n${TRI}f 1 2 3 # f 3 2 1\n  # indented comment\n`);
     expect(r.positions.length).toBe(9);
@@ -141,6 +149,14 @@ describe('parseObj: syntax', () => {
 
   it('takes tabs and runs of spaces as separators, leading and trailing too', () => {
     const r = parseObj('\tv\t0   0 \t 0  \n  v 1\t\t0 0\nv    0 1    0\t\nf\t1  2\t\t3 \n');
+    expect([...r.positions]).toEqual([0, 0, 0, 1, 0, 0, 0, 1, 0]);
+    expect([...r.indices]).toEqual([0, 1, 2]);
+    expect(r.warnings).toEqual([]);
+  });
+
+  it('takes form feeds and vertical tabs as separators too, after numbers and indices', () => {
+    // One vertical tab only: two in so short a file would be sniffed as binary (sniff.ts).
+    const r = parseObj('v\f0\f0 0\nv 1\v0\f0\nv 0\f1 0\nf 1\f2\f3\n');
     expect([...r.positions]).toEqual([0, 0, 0, 1, 0, 0, 0, 1, 0]);
     expect([...r.indices]).toEqual([0, 1, 2]);
     expect(r.warnings).toEqual([]);

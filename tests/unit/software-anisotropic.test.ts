@@ -105,6 +105,28 @@ describe('MipTexture, anisotropic reads (EXT_texture_filter_anisotropic)', () =>
     expect(read(texture(STRIPES, true), 1.5 / S, 0.3, 0, 0, 0, 64)).toBeCloseTo(0.875, 14);
   });
 
+  it('a tie in length makes the x derivative the major axis, as SwiftShader (CmpNLT(dUV2.x, dUV2.y)) does', () => {
+    // Columns 0–7 white, 8–15 black. (17, 0) and (15, 8) texels, both 17 long: |det| = 136, r =
+    // 289/136 = 2.125, 2 taps at λ = ½·log2(289/2.125²) = ½·log2(64) = 3: level 3 (2×2) holds
+    // columns 1, 0. The taps a quarter of (17, 0) either side of s = 4 (u = ¼, s₃ = 0) read at
+    // s₃ = ±0.53125: 0.46875 each. Swapped, (15, 8) is the x one: its quarter puts them at ±0.46875, 0.53125.
+    const halves = texture((i) => (i < 8 ? 1 : 0), true);
+    expect(read(halves, 0.25, 0.3, 17, 0, 15, 8)).toBe(0.46875);
+    expect(read(halves, 0.25, 0.3, 15, 8, 17, 0)).toBe(0.53125);
+  });
+
+  it('a NaN derivative reads the base level at (u, v), an infinite one the last level, each with one tap', () => {
+    // Row 3 white: the band's own texel reads 1 at level 0; the 1×1 level holds the mean, 1/16.
+    expect(read(texture(BAND, true), 5.5 / S, 3.5 / S, NaN, 0, 0, 1)).toBe(1);
+    expect(read(texture(BAND, true), 5.5 / S, 3.5 / S, Infinity, 0, 0, 1)).toBe(0.0625);
+  });
+
+  it('a MipTexture is isotropic unless made anisotropic', () => {
+    // The band's 1×4 footprint of the first test, isotropic: 0.15625.
+    const data = new Float32Array(S * S).fill(1, 3 * S, 4 * S);
+    expect(read(new MipTexture(1, S, S, data), 5.5 / S, 3.5 / S, 1, 0, 0, 4)).toBe(0.15625);
+  });
+
   it('a square footprint (perpendicular axes of one length) reads exactly as the isotropic texture does, at every scale', () => {
     // A texture with something to blur at every level: a hash of (i, j).
     const value = (i: number, j: number) => ((i * 7 + j * 13 + ((i * j) % 5)) % 11) / 10;

@@ -1,8 +1,9 @@
 // The software rasterizer (docs/software-renderer.md#rasterisation): top-left fill rule pixel for pixel, shared edges drawn
-// exactly once, perspective-correct interpolation, z-buffer order, near-plane clipping.
+// exactly once, perspective-correct interpolation, z-buffer order, near-plane clipping; and a row's run as each edge bounds it.
 import { describe, expect, it } from 'vitest';
 import { projectionMatrix } from '../../src/math/camera';
 import { CLIP_DISTANCE, Rasterizer, VARYINGS, type FragmentShader } from '../../src/software/raster';
+import { runEnd, runStart } from '../../src/software/edges';
 import { SoftwareRenderer } from '../../src/software';
 import type { FrameState } from '../../src/frame/types';
 import type { Scene } from '../../src/scene/scene';
@@ -107,6 +108,28 @@ describe('top-left fill rule', () => {
     expect(vertexOn.covered()).toEqual(['1,1']);
   });
 
+  it('the same pixels whichever vertex comes first: each edge the first, second and third in turn', () => {
+    const rotations = (t: number[][]) => [t, [t[1], t[2], t[0]], [t[2], t[0], t[1]]];
+    const row0 = (p: string) => p.endsWith(',0'), column1 = (p: string) => p.startsWith('1,');
+    const cases: [string, number[][], (p: string) => boolean, string[]][] = [
+      ['top edge', [[0, 0.5], [4, 0.5], [0, 4]], row0, ['0,0', '1,0', '2,0', '3,0']],
+      ['bottom edge', [[0, 0.5], [4, -4], [4, 0.5]], row0, []],
+      ['left edge', [[1.5, 0], [4, 0], [1.5, 4]], column1, ['1,0', '1,1', '1,2', '1,3']],
+      ['right edge', [[1.5, 0], [1.5, 4], [-3, 4]], column1, []],
+      // A right edge running down and right, y = x, through the centres (0.5, 0.5) and (1.5, 1.5):
+      // neither drawn, (0.5, 1.5) alone is inside.
+      ['right edge down and right', [[0, 0], [2, 2], [0, 2]], () => true, ['0,1']],
+    ];
+    const r = rasterizer(4, 4);
+    for (const [name, triangle, where, want] of cases) {
+      for (const [n, t] of rotations(triangle).entries()) {
+        const rec = new Recorder(4, 4);
+        draw(r, rec, t);
+        expect(rec.covered().filter(where).sort(), `${name}, rotation ${n}`).toEqual(want);
+      }
+    }
+  });
+
   it('either winding covers the same pixels (two-sided meshes, the mirrored pass)', () => {
     const r = rasterizer(8, 8);
     const cw = new Recorder(8, 8), ccw = new Recorder(8, 8);
@@ -114,6 +137,27 @@ describe('top-left fill rule', () => {
     draw(r, ccw, [[0.5, 0.5], [2.5, 7.5], [6.5, 1.5]]);
     expect(ccw.covered()).toEqual(cw.covered());
     expect(cw.covered().length).toBeGreaterThan(10);
+  });
+});
+
+describe("a row's run: the pixels k where an edge's e + k·step ≥ 0 can hold, one wider either side", () => {
+  // Steps are whole 1/256 px (edges.ts): ±256 here, an edge at 45° or one pixel a row.
+  const PAST_ANY_SPAN = 1_000_000;
+
+  it('starts where e + k·step first reaches 0, one early; at 0 where it holds already', () => {
+    expect([runStart(0, 256), runStart(100, 256), runStart(100, 0), runStart(100, -256)]).toEqual([0, 0, 0, 0]);
+    // −600 + 3 × 256 = 168 ≥ 0 first at k = 3; −512 + 2 × 256 = 0 at k = 2.
+    expect([runStart(-600, 256), runStart(-512, 256)]).toEqual([2, 1]);
+    // e < 0 with a step of 0 or one going down: never.
+    expect(runStart(-10, 0)).toBeGreaterThan(PAST_ANY_SPAN);
+    expect(runStart(-10, -256)).toBeGreaterThan(PAST_ANY_SPAN);
+  });
+
+  it('ends where e + k·step last holds, one late, capped at the span; −1 where it never does', () => {
+    // 600 − 2 × 256 = 88 ≥ 0 last at k = 2; 512 − 2 × 256 = 0 at k = 2.
+    expect([runEnd(600, -256, 10), runEnd(512, -256, 10), runEnd(600, -256, 2)]).toEqual([3, 3, 2]);
+    expect([runEnd(-10, -256, 10), runEnd(-10, 0, 10)]).toEqual([-1, -1]);
+    expect([runEnd(0, -256, 10), runEnd(0, 0, 10), runEnd(-600, 256, 10), runEnd(5, 256, 10)]).toEqual([1, 10, 10, 10]);
   });
 });
 

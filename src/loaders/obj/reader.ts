@@ -44,6 +44,7 @@ class ObjReader {
   private tCount = 0;
   private nCount = 0;
   private triangleCount = 0;
+  // Stryker disable next-line ArithmeticOperator: an initial size: the list grows (growable.ts)
   private readonly runs = new I32List(3 * RUN_INTS);
   private readonly warnings = new Warnings();
   /** The names read and the current material and smoothing slot. */
@@ -53,8 +54,10 @@ class ObjReader {
   /** The numbers of the statement being read (readValues). */
   private readonly values = new Float64Array(8);
   /** A plain face's raw indices (readPlainCorners): 3 per corner, up to PLAIN_CORNERS corners. */
+  // Stryker disable next-line ArithmeticOperator: too short, it only hands faces to the general way (no room), which reads them alike
   private readonly raw = new Int32Array(3 * PLAIN_CORNERS);
   /** What readCorners found: the first fault ('' for none) and how many corners the face has. */
+  // Stryker disable next-line StringLiteral: readCorners sets it before anything reads it
   private fault = '';
   private cornerCount = 0;
 
@@ -90,6 +93,7 @@ class ObjReader {
       // The usual lines, `v x y z` and `f a b c`, straight to their statements, which try their
       // fast paths first: a line is never handed back to be dispatched and read again.
       const plain = sc.plainKeyword();
+      // Stryker disable next-line ConditionalExpression: statement() sends a plain v or f line (no blank before it) to the same method
       if (plain === 0) {
         this.statement();
         continue;
@@ -134,6 +138,7 @@ class ObjReader {
   private readValues(): number {
     const { sc, values } = this;
     const plain = sc.readPlainNumbers(values);
+    // Stryker disable next-line EqualityOperator: with no number on the fast path the general way reads none either: 0
     if (plain >= 0) return plain;
     let n = 0;
     let bad = false;
@@ -144,6 +149,7 @@ class ObjReader {
       const x = sc.readNumber();
       if (sc.pos === before) sc.pos++; // never stall on a character no reader consumes
       if (!Number.isFinite(x)) bad = true;
+      // Stryker disable next-line ConditionalExpression,EqualityOperator: values holds 8: a write past them is dropped
       if (n < 8) values[n] = x;
       n++;
     }
@@ -253,6 +259,7 @@ class ObjReader {
         if (fault === '') fault = `${shown(sc.charAt(tokenStart))} is not a face corner`;
       }
       // Past the cap the line is still read to its end (to count it), but nothing is kept.
+      // Stryker disable next-line ConditionalExpression: past the cap the face is dropped as too long whatever fault holds, if any
       if (++cornerCount > MAX_FACE_CORNERS && fault === '') fault = 'too many';
       if (fault !== '') continue;
       if (v !== v || t !== t || nn !== nn) fault = `${shown(sc.shownSpan(tokenStart, sc.tokenEnd()))} is not a face corner`;
@@ -267,15 +274,19 @@ class ObjReader {
    * range, straight into the corner list while it holds nothing else (fewer than 3 are then
    * dropped as the general way drops them); false, the cursor unmoved, for any other face.
    */
+  // Stryker disable next-line BlockStatement: undefined, as false, hands the face to the other ways, which read it alike
   private readBareCorners(): boolean {
     const { byteScanner: sc, cornerLists: lists } = this;
+    // Stryker disable next-line ConditionalExpression: the same: false for every face
     if (sc === null || !lists.positionsOnly()) return false;
     const corners = lists.corners, start = corners.length;
     const count = readPositionCorners(sc, corners.reserve(PLAIN_CORNERS), start, PLAIN_CORNERS, this.vCount);
+    // Stryker disable next-line EqualityOperator: a face of no corners read the general way has none either
     if (count < 0) return false;
     corners.length = start + count;
     this.fault = '';
     this.cornerCount = count;
+    // Stryker disable next-line BooleanLiteral: false: at the line end now, the ways after this add no corner and no fault
     return true;
   }
 
@@ -287,11 +298,13 @@ class ObjReader {
   private readPlainCorners(): boolean {
     const { sc, cornerLists, raw } = this;
     const count = sc.readPlainCorners(raw);
+    // Stryker disable next-line EqualityOperator: a face of no corners read the general way has none either
     if (count < 0) return false;
     const { vCount, tCount, nCount } = this;
     let fault = '';
     // Straight into the lists when no corner needs more (addPlain); else corner by corner, which
     // starts the uv and normal lists, checks bad elements and names the first fault.
+    // Stryker disable next-line ConditionalExpression,EqualityOperator: addPlain writes what add would, or leaves it to add (corners.ts)
     if (count < 3 || !cornerLists.addPlain(raw, count, vCount, tCount, nCount)) {
       for (let k = 0; k < 3 * count && fault === ''; k += 3) fault = cornerLists.add(raw[k], raw[k + 1], raw[k + 2], vCount, tCount, nCount);
     }
@@ -328,6 +341,7 @@ class ObjReader {
     const { smooth, material } = this.settings;
     // A new run where the smoothing slot or material differs from the last run's (or there is none).
     const runs = this.runs, r = runs.length, d = runs.data;
+    // Stryker disable next-line ConditionalExpression: at r = 0, d[−2] is undefined, no slot: a run is pushed either way
     if (r === 0 || d[r - 2] !== smooth || d[r - 1] !== material) runs.push3(this.faceCount, smooth, material);
     this.faces.push(count);
     this.faceCount++;

@@ -65,6 +65,7 @@ export class Scanner {
     const t = this.text;
     const n = this.length;
     let p = this.pos;
+    // Stryker disable next-line EqualityOperator: p = n reads NaN (past the end), which matches nothing: pos = n after either way
     while (p < n) {
       const c = t.charCodeAt(p);
       if (c === LF) {
@@ -153,7 +154,10 @@ export class Scanner {
       }
       let expDigits = 0;
       while (c >= ZERO && c <= NINE) {
+        // Past 100000 (capped or not), or with 48 added to each digit, the exponent is far over 22: parseFloat, equal to the fast path.
+        // Stryker disable next-line ConditionalExpression,EqualityOperator,ArithmeticOperator: as the line above says
         if (exponent < 100000) exponent = exponent * 10 + (c - ZERO);
+        // Stryker disable next-line UpdateOperator: expDigits is only compared with 0
         expDigits++;
         c = t.charCodeAt(++p);
       }
@@ -164,7 +168,9 @@ export class Scanner {
     this.pos = p;
     const power = exponent - scale;
     // The slice holds the sign already.
+    // Stryker disable next-line ConditionalExpression,EqualityOperator,UnaryOperator: parseFloat equals the exact fast path anywhere
     if (digits > 15 || power < -22 || power > 22) return parseFloat(t.slice(start, p));
+    // Stryker disable next-line EqualityOperator: at power = 0, mantissa / 10⁰ = mantissa × 10⁰
     const value = power < 0 ? mantissa / POW10[-power] : mantissa * POW10[power];
     return negative ? -value : value;
   }
@@ -186,6 +192,7 @@ export class Scanner {
     let digits = 0;
     while (c >= ZERO && c <= NINE) {
       value = value * 10 + (c - ZERO);
+      // Stryker disable next-line UpdateOperator: digits is only compared with 0
       digits++;
       c = t.charCodeAt(++p);
     }
@@ -200,6 +207,7 @@ export class Scanner {
     return 0;
   }
 
+  // Stryker disable next-line BlockStatement: undefined fails the reader's plain >= 0 as −1 does
   readPlainNumbers(_values: Float64Array): number {
     return -1;
   }
@@ -210,6 +218,7 @@ export class Scanner {
 
   /** If the cursor is on a `/`, steps over it. */
   skipSlash(): boolean {
+    // Stryker disable next-line BooleanLiteral: with no / the next field read is empty: 0, the cursor unmoved, as no field
     if (this.text.charCodeAt(this.pos) !== SLASH) return false;
     this.pos++;
     return true;
@@ -247,7 +256,9 @@ export class Scanner {
     return this.text.slice(from, to);
   }
 
+  // Stryker disable next-line BlockStatement: only for a character no field read moves past, which text never holds (bytes may)
   charAt(p: number): string {
+    // Stryker disable next-line MethodExpression: the same: never called for text
     return this.text.charAt(p);
   }
 
@@ -274,6 +285,7 @@ export class Scanner {
       this.pos += t.charCodeAt(this.pos + 2) === LF ? 3 : 2;
     } else if (next !== next) {
       this.pos += 1; // a `\` at the very end of the file continues into nothing
+      // Stryker disable next-line BooleanLiteral: the cursor is past the `\` either way, and every caller then meets the end
       return true;
     } else {
       return false;
