@@ -57,24 +57,29 @@ export function object(file: GltfFile, v: unknown, path: string): Obj {
 }
 
 /** An optional object field: undefined when absent. */
+/** The JSON path of `key` in the object at `path`: `scene` at the top level, `nodes[2].mesh` below it. */
+export function fieldPath(path: string, key: string): string {
+  return path === '' ? key : `${path}.${key}`;
+}
+
 export function optionalObject(file: GltfFile, o: Obj, key: string, path: string): Obj | undefined {
-  return o[key] === undefined ? undefined : object(file, o[key], `${path}.${key}`);
+  return o[key] === undefined ? undefined : object(file, o[key], fieldPath(path, key));
 }
 
 export function num(file: GltfFile, o: Obj, key: string, path: string, fallback?: number, min = -Infinity, max = Infinity): number {
   const v = o[key];
   if (v === undefined && fallback !== undefined) return fallback;
   // Stryker disable next-line ConditionalExpression: without the typeof test, Number.isFinite is false for every non-number too
-  if (typeof v !== 'number' || !Number.isFinite(v)) file.fail(`${path}.${key}`, `${path}.${key} is ${shownValue(v)}, not a number`);
-  if (v < min || v > max) file.fail(`${path}.${key}`, `${path}.${key} is ${v}, outside [${min}, ${max}]`);
+  if (typeof v !== 'number' || !Number.isFinite(v)) file.fail(fieldPath(path, key), `${fieldPath(path, key)} is ${shownValue(v)}, not a number`);
+  if (v < min || v > max) file.fail(fieldPath(path, key), `${fieldPath(path, key)} is ${v}, outside [${min}, ${max}]`);
   return v;
 }
 
 /** A non-negative integer (an index, a count, an offset), below `max`. */
 export function int(file: GltfFile, o: Obj, key: string, path: string, fallback?: number, max = Number.MAX_SAFE_INTEGER): number {
   const v = num(file, o, key, path, fallback);
-  if (!Number.isInteger(v) || v < 0) file.fail(`${path}.${key}`, `${path}.${key} is ${v}, not an index or count`);
-  if (v > max) file.fail(`${path}.${key}`, `${path}.${key} is ${v}, above ${max}`);
+  if (!Number.isInteger(v) || v < 0) file.fail(fieldPath(path, key), `${fieldPath(path, key)} is ${v}, not an index or count`);
+  if (v > max) file.fail(fieldPath(path, key), `${fieldPath(path, key)} is ${v}, above ${max}`);
   return v;
 }
 
@@ -89,7 +94,7 @@ export function numbers(file: GltfFile, o: Obj, key: string, path: string, lengt
   if (v === undefined) return fallback.slice();
   // Stryker disable next-line ConditionalExpression: without the typeof test, Number.isFinite is false for every non-number too
   if (!Array.isArray(v) || v.length !== length || !v.every((x) => typeof x === 'number' && Number.isFinite(x))) {
-    file.fail(`${path}.${key}`, `${path}.${key} is not an array of ${length} numbers`);
+    file.fail(fieldPath(path, key), `${fieldPath(path, key)} is not an array of ${length} numbers`);
   }
   return v as number[];
 }
@@ -97,7 +102,7 @@ export function numbers(file: GltfFile, o: Obj, key: string, path: string, lengt
 export function str(file: GltfFile, o: Obj, key: string, path: string, fallback?: string): string {
   const v = o[key];
   if (v === undefined && fallback !== undefined) return fallback;
-  if (typeof v !== 'string') file.fail(`${path}.${key}`, `${path}.${key} is ${shownValue(v)}, not a string`);
+  if (typeof v !== 'string') file.fail(fieldPath(path, key), `${fieldPath(path, key)} is ${shownValue(v)}, not a string`);
   return v;
 }
 

@@ -2,7 +2,7 @@
 // core material and of KHR_materials_emissive_strength, KHR_materials_unlit and
 // KHR_texture_transform, defaults as the specification states them. Textures name their image
 // by index; the element turns images into URLs.
-import { GltfFile, int, num, numbers, object, optionalObject, str, type Obj } from './fields';
+import { fieldPath, GltfFile, int, num, numbers, object, optionalObject, str, type Obj } from './fields';
 import type { AlphaMode, PbrMaterialOf, PbrSampler, PbrTextureOf } from '../../scene/pbr-material';
 
 export type GltfSampler = PbrSampler;
@@ -67,7 +67,7 @@ function clamp01(x: number): number {
 function textureRef(file: GltfFile, o: Obj, key: string, path: string): GltfTextureRef | null {
   const info = optionalObject(file, o, key, path);
   if (!info) return null;
-  const at = `${path}.${key}`;
+  const at = fieldPath(path, key);
   const index = int(file, info, 'index', at);
   const texturePath = `textures[${index}]`;
   const texture = file.item('textures', index, `${at}.index`);
@@ -120,7 +120,7 @@ function readSampler(file: GltfFile, s: Obj, path: string): GltfSampler {
     if (s[key] === undefined) return fallback;
     const v = int(file, s, key, path);
     if (allowed.has(v)) return v;
-    file.warn(`${path}.${key}`, `${path}.${key} is ${v}, not a value glTF allows: the default is used`);
+    file.warn(fieldPath(path, key), `${fieldPath(path, key)} is ${v}, not a value glTF allows: the default is used`);
     return fallback;
   };
   return { magFilter: pick('magFilter', MAG, undefined), minFilter: pick('minFilter', MIN, undefined), wrapS: pick('wrapS', WRAPS, REPEAT)!, wrapT: pick('wrapT', WRAPS, REPEAT)! };

@@ -2,7 +2,7 @@
 // with its world matrix (the parents' matrices times its own: a matrix, or translation ×
 // rotation × scale). Walked without recursion, each node at most once: a cycle, or a node with
 // two parents, is an error naming the second way to it, and a million nodes cost one pass.
-import { GltfFile, int, numbers, object, type Obj } from './fields';
+import { fieldPath, GltfFile, int, numbers, object, type Obj } from './fields';
 
 export interface MeshInstance {
   mesh: number;
@@ -64,7 +64,7 @@ export function meshInstances(file: GltfFile): MeshInstance[] {
 
 function indexList(file: GltfFile, o: Obj, key: string, path: string): number[] {
   const v = o[key];
-  if (!Array.isArray(v) || !v.every((x) => Number.isInteger(x) && x >= 0)) file.fail(`${path}.${key}`, `${path}.${key} is not a list of indices`);
+  if (!Array.isArray(v) || !v.every((x) => Number.isInteger(x) && x >= 0)) file.fail(fieldPath(path, key), `${fieldPath(path, key)} is not a list of indices`);
   return v as number[];
 }
 
