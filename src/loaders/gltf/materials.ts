@@ -60,6 +60,7 @@ function readMaterial(file: GltfFile, m: Obj, path: string): GltfMaterial {
 }
 
 function clamp01(x: number): number {
+  // Stryker disable next-line EqualityOperator: at x = 0 or 1 exactly, either branch returns that same value
   return x < 0 ? 0 : x > 1 ? 1 : x;
 }
 
