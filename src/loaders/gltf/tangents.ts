@@ -8,6 +8,7 @@
 export function computeTangents(positions: Float32Array, normals: Float32Array, uvs: Float32Array, indices: Uint32Array): Float32Array {
   const n = positions.length / 3;
   const t = new Float64Array(3 * n), b = new Float64Array(3 * n);
+  // Stryker disable next-line EqualityOperator: one step more reads indices past the end (undefined): NaN slots, written nowhere
   for (let k = 0; k < indices.length; k += 3) {
     const i0 = indices[k], i1 = indices[k + 1], i2 = indices[k + 2];
     const du1 = uvs[2 * i1] - uvs[2 * i0], dv1 = uvs[2 * i1 + 1] - uvs[2 * i0 + 1];
@@ -31,8 +32,10 @@ export function computeTangents(positions: Float32Array, normals: Float32Array, 
     const d = nx * tx + ny * ty + nz * tz;
     tx -= nx * d; ty -= ny * d; tz -= nz * d;
     let len = Math.sqrt(tx * tx + ty * ty + tz * tz);
+    // Stryker disable next-line EqualityOperator: a length of exactly 1e-12 is no input's
     if (!(len > 1e-12)) {
       // No UV direction here: any unit vector perpendicular to the normal.
+      // Stryker disable next-line EqualityOperator: at |nx| = 0.9 either choice is a unit vector perpendicular to N
       [tx, ty, tz] = Math.abs(nx) < 0.9 ? [0, nz, -ny] : [-nz, 0, nx];
       len = Math.sqrt(tx * tx + ty * ty + tz * tz) || 1;
     }
