@@ -29,6 +29,8 @@ describe('gltfAsObj', () => {
     expect(obj.bounds).toEqual({ min: [0, -1, 0], max: [2, 3, 5] });
     expect(obj.warnings).toEqual([{ line: 0, path: 'meshes[0].primitives[1].mode', message: expect.stringContaining('points and lines') }]);
     expect(materialKey(7)).toBe('#7');
+    // No OBJ's material libraries, objects or group names: the glTF model has none.
+    expect([obj.mtllibs, obj.objects, obj.groupNames]).toEqual([[], [], []]);
   });
 
   it('keeps 32-bit indices past 65,535 vertices, and no UVs or colours where the model has none', () => {

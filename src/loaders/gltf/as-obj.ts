@@ -15,6 +15,7 @@ export function gltfAsObj(r: GltfResult): ObjResult {
   let uvs: Float32Array | null = null;
   if (r.uv0) {
     uvs = new Float32Array(r.uv0.length);
+    // Stryker disable next-line EqualityOperator: one step more writes uvs[length], which a typed array ignores
     for (let i = 0; i < uvs.length; i += 2) {
       uvs[i] = r.uv0[i];
       uvs[i + 1] = 1 - r.uv0[i + 1];
@@ -23,14 +24,18 @@ export function gltfAsObj(r: GltfResult): ObjResult {
   let colors: Float32Array | null = null;
   if (r.colors) {
     colors = new Float32Array(vertexCount * 3);
+    // Stryker disable next-line EqualityOperator: one step more sets an empty subarray at the end, which changes nothing
     for (let v = 0; v < vertexCount; v++) colors.set(r.colors.subarray(4 * v, 4 * v + 3), 3 * v);
   }
   const indices = vertexCount > 65535 ? r.indices : Uint16Array.from(r.indices);
   const min: [number, number, number] = [Infinity, Infinity, Infinity];
   const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
+  // Stryker disable next-line EqualityOperator: one step more reads undefined, less and greater than nothing
   for (let i = 0; i < r.positions.length; i++) {
     const a = i % 3;
+    // Stryker disable next-line EqualityOperator: a value equal to the bound sets the bound to itself
     if (r.positions[i] < min[a]) min[a] = r.positions[i];
+    // Stryker disable next-line EqualityOperator: a value equal to the bound sets the bound to itself
     if (r.positions[i] > max[a]) max[a] = r.positions[i];
   }
   const warnings: LoadWarning[] = r.warnings.map((w) => ({ line: 0, path: w.path, message: w.message }));
