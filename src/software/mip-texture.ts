@@ -83,8 +83,7 @@ export class MipTexture {
     let first = 0, f = 0;
     // Stryker disable next-line EqualityOperator: at λ = top the branch below gives first = top, f = 0 too
     if (lambda >= top) first = top;
-    // Stryker disable next-line ConditionalExpression,EqualityOperator: λ ≤ 0 here is λ = 0: first = 0, f = 0 either way
-    else if (lambda > 0) { first = Math.floor(lambda) | 0; f = lambda - first; }
+    else { first = Math.floor(lambda) | 0; f = lambda - first; } // λ ≥ 0: at 0, level 0 and f = 0
     // Sums in locals (one add per tap for grey, not three stores), in the order the taps come.
     let r = 0, g = 0, b = 0;
     const u = a[0], v = a[1], grey = this.channels === 1, share = 1 / n;

@@ -52,8 +52,7 @@ function readGlb(bytes: Uint8Array, url: string): Container {
     const data = bytes.subarray(start, start + size);
     if (n === 0 && type !== CHUNK_JSON) throw new LoadError(url, 'the first chunk is not JSON', where);
     if (n === 0) json = data;
-    // Stryker disable next-line ConditionalExpression: bin is set only at n === 1, so it is null whenever n === 1 is true
-    else if (type === CHUNK_BIN && bin === null && n === 1) bin = data;
+    else if (n === 1 && type === CHUNK_BIN) bin = data;
     // Chunks of other types are skipped, as the specification asks; a second BIN is not glTF 2.0's.
     at = start + size + ((4 - (size % 4)) % 4);
   }
