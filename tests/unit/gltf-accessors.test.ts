@@ -67,6 +67,15 @@ describe('counts, types and component types', () => {
     });
   });
 
+  it('names each component type an attribute may not have', () => {
+    const data = floats(1, 2, 3);
+    const names = [[BYTE, 'BYTE'], [UNSIGNED_BYTE, 'UNSIGNED_BYTE'], [SHORT, 'SHORT'], [UNSIGNED_SHORT, 'UNSIGNED_SHORT'], [UNSIGNED_INT, 'UNSIGNED_INT'], [FLOAT, 'FLOAT']] as const;
+    for (const [componentType, name] of names) {
+      expect(refusal(() => read([{ bufferView: 0, componentType, count: 1, type: 'SCALAR' }], whole(data), data, { types: ['SCALAR'], components: [] })).message)
+        .toBe(`accessors[0].componentType is ${name}, not one this attribute may have`);
+    }
+  });
+
   it('refuses a normalized FLOAT or UNSIGNED_INT accessor', () => {
     const data = floats(1, 2, 3);
     for (const [componentType, name] of [[FLOAT, 'FLOAT'], [UNSIGNED_INT, 'UNSIGNED_INT']] as const) {

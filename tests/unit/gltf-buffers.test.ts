@@ -118,3 +118,34 @@ describe('buffer views', () => {
     }
   });
 });
+
+describe('meshopt fallback buffers', () => {
+  const fallback = (more: Record<string, unknown> = {}) => ({ byteLength: 4, extensions: { EXT_meshopt_compression: { fallback: true } }, ...more });
+  const data = 'data:application/octet-stream;base64,AQIDBA==';
+
+  it('is never fetched; its extension, when not an object, is named by the buffer\'s path', () => {
+    expect(externalBuffers(file({ buffers: [fallback({ uri: 'f.bin' }), { byteLength: 4, uri: 'g.bin' }] }))).toEqual([{ index: 1, uri: 'g.bin' }]);
+    expect(refusal(() => externalBuffers(file({ buffers: [{ byteLength: 4, uri: 'g.bin' }, { byteLength: 4, uri: 'f.bin', extensions: 3 }] })))).toEqual({
+      path: 'buffers[1].extensions', message: 'buffers[1].extensions is not an object',
+    });
+  });
+
+  it('is read where its bytes are at hand (the BIN chunk for buffers[0], a data: URI, a fetched file), else empty, never an error', () => {
+    const bin = bytes(1, 2, 3, 4);
+    expect(resolveBuffers(file({ buffers: [fallback()] }), bin, new Map())).toEqual([bin]);
+    expect(resolveBuffers(file({ buffers: [fallback()] }), null, new Map())).toEqual([bytes()]);
+    // Without a uri, only buffers[0] may take the BIN chunk.
+    expect(resolveBuffers(file({ buffers: [{ byteLength: 4 }, fallback()] }), bin, new Map())).toEqual([bin, bytes()]);
+    expect(resolveBuffers(file({ buffers: [fallback({ uri: data })] }), null, new Map())).toEqual([bin]);
+    expect(resolveBuffers(file({ buffers: [fallback({ uri: 'f.bin' })] }), null, new Map([[0, bin]]))).toEqual([bin]);
+    expect(resolveBuffers(file({ buffers: [fallback({ uri: 'f.bin' })] }), bin, new Map())).toEqual([bytes()]);
+  });
+
+  it('a view decoded from meshopt reads the decoded bytes, cut to the view\'s byteLength', () => {
+    const f = file({ bufferViews: [{ buffer: 0, byteLength: 3, byteStride: 4 }] });
+    f.decodedViews = new Map([[0, bytes(9, 8, 7, 6, 5)]]);
+    expect(bufferView(f, [], 0, 'x')).toEqual({ bytes: bytes(9, 8, 7), stride: 4 });
+    f.decodedViews = new Map([[0, bytes(9, 8)]]);
+    expect(bufferView(f, [], 0, 'x')).toEqual({ bytes: bytes(9, 8), stride: 4 });
+  });
+});
