@@ -378,6 +378,10 @@ describe('KHR_draco_mesh_compression', () => {
       'destroy(mesh1)',
       'destroy(decoder1)',
     ]);
+    // A stream attribute named like a property every object inherits is not listed by the primitive either.
+    const inherited = new FakeDraco(MESH);
+    const only = decodeDraco(dracoFile(ACCESSORS, { attributes: { TEXCOORD_0: 1 }, indices: undefined }, { attributes: { TEXCOORD_0: 1, constructor: 0 } }), BUFFERS, inherited);
+    expect(entries(only)).toEqual([[1, written(1, 16)]]);
   });
 
   it('refuses a stream that does not decode with the decoder\'s message, and destroys the mesh and decoder', async () => {
@@ -443,6 +447,9 @@ describe('KHR_draco_mesh_compression', () => {
       [{ componentType: 5124, count: 4, type: 'VEC3' }, fill('accessors[0]')],
       [{ componentType: 5126, count: 4, type: 'MAT4' }, fill('accessors[0]')],
       [{ componentType: 5126, count: 4 }, fill('accessors[0]')],
+      // A name every object inherits is no accessor type.
+      [{ componentType: 5126, count: 4, type: 'constructor' }, fill('accessors[0]')],
+      [{ componentType: 5126, count: 4, type: 'toString' }, fill('accessors[0]')],
     ];
     for (const [accessor, expected] of cases) {
       const r = await refused(one(accessor));

@@ -64,7 +64,7 @@ export function decodeDraco(file: GltfFile, buffers: readonly Uint8Array[], drac
       const ids = object(file, ext.attributes, `${at}.attributes`);
       const attributes = object(file, primitive.attributes, `${path}.attributes`);
       for (const [name, id] of Object.entries(ids)) {
-        if (attributes[name] === undefined) continue;
+        if (!Object.hasOwn(attributes, name)) continue; // not `attributes[name]`: a name like `constructor` is inherited
         const accessor = int(file, attributes, name, `${path}.attributes`);
         const attribute = decoder.GetAttributeByUniqueId(mesh, typeof id === 'number' ? id : -1);
         if (!attribute) file.fail(`${at}.attributes.${name}`, `${at} has no attribute ${JSON.stringify(id)} for ${name}`);
@@ -86,7 +86,7 @@ function layout(file: GltfFile, accessor: number): { type: number; size: number;
   const a = file.item('accessors', accessor, `accessors[${accessor}]`);
   const path = `accessors[${accessor}]`;
   const type = int(file, a, 'componentType', path);
-  const size = SIZES[String(a.type)];
+  const size = Object.hasOwn(SIZES, String(a.type)) ? SIZES[String(a.type)] : undefined;
   if (BYTES[type] === undefined || size === undefined) file.fail(path, `${path} is not a type a Draco primitive can fill`);
   return { type, size, count: int(file, a, 'count', path) };
 }
