@@ -32,7 +32,7 @@ const OWN_TESTS = {
   'loaders/gltf': [
     'gltf-load', 'gltf-errors', 'gltf-data', 'gltf-real-files', 'gltf-compression', 'gltf-model', 'gltf-tangents', 'sniff',
     'gltf-container', 'gltf-fields', 'gltf-buffers', 'gltf-accessors', 'gltf-nodes', 'gltf-primitives', 'gltf-materials',
-    'gltf-merge-images', 'gltf-index', 'gltf-as-obj', 'gltf-decoders',
+    'gltf-merge-images', 'gltf-index', 'gltf-decoders',
   ],
   // Frames of 32×18 (small-frames) judge a mutant of either CPU renderer in a fraction of a second under
   // Stryker's instrumentation, where a rough 160×90 frame takes seconds: the bigger frames of

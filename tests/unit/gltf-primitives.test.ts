@@ -184,3 +184,55 @@ describe('positions and colours', () => {
     expect(round(rgba.colors!)).toEqual([0.1, 0.2, 0.3, 0.5, 0, 0, 0, 0, 1, 1, 1, 0.25]);
   });
 });
+
+describe('normals under the identity, and positions out of range', () => {
+  it('makes the file\'s normals unit where the node places the mesh as it is, a zero normal staying zero', () => {
+    const r = read(model({ POSITION: [3, TRI], NORMAL: [3, [0, 3, 4, 0, 0, 0, -2, 0, 0]] }, [0, 1, 2]))!;
+    // (0, 3, 4) / 5; (−2, 0, 0) / 2.
+    expect(round(r.normals)).toEqual([0, 0.6, 0.8, 0, 0, 0, -1, 0, 0]);
+  });
+
+  it('says nothing of a position out of range that no triangle uses', () => {
+    const m = model({ POSITION: [3, [...TRI, NaN, 0, 0]], NORMAL: [3, [0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]] }, [0, 1, 2]);
+    expect(Array.from(read(m)!.indices)).toEqual([0, 1, 2]);
+    expect(m.file.warnings).toEqual([]);
+  });
+});
+
+describe('tangents for a normal map', () => {
+  const N = [0, 0, 1, 0, 0, 1, 0, 0, 1];
+  const materials = (normalTexture: unknown) => ({ materials: [{ normalTexture }] });
+
+  it('takes the file\'s TANGENT through the matrix, made unit, w turned where the matrix mirrors', () => {
+    // diag(−1, 2, 1): determinant −2. (1, 1, 0) → (−1, 2, 0) / √5; (0, 0, 3) → (0, 0, 1); a zero tangent stays zero.
+    const mirror = [-1, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1];
+    const m = model({ POSITION: [3, TRI], NORMAL: [3, N], TANGENT: [4, [1, 1, 0, 1, 0, 0, 3, -1, 0, 0, 0, 1]] }, [0, 1, 2], { material: 0 }, materials({ index: 0 }));
+    const r = read(m, mirror)!;
+    const s = 1 / Math.sqrt(5);
+    expect(round(r.tangents!, 5)).toEqual(round([-s, 2 * s, 0, -1, 0, 0, 1, 1, 0, 0, 0, -1], 5));
+    // Unmirrored, w is the file's.
+    expect(round(read(m)!.tangents!)).toEqual([1, 1, 0, 1, 0, 0, 1, -1, 0, 0, 0, 1].map((x, i) => (i === 0 || i === 1 ? Number((x / Math.SQRT2).toFixed(6)) : x)));
+  });
+
+  it('computes them from the UV set the normal map reads, none without that set, none without a normal map', () => {
+    const uv0 = [0, 0, 1, 0, 0, 1], uv1 = [0, 0, 0, 1, 1, 0];
+    const attrs = { POSITION: [3, TRI], NORMAL: [3, N], TEXCOORD_0: [2, uv0], TEXCOORD_1: [2, uv1] } as Record<string, [number, number[]]>;
+    // TEXCOORD_0: u along +x, T = +x; TEXCOORD_1: u along +y, T = +y.
+    const t0 = read(model(attrs, [0, 1, 2], { material: 0 }, materials({ index: 0 })))!.tangents!;
+    expect(round(t0.subarray(0, 3))).toEqual([1, 0, 0]);
+    const t1 = read(model(attrs, [0, 1, 2], { material: 0 }, materials({ index: 0, texCoord: 1 })))!.tangents!;
+    expect(round(t1.subarray(0, 3))).toEqual([0, 1, 0]);
+    const { TEXCOORD_1: _, ...onlyUv0 } = attrs;
+    expect(read(model(onlyUv0, [0, 1, 2], { material: 0 }, materials({ index: 0, texCoord: 1 })))!.tangents).toBeNull();
+    expect(read(model(attrs, [0, 1, 2], { material: 0 }, { materials: [{}] }))!.tangents).toBeNull();
+    expect(read(model(attrs, [0, 1, 2]))!.tangents).toBeNull();
+  });
+
+  it('refuses a normal texture that is not an object, or its texCoord, by the material\'s path', () => {
+    const m = (normalTexture: unknown) => model({ POSITION: [3, TRI], NORMAL: [3, N] }, [0, 1, 2], { material: 0 }, materials(normalTexture));
+    expect(refusal(() => read(m(5)))).toEqual({ path: 'materials[0].normalTexture', message: 'materials[0].normalTexture is not an object' });
+    expect(refusal(() => read(m({ index: 0, texCoord: -1 })))).toEqual({
+      path: 'materials[0].normalTexture.texCoord', message: 'materials[0].normalTexture.texCoord is -1, not an index or count',
+    });
+  });
+});

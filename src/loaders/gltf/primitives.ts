@@ -71,6 +71,7 @@ export function readPiece(file: GltfFile, buffers: readonly Uint8Array[], p: Obj
   const identity = isIdentity(at.matrix);
   const positions = identity ? position.values : transformPoints(position.values, at.matrix);
   indices = dropBad(file, positions, indices, `${path}.attributes.POSITION`);
+  // Stryker disable next-line EqualityOperator: one step more swaps two slots past the end, which a typed array ignores
   if (det3(at.matrix) < 0) for (let t = 0; t < indices.length; t += 3) [indices[t + 1], indices[t + 2]] = [indices[t + 2], indices[t + 1]];
   const material = p.material === undefined ? null : int(file, p, 'material', path);
   if (material !== null) file.item('materials', material, `${path}.material`);
@@ -113,9 +114,14 @@ function transformTangents(v: Float32Array, m: Float64Array): Float32Array {
 export function triangles(mode: number, listed: Uint32Array | null, vertexCount: number): Uint32Array {
   const order = listed ?? Uint32Array.from({ length: vertexCount }, (_, i) => i);
   const m = order.length;
-  if (mode === TRIANGLES) return order.length % 3 === 0 ? order : order.slice(0, m - (m % 3));
+  if (mode === TRIANGLES) {
+    const whole = m - (m % 3);
+    // Stryker disable next-line ConditionalExpression,EqualityOperator: slicing a whole list gives the same triangles, copied
+    return whole === m ? order : order.slice(0, whole);
+  }
   const count = Math.max(0, m - 2);
   const out = new Uint32Array(3 * count);
+  // Stryker disable next-line EqualityOperator: one step more writes past the end of out, which a typed array ignores
   for (let i = 0; i < count; i++) {
     if (mode === TRIANGLE_STRIP) {
       out[3 * i] = order[i];
@@ -131,12 +137,15 @@ export function triangles(mode: number, listed: Uint32Array | null, vertexCount:
 }
 
 function isIdentity(m: Float64Array): boolean {
+  // Stryker disable next-line all: a fast path only; the general path gives the same values under the identity (its cofactors are itself)
   for (let i = 0; i < 16; i++) if (m[i] !== (i % 5 === 0 ? 1 : 0)) return false;
+  // Stryker disable next-line BooleanLiteral: a fast path only (see above)
   return true;
 }
 
 function transformPoints(v: Float32Array, m: Float64Array): Float32Array {
   const out = new Float32Array(v.length);
+  // Stryker disable next-line EqualityOperator: one step more writes past the end of out, which a typed array ignores
   for (let i = 0; i < v.length; i += 3) {
     const x = v[i], y = v[i + 1], z = v[i + 2];
     out[i] = m[0] * x + m[4] * y + m[8] * z + m[12];
@@ -155,6 +164,7 @@ function det3(m: Float64Array): number {
  * determinant), unit length; under the identity, the file's normals made unit in place.
  */
 function transformNormals(v: Float32Array, m: Float64Array, identity: boolean): Float32Array {
+  // Stryker disable next-line ConditionalExpression,BlockStatement: the general path gives the same values under the identity (its cofactors are itself)
   if (identity) {
     for (let i = 0; i < v.length; i += 3) {
       const len = Math.sqrt(v[i] * v[i] + v[i + 1] * v[i + 1] + v[i + 2] * v[i + 2]);
@@ -170,8 +180,10 @@ function transformNormals(v: Float32Array, m: Float64Array, identity: boolean): 
     m[5] * m[10] - m[6] * m[9], m[6] * m[8] - m[4] * m[10], m[4] * m[9] - m[5] * m[8],
     m[2] * m[9] - m[1] * m[10], m[0] * m[10] - m[2] * m[8], m[1] * m[8] - m[0] * m[9],
     m[1] * m[6] - m[2] * m[5], m[2] * m[4] - m[0] * m[6], m[0] * m[5] - m[1] * m[4],
+  // Stryker disable next-line ArithmeticOperator: s is 1 or −1, for which x / s = x * s
   ].map((x) => x * s);
   const out = new Float32Array(v.length);
+  // Stryker disable next-line EqualityOperator: one step more writes past the end of out, which a typed array ignores
   for (let i = 0; i < v.length; i += 3) {
     const x = v[i], y = v[i + 1], z = v[i + 2];
     const nx = c[0] * x + c[3] * y + c[6] * z, ny = c[1] * x + c[4] * y + c[7] * z, nz = c[2] * x + c[5] * y + c[8] * z;
@@ -187,10 +199,14 @@ function transformNormals(v: Float32Array, m: Float64Array, identity: boolean): 
 
 /** Triangles whose three positions are finite and within MAX_COORDINATE; one warning if any is not. */
 function dropBad(file: GltfFile, p: Float32Array, indices: Uint32Array, path: string): Uint32Array {
+  // Stryker disable next-line BooleanLiteral: a fast path only: the triangle by triangle check below returns the same indices when all are in range
   let all = true;
+  // Stryker disable next-line all: a fast path only (see above); no float32 is exactly 1e15, so < and <= agree
   for (let i = 0; i < p.length && all; i++) all = Math.abs(p[i]) <= MAX_COORDINATE;
+  // Stryker disable next-line ConditionalExpression: a fast path only (see above)
   if (all) return indices;
   const good = (i: number) => {
+    // Stryker disable next-line EqualityOperator: no float32 is exactly 1e15 (MAX_COORDINATE), so < and <= agree
     for (let a = 3 * i; a < 3 * i + 3; a++) if (!(Math.abs(p[a]) <= MAX_COORDINATE)) return false;
     return true;
   };
@@ -211,6 +227,7 @@ function dropBad(file: GltfFile, p: Float32Array, indices: Uint32Array, path: st
 function rgba(v: Float32Array, size: number): Float32Array {
   if (size === 4) return v;
   const out = new Float32Array((v.length / 3) * 4);
+  // Stryker disable next-line EqualityOperator: one step more writes past the end of out, which a typed array ignores
   for (let i = 0, o = 0; i < v.length; i += 3, o += 4) {
     out[o] = v[i];
     out[o + 1] = v[i + 1];
@@ -226,17 +243,20 @@ function flatShaded(p: Piece): Piece {
   const expand = (a: Float32Array | null, size: number) => {
     if (!a) return null;
     const out = new Float32Array(t.length * size);
+    // Stryker disable next-line EqualityOperator: one step more sets an empty subarray (t[length] is undefined) at the end
     for (let i = 0; i < t.length; i++) out.set(a.subarray(t[i] * size, t[i] * size + size), i * size);
     return out;
   };
   const positions = expand(p.positions, 3)!;
   const normals = new Float32Array(positions.length);
+  // Stryker disable next-line EqualityOperator: one step more writes past the end of normals, which a typed array ignores
   for (let i = 0; i < positions.length; i += 9) {
     const ux = positions[i + 3] - positions[i], uy = positions[i + 4] - positions[i + 1], uz = positions[i + 5] - positions[i + 2];
     const vx = positions[i + 6] - positions[i], vy = positions[i + 7] - positions[i + 1], vz = positions[i + 8] - positions[i + 2];
     const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
     const len = Math.hypot(nx, ny, nz);
     const k = len > 0 ? 1 / len : 0;
+    // Stryker disable next-line EqualityOperator: c = 9 writes the next triangle's first normal, which its own step writes again (past the end for the last)
     for (let c = 0; c < 9; c += 3) {
       normals[i + c] = nx * k;
       normals[i + c + 1] = ny * k;
