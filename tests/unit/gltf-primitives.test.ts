@@ -214,6 +214,17 @@ describe('tangents for a normal map', () => {
     expect(round(read(m)!.tangents!)).toEqual([1, 1, 0, 1, 0, 0, 1, -1, 0, 0, 0, 1].map((x, i) => (i === 0 || i === 1 ? Number((x / Math.SQRT2).toFixed(6)) : x)));
   });
 
+  it('takes them through a general matrix, w kept where it does not mirror, a w of 0 read as +1', () => {
+    // Columns (2, 1, 3), (1, 4, 1), (3, 2, 5), determinant 4: (1, 2, 3) → (2 + 2 + 9, 1 + 8 + 6, 3 + 2 + 15) = (13, 15, 20).
+    const M = [2, 1, 3, 0, 1, 4, 1, 0, 3, 2, 5, 0, 10, 20, 30, 1];
+    const m = model({ POSITION: [3, TRI], NORMAL: [3, N], TANGENT: [4, [1, 2, 3, -1, 1, 2, 3, 0, 1, 2, 3, 1]] }, [0, 1, 2], { material: 0 }, materials({ index: 0 }));
+    const t = unit([13, 15, 20]);
+    expect(round(read(m, M)!.tangents!, 5)).toEqual(round([...t, -1, ...t, 1, ...t, 1], 5));
+    // A matrix that flattens (determinant 0) does not mirror: w as the file has it.
+    const flat = [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1];
+    expect(Array.from(read(m, flat)!.tangents!).filter((_, i) => i % 4 === 3)).toEqual([-1, 1, 1]);
+  });
+
   it('computes them from the UV set the normal map reads, none without that set, none without a normal map', () => {
     const uv0 = [0, 0, 1, 0, 0, 1], uv1 = [0, 0, 0, 1, 1, 0];
     const attrs = { POSITION: [3, TRI], NORMAL: [3, N], TEXCOORD_0: [2, uv0], TEXCOORD_1: [2, uv1] } as Record<string, [number, number[]]>;

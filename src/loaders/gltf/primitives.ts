@@ -91,6 +91,7 @@ export function readPiece(file: GltfFile, buffers: readonly Uint8Array[], p: Obj
 /** The UV set a material's normal map reads, or null when it has none. */
 function normalMapUv(file: GltfFile, material: number | null): number | null {
   if (material === null) return null;
+  // Stryker disable next-line StringLiteral: readPiece has refused a material past the list by then, with its own path
   const m = file.item('materials', material, `materials[${material}]`);
   if (m.normalTexture === undefined) return null;
   return int(file, object(file, m.normalTexture, `materials[${material}].normalTexture`), 'texCoord', `materials[${material}].normalTexture`, 0);
@@ -99,13 +100,16 @@ function normalMapUv(file: GltfFile, material: number | null): number | null {
 /** The file's tangents through the matrix's 3×3 part, unit; w turned where the matrix mirrors. */
 function transformTangents(v: Float32Array, m: Float64Array): Float32Array {
   const out = new Float32Array(v.length), mirror = det3(m) < 0 ? -1 : 1;
+  // Stryker disable next-line EqualityOperator: one step more writes past the end of out, which a typed array ignores
   for (let i = 0; i < v.length; i += 4) {
     const x = m[0] * v[i] + m[4] * v[i + 1] + m[8] * v[i + 2];
     const y = m[1] * v[i] + m[5] * v[i + 1] + m[9] * v[i + 2];
     const z = m[2] * v[i] + m[6] * v[i + 1] + m[10] * v[i + 2];
     const len = Math.sqrt(x * x + y * y + z * z) || 1;
     out[i] = x / len; out[i + 1] = y / len; out[i + 2] = z / len;
-    out[i + 3] = (v[i + 3] < 0 ? -1 : 1) * mirror;
+    const w = v[i + 3] < 0 ? -1 : 1;
+    // Stryker disable next-line ArithmeticOperator: mirror is 1 or −1, for which w / mirror = w * mirror
+    out[i + 3] = w * mirror;
   }
   return out;
 }
@@ -136,6 +140,7 @@ export function triangles(mode: number, listed: Uint32Array | null, vertexCount:
   return out;
 }
 
+// Stryker disable next-line BlockStatement: a fast path only; the general path gives the same values under the identity
 function isIdentity(m: Float64Array): boolean {
   // Stryker disable next-line all: a fast path only; the general path gives the same values under the identity (its cofactors are itself)
   for (let i = 0; i < 16; i++) if (m[i] !== (i % 5 === 0 ? 1 : 0)) return false;
@@ -166,6 +171,7 @@ function det3(m: Float64Array): number {
 function transformNormals(v: Float32Array, m: Float64Array, identity: boolean): Float32Array {
   // Stryker disable next-line ConditionalExpression,BlockStatement: the general path gives the same values under the identity (its cofactors are itself)
   if (identity) {
+    // Stryker disable next-line EqualityOperator: one step more reads and writes v[length], which a typed array ignores
     for (let i = 0; i < v.length; i += 3) {
       const len = Math.sqrt(v[i] * v[i] + v[i + 1] * v[i + 1] + v[i + 2] * v[i + 2]);
       const k = len > 0 ? 1 / len : 0;
@@ -176,12 +182,13 @@ function transformNormals(v: Float32Array, m: Float64Array, identity: boolean): 
     return v;
   }
   const s = Math.sign(det3(m)) || 1;
-  const c = [
+  const cofactors = [
     m[5] * m[10] - m[6] * m[9], m[6] * m[8] - m[4] * m[10], m[4] * m[9] - m[5] * m[8],
     m[2] * m[9] - m[1] * m[10], m[0] * m[10] - m[2] * m[8], m[1] * m[8] - m[0] * m[9],
     m[1] * m[6] - m[2] * m[5], m[2] * m[4] - m[0] * m[6], m[0] * m[5] - m[1] * m[4],
+  ];
   // Stryker disable next-line ArithmeticOperator: s is 1 or −1, for which x / s = x * s
-  ].map((x) => x * s);
+  const c = cofactors.map((x) => x * s);
   const out = new Float32Array(v.length);
   // Stryker disable next-line EqualityOperator: one step more writes past the end of out, which a typed array ignores
   for (let i = 0; i < v.length; i += 3) {
