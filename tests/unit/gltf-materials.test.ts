@@ -76,6 +76,8 @@ describe('refusals name the JSON path', () => {
     expect(refusal({ materials: [{}, { alphaMode: 'Mask' }] })).toEqual({
       path: 'materials[1].alphaMode', message: 'materials[1].alphaMode is "Mask", not OPAQUE, MASK or BLEND',
     });
+    // A long one is cut at 40 characters, its opening quote included.
+    expect(refusal({ materials: [{ alphaMode: 'M'.repeat(50) }] }).message).toBe(`materials[0].alphaMode is "${'M'.repeat(39)}, not OPAQUE, MASK or BLEND`);
   });
 
   it('names the material, its pbr block, texture, extension and field', () => {
