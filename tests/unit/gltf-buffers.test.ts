@@ -139,6 +139,8 @@ describe('meshopt fallback buffers', () => {
     expect(resolveBuffers(file({ buffers: [fallback({ uri: data })] }), null, new Map())).toEqual([bin]);
     expect(resolveBuffers(file({ buffers: [fallback({ uri: 'f.bin' })] }), null, new Map([[0, bin]]))).toEqual([bin]);
     expect(resolveBuffers(file({ buffers: [fallback({ uri: 'f.bin' })] }), bin, new Map())).toEqual([bytes()]);
+    // "data:" later in a path is a file name, not a data: URI: not at hand unless fetched.
+    expect(resolveBuffers(file({ buffers: [fallback({ uri: 'parts/data:1.bin' })] }), null, new Map())).toEqual([bytes()]);
   });
 
   it('a view decoded from meshopt reads the decoded bytes, cut to the view\'s byteLength', () => {

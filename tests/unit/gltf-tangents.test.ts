@@ -92,7 +92,8 @@ describe('computeTangents', () => {
   it('adds each triangle\'s ∂p/∂u whole, whatever its UV area: a vertex between two slopes takes their sum', () => {
     // Triangle (0, 1, 2) on the map above (UV area 0.22); triangle (0, 3, 4) on a second map through the same
     // corner, p0 + T2·Δu + B2·Δv, of UV area 0.02: vertex 0's tangent is T + T2 made orthogonal to its normal.
-    const T2 = [-1, 3, 0.5], B2 = [0.5, -1, 2];
+    // B2 against B, and the second triangle small: ∂p/∂v summed whole points against B, which a sum weighted by UV area would not.
+    const T2 = [-1, 3, 0.5], B2 = B.map((x) => -3 * x);
     const at2 = (du: number, dv: number) => [0, 1, 2].map((c) => P0[c] + T2[c] * du + B2[c] * dv);
     const uvs = [UV0, [UV0[0] + 0.5, UV0[1] + 0.1], [UV0[0] - 0.2, UV0[1] + 0.4], [UV0[0] + 0.1, UV0[1]], [UV0[0], UV0[1] + 0.2]];
     const positions = [at(...(uvs[0] as [number, number])), at(...(uvs[1] as [number, number])), at(...(uvs[2] as [number, number])), at2(0.1, 0), at2(0, 0.2)];
@@ -100,8 +101,19 @@ describe('computeTangents', () => {
     const t = computeTangents(new Float32Array(positions.flat()), new Float32Array(uvs.flatMap(() => normal)), new Float32Array(uvs.flat()),
       new Uint32Array([0, 1, 2, 0, 3, 4]));
     const sum = T.map((x, c) => x + T2[c]);
-    expectTangent(t, 0, unit(sum.map((x, c) => x - normal[c] * dot(normal, sum))), 1);
+    const t0 = unit(sum.map((x, c) => x - normal[c] * dot(normal, sum)));
+    const w0 = Math.sign(dot(cross(normal, t0), B.map((x, c) => x + B2[c])));
+    expect(w0).toBe(-1);
+    expect(Math.sign(dot(cross(normal, t0), B))).toBe(1);
+    expectTangent(t, 0, t0, w0);
     expectTangent(t, 3, unit(T2.map((x, c) => x - normal[c] * dot(normal, T2))), Math.sign(dot(cross(normal, unit(T2.map((x, c) => x - normal[c] * dot(normal, T2)))), B2)));
+  });
+
+  it('signs w by (N × T) · ∂p/∂v with every term of the cross product: N = (0.8, 0, 0.6), T = (0.6, 0, −0.8), ∂p/∂v = +y', () => {
+    // N × T = (0, 0.6 · 0.6 + 0.8 · 0.8, 0) = +y: w = +1 (the y term alone decides it).
+    const t = computeTangents(new Float32Array([0, 0, 0, 0.6, 0, -0.8, 0, 1, 0]), new Float32Array([0.8, 0, 0.6, 0.8, 0, 0.6, 0.8, 0, 0.6]),
+      new Float32Array([0, 0, 1, 0, 0, 1]), new Uint32Array([0, 1, 2]));
+    expectTangent(t, 0, [0.6, 0, -0.8], 1);
   });
 
   it('falls back, without UVs, to (0, nz, −ny) or (−nz, 0, nx) made unit, and to zero for a zero normal', () => {
