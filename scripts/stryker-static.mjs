@@ -26,17 +26,22 @@ function offset(text, { line, column }) {
 
 const vitest = () => spawnSync('npx', ['vitest', 'run', '--reporter=dot', ...tests], { encoding: 'utf8', env: { ...process.env, GPS_MUTATION_RUN: '1' } });
 const { files } = JSON.parse(fs.readFileSync(report, 'utf8'));
+for (const [name, file] of Object.entries(files)) {
+  if (fs.readFileSync(name, 'utf8') !== file.source) {
+    console.error(`${name} differs from the report's copy: re-run Stryker first (or restore the file)`);
+    process.exit(2);
+  }
+}
 if (vitest().status !== 0) {
   console.error('the tests fail without any mutant: nothing to judge by');
   process.exit(1);
 }
 let killed = 0, survived = 0;
 for (const [name, file] of Object.entries(files)) {
-  const original = fs.readFileSync(name, 'utf8');
-  if (original !== file.source) {
-    console.error(`${name} changed since the report: re-run Stryker first`);
-    process.exit(2);
-  }
+  const original = file.source;
+  // Interrupted, the file is restored before leaving.
+  const restore = () => { fs.writeFileSync(name, original); process.exit(130); };
+  process.once('SIGINT', restore).once('SIGTERM', restore);
   for (const m of file.mutants.filter((x) => x.status === 'Survived' && x.static)) {
     const from = offset(original, m.location.start), to = offset(original, m.location.end);
     fs.writeFileSync(name, original.slice(0, from) + m.replacement + original.slice(to));
@@ -49,5 +54,6 @@ for (const [name, file] of Object.entries(files)) {
       fs.writeFileSync(name, original);
     }
   }
+  process.removeListener('SIGINT', restore).removeListener('SIGTERM', restore);
 }
 console.log(`static mutants reported Survived: ${killed} killed by the tests when written by hand, ${survived} survived`);
