@@ -1,7 +1,8 @@
 // Dev server for the demo (and the browser tests), and the two library builds:
 //   `vite build`                    ESM, gl-matrix left as a dependency
 //   `vite build --mode standalone`  one self-contained minified file for <script type="module">
-import { defineConfig, type Plugin } from 'vite';
+import fs from 'node:fs';
+import { defineConfig, searchForWorkspaceRoot, type Plugin } from 'vite';
 import { demoModels } from './demo/demo-models.ts';
 import { glslMinify } from './scripts/glsl-minify.ts';
 import { chunkGroups } from './scripts/chunk-groups.ts';
@@ -33,10 +34,13 @@ export default defineConfig(({ mode, command }) => {
     worker: { format: 'es' as const, plugins: () => [dracoWasm()] },
     appType: 'mpa',
     // The software renderer's worker is a module worker (it imports the renderer's chunk).
-    server: { host: '127.0.0.1', port: 5173 },
+    // Draco's wasm is served from its package by path (/@fs/…, scripts/draco-wasm.ts): allowed where the
+    // package really lies, also when node_modules is a link to another checkout's (the mutation copies).
+    server: { host: '127.0.0.1', port: 5173, fs: { allow: [searchForWorkspaceRoot(process.cwd()), fs.realpathSync('node_modules/draco3d')] } },
     // The dev server's dependency scan reads every HTML file but the framework apps' (tests/frameworks/,
     // built on their own by tests/e2e/frameworks.spec.ts): the demo pre-bundles no React, Vue or Svelte.
-    optimizeDeps: { entries: ['**/*.html', '!tests/frameworks/**'] },
+    // The package check's app (tests/package/) imports the packed package, installed only there.
+    optimizeDeps: { entries: ['**/*.html', '!tests/frameworks/**', '!tests/package/**'] },
     build: {
       outDir: 'dist',
       emptyOutDir: !standalone,

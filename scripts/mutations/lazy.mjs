@@ -8,6 +8,7 @@ const LOD = 'tests/e2e/reflection-lod.spec.ts';
 const CHUNKS = 'tests/e2e/turn-debug-chunks.spec.ts';
 const CORE = 'tests/e2e/core-chunks.spec.ts';
 const PARTS = 'tests/unit/lazy-parts.test.ts';
+const GLTF = 'tests/e2e/gltf.spec.ts';
 
 export default [
   {
@@ -179,5 +180,26 @@ export default [
     why: 'scripts/: Stryker mutates src/ only (the chunk groups of the build)',
     edits: [{ file: 'scripts/chunk-groups.ts', find: 'return Object.entries(table).flatMap(', replace: 'return Object.entries(table).reverse().flatMap(' }],
     tests: [PARTS],
+  },
+  {
+    name: 'Z40 the meshopt decoder\'s chunk handed on as the module, not its MeshoptDecoder (no meshopt file decodes)',
+    why: 'lazy chunks in a page: the decoders are imported only in a page or its worker (a unit test injects its own)',
+    edits: [{ file: 'src/loaders/gltf/decoders.ts', find: ".then((m) => m.MeshoptDecoder)", replace: ".then((m) => m as unknown as MeshoptDecoderLike)" }],
+    tests: [GLTF],
+    build: true,
+  },
+  {
+    name: 'Z41 a Draco wasm that failed to load is remembered (every later Draco model fails too)',
+    why: 'lazy chunks in a page: the Draco decoder is loaded only in a page or its worker (a unit test injects its own)',
+    edits: [{ file: 'src/loaders/gltf/decoders.ts', find: '    draco = null;\n', replace: '' }],
+    tests: [GLTF],
+    build: true,
+  },
+  {
+    name: 'Z42 the Draco wasm\'s HTTP status not checked (an error page handed to WebAssembly)',
+    why: 'lazy chunks in a page: the Draco decoder is loaded only in a page or its worker (a unit test injects its own)',
+    edits: [{ file: 'src/loaders/gltf/decoders.ts', find: '  if (!response.ok) throw new Error(`${wasmUrl}: HTTP ${response.status}`);\n', replace: '' }],
+    tests: [GLTF],
+    build: true,
   },
 ];

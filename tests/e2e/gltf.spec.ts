@@ -124,6 +124,23 @@ test("only a glTF model fetches glTF's chunk, and only a compressed one its deco
   expect(triangles).toBe(4212);
 });
 
+// src/loaders/gltf/decoders.ts: a Draco wasm that cannot be fetched is an error naming the decoder
+// and the HTTP status, and it is not remembered: the next Draco model fetches it again and loads.
+test('a Draco decoder whose wasm fails is an error naming it, and the next Draco model tries again', async ({ page, consoleLog }) => {
+  let refuse = true;
+  await page.route('**/draco_decoder*.wasm', (route) => (refuse ? route.fulfill({ status: 503, body: 'busy' }) : route.continue()));
+  await openPage(page);
+  const ending = async (src: string) => (await mountHtml(page, `<glass-plane-scene time="0" spin="0"><glass-object src="${src}"></glass-object></glass-plane-scene>`))
+    .filter((e) => e.target === 'glass-object' && (e.type === 'load' || e.type === 'error'));
+  const failed = await ending('/tests/data/gltf/Box_Draco.glb?first');
+  expect(failed.map((e) => e.type)).toEqual(['error']);
+  expect(failed[0].detail).toMatchObject({ path: 'extensionsUsed', message: expect.stringMatching(/^the Draco decoder could not be loaded \(.*draco_decoder\.wasm: HTTP 503\)$/) });
+  refuse = false;
+  expect((await ending('/tests/data/gltf/Box_Draco.glb?second')).map((e) => e.type)).toEqual(['load']);
+  expect(consoleLog.take('pageerror')).toEqual([]);
+  expect(consoleLog.take('error').filter((e) => e.includes('Box_Draco'))).toHaveLength(1);
+});
+
 // The built bundle (npm test builds first): each decoder is its own chunk, Draco's wasm a file
 // beside it (dist/draco_decoder.wasm), fetched only by the Draco model.
 test('the standalone bundle loads a plain, a meshopt and a Draco GLB, each decoder only with its file', async ({ page }) => {

@@ -1,6 +1,7 @@
 // The official decoders of compressed glTF (docs/gltf.md#compression), each imported only when a
 // file needs it: a chunk of its own, never fetched for an uncompressed file. Draco's WebAssembly is
 // a file beside its chunk, fetched with it.
+// Stryker disable all: imported only in a page or its worker (a unit test injects its own decoders); the browser table judges it (scripts/mutations/lazy.mjs, Z40–Z42)
 import type { DracoModule } from './draco';
 import type { MeshoptDecoderLike } from './meshopt';
 
