@@ -14,9 +14,11 @@ const DESATURATION = 0.15;
 /** out = PBR Neutral of the linear colour (r, g, b). */
 export function toneMapNeutral(out: Float64Array | number[], r: number, g: number, b: number): Float64Array | number[] {
   const x = Math.min(r, g, b);
+  // Stryker disable next-line EqualityOperator: at x = 0.08 both give 0.04 (the curve is continuous there)
   const offset = x < 0.08 ? x - 6.25 * x * x : 0.04;
   r -= offset; g -= offset; b -= offset;
   const peak = Math.max(r, g, b);
+  // Stryker disable next-line EqualityOperator: at the start exactly the compression gives the colour itself (new peak 0.76, mix 0)
   if (peak < START_COMPRESSION) {
     out[0] = r; out[1] = g; out[2] = b;
     return out;
@@ -46,6 +48,7 @@ export function toneMapAces(out: Float64Array | number[], r: number, g: number, 
   const u2 = acesCurve(ACES_IN[6] * r + ACES_IN[7] * g + ACES_IN[8] * b);
   for (let c = 0; c < 3; c++) {
     const v = ACES_OUT[3 * c] * u0 + ACES_OUT[3 * c + 1] * u1 + ACES_OUT[3 * c + 2] * u2;
+    // Stryker disable next-line EqualityOperator: at 0 and 1 the clamp returns v itself either way
     out[c] = v < 0 ? 0 : v > 1 ? 1 : v;
   }
   return out;

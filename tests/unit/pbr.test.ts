@@ -19,7 +19,7 @@ describe('the three terms', () => {
     for (const a of [0.01, 0.25, 1]) expect(smithVisibility(a, 1, 1)).toBeCloseTo(0.25, 14);
     // α = 1: √(…) = 1, V = ½/(n·l + n·v).
     expect(smithVisibility(1, NL, NV)).toBeCloseTo(0.5 / 1.4, 14);
-    expect([smithVisibility(ALPHA, 0, NV), smithVisibility(ALPHA, NL, -0.1)]).toEqual([0, 0]);
+    expect([smithVisibility(ALPHA, 0, NV), smithVisibility(ALPHA, NL, 0), smithVisibility(ALPHA, NL, -0.1)]).toEqual([0, 0, 0]);
   });
 
   it('F: f0 at normal incidence, 1 at grazing, (1 − 1/√2)⁵ of the way at 45°', () => {
@@ -67,6 +67,7 @@ describe('the BRDF', () => {
 
   it('is 0 with the light or the viewer below the surface', () => {
     expect(f([1, 1, 1], 0, -0.1)).toEqual([0, 0, 0]);
+    expect(f([1, 1, 1], 0, 0)).toEqual([0, 0, 0]);
     expect(f([1, 1, 1], 0, NL, 0)).toEqual([0, 0, 0]);
   });
 });

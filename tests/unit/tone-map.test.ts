@@ -26,6 +26,8 @@ describe('Khronos PBR Neutral', () => {
     expect(rounded(toneMapNeutral([0, 0, 0], 2, 1, 0.5))).toEqual(rounded(expected));
     expect(rounded(expected)).toEqual([0.96, 0.534091, 0.321136]);
     expect(rounded(toneMapNeutral([0, 0, 0], 2, 2, 2))).toEqual([0.96, 0.96, 0.96]);
+    // (3, 1, 0.5) − 0.04: peak 2.96 → 1 − 0.0576/2.44 = 0.976393; mixed by 1 − 1/(0.15 · 1.983607 + 1) = 0.229311.
+    expect(rounded(toneMapNeutral([0, 0, 0], 3, 1, 0.5))).toEqual([0.976393, 0.467951, 0.34084]);
     // At the start exactly: the new peak is 1 − d²/d = 0.76, the colour itself.
     expect(rounded(toneMapNeutral([0, 0, 0], 0.8, 0.8, 0.8))).toEqual([0.76, 0.76, 0.76]);
     // Never past 1, however bright.
