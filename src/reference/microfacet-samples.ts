@@ -22,6 +22,7 @@ export class MicrofacetSamples {
     let counter = 0;
     // Counter-based: the k-th number of a pixel is hash(seed + k), uniform in [0, 1).
     const next = () => hash((seed + counter++) >>> 0) / 4294967296;
+    // Stryker disable next-line EqualityOperator: order[m] is past the end of an Int32Array of length m: the write is dropped
     for (let i = 0; i < m; i++) order[i] = i;
     // Fisher–Yates: which ξ2 stratum goes with the i-th ξ1 stratum.
     for (let i = m - 1; i > 0; i--) {
@@ -29,11 +30,13 @@ export class MicrofacetSamples {
       const t = order[i]; order[i] = order[j]; order[j] = t;
     }
     // A second shuffle decides which primary sample takes which pair.
+    // Stryker disable next-line EqualityOperator: slot[m] is past the end of an Int32Array of length m: the write is dropped
     for (let i = 0; i < m; i++) slot[i] = i;
     for (let i = m - 1; i > 0; i--) {
       const j = Math.floor(next() * (i + 1));
       const t = slot[i]; slot[i] = slot[j]; slot[j] = t;
     }
+    // Stryker disable next-line EqualityOperator: at i = m, slot[m] is undefined: no element of xi1 or xi2 is written
     for (let i = 0; i < m; i++) {
       this.xi1[slot[i]] = (i + next()) / m;
       this.xi2[slot[i]] = (order[i] + next()) / m;
