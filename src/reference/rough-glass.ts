@@ -42,6 +42,7 @@ export class RoughGlass {
     alpha: number, ior: number, mf: Microfacets, reflection: Float64Array, behind: Float64Array,
   ): void {
     const D = ray.direction, len = Math.hypot(D[0], D[1], D[2]), d = this.d, n = this.n;
+    // Stryker disable next-line EqualityOperator: k = 3 writes past the end of d and n (Float64Array(3)): dropped
     for (let k = 0; k < 3; k++) { d[k] = D[k] / len; n[k] = side * plane[k]; }
     const m = this.m, r = this.ray, sum = this.sum, one = this.one, tg = glass.t;
     for (let pass = 0; pass < 2; pass++) {
@@ -55,6 +56,7 @@ export class RoughGlass {
           reflectAbout(dir, d, m);
           if (dir[0] * n[0] + dir[1] * n[1] + dir[2] * n[2] <= 0) continue;
         } else if (!refractThin(dir, d, m, n, ior)) continue;
+        // Stryker disable next-line EqualityOperator: k = 3 writes past the end of the sample ray's three-element arrays: dropped
         for (let k = 0; k < 3; k++) {
           dir[k] *= len;
           r.origin[k] = glass.p[k] - tg * dir[k];
