@@ -41,6 +41,7 @@ export class ViewCamera {
       // opposite direction, t = −z: the nearest to the eye wins, as the GPU's depth says.
       const s = courseRange?.behind ? -1 : 1;
       this.orthographic = false;
+      // Stryker disable next-line EqualityOperator: k = 3 writes past the end of three-element Float64Arrays: dropped
       for (let k = 0; k < 3; k++) {
         this.eye[k] = cam.c[k];
         this.forward[k] = s * cam.n[k];
@@ -53,6 +54,7 @@ export class ViewCamera {
     this.eye[0] = p[0]; this.eye[1] = p[1]; this.eye[2] = p[2];
     const v = rotationOnlyView(this.view, state.yaw, state.pitch, this.scratch);
     // lookAt stores the camera axes as rows; the view looks down its −z row.
+    // Stryker disable next-line EqualityOperator: k = 3 writes past the end of three-element Float64Arrays: dropped
     for (let k = 0; k < 3; k++) {
       this.right[k] = v[k * 4];
       this.up[k] = v[k * 4 + 1];
@@ -84,6 +86,7 @@ export class ViewCamera {
     const ortho = this.orthographic;
     const dx = ortho ? ray.odx : ray.ddx, dy = ortho ? ray.ody : ray.ddy;
     const zx = ortho ? ray.ddx : ray.odx, zy = ortho ? ray.ddy : ray.ody;
+    // Stryker disable next-line EqualityOperator: k = 3 writes past the end of three-element Float64Arrays: dropped
     for (let k = 0; k < 3; k++) {
       const side = sx * r[k] + sy * u[k];
       o[k] = ortho ? this.eye[k] + side : this.eye[k];
