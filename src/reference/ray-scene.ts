@@ -38,6 +38,7 @@ export class RayScene {
   readonly codes: SurfaceCodes;
   /** The glass's plane and axes; null when the scene has no glass. */
   readonly glass: GlassFrame | null;
+  // Stryker disable next-line ArrayDeclaration: read only when the scene has a glass, and then set from it in the constructor
   private readonly size: readonly [number, number] = [0, 0];
 
   /** Each object's bounds centre in the world at the frame's time (which side of the glass it is on). */
@@ -83,6 +84,7 @@ export class RayScene {
     hit.ng[0] = nx; hit.ng[1] = ny; hit.ng[2] = nz;
     hit.u = s / w;
     hit.v = r / h;
+    // Stryker disable next-line EqualityOperator: k = 3 writes past the end of gu and gv (Float64Array(3)): dropped
     for (let k = 0; k < 3; k++) {
       hit.gu[k] = a[k] / w;
       hit.gv[k] = b[k] / h;
