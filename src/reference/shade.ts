@@ -4,6 +4,7 @@ import { GLASS_BODY as BODY } from '../scene/default-scene';
 import type { Light, Material } from '../scene/scene';
 import type { SurfaceHit } from './surface-hit';
 
+// Stryker disable next-line EqualityOperator: at 0 and at 1 the clamp returns x itself either way
 export const clamp01 = (x: number): number => (x < 0 ? 0 : x > 1 ? 1 : x);
 
 /** A light with its vector ready: a unit direction towards it, or its position. */
@@ -61,16 +62,19 @@ export function shadeObject(
     if (nl > 0) {
       if (!haveV && towardsViewer) {
         vx = towardsViewer[0]; vy = towardsViewer[1]; vz = towardsViewer[2];
+        // Stryker disable next-line BooleanLiteral: V is the same for every light: working it out again gives the same numbers
         haveV = true;
       } else if (!haveV) {
         vx = eye[0] - p[0]; vy = eye[1] - p[1]; vz = eye[2] - p[2];
         const vl = Math.hypot(vx, vy, vz);
         vx /= vl; vy /= vl; vz /= vl;
+        // Stryker disable next-line BooleanLiteral: V is the same for every light: working it out again gives the same numbers
         haveV = true;
       }
       const hx = lx + vx, hy = ly + vy, hz = lz + vz;
       const nh = (n[0] * hx + n[1] * hy + n[2] * hz) / Math.hypot(hx, hy, hz);
       const s = Math.max(nh, 0) ** material.shininess;
+      // Stryker disable next-line EqualityOperator: k = 3 writes sums[9], past the end of its 9 elements: dropped
       for (let k = 0; k < 3; k++) sums[6 + k] += ks[k] * light.specular[k] * s;
     }
   }
