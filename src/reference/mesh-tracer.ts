@@ -62,6 +62,7 @@ export class MeshTracer implements ObjectTracer {
     hit.frame = frame;
     hit.t = t;
     const ro = ray.origin, rd = ray.direction;
+    // Stryker disable next-line EqualityOperator: k = 3 writes past the end of the hit's three-element arrays: dropped
     for (let k = 0; k < 3; k++) {
       hit.p[k] = ro[k] + t * rd[k];
       hit.q[k] = o[k] + t * d[k];
@@ -75,6 +76,7 @@ export class MeshTracer implements ObjectTracer {
     // Shading normal: interpolated, or the face's where the corners' normals cancel out.
     const nq = hit.nq;
     const vertices = positions.length / 3;
+    // Stryker disable next-line EqualityOperator: k = 3 writes past the end of nq (Float64Array(3)): dropped
     for (let k = 0; k < 3; k++) {
       nq[k] = normals.length >= 3 * vertices
         ? w0 * normals[i0 * 3 + k] + w1 * normals[i1 * 3 + k] + w2 * normals[i2 * 3 + k] : 0;
