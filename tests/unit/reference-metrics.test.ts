@@ -79,7 +79,26 @@ describe('compareImages', () => {
   it('empty regions give NaN, a wrong-sized image throws a prefixed error', () => {
     const ref = { ...tiny(), regions: new Uint8Array(5) };
     expect(compareImages(ref, ref.rgba).rmse.glass).toBeNaN();
-    expect(() => compareImages(ref, new Uint8Array(16))).toThrow(/^glass-plane-scene:/);
+    expect(() => compareImages(ref, new Uint8Array(16))).toThrow('glass-plane-scene: image has 16 bytes, the 5×1 reference needs 20');
+  });
+});
+
+describe('compareImages: images of more than one row', () => {
+  it('counts width × height pixels, row by row', () => {
+    // 2×3, every pixel background at 0.5 (reference byte 128); the image's bottom-right pixel off by 6 in green.
+    const rgb = new Float64Array(18).fill(0.5), rgba = new Uint8ClampedArray(24);
+    for (let i = 0; i < 6; i++) rgba.set([128, 128, 128, 255], 4 * i);
+    const ref: ReferenceImage = {
+      width: 2, height: 3, view: 'final', samplesPerAxis: 1, textureFilter: 'point', rgb, rgba, regions: new Uint8Array(6), keys: new Int32Array(6),
+    };
+    const img = new Uint8ClampedArray(rgba);
+    img[4 * 5 + 1] += 6;
+    const c = compareImages(ref, img, { against: 'rgba8' });
+    expect(c.pixels.all).toBe(6);
+    expect(c.pixels.background).toBe(6);
+    expect(c.rmse.all).toBeCloseTo(Math.sqrt(36 / 18), 12);
+    expect(c.maxError).toBe(6);
+    expect(() => compareImages(ref, new Uint8Array(20))).toThrow('glass-plane-scene: image has 20 bytes, the 2×3 reference needs 24');
   });
 });
 
