@@ -28,6 +28,7 @@ export class BoxTracer implements ObjectTracer {
 
   constructor(readonly frame: ObjectFrame, private readonly size: number, private readonly object: number, private readonly firstCode: number) {
     this.half = size / 2;
+    // Stryker disable next-line EqualityOperator: flip[3] is past its end; a zero scale gives NaN slabs on its axis, whose faces are never entered
     for (let k = 0; k < 3; k++) this.flip[k] = frame.scale[k] < 0 ? -1 : 1;
   }
 
@@ -54,6 +55,7 @@ export class BoxTracer implements ObjectTracer {
       tFar = Math.min(tFar, Math.max(ta, tb));
     }
     if (axis < 0 || !(tNear <= tFar)) return false;
+    // Stryker disable next-line EqualityOperator: the entry axis always has d[axis] ≠ 0 (a zero component skips its slab)
     const face = FACE_OF[axis][d[axis] > 0 ? 1 : 0];
     const [fn, fa, fb] = BOX_FACES[face];
     hit.surface = this.firstCode + face;
@@ -71,9 +73,11 @@ export class BoxTracer implements ObjectTracer {
     hit.u = u;
     hit.v = v;
     const ro = ray.origin, rd = ray.direction, f = this.flip;
+    // Stryker disable next-line ArithmeticOperator: f is ±1, so fn/f = fn·f
     const n0 = fn[0] * f[0], n1 = fn[1] * f[1], n2 = fn[2] * f[2];
     const a0 = fa[0] / s[0], a1 = fa[1] / s[1], a2 = fa[2] / s[2];
     const b0 = fb[0] / s[0], b1 = fb[1] / s[1], b2 = fb[2] / s[2];
+    // Stryker disable next-line EqualityOperator: k = 3 writes past the end of the hit's three-element arrays: dropped
     for (let k = 0; k < 3; k++) {
       hit.p[k] = ro[k] + tNear * rd[k];
       // World vector = R·(object vector): rows of R are (m[k], m[4 + k], m[8 + k]). The face
@@ -116,6 +120,7 @@ export class SphereTracer implements ObjectTracer {
     hit.frame = frame;
     hit.t = t;
     const ro = ray.origin, rd = ray.direction, p = hit.p;
+    // Stryker disable next-line EqualityOperator: k = 3 writes past the end of p (Float64Array(3)): dropped
     for (let k = 0; k < 3; k++) p[k] = ro[k] + t * rd[k];
     // The object-space point from the world point (not o + t·d): with no rotation and unit
     // scale this is p − centre exactly, as the world-space formula had it.
