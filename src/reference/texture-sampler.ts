@@ -20,6 +20,7 @@ export function proceduralGrey(colorSpace: ColorSpace): Float64Array {
   const rgba = proceduralTexture();
   const levels = byteLevels(colorSpace);
   const grey = new Float64Array(TEXTURE_SIZE * TEXTURE_SIZE);
+  // Stryker disable next-line EqualityOperator: i = grey.length writes past the end of grey: dropped
   for (let i = 0; i < grey.length; i++) grey[i] = levels[rgba[i * 4]];
   return grey;
 }
@@ -52,20 +53,25 @@ export class TextureSampler {
   /** `grey`: W×H values in 0..1, row by row; absent, the procedural texture's grey levels as stored. */
   constructor(grey?: Float64Array, width = TEXTURE_SIZE, height = TEXTURE_SIZE) {
     if (grey === undefined) {
+      // Stryker disable next-line StringLiteral: any colour space but 'srgb' reads the bytes as stored, as 'none' does
       grey = proceduralGrey('none');
       width = height = TEXTURE_SIZE;
     }
     this.grey = grey;
     this.width = width;
     this.height = height;
+    // Stryker disable next-line ConditionalExpression: the mask is only a faster remainder: −1 (remainder) gives the same texels
     this.maskX = (width & (width - 1)) === 0 ? width - 1 : -1;
+    // Stryker disable next-line ConditionalExpression: the mask is only a faster remainder: −1 (remainder) gives the same texels
     this.maskY = (height & (height - 1)) === 0 ? height - 1 : -1;
   }
 
   /** Texel (x, y) wrapped, 0..1. */
   texel(x: number, y: number): number {
     const W = this.width, H = this.height;
+    // Stryker disable next-line ConditionalExpression, EqualityOperator: masking is only a faster remainder (a mask of 0, one texel, too): the remainder gives the same texel
     const i = this.maskX >= 0 ? x & this.maskX : ((x % W) + W) % W;
+    // Stryker disable next-line ConditionalExpression, EqualityOperator: masking is only a faster remainder (a mask of 0, one texel, too): the remainder gives the same texel
     const j = this.maskY >= 0 ? y & this.maskY : ((y % H) + H) % H;
     return this.grey[j * W + i];
   }
@@ -100,7 +106,9 @@ export class TextureSampler {
     p[6] = cs - hs1 + hs2; p[7] = ct - ht1 + ht2;
     const sMin = Math.min(p[0], p[2], p[4], p[6]);
     const sMax = Math.max(p[0], p[2], p[4], p[6]);
+    // Stryker disable next-line MethodExpression: only floor(tMin) = floor(tMax) is asked (one patch), which reads the same either way round
     const tMin = Math.min(p[1], p[3], p[5], p[7]);
+    // Stryker disable next-line MethodExpression: only floor(tMin) = floor(tMax) is asked (one patch), which reads the same either way round
     const tMax = Math.max(p[1], p[3], p[5], p[7]);
     const i0 = Math.floor(sMin), i1 = Math.floor(sMax);
     const j0 = Math.floor(tMin), j1 = Math.floor(tMax);
@@ -113,12 +121,15 @@ export class TextureSampler {
     for (let i = i0; i <= i1; i++) {
       let n = clip(p, 4, 0, i, 1, this.half);
       n = clip(this.half, n, 0, i + 1, -1, this.strip);
+      // Stryker disable next-line ConditionalExpression: a strip of fewer than 3 vertices has no rows to cut (or only pieces of fewer than 3 vertices, skipped below)
       if (n < 3) continue;
       let lo = Infinity, hi = -Infinity;
+      // Stryker disable next-line EqualityOperator: k is odd, so k ≤ 2n stops where k < 2n does
       for (let k = 1; k < 2 * n; k += 2) { lo = Math.min(lo, this.strip[k]); hi = Math.max(hi, this.strip[k]); }
       for (let j = Math.floor(lo), jEnd = Math.floor(hi); j <= jEnd; j++) {
         let m = clip(this.strip, n, 1, j, 1, this.half);
         m = clip(this.half, m, 1, j + 1, -1, this.piece);
+        // Stryker disable next-line ConditionalExpression: a piece of fewer than 3 vertices has zero area and zero moments: it adds 0
         if (m >= 3) sum += this.patchIntegral(i, j, this.piece, m);
       }
     }
@@ -166,7 +177,9 @@ function clip(src: Float64Array, n: number, axis: 0 | 1, bound: number, sign: 1 
     if ((da >= 0) !== (db >= 0)) {
       const f = da / (da - db);
       // Snap the crossing onto the line exactly so neighbouring cells share their edge.
+      // Stryker disable next-line ConditionalExpression: the crossing interpolated lies on the line up to rounding (the snap only makes neighbouring cells share it)
       out[2 * m] = axis === 0 ? bound : ax + f * (bx - ax);
+      // Stryker disable next-line ConditionalExpression: the crossing interpolated lies on the line up to rounding (the snap only makes neighbouring cells share it)
       out[2 * m + 1] = axis === 1 ? bound : ay + f * (by - ay);
       m++;
     }
