@@ -49,7 +49,7 @@ const OWN_TESTS = {
     'reference-ray', 'reference-clip', 'reference-surface-codes', 'reference-microfacet-samples', 'reference-object-frame',
     'reference-image-texture', 'reference-rough-glass', 'reference-regions', 'reference-view-camera', 'reference-ray-scene',
     'reference-shade', 'reference-mesh-tracer', 'reference-analytic-tracers', 'reference-texture-sampler',
-    'reference-surface-texture', 'reference-bvh', 'reference-sample-tracer',
+    'reference-surface-texture', 'reference-bvh', 'reference-sample-tracer', 'reference-renderer',
   ],
 };
 for (const [folder, names] of Object.entries(OWN_TESTS)) OWN_TESTS[folder] = names.map((n) => `tests/unit/${n}.test.ts`);

@@ -131,10 +131,12 @@ export function renderScene(scene: Scene, state: ViewState, images?: SceneImages
           const key = tracer.sample(x, y, fx, fy, colour);
           if (sx === 0 && sy === 0) first = key;
           else if (key !== first) mixed[i] = 1;
+          // Stryker disable next-line EqualityOperator: sum[3] is past the end of sum (Float64Array(3)): dropped
           for (let k = 0; k < 3; k++) sum[k] += colour[k];
         }
       }
       keys[i] = first;
+      // Stryker disable next-line EqualityOperator: k = 3 writes the next pixel's red and alpha, both written again (or past the end)
       for (let k = 0; k < 3; k++) {
         const mean = sum[k] * weight;
         const c = encode ? linearToSrgb(mean) : mean;
