@@ -28,7 +28,7 @@ export class BoxTracer implements ObjectTracer {
 
   constructor(readonly frame: ObjectFrame, private readonly size: number, private readonly object: number, private readonly firstCode: number) {
     this.half = size / 2;
-    // Stryker disable next-line EqualityOperator: flip[3] is past its end; a zero scale gives NaN slabs on its axis, whose faces are never entered
+    // Stryker disable next-line EqualityOperator: flip[3] is dropped; a zero scale makes NaN slabs, never entered
     for (let k = 0; k < 3; k++) this.flip[k] = frame.scale[k] < 0 ? -1 : 1;
   }
 

@@ -33,15 +33,12 @@ export class Bvh {
     const count = Math.floor(indices.length / 3);
     const box = new Float64Array(count * 6);
     const centre = new Float64Array(count * 3);
-    // Stryker disable next-line EqualityOperator: f = count reads no triangle (undefined corners) and writes past the ends of box and centre: dropped
     for (let f = 0; f < count; f++) {
       for (let k = 0; k < 3; k++) {
         let lo = Infinity, hi = -Infinity;
         for (let c = 0; c < 3; c++) {
           const x = positions[indices[3 * f + c] * 3 + k];
-          // Stryker disable next-line EqualityOperator: at x = lo either branch leaves lo the same
           if (x < lo) lo = x;
-          // Stryker disable next-line EqualityOperator: at x = hi either branch leaves hi the same
           if (x > hi) hi = x;
         }
         box[f * 6 + k] = lo;
@@ -50,7 +47,6 @@ export class Bvh {
       }
     }
     const order = new Int32Array(count);
-    // Stryker disable next-line EqualityOperator: order[count] is past the end of the Int32Array: dropped
     for (let f = 0; f < count; f++) order[f] = f;
     const maxNodes = Math.max(1, 2 * count - 1);
     const bounds = new Float64Array(maxNodes * 6);
@@ -63,7 +59,6 @@ export class Bvh {
     this.nodes = nodes.slice(0, this.nodeCount * 2);
     this.order = order;
     this.edges = new Float64Array(count * 9);
-    // Stryker disable next-line EqualityOperator: s = count reads order[count] (undefined) and writes past the end of edges: dropped
     for (let s = 0; s < count; s++) {
       const f = order[s];
       const a = indices[3 * f] * 3, b = indices[3 * f + 1] * 3, c = indices[3 * f + 2] * 3;
@@ -90,35 +85,26 @@ export class Bvh {
     let best = tMax, found = -1, b1 = 0, b2 = 0;
     let top = 0;
     stack[top++] = 0;
-    // Stryker disable next-line EqualityOperator: one more pass at top = 0 pops stack[−1], undefined: a node with no bounds and no triangles, then the loop ends
     while (top > 0) {
       const node = stack[--top];
       // Slab test against [tMin, best]; NaN (origin on a slab of a parallel axis) counts as inside.
       const o6 = node * 6;
       let t0 = tMin, t1 = best;
+      // Stryker disable ConditionalExpression, EqualityOperator: the survivors widen [t0, t1] or swap equal ends: no kept hit is culled
       let a = (bounds[o6] - ox) * ix, b = (bounds[o6 + 3] - ox) * ix;
-      // Stryker disable next-line EqualityOperator: swapping equal ends changes nothing
       if (a > b) { const s = a; a = b; b = s; }
-      // Stryker disable next-line ConditionalExpression, EqualityOperator: every mutant here only widens [t0, t1] (culls less): a node holding a kept hit is never culled either way
       if (a > t0) t0 = a;
-      // Stryker disable next-line ConditionalExpression, EqualityOperator: every mutant here only widens [t0, t1] (culls less): a node holding a kept hit is never culled either way
       if (b < t1) t1 = b;
       a = (bounds[o6 + 1] - oy) * iy; b = (bounds[o6 + 4] - oy) * iy;
-      // Stryker disable next-line EqualityOperator: swapping equal ends changes nothing
       if (a > b) { const s = a; a = b; b = s; }
-      // Stryker disable next-line ConditionalExpression, EqualityOperator: every mutant here only widens [t0, t1] (culls less): a node holding a kept hit is never culled either way
       if (a > t0) t0 = a;
-      // Stryker disable next-line ConditionalExpression, EqualityOperator: every mutant here only widens [t0, t1] (culls less): a node holding a kept hit is never culled either way
       if (b < t1) t1 = b;
       a = (bounds[o6 + 2] - oz) * iz; b = (bounds[o6 + 5] - oz) * iz;
-      // Stryker disable next-line EqualityOperator: swapping equal ends changes nothing
       if (a > b) { const s = a; a = b; b = s; }
-      // Stryker disable next-line ConditionalExpression, EqualityOperator: every mutant here only widens [t0, t1] (culls less): a node holding a kept hit is never culled either way
       if (a > t0) t0 = a;
-      // Stryker disable next-line ConditionalExpression, EqualityOperator: every mutant here only widens [t0, t1] (culls less): a node holding a kept hit is never culled either way
       if (b < t1) t1 = b;
-      // Stryker disable next-line ConditionalExpression: never culling visits more nodes, none of which holds a kept hit
       if (t0 > t1) continue;
+      // Stryker restore ConditionalExpression, EqualityOperator
       const first = nodes[2 * node], n = nodes[2 * node + 1];
       if (n === 0) {
         stack[top++] = first; // right child, visited after the left
@@ -131,7 +117,7 @@ export class Bvh {
         const e2x = edges[e + 6], e2y = edges[e + 7], e2z = edges[e + 8];
         const px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
         const det = e1x * px + e1y * py + e1z * pz;
-        // Stryker disable next-line ConditionalExpression, LogicalOperator: a zero or NaN determinant makes u, v and t infinite or NaN, which the tests below turn down anyway
+        // Stryker disable next-line ConditionalExpression, LogicalOperator: det 0 or NaN makes u, v, t infinite or NaN: turned down below
         if (det === 0 || det !== det) continue;
         const inv = 1 / det;
         const sx = ox - edges[e], sy = oy - edges[e + 1], sz = oz - edges[e + 2];
@@ -179,7 +165,6 @@ class Builder {
     // Work items: [node, first, count, depth, parent]. A left child is numbered when pushed (it is
     // popped next, so it lands at parent + 1); a right child (node −1) when popped, after the whole
     // left subtree, and its parent then learns its index.
-    // Stryker disable next-line ArrayDeclaration: an extra first element is popped last as a parent that is not ≥ 0 with an undefined count: a no-op pass
     const work: number[] = [];
     this.nodeCount = 1;
     work.push(0, 0, count, 1, -1);
@@ -193,18 +178,15 @@ class Builder {
         node = this.nodeCount++;
         this.nodes[2 * parent] = node;
       }
-      // Stryker disable next-line EqualityOperator: at a tie either branch leaves the same depth
       if (depth > this.depth) this.depth = depth;
       this.fitBounds(node, first, n);
       const split = n > LEAF_SIZE ? this.split(node, first, n) : -1;
-      // Stryker disable next-line EqualityOperator: a split slot is never 0 (it lies strictly inside [first, first + n), first ≥ 0)
       if (split < 0) {
         this.nodes[2 * node] = first;
         this.nodes[2 * node + 1] = n;
         continue;
       }
       const left = this.nodeCount++;
-      // Stryker disable next-line UnaryOperator: a right child's node number is replaced when it is popped (its parent is ≥ 0)
       work.push(-1, split, first + n - split, depth + 1, node);
       work.push(left, first, split - first, depth + 1, -1);
       this.nodes[2 * node + 1] = 0;
@@ -218,9 +200,7 @@ class Builder {
     for (let s = first; s < first + n; s++) {
       const f = this.order[s] * 6;
       for (let k = 0; k < 3; k++) {
-        // Stryker disable next-line EqualityOperator: at a tie either branch leaves the same bound
         if (this.box[f + k] < b[o + k]) b[o + k] = this.box[f + k];
-        // Stryker disable next-line EqualityOperator: at a tie either branch leaves the same bound
         if (this.box[f + 3 + k] > b[o + 3 + k]) b[o + 3 + k] = this.box[f + 3 + k];
       }
     }
@@ -236,12 +216,10 @@ class Builder {
       let cMax = -Infinity;
       for (let s = first; s < first + n; s++) {
         const c = centre[order[s] * 3 + axis];
-        // Stryker disable next-line EqualityOperator: at a tie either branch leaves the same bound
         if (c < cMin) cMin = c;
-        // Stryker disable next-line EqualityOperator: at a tie either branch leaves the same bound
         if (c > cMax) cMax = c;
       }
-      // Stryker disable next-line ConditionalExpression, EqualityOperator: with cMax = cMin the scale is infinite, every bin index NaN, every bin empty: the axis is passed over anyway
+      // Stryker disable next-line ConditionalExpression, EqualityOperator: at cMax = cMin every bin index is NaN: no bin filled, no split
       if (!(cMax > cMin)) continue;
       cScale = BINS / (cMax - cMin);
       const cost = this.bestBinSplit(first, n, axis, cMin, cScale);
@@ -268,7 +246,6 @@ class Builder {
   private bestBinSplit(first: number, n: number, axis: number, cMin: number, cScale: number): { cost: number; bin: number } {
     const { binBox, binCount, rightArea, rightCount, box, centre, order } = this;
     binCount.fill(0);
-    // Stryker disable next-line EqualityOperator: bin BINS is past the end of binBox: dropped
     for (let k = 0; k < BINS; k++) {
       binBox[k * 6] = binBox[k * 6 + 1] = binBox[k * 6 + 2] = Infinity;
       binBox[k * 6 + 3] = binBox[k * 6 + 4] = binBox[k * 6 + 5] = -Infinity;
@@ -279,28 +256,22 @@ class Builder {
       binCount[bin]++;
       const o = bin * 6;
       for (let k = 0; k < 3; k++) {
-        // Stryker disable next-line EqualityOperator: at a tie either branch leaves the same bound
         if (box[f * 6 + k] < binBox[o + k]) binBox[o + k] = box[f * 6 + k];
-        // Stryker disable next-line EqualityOperator: at a tie either branch leaves the same bound
         if (box[f * 6 + 3 + k] > binBox[o + 3 + k]) binBox[o + 3 + k] = box[f * 6 + 3 + k];
       }
     }
     // Sweep from the right: rightArea[k] = area of bins k+1.., rightCount likewise.
     const acc = new Float64Array([Infinity, Infinity, Infinity, -Infinity, -Infinity, -Infinity]);
     let cnt = 0;
-    // Stryker disable next-line EqualityOperator: k = 0 writes rightArea[−1] and rightCount[−1] (dropped); acc and cnt are reset after the sweep
     for (let k = BINS - 1; k > 0; k--) {
       grow(acc, binBox, k * 6);
       cnt += binCount[k];
-      // Stryker disable next-line ConditionalExpression, EqualityOperator: with nothing swept acc is still empty, whose area is 0
       rightArea[k - 1] = cnt > 0 ? area(acc, 0) : 0;
       rightCount[k - 1] = cnt;
     }
     acc.set([Infinity, Infinity, Infinity, -Infinity, -Infinity, -Infinity]);
     cnt = 0;
-    // Stryker disable next-line UnaryOperator: with no split found the cost stays Infinity and the bin is never used
     let best = Infinity, bestBin = -1;
-    // Stryker disable next-line EqualityOperator, ArithmeticOperator: at k ≥ BINS − 1 rightCount is 0 (never written) or undefined (a NaN cost): skipped
     for (let k = 0; k < BINS - 1; k++) {
       grow(acc, binBox, k * 6);
       cnt += binCount[k];
@@ -314,9 +285,7 @@ class Builder {
 
 function grow(acc: Float64Array, b: Float64Array, o: number): void {
   for (let k = 0; k < 3; k++) {
-    // Stryker disable next-line EqualityOperator: at a tie either branch leaves the same bound
     if (b[o + k] < acc[k]) acc[k] = b[o + k];
-    // Stryker disable next-line EqualityOperator: at a tie either branch leaves the same bound
     if (b[o + 3 + k] > acc[3 + k]) acc[3 + k] = b[o + 3 + k];
   }
 }

@@ -25,7 +25,7 @@ export function imageTexture(image: DecodedImage, colorSpace: ColorSpace): Chann
     // Stryker disable next-line EqualityOperator: a row j = h would be written past the end of grey (w·h long): dropped
     for (let j = 0; j < h; j++) {
       const row = (h - 1 - j) * w;
-      // Stryker disable next-line EqualityOperator: texel i = w is the next row's first, written again by that row (past the end after the last)
+      // Stryker disable next-line EqualityOperator: texel i = w is the next row's first, written again (or past the end)
       for (let i = 0; i < w; i++) grey[j * w + i] = levels[data[(row + i) * 4 + c]];
     }
     return new TextureSampler(grey, w, h);

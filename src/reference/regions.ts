@@ -54,7 +54,7 @@ export function regionMap(
   const boundary = new Uint8Array(width * height);
   // Stryker disable next-line EqualityOperator: a row y = height only reads keys in range and writes boundary past its end: dropped
   for (let y = 0; y < height; y++) {
-    // Stryker disable next-line EqualityOperator: x = width writes boundary at the next row's first pixel, written again by that row (past the end after the last)
+    // Stryker disable next-line EqualityOperator: x = width writes the next row's first pixel, written again (or past the end)
     for (let x = 0; x < width; x++) {
       const i = y * width + x;
       boundary[i] = mixed[i] || differsFromNeighbour(keys, width, height, x, y) ? 1 : 0;

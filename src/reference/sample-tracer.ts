@@ -89,16 +89,12 @@ export class SampleTracer {
     this.lights = scene.lights.slice(0, MAX_LIGHTS).map(prepareLight); // as the renderers: docs/scene-model.md#lights
     this.texture = new SurfaceTexture(filter, view.colorSpace, images);
     const bg = scene.background;
-    // Stryker disable next-line EqualityOperator: k = 3 writes past the end of backgroundColour (Float64Array(3)): dropped
     for (let k = 0; k < 3; k++) this.backgroundColour[k] = view.colorSpace === 'srgb' ? srgbToLinear(bg[k]) : bg[k];
     this.plane = this.scene.glass === null ? null : this.scene.glass.plane;
     this.alpha = ggxAlpha(view.roughness ?? 0);
-    // Stryker disable StringLiteral: viewerSide treats every projection but 'orthographic' as perspective
     this.side = this.plane === null ? 1
       : viewerSide(this.plane, this.camera.eye, this.camera.forward, view.projection ?? 'perspective');
-    // Stryker restore StringLiteral
     if (this.plane !== null) reflectPoint(this.mirroredEye, this.camera.eye, this.plane);
-    // Stryker disable next-line EqualityOperator: layer MAX_LAYERS is never reached (shadeChain stops at level + 1 = MAX_LAYERS): one fewer changes nothing
     for (let i = 0; i <= MAX_LAYERS; i++) {
       this.direct.push(new Layer());
       this.mirror.push(new Layer());
@@ -150,10 +146,8 @@ export class SampleTracer {
     const { fresnel: model, ior, transparency } = this.view;
     const f = glassFresnel(model, ior, glass, ray.direction);
     const behind = object ? object.surface : SURFACE_NONE;
-    // Stryker disable next-line BooleanLiteral: past the glass every later surface has t beyond the glass's, so g.t > tMin turns the glass down anyway
     this.shadeChain(object, ray, this.camera.eye, 0, level, false, layer.behind);
     this.reflected = this.reflectionAlong(ray, layer.reflection);
-    // Stryker disable next-line ConditionalExpression, EqualityOperator: at α = 0 every microfacet normal is the glass's: the rough path gives the smooth values (to the bit where tested)
     if (this.alpha > 0 && this.microfacets !== null) {
       this.rough.apply(this, ray, this.mirrored, glass, level, this.side, this.plane!, this.alpha, this.view.ior, this.microfacets, layer.reflection, layer.behind);
     }
@@ -178,7 +172,6 @@ export class SampleTracer {
 
   private mirroredAlong(m: Ray, tMin: number, level: number, out: Float64Array, eye: Float64Array = this.mirroredEye): number {
     const object = this.nearest(m, tMin, this.side, this.mirror[level]);
-    // Stryker disable next-line BooleanLiteral: a mirrored chain (clipSide ≠ 0) goes on through mirroredAlong, which does not read glassOn
     this.shadeChain(object, m, eye, this.side, level, false, out);
     return object ? object.surface : SURFACE_NONE;
   }
@@ -190,7 +183,6 @@ export class SampleTracer {
 
   /** The rough transmission's path (RoughGlass): what lies past depth `tMin` along `ray`, shaded towards `eye`. */
   transmittedAlong(ray: Ray, tMin: number, level: number, eye: Float64Array, out: Float64Array): void {
-    // Stryker disable next-line BooleanLiteral: past the glass (tMin = its t) every later surface is beyond it, so g.t > tMin turns the glass down anyway
     this.shadeChain(this.nearest(ray, tMin, 0, this.direct[level]), ray, eye, 0, level, false, out);
   }
 
@@ -204,7 +196,6 @@ export class SampleTracer {
     if (object === null) return true;
     // A tie first: the glass and a face in its plane meet the ray a rounding apart either way.
     if (Math.abs(object.t - g.t) <= TIE * Math.abs(g.t)) return this.side * signedDistance(this.plane!, this.scene.centres[object.object]) <= 0;
-    // Stryker disable next-line EqualityOperator: equal depths are inside the tie band, decided above
     return g.t < object.t;
   }
 
@@ -234,7 +225,7 @@ export class SampleTracer {
       this.background(out);
       return SURFACE_NONE;
     }
-    // Stryker disable next-line ConditionalExpression, EqualityOperator: the layer only lends shade its scratch texture buffer, read at once
+    // Stryker disable next-line ConditionalExpression, EqualityOperator: the layer lends only its scratch texture buffer
     this.shade(hit, ray, eye, clipSide === 0 ? this.direct[level] : this.mirror[level], out);
     const alpha = clamp01(this.opacity(hit));
     if (alpha >= 1 || level + 1 >= MAX_LAYERS) return SURFACE_NONE;
@@ -248,7 +239,6 @@ export class SampleTracer {
       behind = this.mirror[level + 1].colour;
       next = this.mirroredAlong(ray, hit.t, level + 1, behind);
     }
-    // Stryker disable next-line EqualityOperator: k = 3 writes past the end of the three-element colour buffers: dropped
     for (let k = 0; k < 3; k++) out[k] = clamp01(out[k] * alpha + behind[k] * (1 - alpha));
     return next;
   }
@@ -274,7 +264,6 @@ export class SampleTracer {
       if (clipSide !== 0 && objects[i].reflected === false) continue;
       if (!tracers[i].hit(ray, tMin, clipSide, plane, spare)) continue;
       if (best === null || spare.t < best.t) {
-        // Stryker disable next-line ConditionalExpression: while best is null, spare is still layer.a
         const free: SurfaceHit = best ?? (spare === layer.a ? layer.b : layer.a);
         best = spare;
         spare = free;
@@ -294,7 +283,7 @@ export class SampleTracer {
   private towardsViewer(ray: Ray): Float64Array {
     const d = ray.direction, v = this.viewVector;
     const len = Math.hypot(d[0], d[1], d[2]);
-    // Stryker disable next-line ArithmeticOperator: orthographic rays (and their mirrors and rough samples, scaled by |D|) have unit directions: len = 1
+    // Stryker disable next-line ArithmeticOperator: orthographic rays (mirrored, rough) have unit directions: len = 1
     v[0] = -d[0] / len; v[1] = -d[1] / len; v[2] = -d[2] / len;
     return v;
   }

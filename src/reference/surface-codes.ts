@@ -22,7 +22,7 @@ export class SurfaceCodes {
   constructor(scene: Scene) {
     this.first = new Int32Array(scene.objects.length);
     let next = 1;
-    // Stryker disable next-line ArrayDeclaration, UnaryOperator: objectOf[0] is never read (objectOfCode answers −1 for code ≤ 0), and a hole would map to −1
+    // Stryker disable next-line ArrayDeclaration, UnaryOperator: objectOf[0] is never read (code ≤ 0 answers −1)
     const owner: number[] = [-1];
     scene.objects.forEach((object, i) => {
       const count = object.geometry.kind === 'box' ? 6 : 1;

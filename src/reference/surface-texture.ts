@@ -75,7 +75,7 @@ export class SurfaceTexture {
         return this.sample(tex, hit.u, hit.v, hit.gu, hit.gv, hit, ray, out);
       case 'cylindrical': {
         cylindricalUV(uv, hit.q, bounds);
-        // Stryker disable next-line ConditionalExpression: with the point filter the gradients are worked out for nothing: the point sample does not read them
+        // Stryker disable next-line ConditionalExpression: the point filter does not read the gradients
         if (this.filter === 'box') {
           const c = bounds.center, x = hit.q[0] - c[0], z = hit.q[2] - c[2];
           const rho2 = x * x + z * z;
@@ -88,7 +88,7 @@ export class SurfaceTexture {
       }
       case 'spherical': {
         sphericalUV(uv, hit.q, bounds);
-        // Stryker disable next-line ConditionalExpression: with the point filter the gradients are worked out for nothing: the point sample does not read them
+        // Stryker disable next-line ConditionalExpression: the point filter does not read the gradients
         if (this.filter === 'box') {
           const c = bounds.center;
           const dx = hit.q[0] - c[0], dy = hit.q[1] - c[1], dz = hit.q[2] - c[2];

@@ -60,18 +60,18 @@ export class TextureSampler {
     this.grey = grey;
     this.width = width;
     this.height = height;
-    // Stryker disable next-line ConditionalExpression: the mask is only a faster remainder: −1 (remainder) gives the same texels
+    // Stryker disable next-line ConditionalExpression: the mask is a faster remainder: −1 gives the same texels
     this.maskX = (width & (width - 1)) === 0 ? width - 1 : -1;
-    // Stryker disable next-line ConditionalExpression: the mask is only a faster remainder: −1 (remainder) gives the same texels
+    // Stryker disable next-line ConditionalExpression: the mask is a faster remainder: −1 gives the same texels
     this.maskY = (height & (height - 1)) === 0 ? height - 1 : -1;
   }
 
   /** Texel (x, y) wrapped, 0..1. */
   texel(x: number, y: number): number {
     const W = this.width, H = this.height;
-    // Stryker disable next-line ConditionalExpression, EqualityOperator: masking is only a faster remainder (a mask of 0, one texel, too): the remainder gives the same texel
+    // Stryker disable next-line ConditionalExpression, EqualityOperator: the mask is a faster remainder: the remainder gives the same texel
     const i = this.maskX >= 0 ? x & this.maskX : ((x % W) + W) % W;
-    // Stryker disable next-line ConditionalExpression, EqualityOperator: masking is only a faster remainder (a mask of 0, one texel, too): the remainder gives the same texel
+    // Stryker disable next-line ConditionalExpression, EqualityOperator: the mask is a faster remainder: the remainder gives the same texel
     const j = this.maskY >= 0 ? y & this.maskY : ((y % H) + H) % H;
     return this.grey[j * W + i];
   }
@@ -106,9 +106,9 @@ export class TextureSampler {
     p[6] = cs - hs1 + hs2; p[7] = ct - ht1 + ht2;
     const sMin = Math.min(p[0], p[2], p[4], p[6]);
     const sMax = Math.max(p[0], p[2], p[4], p[6]);
-    // Stryker disable next-line MethodExpression: only floor(tMin) = floor(tMax) is asked (one patch), which reads the same either way round
+    // Stryker disable next-line MethodExpression: only floor(tMin) = floor(tMax) is asked, the same either way round
     const tMin = Math.min(p[1], p[3], p[5], p[7]);
-    // Stryker disable next-line MethodExpression: only floor(tMin) = floor(tMax) is asked (one patch), which reads the same either way round
+    // Stryker disable next-line MethodExpression: only floor(tMin) = floor(tMax) is asked, the same either way round
     const tMax = Math.max(p[1], p[3], p[5], p[7]);
     const i0 = Math.floor(sMin), i1 = Math.floor(sMax);
     const j0 = Math.floor(tMin), j1 = Math.floor(tMax);
@@ -121,7 +121,7 @@ export class TextureSampler {
     for (let i = i0; i <= i1; i++) {
       let n = clip(p, 4, 0, i, 1, this.half);
       n = clip(this.half, n, 0, i + 1, -1, this.strip);
-      // Stryker disable next-line ConditionalExpression: a strip of fewer than 3 vertices has no rows to cut (or only pieces of fewer than 3 vertices, skipped below)
+      // Stryker disable next-line ConditionalExpression: a strip of < 3 vertices yields only pieces of < 3 vertices, skipped below
       if (n < 3) continue;
       let lo = Infinity, hi = -Infinity;
       // Stryker disable next-line EqualityOperator: k is odd, so k ≤ 2n stops where k < 2n does
@@ -177,9 +177,9 @@ function clip(src: Float64Array, n: number, axis: 0 | 1, bound: number, sign: 1 
     if ((da >= 0) !== (db >= 0)) {
       const f = da / (da - db);
       // Snap the crossing onto the line exactly so neighbouring cells share their edge.
-      // Stryker disable next-line ConditionalExpression: the crossing interpolated lies on the line up to rounding (the snap only makes neighbouring cells share it)
+      // Stryker disable next-line ConditionalExpression: the crossing interpolated lies on the line up to rounding
       out[2 * m] = axis === 0 ? bound : ax + f * (bx - ax);
-      // Stryker disable next-line ConditionalExpression: the crossing interpolated lies on the line up to rounding (the snap only makes neighbouring cells share it)
+      // Stryker disable next-line ConditionalExpression: the crossing interpolated lies on the line up to rounding
       out[2 * m + 1] = axis === 1 ? bound : ay + f * (by - ay);
       m++;
     }

@@ -119,7 +119,8 @@ describe('Bvh: layout', () => {
 
   it('the cheaper axis wins: clusters apart in x, spread a little in y, are split in x', () => {
     // Each cluster's triangles are 0.3 apart in y as well: splitting in y would mix the clusters (a far worse cost).
-    const cluster = (x0: number) => [0, 1, 2, 3].map((k) => tri(0, [x0 + k * 0.1, 0.3 * k], [x0 + 0.5 + k * 0.1, 0.3 * k], [x0 + k * 0.1, 0.5 + 0.3 * k]));
+    const cluster = (x0: number) => [0, 1, 2, 3].map((k) =>
+      tri(0, [x0 + k * 0.1, 0.3 * k], [x0 + 0.5 + k * 0.1, 0.3 * k], [x0 + k * 0.1, 0.5 + 0.3 * k]));
     const near = cluster(0), far = cluster(10);
     const m = mesh([far[0], near[0], far[1], near[1], far[2], near[2], far[3], near[3]]);
     const bvh = new Bvh(m.positions, m.indices);

@@ -45,7 +45,9 @@ describe('regionOfCodes', () => {
 });
 
 /** A w×h grid of keys, `a` everywhere but at the given pixels, and the map drawn as rows of regions. */
-function mapOf(w: number, h: number, a: number, at: [number, number, number][] = [], mixedAt: [number, number][] = [], regionOf?: (k: number) => Region) {
+function mapOf(
+  w: number, h: number, a: number, at: [number, number, number][] = [], mixedAt: [number, number][] = [], regionOf?: (k: number) => Region,
+) {
   const keys = new Int32Array(w * h).fill(a), mixed = new Uint8Array(w * h);
   for (const [x, y, k] of at) keys[y * w + x] = k;
   for (const [x, y] of mixedAt) mixed[y * w + x] = 1;

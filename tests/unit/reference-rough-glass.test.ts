@@ -8,7 +8,9 @@ import { SurfaceHit } from '../../src/reference/surface-hit';
 import type { Plane } from '../../src/math/mirror';
 import { expectClose } from './helpers/math';
 
-interface Call { pass: 'reflected' | 'transmitted'; origin: number[]; direction: number[]; eyeIsOrigin: boolean; diffs: number[][]; tMin?: number; level?: number }
+interface Call {
+  pass: 'reflected' | 'transmitted'; origin: number[]; direction: number[]; eyeIsOrigin: boolean; diffs: number[][]; tMin?: number; level?: number;
+}
 
 /** Records every ray it is asked along and answers with the next of its colours. */
 class Recorder implements RoughPaths {

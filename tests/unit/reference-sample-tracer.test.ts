@@ -53,7 +53,8 @@ function quad(ka: Vec3, centre: Vec3, z = 0, h = 2, over: Partial<Material> = {}
   };
 }
 
-const scene = (objects: SceneObject[], glass: Glass | null = null, lights: Light[] = [AMBIENT]): Scene => ({ glass, objects, lights, background: BG });
+const scene = (objects: SceneObject[], glass: Glass | null = null, lights: Light[] = [AMBIENT]): Scene =>
+  ({ glass, objects, lights, background: BG });
 
 /** The sample at NDC (x, y): [colour, key]. */
 function sample(t: SampleTracer, x = 0, y = 0, fx = 0.02, fy = 0.02): [number[], number] {
@@ -237,7 +238,8 @@ describe('SampleTracer with the glass z = 0', () => {
   });
 
   it('an object kept out of the reflection is still seen through the glass', () => {
-    const [c, key] = sample(new SampleTracer(scene([sphere([0, 0, -3], 1, [1, 0, 0], {}, { reflected: false }), mirrored()], GLASS), view(), 'point'));
+    const hidden = sphere([0, 0, -3], 1, [1, 0, 0], {}, { reflected: false });
+    const [c, key] = sample(new SampleTracer(scene([hidden, mirrored()], GLASS), view(), 'point'));
     expectClose(c, mixRB(R, B), 1e-15);
     expect(key).toBe(3 + 4 * 1 + 16 * 2);
   });
@@ -364,7 +366,8 @@ describe('SampleTracer: the camera and the texture', () => {
     // (−1, 0, 0.75): its mirror ray leaves along (0.96, 0, 0.28) to a sphere 3 on, (1.88, 0, 1.59), on the + side.
     const g: Glass = { center: [0, 0, 0], normal: [0.6, 0, 0.8], size: [20, 20] };
     const ball = sphere([1.88, 0, 1.59], 0.5, [0, 1, 1]);
-    const t = new SampleTracer(scene([ball], g), view({ projection: 'orthographic', cameraPosition: [-4, 0, 2], fov: 120, view: 'reflection' }), 'point');
+    const ortho = view({ projection: 'orthographic', cameraPosition: [-4, 0, 2], fov: 120, view: 'reflection' });
+    const t = new SampleTracer(scene([ball], g), ortho, 'point');
     expect(sample(t, 3 / (2 * Math.tan(Math.PI / 3)), 0)).toEqual([lit([0, 1, 1]), 1]);
   });
 

@@ -29,7 +29,8 @@ function material(texture: TextureSource, mapping: Mapping = 'uv'): Material {
 const identity = () => new ObjectFrame({ position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 }, 0);
 
 /** A hit at t with true normal ng, object point q (= nq's surface), UV and UV gradients. */
-function hit(over: { t?: number; ng?: number[]; q?: number[]; nq?: number[]; u?: number; v?: number; gu?: number[]; gv?: number[] } = {}): SurfaceHit {
+interface HitOver { t?: number; ng?: number[]; q?: number[]; nq?: number[]; u?: number; v?: number; gu?: number[]; gv?: number[] }
+function hit(over: HitOver = {}): SurfaceHit {
   const h = new SurfaceHit();
   h.frame = identity();
   h.t = over.t ?? 2;
@@ -262,8 +263,8 @@ describe('SurfaceTexture: the box filter\'s footprint', () => {
     const st = new SurfaceTexture('box', 'none');
     const calls = footprints(st);
     const h = hit({ q: [2.2, 1.5, 2.6], ng: [0.6, 0, 0.8] });
-    st.objectTexture(h, ray([0, 0, -1], [0.01, 0, 0], [0, 0.01, 0]), material({ kind: 'procedural' }, 'cylindrical'), { center: [1, 1, 1], radius: 2 },
-      new Float64Array(3));
+    st.objectTexture(h, ray([0, 0, -1], [0.01, 0, 0], [0, 0.01, 0]), material({ kind: 'procedural' }, 'cylindrical'),
+      { center: [1, 1, 1], radius: 2 }, new Float64Array(3));
     const [[u, v, ...edges]] = calls();
     expect(u).toBeCloseTo(0.5 + Math.atan2(0.6, 0.8) / (2 * Math.PI), 15);
     expect(v).toBeCloseTo(0.625, 15);

@@ -10,7 +10,10 @@ import { expectClose } from './helpers/math';
 const S3 = Math.sqrt(3) / 2;
 /** tan 45° = 1 up to rounding: fov 90 gives half-height 1 at depth 1. */
 const state = (over: Parameters<typeof defaultFrameState>[0] = {}) =>
-  defaultFrameState({ width: 200, height: 100, fov: 90, cameraPosition: [1, 2, 3], yaw: 0, pitch: 0, projection: 'perspective', courseCamera: null, target: null, ...over });
+  defaultFrameState({
+    width: 200, height: 100, fov: 90, cameraPosition: [1, 2, 3], yaw: 0, pitch: 0, projection: 'perspective', courseCamera: null, target: null,
+    ...over,
+  });
 
 /** A ray with every differential set, so that what rayThrough zeroes shows. */
 function dirty(): Ray {
