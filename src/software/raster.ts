@@ -31,6 +31,7 @@ export class Rasterizer {
   depthWrite = true;
   /** Added to every fragment's NDC depth (the glass is pushed back a hair, as polygonOffset does). */
   depthBias = 0;
+  // Stryker disable next-line StringLiteral: only 'back' culls; any other value draws both windings as 'none' does
   cull: CullMode = 'none';
   /** Front faces are counter-clockwise in NDC (GL's default); false in the mirrored pass. */
   frontCCW = true;
@@ -146,15 +147,18 @@ export class Rasterizer {
       this.poly = new Float64Array(MAX_POLY * s);
       this.scratch = new Float64Array(MAX_POLY * s);
     }
+    // Stryker disable next-line ConditionalExpression,LogicalOperator,EqualityOperator: `banded` only lets a triangle wholly above or below the rows drawn be skipped early; the box clamped to top..bottom draws none of it anyway
     const user = this.userClip, H = this.height, banded = this.top > 0 || this.bottom < H;
     // A band's triangles wholly more than a row above or below it are left before clipping.
     const hi = 1 - (2 * (this.top - 1)) / H, lo = 1 - (2 * (this.bottom + 1)) / H;
     for (let t = 0; t + 2 < count; t += 3) {
       this.face = (t / 3) * MAX_POLY;
       const a = indices[t] * s, b = indices[t + 1] * s, c = indices[t + 2] * s;
+      // Stryker disable next-line LogicalOperator: unbanded, hi and lo lie a row beyond the target's top and bottom, and a triangle wholly past them covers no pixel centre
       if (banded && outsideRows(vertices, a, b, c, hi, lo)) continue;
       // Trivial accept: every vertex inside every plane; trivial reject: all outside one.
       const inA = inside(vertices, a, user), inB = inside(vertices, b, user), inC = inside(vertices, c, user);
+      // Stryker disable next-line BlockStatement: the trivial accept is a shortcut: the clipping below skips every plane all three vertices are inside and draws the same triangle
       if ((inA & inB & inC) === ALL) {
         copyVertex(vertices, a, this.poly, 0, s);
         copyVertex(vertices, b, this.poly, s, s);
@@ -236,6 +240,7 @@ export class Rasterizer {
     const px1 = Math.min(this.width - 1, Math.floor((Math.max(x0, x1, x2) - HALF) / SUB));
     const py0 = Math.max(this.top, Math.ceil((Math.min(y0, y1, y2) - HALF) / SUB));
     const py1 = Math.min(this.height - 1, this.bottom - 1, Math.floor((Math.max(y0, y1, y2) - HALF) / SUB));
+    // Stryker disable next-line LogicalOperator: an empty box is a shortcut: the scans below visit no pixel of a box empty either way (top and bottom are multiples of shadeEvery)
     if (px0 > px1 || py0 > py1) return;
     if (this.shadeEvery > 1) this.scanPixels(i, j, k, area, px0, px1, py0, py1, shader);
     else this.scan(i, j, k, area, px0, px1, py0, py1, shader);
@@ -303,8 +308,11 @@ export class Rasterizer {
       // The row's covered run [k0, k1] (pixels from px0), solved per edge from e + bias + k·step ≥ 0
       // and widened by one: the exact integer test below still decides every pixel.
       let k0 = 0, k1 = span;
+      // Stryker disable next-line MethodExpression,ArithmeticOperator: a run only widened (k0 lower, k1 higher, the bias ±1 against steps of 256) scans more pixels of the box, each still decided by the exact test below
       k0 = Math.max(k0, runStart(row0 + bias0, stepX0)); k1 = Math.min(k1, runEnd(row0 + bias0, stepX0, span));
+      // Stryker disable next-line MethodExpression,ArithmeticOperator: a run only widened (k0 lower, k1 higher, the bias ±1 against steps of 256) scans more pixels of the box, each still decided by the exact test below
       k0 = Math.max(k0, runStart(row1 + bias1, stepX1)); k1 = Math.min(k1, runEnd(row1 + bias1, stepX1, span));
+      // Stryker disable next-line MethodExpression,ArithmeticOperator: a run only widened (k0 lower, k1 higher, the bias ±1 against steps of 256) scans more pixels of the box, each still decided by the exact test below
       k0 = Math.max(k0, runStart(row2 + bias2, stepX2)); k1 = Math.min(k1, runEnd(row2 + bias2, stepX2, span));
       if (k0 > k1) continue;
       let e0 = row0 + k0 * stepX0, e1 = row1 + k0 * stepX1, e2 = row2 + k0 * stepX2;
