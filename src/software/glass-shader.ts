@@ -91,6 +91,7 @@ export class GlassShader implements FragmentShader {
     r.depthBias = GLASS_TIE_BIAS;
     if (this.mode !== 'mask') this.beginCache(r);
     // With the cache in use, a pixel's barycentrics are computed only when it is not cached.
+    // Stryker disable next-line ConditionalExpression,LogicalOperator,EqualityOperator,BooleanLiteral: barycentrics off only defers perspective() to fragment(), which calls it before reading b (a cached pixel reads none)
     if (this.cache.active && this.rough === null) r.barycentrics = false;
     try {
       r.drawTriangles(this.vertices, indices, indices.length, this);

@@ -164,7 +164,7 @@ describe('the glass equation at a pixel', () => {
     expect(at(e, 7, 7)).toEqual([0, 1, Math.fround(0.8 * BODY[2] * 0.2 + 0.5 * 0.8)]);
   });
 
-  it("reads the texture at the glass's UV with its screen derivatives: 64×32 texels a texel a pixel, 128×64 a level down", () => {
+  it("reads the texture at the glass's UV with its screen derivatives: 64×32 texels a texel a pixel, 256×128 two levels down", () => {
     // The view sees the glass's middle half: u = 0.25 + (2i + 1)/128, v = 0.75 − (2j + 1)/64 at pixel (i, j), a texel
     // of 64×32 a pixel: s = 64u − ½ = 16 + i, t = 32v − ½ = 23 − j, exactly on texel (16 + i, 23 − j).
     const tex64 = new MipTexture(1, 64, 32, Float32Array.from({ length: 2048 }, (_, p) => ((p % 64) + 64 * Math.floor(p / 64)) / 4096));
@@ -174,12 +174,15 @@ describe('the glass equation at a pixel', () => {
     for (const [i, j] of [[0, 0], [5, 3], [31, 15], [17, 9]]) {
       expect(at(c, i, j)[2] / (0.96 * BODY[2]), `${i},${j}`).toBeCloseTo((16 + i + 64 * (23 - j)) / 4096, 5);
     }
-    // 128×64 texels: two a pixel either way, λ = 1: level 1's texel (16 + i, 23 − j), the mean of level 0's 2×2 under
-    // it; with texel (x, y) = (x + 128y)/8192 that is (2(16 + i) + ½ + 128(2(23 − j) + ½))/8192.
-    const tex128 = new MipTexture(1, 128, 64, Float32Array.from({ length: 8192 }, (_, p) => ((p % 128) + 128 * Math.floor(p / 128)) / 8192));
-    const d = frames([{ ...base, texture: tex128 }]);
+    // 256×128 texels: four a pixel either way, λ = 2: level 2's texel (16 + i, 23 − j), the mean of level 0's 4×4
+    // block under it (with the derivatives lost, level 0 read bilinearly would give the mean of its middle 2×2 only).
+    const val = (x: number, y: number) => ((x * 37 + y * 91) % 17) / 16;
+    const tex256 = new MipTexture(1, 256, 128, Float32Array.from({ length: 256 * 128 }, (_, p) => val(p % 256, Math.floor(p / 256))));
+    const d = frames([{ ...base, texture: tex256 }]);
     for (const [i, j] of [[0, 0], [5, 3], [31, 15]]) {
-      expect(at(d, i, j)[2] / (0.96 * BODY[2]), `${i},${j}`).toBeCloseTo((2 * (16 + i) + 0.5 + 128 * (2 * (23 - j) + 0.5)) / 8192, 5);
+      let mean = 0;
+      for (let y = 0; y < 4; y++) for (let x = 0; x < 4; x++) mean += val(4 * (16 + i) + x, 4 * (23 - j) + y) / 16;
+      expect(at(d, i, j)[2] / (0.96 * BODY[2]), `${i},${j}`).toBeCloseTo(mean, 5);
     }
   });
 });
