@@ -44,7 +44,7 @@ const OWN_TESTS = {
   ],
   reference: [
     'small-frames', 'reference-pixels', 'reference-metrics', 'reference-texture', 'reference-srgb', 'reference-scene', 'bvh',
-    'glass-tie', 'scaled-objects', 'lights-rule',
+    'glass-tie', 'scaled-objects', 'lights-rule', 'reference-pbr-light',
     // Fast tests of single files, hand-computed (milliseconds each, where a frame takes seconds under Stryker).
     'reference-ray', 'reference-clip', 'reference-surface-codes', 'reference-microfacet-samples', 'reference-object-frame',
     'reference-image-texture', 'reference-rough-glass', 'reference-regions', 'reference-view-camera', 'reference-ray-scene',

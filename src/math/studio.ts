@@ -38,11 +38,18 @@ function inPanel(p: StudioPanel, phi: number, e: number): boolean {
   return (phi >= p.phi0 && phi <= p.phi1) || (phi + 2 * Math.PI >= p.phi0 && phi + 2 * Math.PI <= p.phi1);
 }
 
-/** The studio's radiance (grey: the same in every channel) toward the unit direction (x, y, z), y up. */
-export function studioRadiance(x: number, y: number, z: number): number {
+/** The index in STUDIO_PANELS of the panel the unit direction (x, y, z) meets, or −1 (the panels do not overlap). */
+export function studioPanelAt(x: number, y: number, z: number): number {
   const e = Math.asin(Math.max(-1, Math.min(1, y)));
   const phi = Math.atan2(x, z);
-  for (const p of STUDIO_PANELS) if (inPanel(p, phi, e)) return p.radiance;
+  for (let i = 0; i < STUDIO_PANELS.length; i++) if (inPanel(STUDIO_PANELS[i], phi, e)) return i;
+  return -1;
+}
+
+/** The studio's radiance (grey: the same in every channel) toward the unit direction (x, y, z), y up. */
+export function studioRadiance(x: number, y: number, z: number): number {
+  const i = studioPanelAt(x, y, z);
+  if (i >= 0) return STUDIO_PANELS[i].radiance;
   if (y >= STUDIO_BLEND) return STUDIO_WALL;
   if (y <= -STUDIO_BLEND) return STUDIO_FLOOR;
   return STUDIO_FLOOR + ((y + STUDIO_BLEND) / (2 * STUDIO_BLEND)) * (STUDIO_WALL - STUDIO_FLOOR);

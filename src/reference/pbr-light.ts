@@ -1,0 +1,108 @@
+// The reference's light on a metallic-roughness surface from an environment (docs/pbr.md#the-reference):
+// L(v) = ∫ f(l, v)·L_env(l)·(n·l) dω by Monte Carlo, one-sample multiple importance sampling over
+// three ways of drawing l — the GGX lobe (h with density D(h)(n·h), l = v reflected about h), the
+// cosine lobe, and the environment's own bright parts when it can draw them — each sample weighted
+// by the balance heuristic, f·L·cos / Σ cᵢ·pᵢ(l), which is unbiased wherever some pᵢ covers f·L.
+// It reports its own noise: the standard error of the mean, per channel.
+import { ggxD, ggxNormal, reflectAbout } from '../math/ggx';
+import { gltfBrdf, type PbrPoint } from '../math/pbr';
+import { panelSolidAngle, samplePanel, studioPanelAt, studioRadiance, STUDIO_PANELS } from '../math/studio';
+
+/** Light arriving from a direction, and (optionally) a way to draw directions by it. */
+export interface EnvironmentLight {
+  /** out = the radiance arriving from the unit direction l (linear RGB). */
+  radiance(out: Float64Array, x: number, y: number, z: number): void;
+  /** out = a direction drawn from (u, v) ∈ [0, 1)²; returns its density, or 0 if none was drawn. */
+  sample?(out: Float64Array, u: number, v: number, w: number): number;
+  /** The density `sample` draws the unit direction l with. */
+  density?(x: number, y: number, z: number): number;
+}
+
+export interface LightEstimate {
+  /** Mean outgoing radiance toward v, linear RGB. */
+  mean: Float64Array;
+  /** Standard error of that mean, per channel. */
+  error: Float64Array;
+}
+
+const dot = (a: ArrayLike<number>, b: ArrayLike<number>) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+
+/**
+ * The radiance a surface of material `m` (unit normal n) sends toward the unit direction v under
+ * `env`, from `count` samples; `random` gives numbers in [0, 1) (the caller's seeded sequence).
+ */
+export function environmentLight(m: PbrPoint, n: ArrayLike<number>, v: ArrayLike<number>, env: EnvironmentLight, count: number, random: () => number): LightEstimate {
+  const mean = new Float64Array(3), error = new Float64Array(3);
+  const nv = dot(n, v);
+  if (nv <= 0 || count <= 0) return { mean, error };
+  // How often each way draws: half by the environment's lights where it has them, the rest split
+  // between the lobes by how much of the reflection is specular (at least a quarter each way).
+  const lights = env.sample && env.density ? 0.5 : 0;
+  const f0 = 0.04 * (1 - m.metallic) + ((m.baseColor[0] + m.baseColor[1] + m.baseColor[2]) / 3) * m.metallic;
+  const specShare = Math.min(0.75, Math.max(0.25, f0 + m.metallic * 0.5));
+  const cSpec = (1 - lights) * specShare, cDiff = (1 - lights) * (1 - specShare), cLight = lights;
+  // α below 10⁻⁴ is a mirror for any picture: its lobe is drawn as at 10⁻⁴ (D would be a delta).
+  const alpha = Math.max(m.alpha, 1e-4);
+  const l = new Float64Array(3), h = new Float64Array(3), f = new Float64Array(3), L = new Float64Array(3);
+  const toSurface = new Float64Array([-v[0], -v[1], -v[2]]);
+  const sum = new Float64Array(3), sum2 = new Float64Array(3);
+  for (let k = 0; k < count; k++) {
+    const pick = random(), u1 = random(), u2 = random();
+    if (pick < cSpec) {
+      ggxNormal(h, alpha, u1, u2, n);
+      reflectAbout(l, toSurface, h);
+    } else if (pick < cSpec + cDiff) {
+      // GGX at α = 1 is the cosine lobe: D = 1/π, density cosθ/π.
+      ggxNormal(l, 1, u1, u2, n);
+    } else if (env.sample!(l, u1, u2, random()) === 0) {
+      continue;
+    }
+    const nl = dot(n, l);
+    if (nl <= 0) continue;
+    // The half vector of l and v, and each way's density for this l.
+    h[0] = l[0] + v[0]; h[1] = l[1] + v[1]; h[2] = l[2] + v[2];
+    const hl = Math.hypot(h[0], h[1], h[2]);
+    h[0] /= hl; h[1] /= hl; h[2] /= hl;
+    const nh = dot(n, h), vh = dot(v, h);
+    const pSpec = vh > 0 ? (ggxD(alpha, nh) * nh) / (4 * vh) : 0;
+    const pDiff = nl / Math.PI;
+    const pLight = cLight > 0 ? env.density!(l[0], l[1], l[2]) : 0;
+    const p = cSpec * pSpec + cDiff * pDiff + cLight * pLight;
+    if (!(p > 0)) continue;
+    gltfBrdf(f, { baseColor: m.baseColor, metallic: m.metallic, alpha }, nl, nv, nh, vh);
+    env.radiance(L, l[0], l[1], l[2]);
+    for (let c = 0; c < 3; c++) {
+      const x = (f[c] * L[c] * nl) / p;
+      sum[c] += x;
+      sum2[c] += x * x;
+    }
+  }
+  for (let c = 0; c < 3; c++) {
+    mean[c] = sum[c] / count;
+    const variance = Math.max(0, sum2[c] / count - mean[c] * mean[c]);
+    error[c] = Math.sqrt(variance / count);
+  }
+  return { mean, error };
+}
+
+// The studio's panels drawn by their power (solid angle × radiance), a direction uniform on each.
+const POWER = STUDIO_PANELS.map((p) => panelSolidAngle(p) * p.radiance);
+const TOTAL = POWER.reduce((a, b) => a + b, 0);
+const CHANCE = POWER.map((w) => w / TOTAL);
+
+/** The neutral studio (math/studio.ts) as an environment: evaluated exactly, sampled by its panels. */
+export const STUDIO_LIGHT: EnvironmentLight = {
+  radiance(out, x, y, z) {
+    out[0] = out[1] = out[2] = studioRadiance(x, y, z);
+  },
+  sample(out, u, v, w) {
+    let i = 0;
+    for (let acc = CHANCE[0]; w >= acc && i < CHANCE.length - 1; acc += CHANCE[++i]);
+    samplePanel(out, STUDIO_PANELS[i], u, v);
+    return CHANCE[i] / panelSolidAngle(STUDIO_PANELS[i]);
+  },
+  density(x, y, z) {
+    const i = studioPanelAt(x, y, z);
+    return i < 0 ? 0 : CHANCE[i] / panelSolidAngle(STUDIO_PANELS[i]);
+  },
+};
