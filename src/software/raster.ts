@@ -14,11 +14,8 @@ export type CullMode = 'none' | 'back';
 /** Called for every pixel that passes the mask and the depth test; reads the rasterizer's fields. */
 export interface FragmentShader {
   fragment(pixel: number, r: Rasterizer): void;
-  /**
-   * Multisampling (Rasterizer.shadeEvery > 1): writes the result of the last `fragment` call at
-   * `sample`, another covered sample of the same pixel and triangle (blending with what that
-   * sample holds). Absent: `fragment` is called for every sample.
-   */
+  /** Multisampling (Rasterizer.shadeEvery > 1): writes the result of the last `fragment` call at `sample`, another covered
+   *  sample of the same pixel and triangle (blending with what that sample holds). Absent: `fragment` is called for every sample. */
   repeat?(sample: number): void;
 }
 
@@ -41,11 +38,8 @@ export class Rasterizer {
   mask: Uint8Array | null = null;
   /** Compute dbdx/dbdy per fragment (texture LOD needs them). */
   derivatives = true;
-  /**
-   * Compute b0..b2 (and derivatives) before each fragment; false: only l0, l1 and z are set, and
-   * a shader that needs them after all calls perspective() (the glass's footprint never does, a
-   * cached glass pixel need not): no division for such a fragment.
-   */
+  /** Compute b0..b2 (and derivatives) before each fragment; false: only l0, l1 and z are set, and a shader that needs them
+   *  after all calls perspective() (the glass's footprint never does, a cached glass pixel need not): no division for it. */
   barycentrics = true;
   /** Floats per vertex in the buffers drawn (≥ VARYINGS). */
   stride = VARYINGS;
@@ -82,10 +76,8 @@ export class Rasterizer {
   z = 0;
   l0 = 0;
   l1 = 0;
-  /**
-   * Which triangle the fragment is of: its index in the draw × MAX_POLY + its place in the
-   * clipped polygon's fan (the same in every frame that draws the same vertices).
-   */
+  /** Which triangle the fragment is of: its index in the draw × MAX_POLY + its place in the clipped polygon's fan (the same
+   *  in every frame that draws the same vertices). */
   face = 0;
 
   private scratch: Float64Array;
@@ -137,10 +129,8 @@ export class Rasterizer {
     this.depth.fill(Infinity, this.top * W, Math.min(this.bottom, this.height) * W);
   }
 
-  /**
-   * Draws `count` indices' triangles of `vertices` (layout above, `this.stride` floats each).
-   * Pixel (i, j) is sampled at its centre (i + ½, j + ½), row 0 at the top.
-   */
+  /** Draws `count` indices' triangles of `vertices` (layout above, `this.stride` floats each). Pixel (i, j) is sampled at
+   *  its centre (i + ½, j + ½), row 0 at the top. */
   drawTriangles(vertices: Float64Array, indices: ArrayLike<number>, count: number, shader: FragmentShader): void {
     const s = this.stride;
     if (this.poly.length < MAX_POLY * s) {
@@ -308,12 +298,11 @@ export class Rasterizer {
       // The row's covered run [k0, k1] (pixels from px0), solved per edge from e + bias + k·step ≥ 0
       // and widened by one: the exact integer test below still decides every pixel.
       let k0 = 0, k1 = span;
-      // Stryker disable next-line MethodExpression,ArithmeticOperator: a run only widened (k0 lower, k1 higher, the bias ±1 against steps of 256) scans more pixels of the box, each still decided by the exact test below
+      // Stryker disable MethodExpression,ArithmeticOperator: a run only widened (k0 lower, k1 higher, the bias ±1 against steps of 256) scans more pixels of the box, each still decided by the exact test below
       k0 = Math.max(k0, runStart(row0 + bias0, stepX0)); k1 = Math.min(k1, runEnd(row0 + bias0, stepX0, span));
-      // Stryker disable next-line MethodExpression,ArithmeticOperator: a run only widened (k0 lower, k1 higher, the bias ±1 against steps of 256) scans more pixels of the box, each still decided by the exact test below
       k0 = Math.max(k0, runStart(row1 + bias1, stepX1)); k1 = Math.min(k1, runEnd(row1 + bias1, stepX1, span));
-      // Stryker disable next-line MethodExpression,ArithmeticOperator: a run only widened (k0 lower, k1 higher, the bias ±1 against steps of 256) scans more pixels of the box, each still decided by the exact test below
       k0 = Math.max(k0, runStart(row2 + bias2, stepX2)); k1 = Math.min(k1, runEnd(row2 + bias2, stepX2, span));
+      // Stryker restore MethodExpression,ArithmeticOperator
       if (k0 > k1) continue;
       let e0 = row0 + k0 * stepX0, e1 = row1 + k0 * stepX1, e2 = row2 + k0 * stepX2;
       const base = y * width;
