@@ -32,10 +32,15 @@ export const STUDIO_PANELS: readonly StudioPanel[] = [
   { name: 'top', phi0: -180 * DEG, phi1: 180 * DEG, e0: 75 * DEG, e1: 90 * DEG, radiance: 3 },
 ];
 
-/** Whether (φ, e) lies on the panel: φ in (−π, π], tried as φ + 2π too for a panel that spans past π. */
+/**
+ * Whether (φ, e) lies on the panel: φ in (−π, π], tried as φ + 2π too for a panel that spans past π
+ * (φ₀ ≤ π for every panel, so φ + 2π is past φ₀). Edges count as in: a set of no solid angle.
+ */
 function inPanel(p: StudioPanel, phi: number, e: number): boolean {
+  // Stryker disable next-line EqualityOperator: an edge is a set of no solid angle (no direction drawn lies exactly on one)
   if (e < p.e0 || e > p.e1) return false;
-  return (phi >= p.phi0 && phi <= p.phi1) || (phi + 2 * Math.PI >= p.phi0 && phi + 2 * Math.PI <= p.phi1);
+  // Stryker disable next-line EqualityOperator: an edge is a set of no solid angle (no direction drawn lies exactly on one)
+  return (phi >= p.phi0 && phi <= p.phi1) || phi + 2 * Math.PI <= p.phi1;
 }
 
 /** The index in STUDIO_PANELS of the panel the unit direction (x, y, z) meets, or −1 (the panels do not overlap). */
@@ -50,7 +55,9 @@ export function studioPanelAt(x: number, y: number, z: number): number {
 export function studioRadiance(x: number, y: number, z: number): number {
   const i = studioPanelAt(x, y, z);
   if (i >= 0) return STUDIO_PANELS[i].radiance;
+  // Stryker disable next-line EqualityOperator: the blend below gives the wall's radiance at y = sin 5° too
   if (y >= STUDIO_BLEND) return STUDIO_WALL;
+  // Stryker disable next-line EqualityOperator: the blend below gives the floor's radiance at y = −sin 5° too
   if (y <= -STUDIO_BLEND) return STUDIO_FLOOR;
   return STUDIO_FLOOR + ((y + STUDIO_BLEND) / (2 * STUDIO_BLEND)) * (STUDIO_WALL - STUDIO_FLOOR);
 }
