@@ -55,9 +55,9 @@ export function studioPanelAt(x: number, y: number, z: number): number {
 export function studioRadiance(x: number, y: number, z: number): number {
   const i = studioPanelAt(x, y, z);
   if (i >= 0) return STUDIO_PANELS[i].radiance;
-  // Stryker disable next-line EqualityOperator: the blend below gives the wall's radiance at y = sin 5° too
+  // Stryker disable next-line EqualityOperator: at y = sin 5° (no solid angle) the blend gives the wall's radiance to an ulp
   if (y >= STUDIO_BLEND) return STUDIO_WALL;
-  // Stryker disable next-line EqualityOperator: the blend below gives the floor's radiance at y = −sin 5° too
+  // Stryker disable next-line EqualityOperator: at y = −sin 5° (no solid angle) the blend gives the floor's radiance
   if (y <= -STUDIO_BLEND) return STUDIO_FLOOR;
   return STUDIO_FLOOR + ((y + STUDIO_BLEND) / (2 * STUDIO_BLEND)) * (STUDIO_WALL - STUDIO_FLOOR);
 }
