@@ -130,6 +130,7 @@ function earClip(s: number, count: number, out: I32List): boolean {
         const q = reflexList[r];
         if (state[q] !== 1) continue;
         reflexList[live++] = q; // compact: corners that turned convex or were clipped drop out
+        // Stryker disable next-line LogicalOperator: inTriangle is false for a point on one of the triangle's corners anyway
         if (q === a || q === c || q === i) continue;
         if (inTriangle(a, i, c, q)) ear = false;
       }
@@ -209,6 +210,7 @@ function fanRemaining(s: number, i: number, remaining: number, out: I32List): vo
 /** Scratch arrays shared by every call (single-threaded), grown to the largest polygon. */
 function ensure(count: number): void {
   if (px.length >= count) return;
+  // Stryker disable next-line ArithmeticOperator: growing to the count alone only reallocates more often
   const n = Math.max(count, px.length * 2);
   px = new Float64Array(n);
   py = new Float64Array(n);
