@@ -27,7 +27,7 @@ const OWN_TESTS = {
   ],
   'loaders/obj': [
     'obj', 'obj-bytes', 'obj-bytes-numbers', 'obj-bytes-suite', 'obj-data', 'obj-estimate', 'obj-fast', 'obj-faults', 'obj-job',
-    'obj-load-errors', 'obj-mesh-growth', 'obj-polygons', 'obj-settings', 'obj-warnings', 'mesh-parts', 'sniff-once', 'obj-triangulate',
+    'obj-load-errors', 'obj-mesh-growth', 'obj-polygons', 'obj-settings', 'obj-warnings', 'mesh-parts', 'sniff-once', 'obj-triangulate', 'obj-byte-scanner',
   ],
   'loaders/gltf': [
     'gltf-load', 'gltf-errors', 'gltf-data', 'gltf-real-files', 'gltf-compression', 'gltf-model', 'gltf-tangents', 'sniff',
