@@ -12,10 +12,11 @@ import { panelSolidAngle, samplePanel, studioPanelAt, studioRadiance, STUDIO_PAN
 export interface EnvironmentLight {
   /** out = the radiance arriving from the unit direction l (linear RGB). */
   radiance(out: Float64Array, x: number, y: number, z: number): void;
-  /** out = a direction drawn from (u, v) ∈ [0, 1)²; returns its density, or 0 if none was drawn. */
-  sample?(out: Float64Array, u: number, v: number, w: number): number;
-  /** The density `sample` draws the unit direction l with. */
-  density?(x: number, y: number, z: number): number;
+  /** Its bright parts, where it can draw directions by them: `draw` from (u, v, w) ∈ [0, 1)³, with density `density`. */
+  lights?: {
+    draw(out: Float64Array, u: number, v: number, w: number): void;
+    density(x: number, y: number, z: number): number;
+  };
 }
 
 export interface LightEstimate {
@@ -31,16 +32,30 @@ const dot = (a: ArrayLike<number>, b: ArrayLike<number>) => a[0] * b[0] + a[1] *
  * The radiance a surface of material `m` (unit normal n) sends toward the unit direction v under
  * `env`, from `count` samples; `random` gives numbers in [0, 1) (the caller's seeded sequence).
  */
+/**
+ * How often each way draws, [GGX lobe, cosine lobe, lights]: half by the environment's lights where it
+ * has them; the rest shared between the lobes by how specular the surface is — its mean F₀ plus half
+ * its metallic, within [¼, ¾] — so that each lobe gets at least a quarter.
+ */
+export function strategyShares(m: PbrPoint, lights: boolean): [number, number, number] {
+  const light = lights ? 0.5 : 0;
+  const meanBase = (m.baseColor[0] + m.baseColor[1] + m.baseColor[2]) / 3;
+  const f0 = 0.04 * (1 - m.metallic) + meanBase * m.metallic;
+  const specular = Math.min(0.75, Math.max(0.25, f0 + m.metallic / 2));
+  return [(1 - light) * specular, (1 - light) * (1 - specular), light];
+}
+
+/**
+ * The radiance a surface of material `m` (unit normal n) sends toward the unit direction v under
+ * `env`, from `count` samples; `random` gives numbers in [0, 1) (the caller's seeded sequence).
+ */
 export function environmentLight(m: PbrPoint, n: ArrayLike<number>, v: ArrayLike<number>, env: EnvironmentLight, count: number, random: () => number): LightEstimate {
   const mean = new Float64Array(3), error = new Float64Array(3);
+  if (count <= 0) return { mean, error };
   const nv = dot(n, v);
-  if (nv <= 0 || count <= 0) return { mean, error };
-  // How often each way draws: half by the environment's lights where it has them, the rest split
-  // between the lobes by how much of the reflection is specular (at least a quarter each way).
-  const lights = env.sample && env.density ? 0.5 : 0;
-  const f0 = 0.04 * (1 - m.metallic) + ((m.baseColor[0] + m.baseColor[1] + m.baseColor[2]) / 3) * m.metallic;
-  const specShare = Math.min(0.75, Math.max(0.25, f0 + m.metallic * 0.5));
-  const cSpec = (1 - lights) * specShare, cDiff = (1 - lights) * (1 - specShare), cLight = lights;
+  // Stryker disable next-line ConditionalExpression,EqualityOperator: a shortcut: seen from behind, f = 0 for every sample (gltfBrdf)
+  if (nv <= 0) return { mean, error };
+  const [cSpec, cDiff, cLight] = strategyShares(m, env.lights !== undefined);
   // α below 10⁻⁴ is a mirror for any picture: its lobe is drawn as at 10⁻⁴ (D would be a delta).
   const alpha = Math.max(m.alpha, 1e-4);
   const l = new Float64Array(3), h = new Float64Array(3), f = new Float64Array(3), L = new Float64Array(3);
@@ -48,35 +63,38 @@ export function environmentLight(m: PbrPoint, n: ArrayLike<number>, v: ArrayLike
   const sum = new Float64Array(3), sum2 = new Float64Array(3);
   for (let k = 0; k < count; k++) {
     const pick = random(), u1 = random(), u2 = random();
-    if (pick < cSpec) {
+    // Stryker disable next-line EqualityOperator: pick exactly at a share's end is one number in 2⁵³
+    const way = pick < cSpec ? 0 : pick < cSpec + cDiff ? 1 : 2;
+    if (way === 0) {
       ggxNormal(h, alpha, u1, u2, n);
       reflectAbout(l, toSurface, h);
-    } else if (pick < cSpec + cDiff) {
+    } else if (way === 1) {
       // GGX at α = 1 is the cosine lobe: D = 1/π, density cosθ/π.
       ggxNormal(l, 1, u1, u2, n);
-    } else if (env.sample!(l, u1, u2, random()) === 0) {
-      continue;
+    } else {
+      env.lights!.draw(l, u1, u2, random());
     }
     const nl = dot(n, l);
+    // Stryker disable next-line ConditionalExpression,EqualityOperator: a shortcut: below the surface f = 0 (gltfBrdf)
     if (nl <= 0) continue;
-    // The half vector of l and v, and each way's density for this l.
+    // The half vector of l and v, and each way's density for this l. v·h = (1 + v·l)/|l + v| ≥ 0,
+    // and p > 0: the cosine lobe's share is at least an eighth and n·l > 0.
     h[0] = l[0] + v[0]; h[1] = l[1] + v[1]; h[2] = l[2] + v[2];
     const hl = Math.hypot(h[0], h[1], h[2]);
     h[0] /= hl; h[1] /= hl; h[2] /= hl;
     const nh = dot(n, h), vh = dot(v, h);
-    const pSpec = vh > 0 ? (ggxD(alpha, nh) * nh) / (4 * vh) : 0;
-    const pDiff = nl / Math.PI;
-    const pLight = cLight > 0 ? env.density!(l[0], l[1], l[2]) : 0;
-    const p = cSpec * pSpec + cDiff * pDiff + cLight * pLight;
-    if (!(p > 0)) continue;
+    const pLight = cLight > 0 ? env.lights!.density(l[0], l[1], l[2]) : 0;
+    const p = (cSpec * ggxD(alpha, nh) * nh) / (4 * vh) + (cDiff * nl) / Math.PI + cLight * pLight;
     gltfBrdf(f, { baseColor: m.baseColor, metallic: m.metallic, alpha }, nl, nv, nh, vh);
     env.radiance(L, l[0], l[1], l[2]);
+    // Stryker disable next-line EqualityOperator: c = 3 reads f[3] (undefined) into sum[3], which a typed array ignores
     for (let c = 0; c < 3; c++) {
       const x = (f[c] * L[c] * nl) / p;
       sum[c] += x;
       sum2[c] += x * x;
     }
   }
+  // Stryker disable next-line EqualityOperator: c = 3 writes mean[3] and error[3], which a typed array ignores
   for (let c = 0; c < 3; c++) {
     mean[c] = sum[c] / count;
     const variance = Math.max(0, sum2[c] / count - mean[c] * mean[c]);
@@ -90,19 +108,22 @@ const POWER = STUDIO_PANELS.map((p) => panelSolidAngle(p) * p.radiance);
 const TOTAL = POWER.reduce((a, b) => a + b, 0);
 const CHANCE = POWER.map((w) => w / TOTAL);
 
-/** The neutral studio (math/studio.ts) as an environment: evaluated exactly, sampled by its panels. */
+/** The neutral studio (math/studio.ts) as an environment: evaluated exactly, drawn by its panels. */
 export const STUDIO_LIGHT: EnvironmentLight = {
   radiance(out, x, y, z) {
     out[0] = out[1] = out[2] = studioRadiance(x, y, z);
   },
-  sample(out, u, v, w) {
-    let i = 0;
-    for (let acc = CHANCE[0]; w >= acc && i < CHANCE.length - 1; acc += CHANCE[++i]);
-    samplePanel(out, STUDIO_PANELS[i], u, v);
-    return CHANCE[i] / panelSolidAngle(STUDIO_PANELS[i]);
-  },
-  density(x, y, z) {
-    const i = studioPanelAt(x, y, z);
-    return i < 0 ? 0 : CHANCE[i] / panelSolidAngle(STUDIO_PANELS[i]);
+  lights: {
+    draw(out, u, v, w) {
+      // The panel whose share of the power w falls in: the last one for w past the others (and rounding).
+      let i = 0, end = CHANCE[0];
+      // Stryker disable next-line EqualityOperator,ArithmeticOperator: w at a share's end is one number in 2⁵³; the shares sum to 1, so w < 1 stops at the last
+      while (w >= end && i < CHANCE.length - 1) end += CHANCE[++i];
+      samplePanel(out, STUDIO_PANELS[i], u, v);
+    },
+    density(x, y, z) {
+      const i = studioPanelAt(x, y, z);
+      return i < 0 ? 0 : CHANCE[i] / panelSolidAngle(STUDIO_PANELS[i]);
+    },
   },
 };

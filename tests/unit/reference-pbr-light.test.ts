@@ -4,7 +4,7 @@
 // under the studio what a fine quadrature of the same integral gives, within the noise it reports,
 // and drawing the studio's panels makes it less noisy.
 import { describe, expect, it } from 'vitest';
-import { environmentLight, STUDIO_LIGHT, type EnvironmentLight } from '../../src/reference/pbr-light';
+import { environmentLight, strategyShares, STUDIO_LIGHT, type EnvironmentLight } from '../../src/reference/pbr-light';
 import { gltfBrdf, type PbrPoint } from '../../src/math/pbr';
 
 /** A seeded generator (mulberry32): the same numbers every run. */
@@ -50,6 +50,25 @@ function expectWithin(r: { mean: Float64Array; error: Float64Array }, expected: 
   }
 }
 
+describe('the shares of the three ways', () => {
+  const shares = (baseColor: number[], metallic: number, lights: boolean) => strategyShares({ baseColor, metallic, alpha: 0.25 }, lights).map((x) => Number(x.toFixed(12)));
+
+  it('give a dielectric a quarter of the lobes\' samples for its GGX lobe, and half of all to the lights where there are some', () => {
+    // F₀ = 0.04, below the floor of ¼.
+    expect(shares([0.5, 0.5, 0.5], 0, false)).toEqual([0.25, 0.75, 0]);
+    expect(shares([0.5, 0.5, 0.5], 0, true)).toEqual([0.125, 0.375, 0.5]);
+  });
+
+  it('follow F₀ (the base colour\'s mean mixed by metallic) plus half the metallic, within [¼, ¾]', () => {
+    // Mean 0.6; F₀ = 0.04 · 0.7 + 0.6 · 0.3 = 0.208; + 0.15 = 0.358.
+    expect(shares([0.9, 0.6, 0.3], 0.3, false)).toEqual([0.358, 0.642, 0]);
+    // F₀ = 0.02 + 0.1 = 0.12; + 0.25 = 0.37.
+    expect(shares([0.2, 0.2, 0.2], 0.5, false)).toEqual([0.37, 0.63, 0]);
+    // Gold: F₀ = 0.7333 + 0.5, above the ceiling of ¾.
+    expect(shares([1, 0.8, 0.4], 1, true)).toEqual([0.375, 0.125, 0.5]);
+  });
+});
+
 describe('under a uniform sky of radiance 1', () => {
   it('a white metal at roughness 1 returns 1 − ln 2 (D = 1/π, V = ½/(n·l + n·v), F = 1)', () => {
     const r = environmentLight({ baseColor: [1, 1, 1], metallic: 1, alpha: 1 }, UP, UP, uniform, 20000, seeded(1));
@@ -61,6 +80,36 @@ describe('under a uniform sky of radiance 1', () => {
     const r = environmentLight({ baseColor: [1, 1, 1], metallic: 0, alpha: 0.0625 }, UP, UP, uniform, 20000, seeded(2));
     // Measured: 0.99470 ± 0.00273 (seed 2).
     expectWithin(r, [0.99658, 0.99658, 0.99658], 0.0035);
+  });
+
+  it('depends only on the angle between n and v: a tilted normal gives what +y gives', () => {
+    const m = { baseColor: [1, 1, 1], metallic: 1, alpha: 1 };
+    const n = [1, 2, 3].map((x) => x / Math.sqrt(14));
+    const r = environmentLight(m, n, n, uniform, 20000, seeded(7));
+    expectWithin(r, [1 - Math.LN2, 1 - Math.LN2, 1 - Math.LN2], 0.0025);
+    // v 60° from n, about an axis off every plane: against v 60° from +y.
+    const t = [3, 0, -1].map((x) => x / Math.sqrt(10)); // ⟂ n
+    const v = n.map((x, c) => 0.5 * x + (Math.sqrt(3) / 2) * t[c]);
+    const a = environmentLight({ ...m, alpha: 0.25 }, n, v, uniform, 20000, seeded(8));
+    const b = environmentLight({ ...m, alpha: 0.25 }, UP, [Math.sqrt(3) / 2, 0.5, 0], uniform, 20000, seeded(9));
+    expect(Math.abs(a.mean[0] - b.mean[0])).toBeLessThan(4 * Math.hypot(a.error[0], b.error[0]));
+  });
+
+  it('averages its samples: two samples are the mean of the two one-sample estimates drawn from the same numbers', () => {
+    const m = { baseColor: [0.9, 0.6, 0.3], metallic: 0.3, alpha: 0.25 };
+    const stream = seeded(10), numbers = Array.from({ length: 64 }, stream);
+    let at = 0;
+    const replay = () => numbers[at++];
+    const two = environmentLight(m, UP, [0.6, 0.8, 0], STUDIO_LIGHT, 2, replay);
+    at = 0;
+    const first = environmentLight(m, UP, [0.6, 0.8, 0], STUDIO_LIGHT, 1, replay);
+    const second = environmentLight(m, UP, [0.6, 0.8, 0], STUDIO_LIGHT, 1, replay);
+    for (let c = 0; c < 3; c++) {
+      expect(two.mean[c]).toBeCloseTo((first.mean[c] + second.mean[c]) / 2, 14);
+      // Two samples x₁, x₂: variance ((x₁ − x₂)/2)², standard error √(variance/2) = |x₁ − x₂| / (2√2).
+      expect(two.error[c]).toBeCloseTo(Math.abs(first.mean[c] - second.mean[c]) / (2 * Math.SQRT2), 14);
+    }
+    expect(first.mean[0]).not.toBe(second.mean[0]);
   });
 
   it('returns nothing for a surface seen from behind, or without samples', () => {
