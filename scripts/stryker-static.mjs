@@ -1,6 +1,7 @@
 // Re-judges the static mutants a Stryker report calls Survived, by hand: each one written into its
 // file, the given unit tests run plainly (Vitest), the file restored.
-//   node scripts/stryker-static.mjs reports/mutation/<scope>/mutation.json --tests "tests/unit/a.test.ts,…"
+//   node scripts/stryker-static.mjs reports/mutation/<scope>/mutation.json --tests "tests/unit/a.test.ts,…" [--ignored]
+// --ignored: the static mutants `--ignoreStatic` left out (status Ignored) are judged too.
 // Why: Stryker 9.6's Vitest runner switches a mutant on when its covering test starts; a static
 // mutant (a module's constant: a table, a Set of names) was evaluated at import, before that, so it
 // "survives" whatever the tests assert (stryker-js issues #6144, #6209). The README's scores count
@@ -12,6 +13,7 @@ const args = process.argv.slice(2);
 const report = args[0];
 const t = args.indexOf('--tests');
 const tests = t >= 0 ? args[t + 1].split(',').filter(Boolean) : [];
+const judged = (m) => m.static && (m.status === 'Survived' || (args.includes('--ignored') && m.status === 'Ignored' && /ignoreStatic/.test(m.statusReason ?? '')));
 if (!report || !tests.length) {
   console.error('usage: node scripts/stryker-static.mjs <mutation.json> --tests "a.test.ts,b.test.ts"');
   process.exit(2);
@@ -42,7 +44,7 @@ for (const [name, file] of Object.entries(files)) {
   // Interrupted, the file is restored before leaving.
   const restore = () => { fs.writeFileSync(name, original); process.exit(130); };
   process.once('SIGINT', restore).once('SIGTERM', restore);
-  for (const m of file.mutants.filter((x) => x.status === 'Survived' && x.static)) {
+  for (const m of file.mutants.filter(judged)) {
     const from = offset(original, m.location.start), to = offset(original, m.location.end);
     fs.writeFileSync(name, original.slice(0, from) + m.replacement + original.slice(to));
     try {
@@ -56,4 +58,4 @@ for (const [name, file] of Object.entries(files)) {
   }
   process.removeListener('SIGINT', restore).removeListener('SIGTERM', restore);
 }
-console.log(`static mutants reported Survived: ${killed} killed by the tests when written by hand, ${survived} survived`);
+console.log(`static mutants judged by hand: ${killed} killed by the tests, ${survived} survived`);

@@ -31,6 +31,7 @@ describe('radiance', () => {
 
 describe('solid angles and the light of the whole sphere', () => {
   it('gives each panel Δφ·(sin e₁ − sin e₀): the key 50° × (sin 60° − sin 30°) = 0.319417', () => {
+    expect(STUDIO_PANELS.map((p) => p.name)).toEqual(['key', 'fill', 'rim', 'top']);
     expect(panelSolidAngle(panel('key'))).toBeCloseTo(50 * DEG * (Math.sin(60 * DEG) - 0.5), 14);
     expect(panelSolidAngle(panel('key'))).toBeCloseTo(0.319417, 6);
     expect(panelSolidAngle(panel('top'))).toBeCloseTo(2 * Math.PI * (1 - Math.sin(75 * DEG)), 14);
