@@ -310,9 +310,10 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
     return { value: xs.map((x) => x / l) };
   }),
   tupleSpec('glassSize', 'glass-size', [8, 4], '"w h"', (xs) => {
-    if (xs.some((x) => x < 0)) return { value: xs.map((x) => Math.max(0, x)), problem: 'negative size clamped to 0' };
-    const c = xs.map((x) => Math.min(MAX_COORD, x));
-    return c.some((x, i) => x !== xs[i]) ? { value: c, problem: `size clamped to ${MAX_COORD}` } : { value: c };
+    const c = xs.map((x) => Math.min(MAX_COORD, Math.max(0, x)));
+    const capped = xs.some((x) => x > MAX_COORD) ? `size clamped to ${MAX_COORD}` : '';
+    if (xs.some((x) => x < 0)) return { value: c, problem: `negative size clamped to 0${capped && `, ${capped}`}` };
+    return capped ? { value: c, problem: capped } : { value: c };
   }),
   {
     property: 'background', attribute: 'background', default: [0.1, 0.1, 0.1],

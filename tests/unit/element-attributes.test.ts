@@ -277,6 +277,8 @@ describe('tuples', () => {
     expectParse('glass-size', '3 -0.5', [3, 0], 'negative size clamped to 0');
     expectParse('glass-size', '-1 2', [0, 2], 'negative size clamped to 0');
     expectParse('glass-size', '10000001 3', [1e7, 3], 'size clamped to 10000000');
+    // A negative side does not spare the other its cap.
+    expectParse('glass-size', '1e300 -1', [1e7, 0], 'negative size clamped to 0, size clamped to 10000000');
     expectParse('glass-size', '1 2 3', [8, 4], 'expected "w h", using "8 4"');
     expect(format('glass-size', [8, 4])).toBe('8 4');
   });
