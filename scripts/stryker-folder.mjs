@@ -40,7 +40,7 @@ const OWN_TESTS = {
   software: [
     'small-frames', 'software-protocol', 'software-clip', 'software-raster', 'software-anisotropic', 'software-glass', 'software-pixels',
     'software-srgb', 'software-caches', 'software-bands', 'glass-tie', 'mesh-choice', 'scene-turn', 'software-lighting',
-    'software-mip-texture', 'software-raster-options', 'software-glass-shader',
+    'software-mip-texture', 'software-raster-options', 'software-glass-shader', 'software-object-shader',
   ],
   reference: [
     'small-frames', 'reference-pixels', 'reference-metrics', 'reference-texture', 'reference-srgb', 'reference-scene', 'bvh',

@@ -104,6 +104,7 @@ export class ObjectShader implements FragmentShader {
   /** The draw's cache while its fragments are read and kept (null: shaded every frame), and its key. */
   private cache: ObjectCache | null = null;
   private readonly key = new Float64Array(OBJECT_KEY_LENGTH);
+  // Stryker disable next-line ArrayDeclaration: cacheKey empties it (o.length = 0) before each use
   private readonly keyObjects: unknown[] = [];
 
   /** Runs the vertex stage of `d` and rasterizes its triangles with `r`. */
@@ -153,6 +154,7 @@ export class ObjectShader implements FragmentShader {
     i = put(k, i, d.viewProjection, 16);
     i = put(k, i, d.eye, 3);
     i = put(k, i, d.view, 4);
+    // Stryker disable next-line ConditionalExpression,EqualityOperator: no plane keys as (0, 0, 0, 0), which keeps all (0 ≥ 0)
     k[i++] = cp === null ? 0 : 1;
     if (cp !== null) i = put(k, i, cp, 4); else i += 4;
     k[i++] = c[0]; k[i++] = c[1]; k[i++] = c[2]; k[i++] = d.bounds.radius;
@@ -161,7 +163,9 @@ export class ObjectShader implements FragmentShader {
     i = put(k, i, m.specular, 3);
     k[i++] = m.shininess; k[i++] = m.opacity; k[i++] = d.twoSided ? 1 : 0;
     if (m.emissive) i = put(k, i, m.emissive, 3); else i += 3;
+    // Stryker disable next-line ConditionalExpression,EqualityOperator,StringLiteral: culling picks faces, not colours
     k[i++] = r.width; k[i++] = r.height; k[i++] = r.shadeEvery; k[i++] = r.frontCCW ? 1 : 0; k[i++] = r.cull === 'back' ? 1 : 0;
+    // Stryker disable next-line UpdateOperator: all lights' values stay keyed; a light of zeros lights nothing
     k[i++] = l.count;
     for (let j = 0; j < l.count; j++) {
       i = put(k, i, l.vector.subarray(3 * j), 3);
