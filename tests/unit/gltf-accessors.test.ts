@@ -3,7 +3,7 @@
 // bytes and shorts scaled and clamped by hand-computed values; unaligned strides; sparse substitutions
 // checked index by index.
 import { describe, expect, it } from 'vitest';
-import { LoadError } from '../../src/loaders/load-error';
+import { refusal } from './helpers/refusal';
 import { GltfFile } from '../../src/loaders/gltf/fields';
 import {
   BYTE, FLOAT, MAX_ELEMENTS, SHORT, UNSIGNED_BYTE, UNSIGNED_INT, UNSIGNED_SHORT, readAccessor, readIndices, type Expect,
@@ -22,16 +22,6 @@ const bytesOf = (a: ArrayBufferView) => new Uint8Array(a.buffer, a.byteOffset, a
 const floats = (...v: number[]) => bytesOf(new Float32Array(v));
 const whole = (data: Uint8Array) => [{ buffer: 0, byteLength: data.length }];
 
-/** The path and message of the LoadError `run` throws. */
-function refusal(run: () => unknown): { path: string | undefined; message: string } {
-  try {
-    run();
-  } catch (e) {
-    expect(e).toBeInstanceOf(LoadError);
-    return { path: (e as LoadError).path, message: (e as LoadError).detail.message };
-  }
-  throw new Error('read without an error');
-}
 
 describe('counts, types and component types', () => {
   it('reads a count of 1, refuses a count of 0 and one above MAX_ELEMENTS', () => {

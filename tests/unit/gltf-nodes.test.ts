@@ -2,23 +2,13 @@
 // chosen, the roots of a file with no scene, each refusal with the path of the way to the node, and
 // translation × rotation × scale checked against a quaternion rotation computed another way.
 import { describe, expect, it } from 'vitest';
-import { LoadError } from '../../src/loaders/load-error';
+import { refusal } from './helpers/refusal';
 import { GltfFile } from '../../src/loaders/gltf/fields';
 import { localMatrix, meshInstances } from '../../src/loaders/gltf/nodes';
 
 const file = (json: Record<string, unknown>) => new GltfFile('n.gltf', json);
 const instances = (json: Record<string, unknown>) => meshInstances(file(json)).map((m) => ({ node: m.node, mesh: m.mesh }));
 
-/** The path and message of the LoadError `run` throws. */
-function refusal(run: () => unknown): { path: string | undefined; message: string } {
-  try {
-    run();
-  } catch (e) {
-    expect(e).toBeInstanceOf(LoadError);
-    return { path: (e as LoadError).path, message: (e as LoadError).detail.message };
-  }
-  throw new Error('read without an error');
-}
 
 describe('scenes and roots', () => {
   const nodes = [{ mesh: 0 }, { mesh: 1 }, { mesh: 2 }];

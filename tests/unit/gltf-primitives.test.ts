@@ -3,7 +3,7 @@
 // node matrix and normals through its cofactors (worked out by hand), mirrored winding, flat
 // normals, dropped triangles and RGB colours given alpha 1.
 import { describe, expect, it } from 'vitest';
-import { LoadError } from '../../src/loaders/load-error';
+import { refusal } from './helpers/refusal';
 import { GltfFile } from '../../src/loaders/gltf/fields';
 import { MAX_COORDINATE, positionCount, readPiece, triangles } from '../../src/loaders/gltf/primitives';
 
@@ -45,16 +45,6 @@ function read(m: ReturnType<typeof model>, matrix: number[] = IDENTITY) {
 const round = (a: ArrayLike<number>, digits = 6) => Array.from(a, (x) => Number(x.toFixed(digits)) + 0);
 const unit = (v: number[]) => v.map((x) => x / Math.hypot(...v));
 
-/** The path and message of the LoadError `run` throws. */
-function refusal(run: () => unknown): { path: string | undefined; message: string } {
-  try {
-    run();
-  } catch (e) {
-    expect(e).toBeInstanceOf(LoadError);
-    return { path: (e as LoadError).path, message: (e as LoadError).detail.message };
-  }
-  throw new Error('read without an error');
-}
 
 const TRI = [0, 0, 0, 1, 0, 0, 0, 1, 0];
 
