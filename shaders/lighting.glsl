@@ -55,3 +55,4 @@ vec3 facing(vec3 n, vec3 v) {
   return n;
 #endif
 }
+

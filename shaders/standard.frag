@@ -1,5 +1,5 @@
 #version 300 es
-// colour = tex ⊙ Σ(Ka⊙Ia + Kd⊙Id·max(N·L, 0)) + Σ Ks⊙Is·(N·H)^n + E, alpha = opacity; the light sums
+// colour = tex ⊙ Σ(Ka⊙Ia + Kd⊙Id·max(N·L, 0)) + Σ Ks⊙Is·(N·H)^n + E, alpha = opacity (a glTF material: pbrLights + E); the light sums
 // come from blinnPhong (lighting.glsl), per fragment (phong), interpolated from the vertices
 // (gouraud), or one per triangle (flat).
 precision highp float;
@@ -70,6 +70,12 @@ void main() {
 #if defined(CLIP_PLANE) && !defined(CLIP_DISTANCE)
   if (vClipDistance < 0.0) discard;
 #endif
+#if defined(PBR)
+  vec3 v = viewVector(vRelPos);
+  // The texture is in the base colour, which also sets a metal's F0 (docs/pbr.md#the-scenes-lights).
+  vec3 lit = pbrLights(facing(normalize(vNormal), v), v, vRelPos, uBaseColor * surfaceTexture());
+  outColor = vec4(lit + uEmissive, uOpacity);
+#else
 #if defined(SHADING_PHONG)
   vec3 v = viewVector(vRelPos);
   vec3 a, s;
@@ -78,4 +84,5 @@ void main() {
   vec3 a = vLightA, s = vLightS;
 #endif
   outColor = vec4(surfaceTexture() * a + s + uEmissive, uOpacity);
+#endif
 }

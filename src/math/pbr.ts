@@ -4,7 +4,7 @@
 // by 1 − F. Single scattering: a white rough metal in a white furnace reflects less than it gets.
 // Shared by the float64 reference and the software renderer; the GLSL writes the same formulas.
 // Tied down by tests/unit/pbr.test.ts (values worked by hand, the lobe's energy by quadrature).
-import { ggxD } from './ggx';
+import { ggxAlpha, ggxD } from './ggx';
 
 /** F0 of a dielectric in glTF's model (index 1.5): ((1.5 − 1)/(1.5 + 1))² = 0.04. */
 export const DIELECTRIC_F0 = 0.04;
@@ -52,4 +52,16 @@ export function gltfBrdf(out: Float64Array | number[], m: PbrPoint, nl: number, 
     out[c] = (1 - f) * base * dielectric / Math.PI + f * dv;
   }
   return out;
+}
+
+/**
+ * The least α a point or directional light sees (docs/pbr.md#the-scenes-lights): such a light is one direction, and on
+ * a smoother surface its highlight would shrink below any pixel to a value 32-bit floats cannot hold.
+ */
+export const PUNCTUAL_MIN_ALPHA = 0.002;
+
+/** α of a roughness under a point or directional light: roughness², at least PUNCTUAL_MIN_ALPHA. */
+export function punctualAlpha(roughness: number): number {
+  const a = ggxAlpha(roughness);
+  return a > PUNCTUAL_MIN_ALPHA ? a : PUNCTUAL_MIN_ALPHA;
 }

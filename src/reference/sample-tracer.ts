@@ -10,7 +10,7 @@ import { ViewCamera } from './view-camera';
 import { Ray } from './ray';
 import { RayScene } from './ray-scene';
 import type { ViewState } from './reference-state';
-import { clamp01, composeGlass, glassFresnel, prepareLight, shadeObject, type PreparedLight } from './shade';
+import { clamp01, composeGlass, glassFresnel, prepareLight, shadeObject, shadePbr, type PreparedLight } from './shade';
 import type { SurfaceCodes } from './surface-codes';
 import { SurfaceHit, SURFACE_NONE } from './surface-hit';
 import { Layer } from './layer';
@@ -273,8 +273,7 @@ export class SampleTracer {
   }
 
   private background(out: Float64Array): void {
-    const bg = this.backgroundColour;
-    out[0] = bg[0]; out[1] = bg[1]; out[2] = bg[2];
+    out.set(this.backgroundColour);
   }
 
   private readonly viewVector = new Float64Array(3);
@@ -290,9 +289,10 @@ export class SampleTracer {
 
   /** Object colour, clamped to [0, 1]. */
   private shade(hit: SurfaceHit, ray: Ray, eye: Float64Array, layer: Layer, out: Float64Array): void {
-    const object = this.scene.scene.objects[hit.object];
-    const tex = this.texture.objectTexture(hit, ray, object.material, object.bounds, layer.tex);
-    shadeObject(hit, object.material, tex, this.lights, eye, out, this.camera.orthographic ? this.towardsViewer(ray) : null);
+    const object = this.scene.scene.objects[hit.object], m = object.material, view = this.camera.orthographic ? this.towardsViewer(ray) : null;
+    const tex = this.texture.objectTexture(hit, ray, m, object.bounds, layer.tex);
+    if (m.pbr) shadePbr(hit, m.pbr, m.emissive, tex, this.lights, eye, out, view);
+    else shadeObject(hit, m, tex, this.lights, eye, out, view);
     out[0] = clamp01(out[0]); out[1] = clamp01(out[1]); out[2] = clamp01(out[2]);
   }
 }

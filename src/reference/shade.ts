@@ -1,7 +1,9 @@
 // Per-sample shading in float64: Blinn-Phong for the objects (docs/default-scene.md#material-and-lighting, docs/scene-model.md#lights) and the glass equation (docs/rendering.md#the-glass-equation).
 import { fresnel, type FresnelModel } from '../math/fresnel';
+import { gltfBrdf, punctualAlpha, type PbrPoint } from '../math/pbr';
+import type { PbrMaterial } from '../scene/pbr-material';
 import { GLASS_BODY as BODY } from '../scene/default-scene';
-import type { Light, Material } from '../scene/scene';
+import type { Light, Material, Vec3 } from '../scene/scene';
 import type { SurfaceHit } from './surface-hit';
 
 // Stryker disable next-line EqualityOperator: at 0 and at 1 the clamp returns x itself either way
@@ -87,6 +89,59 @@ export function shadeObject(
     out[k] = e === undefined ? lit + sums[6 + k] : lit + sums[6 + k] + e[k];
   }
   return out;
+}
+
+const pbrPoint: PbrPoint & { baseColor: Float64Array } = { baseColor: new Float64Array(3), metallic: 0, alpha: 0 };
+const brdf = new Float64Array(3);
+
+/**
+ * A glTF material (docs/pbr.md#the-scenes-lights): out = Σ over lights of Ia⊙c_diff + π·f(l, v)⊙Id·max(N·L, 0), with
+ * f the glTF BRDF at α = punctualAlpha(roughness), the base colour times `tex` (so the texture sets a
+ * metal's F0 too), c_diff = base·(1 − metallic), V as shadeObject's (unlit: the base colour times `tex`);
+ * plus the material's emissive (which the element does not give an unlit material).
+ */
+export function shadePbr(
+  hit: SurfaceHit, pbr: PbrMaterial, emissive: Vec3 | undefined, tex: Float64Array, lights: readonly PreparedLight[],
+  eye: Float64Array, out: Float64Array, towardsViewer: Float64Array | null = null,
+): Float64Array {
+  const base = pbrPoint.baseColor;
+  for (let k = 0; k < 3; k++) base[k] = pbr.baseColor[k] * tex[k];
+  if (pbr.unlit) out.set(base);
+  else litPbr(hit, pbr, lights, eye, out, towardsViewer);
+  if (emissive !== undefined) for (let k = 0; k < 3; k++) out[k] += emissive[k];
+  return out;
+}
+
+function litPbr(hit: SurfaceHit, pbr: PbrMaterial, lights: readonly PreparedLight[], eye: Float64Array, out: Float64Array, towardsViewer: Float64Array | null): void {
+  const base = pbrPoint.baseColor;
+  const n = hit.n, p = hit.p;
+  let vx: number, vy: number, vz: number;
+  if (towardsViewer) {
+    vx = towardsViewer[0]; vy = towardsViewer[1]; vz = towardsViewer[2];
+  } else {
+    vx = eye[0] - p[0]; vy = eye[1] - p[1]; vz = eye[2] - p[2];
+    const vl = Math.hypot(vx, vy, vz);
+    vx /= vl; vy /= vl; vz /= vl;
+  }
+  const nv = n[0] * vx + n[1] * vy + n[2] * vz;
+  pbrPoint.metallic = pbr.metallic;
+  pbrPoint.alpha = punctualAlpha(pbr.roughness);
+  const dielectric = 1 - pbr.metallic;
+  out[0] = 0; out[1] = 0; out[2] = 0;
+  for (const light of lights) {
+    let lx = light.x, ly = light.y, lz = light.z;
+    if (light.point) {
+      lx -= p[0]; ly -= p[1]; lz -= p[2];
+      const len = Math.hypot(lx, ly, lz);
+      if (len > 0) { lx /= len; ly /= len; lz /= len; }
+    }
+    const nl = n[0] * lx + n[1] * ly + n[2] * lz;
+    const hx = lx + vx, hy = ly + vy, hz = lz + vz;
+    const hl = Math.hypot(hx, hy, hz);
+    gltfBrdf(brdf, pbrPoint, nl, nv, (n[0] * hx + n[1] * hy + n[2] * hz) / hl, (vx * hx + vy * hy + vz * hz) / hl);
+    const m = Math.PI * Math.max(nl, 0);
+    for (let k = 0; k < 3; k++) out[k] += light.ambient[k] * base[k] * dielectric + m * light.diffuse[k] * brdf[k];
+  }
 }
 
 /** F for a glass hit seen along `direction`: cosθ = |N·V| clamped to [0, 1], as glass.frag does. */

@@ -71,10 +71,25 @@ export const MESH_EXTRAS: Part<typeof import('./mesh-extras')> = {
   arrived: (h, m) => h.ctx.objectMeshes.setExtras(m),
 };
 
+/** Whether a scene has a glTF material (docs/pbr.md#the-scenes-lights). Reads; allocates nothing. */
+export function hasPbr(scene: Scene): boolean {
+  for (const o of scene.objects) if (o.material.pbr !== undefined) return true;
+  return false;
+}
+
+/** glTF materials' shader part, given to the program cache. */
+export const PBR_MATERIALS: Part<typeof import('./pbr-gl')> = {
+  name: 'glTF materials', chunk: 'pbr-gl', load: () => import('./pbr-gl'),
+  needed: (h) => hasPbr(h.ctx.scene), holds: true, instead: 'drawing them with their Blinn-Phong stand-in',
+  arrived: (h, m) => h.ctx.programs.setPbrSource(m.PBR_SOURCE),
+};
+
 /** debug-view reflection, fresnel and passes. */
 export const DEBUG_VIEWS: Part<typeof import('./debug-views')> = {
   name: 'debug-view', chunk: 'diagnostics', load: () => import('./debug-views'),
   needed: (h) => h.ctx.state.view !== 'final' && h.ctx.state.view !== 'scene', holds: true, instead: 'the final image is drawn',
 };
 
-export const RENDER_PARTS: readonly Part<unknown>[] = [FRAME_CHECKS, ROUGH_GLASS, COURSE_PROJECTION, ORTHOGRAPHIC_VIEW, MESH_EXTRAS, DEBUG_VIEWS];
+export const RENDER_PARTS: readonly Part<unknown>[] = [
+  FRAME_CHECKS, ROUGH_GLASS, COURSE_PROJECTION, ORTHOGRAPHIC_VIEW, MESH_EXTRAS, PBR_MATERIALS, DEBUG_VIEWS,
+];

@@ -23,18 +23,22 @@ export interface ObjectVariant {
   /** Bit i set: light i is a point light (else directional). */
   pointMask: number;
   mapping: Mapping;
+  /** A glTF material (docs/pbr.md#the-scenes-lights): lit per fragment by the glTF BRDF, whatever the shading (its chunk must be in). */
+  pbr: boolean;
 }
 
-function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant): string[] {
+function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant, pbr: string | null): string[] {
   const header: string[] =
     clip === 'none' ? [] :
     clip === 'clip-distance' ? ['#extension GL_ANGLE_clip_cull_distance : require', '#define CLIP_PLANE', '#define CLIP_DISTANCE'] :
     ['#define CLIP_PLANE'];
   header.push(`#define SHADING_${shading.toUpperCase()}`);
   if (v.twoSided) header.push('#define TWO_SIDED');
+  if (pbr !== null) header.push('#define PBR');
   header.push(`#define LIGHT_COUNT ${v.lights}`, `#define MAPPING_${v.mapping.toUpperCase()}`);
   for (let i = 0; i < MAX_LIGHTS; i++) header.push(`#define LIGHT${i}_POINT ${(v.pointMask >> i) & 1 ? 'true' : 'false'}`);
   header.push(lighting);
+  if (pbr !== null) header.push(pbr);
   return header;
 }
 
@@ -81,6 +85,8 @@ export class ProgramCache {
   private readonly screens = new Map<string, Program>();
   /** Rough glass's shader parts, once its chunk has loaded (setRoughSources). */
   private rough: RoughSources | null = null;
+  /** The PBR variant's shader part, once its chunk has loaded (setPbrSource). */
+  private pbr: string | null = null;
   /**
    * Variants that failed to compile, by key: asked again (the same state drawn again), they throw
    * the same error without compiling again. A new context means a new cache, so a restore retries.
@@ -94,20 +100,38 @@ export class ProgramCache {
   }
 
   /** The standard program for one object's draw. A cached lookup builds no key, header or array. */
-  standard(clip: ClipMode, shading: Shading, v: ObjectVariant): Program {
+  standard(clip: ClipMode, requested: Shading, v: ObjectVariant): Program {
+    // A glTF material is lit per fragment whatever the frame's shading (docs/pbr.md#the-scenes-lights).
+    const shading = v.pbr ? 'phong' : requested;
     const variants = ((this.standards[clip] ??= {})[shading] ??= []);
     const lights = Math.max(1, Math.min(MAX_LIGHTS, v.lights));
     const points = v.pointMask & ((1 << lights) - 1);
-    const i = (v.twoSided ? 1 : 0) + 2 * (lights - 1 + MAX_LIGHTS * (points + (1 << MAX_LIGHTS) * MAPPINGS.indexOf(v.mapping)));
+    const i = (v.pbr ? 2 : 0) + (v.twoSided ? 1 : 0)
+      + 4 * (lights - 1 + MAX_LIGHTS * (points + (1 << MAX_LIGHTS) * MAPPINGS.indexOf(v.mapping)));
     return (variants[i] ??= this.build(
-      `standard:${clip}:${shading}${v.twoSided ? ':two-sided' : ''}:lights${lights}/${points}:${v.mapping}`,
-      standardVert, standardFrag, standardHeader(clip, shading, { ...v, lights, pointMask: points }),
+      `standard:${clip}:${shading}${v.twoSided ? ':two-sided' : ''}${v.pbr ? ':pbr' : ''}:lights${lights}/${points}:${v.mapping}`,
+      standardVert, standardFrag, standardHeader(clip, shading, { ...v, lights, pointMask: points }, v.pbr ? this.pbrSource() : null),
     ));
   }
 
   /** Takes rough glass's shader parts once its chunk has loaded (ROUGH_GLASS, render/parts.ts). */
   setRoughSources(sources: RoughSources): void {
     this.rough = sources;
+  }
+
+  /** Takes the PBR variant's shader part once its chunk has loaded (PBR_MATERIALS, render/parts.ts). */
+  setPbrSource(source: string): void {
+    this.pbr = source;
+  }
+
+  /** Whether the PBR variant can be built: its chunk is in. */
+  get hasPbr(): boolean {
+    return this.pbr !== null;
+  }
+
+  private pbrSource(): string {
+    if (this.pbr === null) throw new Error('glass-plane-scene: a glTF material\'s program was asked for before its chunk loaded');
+    return this.pbr;
   }
 
   private roughSources(): RoughSources {

@@ -1,6 +1,8 @@
 // Blinn-Phong of docs/scene-model.md#lights for the CPU, term for term as shaders/lighting.glsl writes it: per
 // light Ka⊙Ia + Kd⊙Id·max(N·L, 0) into `a` (which the texture multiplies) and
 // Ks⊙Is·max(N·H, 0)^n into `s` where N·L > 0. Positions are relative to the eye drawn from.
+import { gltfBrdf, punctualAlpha, type PbrPoint } from '../math/pbr';
+import type { PbrMaterial } from '../scene/pbr-material';
 import { MAX_LIGHTS, type Material, type Scene } from '../scene/scene';
 
 export class Lights {
@@ -83,4 +85,47 @@ export function blinnPhong(lights: Lights, m: Material, twoSided: boolean, g: Fl
   }
   out[0] = ar; out[1] = ag; out[2] = ab;
   out[3] = sr; out[4] = sg; out[5] = sb;
+}
+
+const point: PbrPoint & { baseColor: Float64Array } = { baseColor: new Float64Array(3), metallic: 0, alpha: 0 };
+const brdf = new Float64Array(3);
+
+/**
+ * A metallic-roughness surface under the scene's lights (docs/pbr.md#the-scenes-lights), into out[0..2], for g as
+ * blinnPhong's and `base` the base colour times its texture: per light Ia⊙c_diff, and where N·L > 0
+ * and N·V > 0, π·f(l, v)⊙Id·(N·L) with f of math/pbr.ts at α = punctualAlpha(roughness). Unlit: the base colour.
+ */
+export function pbrLights(lights: Lights, m: PbrMaterial, twoSided: boolean, g: Float64Array, base: ArrayLike<number>, out: Float64Array): void {
+  const br = base[0], bg = base[1], bb = base[2];
+  if (m.unlit) {
+    out[0] = br; out[1] = bg; out[2] = bb;
+    return;
+  }
+  const px = g[0], py = g[1], pz = g[2], vx = g[6], vy = g[7], vz = g[8];
+  let nx = g[3], ny = g[4], nz = g[5];
+  if (twoSided && nx * vx + ny * vy + nz * vz < 0) { nx = -nx; ny = -ny; nz = -nz; }
+  const nv = nx * vx + ny * vy + nz * vz;
+  const metallic = m.metallic, dielectric = 1 - metallic;
+  point.baseColor[0] = br; point.baseColor[1] = bg; point.baseColor[2] = bb;
+  point.metallic = metallic;
+  point.alpha = punctualAlpha(m.roughness);
+  let r = 0, gr = 0, b = 0;
+  const vec = lights.vector, ia = lights.ambient, id = lights.diffuse;
+  for (let i = 0; i < lights.count; i++) {
+    r += ia[3 * i] * br * dielectric; gr += ia[3 * i + 1] * bg * dielectric; b += ia[3 * i + 2] * bb * dielectric;
+    let lx = vec[3 * i], ly = vec[3 * i + 1], lz = vec[3 * i + 2];
+    if (lights.point[i] === 1) {
+      lx -= px; ly -= py; lz -= pz;
+      const len = Math.sqrt(lx * lx + ly * ly + lz * lz);
+      if (len > 0) { lx /= len; ly /= len; lz /= len; }
+    }
+    const nl = nx * lx + ny * ly + nz * lz;
+    // Where N·L ≤ 0 or N·V ≤ 0, f is 0 (gltfBrdf), whatever the half vector (l = −v: 0/0).
+    const hx = lx + vx, hy = ly + vy, hz = lz + vz;
+    const hl = Math.sqrt(hx * hx + hy * hy + hz * hz);
+    gltfBrdf(brdf, point, nl, nv, (nx * hx + ny * hy + nz * hz) / hl, (vx * hx + vy * hy + vz * hz) / hl);
+    const k = Math.PI * nl;
+    r += k * id[3 * i] * brdf[0]; gr += k * id[3 * i + 1] * brdf[1]; b += k * id[3 * i + 2] * brdf[2];
+  }
+  out[0] = r; out[1] = gr; out[2] = b;
 }

@@ -1,12 +1,12 @@
 // The standard program of the GL path on the CPU (shaders/standard.vert + standard.frag): the
 // vertex stage into a clip-space buffer, and per fragment the texture through its mapping,
-// Blinn-Phong per pixel (phong) or interpolated from the vertices (gouraud, flat), the 8-bit
-// clamp, and straight alpha blending for opacity < 1.
+// Blinn-Phong per pixel (phong) or interpolated from the vertices (gouraud, flat), a glTF material
+// per pixel whatever the shading (docs/pbr.md#the-scenes-lights), the 8-bit clamp, and straight alpha blending for opacity < 1.
 import { cylindricalUV, sphericalUV, triplanarScale, triplanarUV, TRIPLANAR_U, TRIPLANAR_V } from '../scene/mapping';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import type { Bounds, Material } from '../scene/scene';
 import type { Shading } from '../frame/types';
-import { blinnPhong, type Lights } from './lighting';
+import { blinnPhong, pbrLights, type Lights } from './lighting';
 import type { MipTexture } from './mip-texture';
 import { CLIP_DISTANCE, VARYINGS, type FragmentShader, type Rasterizer } from './raster';
 import { OBJECT_KEY_LENGTH, type ObjectCache } from './object-cache';
@@ -75,6 +75,8 @@ export class ObjectShader implements FragmentShader {
   private vertices = new Float64Array(0);
   private draw!: ObjectDraw;
   private readonly sums = new Float64Array(6);
+  /** Lit per pixel: phong shading, or a glTF material (whatever the shading). */
+  private perPixel = false;
   /**
    * Rough glass (docs/rough-glass.md#the-gather): per sample, the distance code h/(1 + h) of the opaque surface drawn
    * there (frame/rough-glass.ts), h its distance from the plane `codePlane` (positive on the side
@@ -110,6 +112,7 @@ export class ObjectShader implements FragmentShader {
   /** Runs the vertex stage of `d` and rasterizes its triangles with `r`. */
   render(d: ObjectDraw, r: Rasterizer): void {
     this.draw = d;
+    this.perPixel = d.shading === 'phong' || d.material.pbr !== undefined;
     const count = d.mesh.positions.length / 3;
     if (this.vertices.length < count * OBJECT_STRIDE) this.vertices = new Float64Array(count * OBJECT_STRIDE);
     const timing = this.timing;
@@ -176,7 +179,7 @@ export class ObjectShader implements FragmentShader {
     }
     const o = this.keyObjects;
     o.length = 0;
-    o.push(mesh, mesh.positions, mesh.normals, mesh.uvs, mesh.indices, mesh.centroids, d.texture, d.shading, m.mapping);
+    o.push(mesh, mesh.positions, mesh.normals, mesh.uvs, mesh.indices, mesh.centroids, d.texture, d.shading, m.mapping, m.pbr);
     return k;
   }
 
@@ -184,7 +187,7 @@ export class ObjectShader implements FragmentShader {
     const { positions: p, normals: nrm, uvs, centroids } = d.mesh;
     const m = d.model, nm = d.normal, vp = d.viewProjection, e = d.eye, cp = d.clipPlane;
     const out = this.vertices, sums = this.sums;
-    const phong = d.shading === 'phong';
+    const phong = this.perPixel;
     const hasNormals = nrm.length >= 3 * count, hasUvs = uvs.length >= 2 * count;
     for (let i = 0; i < count; i++) {
       const o = i * OBJECT_STRIDE, v = o + VARYINGS;
@@ -240,7 +243,8 @@ export class ObjectShader implements FragmentShader {
     const d = this.draw, p = r.poly, b0 = r.b0, b1 = r.b1, b2 = r.b2;
     const i0 = r.o0, i1 = r.o1, i2 = r.o2;
     const sums = this.sums;
-    if (d.shading === 'phong') {
+    const pbr = d.material.pbr;
+    if (this.perPixel) {
       const rx = b0 * p[i0 + REL] + b1 * p[i1 + REL] + b2 * p[i2 + REL];
       const ry = b0 * p[i0 + REL + 1] + b1 * p[i1 + REL + 1] + b2 * p[i2 + REL + 1];
       const rz = b0 * p[i0 + REL + 2] + b1 * p[i1 + REL + 2] + b2 * p[i2 + REL + 2];
@@ -254,7 +258,7 @@ export class ObjectShader implements FragmentShader {
       g[0] = rx; g[1] = ry; g[2] = rz; g[3] = nx; g[4] = ny; g[5] = nz;
       // V toward the eye point, or (orthographic) the view's own direction.
       if (ov[3] === 0) { g[6] = ov[0]; g[7] = ov[1]; g[8] = ov[2]; } else { g[6] = -rx / vl; g[7] = -ry / vl; g[8] = -rz / vl; }
-      blinnPhong(d.lights, d.material, d.twoSided, g, sums);
+      if (pbr === undefined) blinnPhong(d.lights, d.material, d.twoSided, g, sums);
     } else {
       for (let k = 0; k < 6; k++) sums[k] = b0 * p[i0 + k] + b1 * p[i1 + k] + b2 * p[i2 + k];
     }
@@ -262,7 +266,16 @@ export class ObjectShader implements FragmentShader {
     // The 8-bit target's clamp, inline (a helper's double result is boxed when not inlined).
     // Emitted light adds to the lit colour (docs/gltf.md#drawing); without it, nothing is added.
     const e = d.material.emissive;
-    let cr = tex[0] * sums[0] + sums[3], cg = tex[1] * sums[1] + sums[4], cb = tex[2] * sums[2] + sums[5];
+    let cr: number, cg: number, cb: number;
+    if (pbr === undefined) {
+      cr = tex[0] * sums[0] + sums[3]; cg = tex[1] * sums[1] + sums[4]; cb = tex[2] * sums[2] + sums[5];
+    } else {
+      // A glTF material: its texture is in the base colour, which also sets a metal's F0.
+      const bc = pbr.baseColor, base = this.part;
+      base[0] = bc[0] * tex[0]; base[1] = bc[1] * tex[1]; base[2] = bc[2] * tex[2];
+      pbrLights(d.lights, pbr, d.twoSided, this.geometry, base, sums);
+      cr = sums[0]; cg = sums[1]; cb = sums[2];
+    }
     if (e !== undefined) { cr += e[0]; cg += e[1]; cb += e[2]; }
     this.cr = cr < 0 ? 0 : cr > 1 ? 1 : cr;
     this.cg = cg < 0 ? 0 : cg > 1 ? 1 : cg;

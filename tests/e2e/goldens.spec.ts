@@ -76,8 +76,8 @@ test('README picture: a rough glass floor at 640×360', async ({ page }) => {
 });
 
 // The README's glTF picture (docs/gltf.md): a GLB made by the tests — the Stanford bunny, gold, its
-// node scaling and turning it — standing on a glass floor, drawn with the glTF material's Blinn-Phong
-// stand-in until PBR shading lands.
+// node scaling and turning it — standing on a glass floor, its metallic-roughness material lit by the
+// scene's light (docs/pbr.md#the-scenes-lights); the environment's light and tone mapping are still to come.
 test('README picture: a GLB on a glass floor at 640×360', async ({ page }) => {
   const glb = await bunnyGlb();
   await page.route('**/wild/bunny.glb', (route) => route.fulfill({ status: 200, contentType: 'model/gltf-binary', body: Buffer.from(glb) }));

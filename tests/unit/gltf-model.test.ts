@@ -68,6 +68,8 @@ describe('the Blinn-Phong stand-in of a glTF material (docs/gltf.md#drawing)', (
     expect(standIn(material({ emissive: [1, 0.5, 0], emissiveStrength: 4 })).emissive).toEqual([4, 2, 0]);
     expect('emissive' in standIn(material({ emissive: [0, 0, 0], emissiveStrength: 4 }))).toBe(false);
     expect(standIn(material({ emissive: [0, 0, 0.25] })).emissive).toEqual([0, 0, 0.25]);
+    // KHR_materials_unlit: the base colour alone (docs/pbr.md#the-scenes-lights).
+    expect('emissive' in standIn(material({ emissive: [1, 0.5, 0], unlit: true }))).toBe(false);
   });
 
   it('draws the base colour texture when it reads TEXCOORD_0, not TEXCOORD_1; carries the material whole', () => {

@@ -3,7 +3,7 @@
 // by channel, and the lobe's energy by quadrature — 1 − ln 2 for a white metal at roughness 1,
 // where D = 1/π and V = ½/(n·l + n·v) make the integral one of calculus.
 import { describe, expect, it } from 'vitest';
-import { DIELECTRIC_F0, gltfBrdf, schlickFresnel, smithVisibility } from '../../src/math/pbr';
+import { DIELECTRIC_F0, PUNCTUAL_MIN_ALPHA, gltfBrdf, punctualAlpha, schlickFresnel, smithVisibility } from '../../src/math/pbr';
 import { ggxD } from '../../src/math/ggx';
 
 // n = +z, l = (0.6, 0, 0.8), v = (−0.8, 0, 0.6): l ⟂ v, so h is 45° from each:
@@ -96,5 +96,20 @@ describe('energy: ∫ f·(n·l) dω seen from the normal', () => {
     expect(albedo(1, 1, 0.25)).toBeCloseTo(0.91581, 4);
     expect(albedo(1, 1, 0.5)).toBeCloseTo(0.68785, 4);
     expect(albedo(1, 0, 1)).toBeCloseTo(0.97223, 4);
+  });
+});
+
+describe('α under a point or directional light (docs/pbr.md#the-scenes-lights)', () => {
+  it('is roughness², clamped to [0, 1], at least 0.002', () => {
+    expect(PUNCTUAL_MIN_ALPHA).toBe(0.002);
+    expect(punctualAlpha(0.5)).toBe(0.25);
+    expect(punctualAlpha(1)).toBe(1);
+    expect(punctualAlpha(3)).toBe(1);
+    expect(punctualAlpha(0.1)).toBeCloseTo(0.01, 15);
+    // √0.002 = 0.0447…: below it, the floor.
+    expect(punctualAlpha(0.045)).toBeCloseTo(0.002025, 15);
+    expect(punctualAlpha(0.04)).toBe(0.002);
+    expect(punctualAlpha(0)).toBe(0.002);
+    expect(punctualAlpha(-1)).toBe(0.002);
   });
 });

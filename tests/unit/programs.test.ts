@@ -11,7 +11,7 @@ import { fakeGl } from './helpers/fake-gl';
 const CLIPS: ClipMode[] = ['none', 'clip-distance', 'discard'];
 const SHADINGS: Shading[] = ['phong', 'gouraud', 'flat'];
 /** The default scene's draws: one-sided, one light, UV mapping. */
-const V: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv' };
+const V: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false };
 
 describe('ProgramCache', () => {
   it('compiles each variant once and returns the same program after', () => {
@@ -53,6 +53,29 @@ describe('ProgramCache', () => {
     }
     expect(counts, 'calls during cached lookups').toEqual({ toUpperCase: 0, push: 0, join: 0 });
     expect(cache.size).toBe(size);
+  });
+
+  it('a glTF material is its own variant, lit per fragment whatever the shading (docs/pbr.md#the-scenes-lights)', () => {
+    const { gl, sources } = fakeGl();
+    const cache = new ProgramCache(gl, SharedResources.acquire(gl));
+    const P = { ...V, pbr: true };
+    expect(cache.hasPbr).toBe(false);
+    expect(() => cache.standard('none', 'phong', P)).toThrow(/glTF material's program was asked for before its chunk loaded/);
+    cache.setPbrSource('// the PBR part');
+    expect(cache.hasPbr).toBe(true);
+    const phong = cache.standard('none', 'phong', P);
+    expect(phong.name).toBe('standard:none:phong:pbr:lights1/0:uv');
+    expect(cache.standard('none', 'gouraud', P)).toBe(phong);
+    expect(cache.standard('none', 'flat', P)).toBe(phong);
+    expect(cache.standard('none', 'phong', V)).not.toBe(phong);
+    const two = cache.standard('none', 'phong', { ...P, twoSided: true });
+    expect(two.name).toBe('standard:none:phong:two-sided:pbr:lights1/0:uv');
+    expect(new Set([phong, two, cache.standard('none', 'phong', { ...V, twoSided: true })]).size).toBe(3);
+    expect(cache.size).toBe(4);
+    // The part and its #define go into the PBR variants alone.
+    const headers = sources.filter((src) => src.includes('// the PBR part'));
+    expect(headers.length).toBeGreaterThan(0);
+    expect(sources.filter((src) => src.includes('#define PBR\n')).length).toBe(headers.length);
   });
 
   it('dispose deletes every program and shader', () => {

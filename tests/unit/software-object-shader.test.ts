@@ -5,6 +5,7 @@
 // emissive, two-sided lighting, straight alpha blending, the distance codes per sample, the timing run, and the
 // frame-to-frame cache (a frame after a change shades as a fresh shader does).
 import { afterEach, describe, expect, it, vi } from 'vitest';
+import { pbrMaterial } from './helpers/pbr-scenes';
 import { cylindricalUV, sphericalUV } from '../../src/scene/mapping';
 import type { MeshData } from '../../src/scene/geometry/mesh-data';
 import type { Bounds, Mapping, Material } from '../../src/scene/scene';
@@ -569,9 +570,9 @@ describe('the frame-to-frame cache', () => {
     // 8×12 samples at 2×2 a pixel: 4×6 = 24 pixels.
     expect(begin).toHaveBeenCalledWith(3, expect.any(Float64Array), expect.any(Array), 24);
     const objects = begin.mock.calls[0][2] as unknown[];
-    expect(objects.length).toBe(9);
+    expect(objects.length).toBe(10);
     expect(objects[0]).toBe(SHARED);
-    expect(objects.slice(6)).toEqual([TEX, 'phong', 'uv']);
+    expect(objects.slice(6)).toEqual([TEX, 'phong', 'uv', undefined]);
   });
 
   it('is not used by transparent draws, by draws that write distance codes, or by the constant-fragment timing run', () => {
@@ -684,6 +685,8 @@ describe('the frame-to-frame cache', () => {
     ['texture', { o: { texture: WHITE } }],
     ['shading', { o: { shading: 'gouraud' } }],
     ['mapping', { mat: { mapping: 'spherical' } }],
+    // A glTF material (docs/pbr.md#the-scenes-lights): kept by identity, as meshes and textures are (scene values are never written in place).
+    ['glTF material', { mat: { pbr: pbrMaterial({ baseColor: [0.9, 0.5, 0.2, 1], metallic: 0.5, roughness: 0.4 }) } }],
   ];
   describe.each(SETTINGS)('%s', (_, extra) => {
     it.each(changes)('a change of %s: the third frame as a fresh shader, and different from the unchanged one', (_, change, from = {}) => {

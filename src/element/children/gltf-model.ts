@@ -84,7 +84,8 @@ export function standIn(m: PbrMaterial): MtlValues {
   return {
     ambient: base, diffuse: base, specular: [f0[0] * fade, f0[1] * fade, f0[2] * fade], shininess,
     opacity: m.alphaMode === 'blend' ? a : 1, texture, pbr: m,
-    ...(er > 0 || eg > 0 || eb > 0 ? { emissive: [er, eg, eb] as const } : {}),
+    // KHR_materials_unlit: the base colour alone (docs/pbr.md#the-scenes-lights).
+    ...(!m.unlit && (er > 0 || eg > 0 || eb > 0) ? { emissive: [er, eg, eb] as const } : {}),
   };
 }
 

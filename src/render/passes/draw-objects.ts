@@ -18,12 +18,14 @@ export function prepareObjectPrograms(ctx: PassContext, clip: ClipMode): void {
 }
 
 /** The object's variant, filled in place (no allocation per draw). */
-const variant: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv' };
+const variant: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false };
 function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
   variant.twoSided = isTwoSided(o.geometry);
   variant.lights = ctx.setup.lightCount;
   variant.pointMask = ctx.setup.pointMask;
   variant.mapping = o.material.mapping;
+  // Without the PBR chunk (not in yet, or failed: render/parts.ts), the Blinn-Phong stand-in.
+  variant.pbr = o.material.pbr !== undefined && ctx.programs.hasPbr;
   return variant;
 }
 

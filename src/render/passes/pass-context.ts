@@ -79,6 +79,12 @@ export function setMaterial(gl: WebGL2RenderingContext, p: Program, o: SceneObje
   gl.uniform1f(p.location('uOpacity'), m.opacity);
   const e = m.emissive ?? NO_EMISSION;
   gl.uniform3f(p.location('uEmissive'), e[0], e[1], e[2]);
+  const pbr = m.pbr;
+  if (pbr) {
+    const b = pbr.baseColor;
+    gl.uniform3f(p.location('uBaseColor'), b[0], b[1], b[2]);
+    gl.uniform3f(p.location('uPbr'), pbr.metallic, pbr.roughness, pbr.unlit ? 1 : 0);
+  }
 }
 
 const NO_EMISSION = [0, 0, 0] as const;

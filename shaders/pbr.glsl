@@ -1,0 +1,48 @@
+// A glTF material (docs/pbr.md#the-scenes-lights), formula for formula as src/math/pbr.ts and src/software/lighting.ts:
+// per light Ia⊙c_diff + π·f(l, v)⊙Id·(N·L), f = (1 − F)·c_diff/π + F·D·Vis where N·L > 0 and N·V > 0.
+// The PBR variant's part of standard.frag, after lighting.glsl; in the chunk pbr-gl (render/pbr-gl.ts),
+// fetched by the first frame with a glTF material.
+uniform vec3 uBaseColor;
+uniform vec3 uPbr; // metallic, roughness, unlit (1) or not (0)
+
+void addPbrLight(vec3 l, vec3 ia, vec3 id, vec3 n, vec3 v, vec3 base, inout vec3 c) {
+  // α = roughness² clamped to [0, 1], at least 0.002 under a point or directional light (punctualAlpha).
+  float r = clamp(uPbr.y, 0.0, 1.0);
+  float alpha = max(r * r, 0.002);
+  float metallic = uPbr.x, a2 = alpha * alpha;
+  vec3 cdiff = base * (1.0 - metallic);
+  c += ia * cdiff;
+  float nl = dot(n, l), nv = dot(n, v);
+  if (nl <= 0.0 || nv <= 0.0) return;
+  vec3 h = normalize(l + v);
+  float nh = dot(n, h);
+  // 1 − (n·h)² as |n × h|²: no cancellation near the lobe's peak, where α² is far below float's step at 1.
+  vec3 nxh = cross(n, h);
+  float q = dot(nxh, nxh) + nh * nh * a2;
+  float d = nh > 0.0 ? a2 / (3.141592653589793 * q * q) : 0.0;
+  float vis = 0.5 / (nl * sqrt(nv * nv * (1.0 - a2) + a2) + nv * sqrt(nl * nl * (1.0 - a2) + a2));
+  vec3 f0 = vec3(0.04) * (1.0 - metallic) + base * metallic;
+  float k = 1.0 - min(abs(dot(v, h)), 1.0);
+  float k2 = k * k;
+  vec3 fr = f0 + (1.0 - f0) * (k2 * k2 * k);
+  c += 3.141592653589793 * id * nl * ((1.0 - fr) * cdiff / 3.141592653589793 + fr * (d * vis));
+}
+
+#define ADD_PBR_LIGHT(i, point) addPbrLight(LIGHT_DIR(i, point), uLightAmbient[i], uLightDiffuse[i], n, v, base, c)
+
+/** The lit colour of a glTF material whose base colour (times its texture) is `base`; unlit: `base`. */
+vec3 pbrLights(vec3 n, vec3 v, vec3 relPos, vec3 base) {
+  if (uPbr.z > 0.5) return base;
+  vec3 c = vec3(0.0);
+  ADD_PBR_LIGHT(0, LIGHT0_POINT);
+#if LIGHT_COUNT > 1
+  ADD_PBR_LIGHT(1, LIGHT1_POINT);
+#endif
+#if LIGHT_COUNT > 2
+  ADD_PBR_LIGHT(2, LIGHT2_POINT);
+#endif
+#if LIGHT_COUNT > 3
+  ADD_PBR_LIGHT(3, LIGHT3_POINT);
+#endif
+  return c;
+}
