@@ -1,7 +1,7 @@
 #version 300 es
 // The last step of a frame in linear light (docs/colour.md#eight-bit-targets): the frame, held in an SRGB8_ALPHA8 target
 // (read back as linear), encoded once with the IEC 61966-2-1 curve (src/math/srgb.ts) into the
-// canvas. Values above 1 clip first (no tone mapping).
+// canvas. Values above 1 clip first; a TONE_* variant (docs/pbr.md#tone-mapping) exposes and tone maps them before.
 precision highp float;
 
 uniform sampler2D uSource;
@@ -15,5 +15,9 @@ vec3 encode(vec3 l) {
 
 void main() {
   // Same size as the viewport: one texel per pixel, no filtering.
-  outColor = vec4(encode(texelFetch(uSource, ivec2(gl_FragCoord.xy), 0).rgb), 1.0);
+  vec3 c = texelFetch(uSource, ivec2(gl_FragCoord.xy), 0).rgb;
+#if defined(TONE_NEUTRAL) || defined(TONE_ACES) || defined(TONE_NONE)
+  c = toneMap(c * uExposure);
+#endif
+  outColor = vec4(encode(c), 1.0);
 }

@@ -12,6 +12,7 @@ uniform float uIor;
 uniform vec3 uBodyTint;         // tint ⊙ darkness
 uniform vec4 uViewVector;       // V = normalize(xyz − w·relPos): perspective (0,0,0,1), orthographic (−forward, 0)
 uniform float uLinearFrame;     // 1: the frame is in linear light, encoded at the end (docs/colour.md#the-transfer-curve)
+uniform float uCeiling;         // what R is held to: 1 as an 8-bit target, a half float's largest in a tone-mapped frame (docs/pbr.md#tone-mapping)
 
 in highp vec3 vRelPos;
 in vec3 vNormal;
@@ -60,7 +61,7 @@ void main() {
   vec3 r = roughReflection(vRelPos, uv);
   vec3 b = roughTransmission();
 #else
-  vec3 r = min(texture(uReflection, uv).rgb, vec3(1.0));
+  vec3 r = min(texture(uReflection, uv).rgb, vec3(uCeiling));
 #endif
   vec3 d = texture(uTexture, vUv).rgb * uBodyTint;
 #ifdef FRESNEL_CLASSIC

@@ -171,7 +171,7 @@ vec4 roughGather(sampler2D image, sampler2D codes, vec4 sizes, vec4 J, bool clam
       vec2 uv = (q + delta) / storage;
       vec4 texel = textureLod(image, uv, level);
       // Clamped as an 8-bit target would: the reflection is what pass 1 shows, highlights included.
-      vec3 rgb = clampColour ? min(texel.rgb, vec3(1.0)) : texel.rgb;
+      vec3 rgb = clampColour ? min(texel.rgb, vec3(uCeiling)) : texel.rgb;
       float cover = texel.a;
       float cu = textureLod(codes, uv, level).a;
       // Two parts: the surfaces the sample covers, and the background where it covers none.
@@ -206,11 +206,11 @@ vec4 roughGather(sampler2D image, sampler2D codes, vec4 sizes, vec4 J, bool clam
 vec3 roughReflection(vec3 rel, vec2 uv) {
   roughFrame(rel);
   // Clamped as an 8-bit target would: the reflection is what pass 1 shows, highlights included.
-  vec3 sharp = min(textureLod(uReflection, uv * uReflectionSize.xy / uReflectionSize.zw, 0.0).rgb, vec3(1.0));
+  vec3 sharp = min(textureLod(uReflection, uv * uReflectionSize.xy / uReflectionSize.zw, 0.0).rgb, vec3(uCeiling));
   if (!rOk) return sharp;
   if (uFixedLevel >= 0.0) {
     // The bench's comparison: the reflection at one level wherever the pixel is, no gather.
-    return min(textureLod(uReflection, uv * uReflectionSize.xy / uReflectionSize.zw, uFixedLevel).rgb, vec3(1.0));
+    return min(textureLod(uReflection, uv * uReflectionSize.xy / uReflectionSize.zw, uFixedLevel).rgb, vec3(uCeiling));
   }
   // A facet tilted by slope σ along the view's slope turns the mirrored ray by 2σ; across it by 2σ·cosθ.
   vec4 acc = roughGather(uReflection, uReflectionCodes, uReflectionSize, vec4(2.0, 0.0, 0.0, 2.0 * rC), true);

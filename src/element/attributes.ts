@@ -2,6 +2,7 @@
 // Parsing, property reflection, README and fuzz tests all read it; nothing here throws.
 import { FRESNEL_MODELS, type FresnelModel } from '../math/fresnel';
 import { COLOR_SPACES, type ColorSpace } from '../math/srgb';
+import type { ToneMapping } from '../math/tone-map';
 import { clampPitch, wrapYaw, type Projection } from '../math/camera';
 import type { RoughnessQuality } from '../frame/rough-glass';
 import { browserCssColor, parseCssColor } from './css-color';
@@ -61,6 +62,13 @@ export interface SceneAttributes {
   reflectionFormat: 'rgba8' | 'rgba16f';
   /** Linear light with sRGB in and out, or values used as stored (docs/colour.md#srgb). */
   colorSpace: ColorSpace;
+  /**
+   * The curve that brings light to the screen (docs/pbr.md#tone-mapping): `auto` is `neutral` for a scene with a glTF
+   * material, else `none` (today's frames exactly).
+   */
+  toneMapping: ToneMapping | 'auto';
+  /** A factor on the frame's light before tone mapping (docs/pbr.md#tone-mapping). */
+  exposure: number;
   /** The glass's roughness, 0..1 (docs/rough-glass.md#roughness): 0 polished. */
   roughness: number;
   /** How many neighbours rough glass gathers per pixel (frame/rough-glass.ts). */
@@ -102,6 +110,12 @@ export interface AttributeSpec<K extends AttributeName = AttributeName> {
 export const DEFAULT_CAMERA_POSITION: Vec3Tuple = [3.6, 2.4, 0.2];
 export const DEFAULT_CAMERA_ROTATION: YawPitch = [-169, -23.6];
 export const DEFAULT_CUBE_DISTANCE = 0.75;
+
+/**
+ * tone-mapping's words: `auto` and math/tone-map.ts's TONE_MAPPINGS, written out so that the core does not take that module
+ * (the CPU renderers' curves) with its list (element-attributes.test.ts holds the two equal).
+ */
+export const TONE_MAPPING_WORDS: readonly (ToneMapping | 'auto')[] = ['auto', 'neutral', 'aces', 'none'];
 
 const num = (s: string) => (/^\s*$/.test(s) ? NaN : Number(s));
 
@@ -301,6 +315,8 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
   autoOrNumberSpec('pixelRatio', 'pixel-ratio', 0.25, 4, false),
   keywordSpec('reflectionFormat', 'reflection-format', ['rgba8', 'rgba16f']),
   keywordSpec('colorSpace', 'color-space', COLOR_SPACES),
+  keywordSpec('toneMapping', 'tone-mapping', TONE_MAPPING_WORDS),
+  numberSpec('exposure', 'exposure', 1, 0, 64),
   numberSpec('roughness', 'roughness', 0, 0, 1),
   keywordSpec('roughnessQuality', 'roughness-quality', ['medium', 'low', 'high']),
   tupleSpec('glassCenter', 'glass-center', [0, 1, 0], '"x y z"', clampCoords),

@@ -3,6 +3,7 @@
 // the last state drawn, which capture(pass) draws a pass of.
 import type { FrameState } from '../frame/types';
 import type { SceneAttributes } from './attributes';
+import { hasPbrMaterial, type Scene } from '../scene/scene';
 
 export class FrameStates {
   /** The state of the frame being drawn (one object, filled again every frame). */
@@ -10,7 +11,7 @@ export class FrameStates {
     width: 1, height: 1, time: 0, spin: 0, cubeDistance: 0, transparency: 0, ior: 1, fresnel: 'exact',
     fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final',
     reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8', colorSpace: 'srgb',
-    projection: 'perspective', target: null, roughness: 0, roughnessQuality: 'medium',
+    projection: 'perspective', target: null, roughness: 0, roughnessQuality: 'medium', toneMapping: 'none', exposure: 1,
   };
   /** The state of the last frame drawn; null before the first. */
   last: FrameState | null = null;
@@ -18,8 +19,11 @@ export class FrameStates {
   /** The frame timestamp the live clock counts from (the first frame's). */
   private clockStart = -1;
 
-  /** The attributes' part of the frame at timestamp `now`, the drawing buffer `width` × `height`, the cube turning at `spin`. */
-  fill(v: Readonly<SceneAttributes>, now: number, width: number, height: number, spin: number): FrameState {
+  /**
+   * The attributes' part of the frame at timestamp `now`, the drawing buffer `width` × `height`, the cube turning at `spin`;
+   * `scene` decides `tone-mapping="auto"` (docs/pbr.md#tone-mapping: neutral with a glTF material, else none).
+   */
+  fill(v: Readonly<SceneAttributes>, now: number, width: number, height: number, spin: number, scene: Scene | null = null): FrameState {
     const s = this.current;
     if (this.clockStart < 0) this.clockStart = now;
     s.width = width;
@@ -39,6 +43,8 @@ export class FrameStates {
     s.colorSpace = v.colorSpace;
     s.roughness = v.roughness;
     s.roughnessQuality = v.roughnessQuality;
+    s.toneMapping = v.toneMapping !== 'auto' ? v.toneMapping : scene !== null && hasPbrMaterial(scene) ? 'neutral' : 'none';
+    s.exposure = v.exposure;
     return s;
   }
 

@@ -1,7 +1,6 @@
-// <glass-plane-scene>: a thin host over its controllers. It owns the shadow DOM, parses the
-// attributes and fans their changes out, and keeps the public API and its events. When frames are
-// drawn is the FrameLoop's business, the camera the CameraRig's, the scene value SceneValue's,
-// who draws the BackendController's (WebGL2 or the CPU), and all GL work the renderer's.
+// <glass-plane-scene>: a thin host over its controllers. It owns the shadow DOM, parses the attributes and fans their
+// changes out, and keeps the public API and its events. When frames are drawn is the FrameLoop's business, the camera
+// the CameraRig's, the scene value SceneValue's, who draws the BackendController's (WebGL2 or CPU), GL the renderer's.
 import { ATTRIBUTES, DEBUG_VIEWS, defaultAttributes, type SceneAttributes } from './attributes';
 import { defineAttributeProperties, parseAttribute, upgradeProperties, type AttributeHost } from './attribute-properties';
 import { AttributeWarnings, warn } from './warnings';
@@ -28,7 +27,6 @@ import { routeAttribute, type AttributeRoutes } from './attribute-routes';
 import { LoadingView } from './loading-view';
 
 const DEFAULT_LABEL = 'A dark glass plane reflecting a cube, with a sphere behind it';
-
 export interface GlassPlaneScene extends SceneAttributes {}
 
 /**
@@ -59,6 +57,8 @@ export interface GlassPlaneScene extends SceneAttributes {}
  * @attr {number | 'auto'} [pixel-ratio="auto"] - drawing-buffer pixels per CSS pixel 0.25..4, or auto (devicePixelRatio)
  * @attr {'rgba8' | 'rgba16f'} [reflection-format="rgba8"] - reflection storage (rgba16f: half float, where supported)
  * @attr {'srgb' | 'none'} [color-space="srgb"] - srgb: linear-light rendering with sRGB in and out; none: colours used as stored (the course programs)
+ * @attr {'auto' | 'neutral' | 'aces' | 'none'} [tone-mapping="auto"] - the curve from light to the screen at the frame's end (srgb): auto is neutral for a scene with a glTF material, else none (clipped at 1)
+ * @attr {number} [exposure=1] - a factor on the frame's light before the tone mapping, 0..64
  * @attr {number} [roughness=0] - rough glass (GGX, α = roughness²), 0..1: 0 polished; blurs what the glass reflects and lets through, sharp where an object touches it
  * @attr {'low' | 'medium' | 'high'} [roughness-quality="medium"] - neighbours rough glass gathers per pixel: low 4, medium 8, high 16 per ring
  * @attr {string} [glass-center="0 1 0"] - "x y z": centre of the glass rectangle
@@ -280,7 +280,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
 
   /** The attributes' part of the frame, then the camera's (which reads the scene for a course camera). */
   private frameState(now: number): FrameState {
-    const s = this.states.fill(this.values, now, this.canvas.width, this.canvas.height, this.effectiveSpin());
+    const s = this.states.fill(this.values, now, this.canvas.width, this.canvas.height, this.effectiveSpin(), this.scenes.current);
     this.rig.aim(s, this.scenes.current);
     return s;
   }

@@ -27,8 +27,10 @@ export const CHUNKS = {
   // come before the children's chunks; then a material's emissive (the uniform and its line: +27 B),
   // then a missing image drawn plain for a glTF or course object (+6 B); then glTF materials' variant
   // (+310 B, 31,610): which objects take it, the part that fetches its shader (pbr-gl), the three
-  // uniforms, standard.frag's branch — the BRDF itself is in pbr-gl.
-  core: { budget: 31650, when: 'with the element' },
+  // uniforms, standard.frag's branch — the BRDF itself is in pbr-gl; then tone mapping (+479 B, 32,129):
+  // tone-mapping and exposure, auto's choice, half-float frame and reflection, the ceiling the glass reads
+  // R to, the tone-mapped encodes' variants — the curves themselves are in pbr-gl.
+  core: { budget: 32150, when: 'with the element' },
   // Checks, debug views and the texts of failures: for developers, or when something went wrong.
   diagnostics: {
     budget: 1400, when: 'debug-view, frame checks, or a failure',
@@ -64,8 +66,8 @@ export const CHUNKS = {
   },
   controls: { budget: 5800, when: 'controls' },
   'rough-glass-gl': { budget: 5200, when: 'roughness > 0 (WebGL)' },
-  // glTF materials' shader part (docs/pbr.md#the-scenes-lights).
-  'pbr-gl': { budget: 900, when: 'a glTF material (WebGL)' },
+  // glTF materials' shader part (docs/pbr.md#the-scenes-lights), 900 until the tone-mapping curves (+172 B, 1,072).
+  'pbr-gl': { budget: 1100, when: 'a glTF material or tone mapping (WebGL)' },
   // 4,700 until a glTF model was drawn plain without a texture (+1 B), then reflect="false" (+87 B).
   'child-elements': { budget: 4850, when: 'a child element' },
   'model-loader': { budget: 14800, when: 'a model file' },
@@ -91,11 +93,11 @@ export const CHUNKS = {
   'course-files': { budget: 1200, when: 'a course file' },
   'software-start': { budget: 2150, when: 'the CPU renderer' },
   // 15,400 until emissive and reflect="false" (+7 B), then glTF materials under the scene's lights
-  // (the BRDF of math/pbr.ts and pbrLights: +631 B, 16,081).
-  'software-renderer': { budget: 16100, when: 'the CPU renderer' },
+  // (the BRDF of math/pbr.ts and pbrLights: +631 B, 16,081), then tone mapping (the curves, the resolve: +614 B, 16,695).
+  'software-renderer': { budget: 16700, when: 'the CPU renderer' },
   // 23,850 until rough glass's gather read its centre on the fragment's footprint (23,864).
-  // then emissive and reflect="false" (+13 B), then glTF materials (+658 B, 24,608).
-  'assets/worker': { budget: 24650, when: 'the CPU renderer' },
+  // then emissive and reflect="false" (+13 B), then glTF materials (+658 B, 24,608), then tone mapping (+616 B, 25,224).
+  'assets/worker': { budget: 25250, when: 'the CPU renderer' },
   // The bundler's glue for lazy chunks that share modules: written by rolldown, not by us.
   // 200 until glTF's chunks shared modules with the others (+229 B).
   'rolldown-runtime': { budget: 450, when: 'with the first lazy chunk' },

@@ -1,6 +1,7 @@
 // Plain data both renderers take and give back (the frame's state, its reports): no DOM, no GL handles.
 import type { FresnelModel } from '../math/fresnel';
 import type { ColorSpace } from '../math/srgb';
+import type { ToneMapping } from '../math/tone-map';
 import type { Projection } from '../math/camera';
 import type { CourseCamera } from '../math/course-camera';
 import type { SceneTurn } from '../scene/turn';
@@ -41,6 +42,14 @@ export interface FrameState {
    * light linearly and encodes the image once; `none` uses every value as stored.
    */
   colorSpace: ColorSpace;
+  /**
+   * docs/pbr.md#tone-mapping: with colorSpace srgb, the curve that brings light to the screen once, at the frame's end,
+   * after `exposure`; light above 1 is kept until then. Absent or `none` with exposure 1: every
+   * target clamps to [0, 1], today's frames exactly (frame/linear-light.ts toneMapped).
+   */
+  toneMapping?: ToneMapping;
+  /** A factor on the frame's light before tone mapping; absent: 1. */
+  exposure?: number;
   /**
    * docs/rough-glass.md#ggx-microfacets: the glass's roughness, 0..1 (GGX α = roughness²); absent or 0: polished, today's
    * glass exactly.

@@ -7,6 +7,8 @@ import type { ReferenceState, ViewState } from './reference-state';
 import { SampleTracer, type TextureFilter } from './sample-tracer';
 import type { SurfaceCodes } from './surface-codes';
 import { linearToSrgb } from '../math/srgb';
+import { toneMap } from '../math/tone-map';
+import { colourCeiling } from './reference-state';
 import { MicrofacetSamples } from './microfacet-samples';
 
 export interface ReferenceOptions {
@@ -112,6 +114,8 @@ export function renderScene(scene: Scene, state: ViewState, images?: SceneImages
   // docs/colour.md#srgb: samples are linear light with srgb, averaged as light, then encoded once; the
   // fresnel view shows its number F unencoded.
   const encode = state.colorSpace === 'srgb' && state.view !== 'fresnel';
+  // docs/pbr.md#tone-mapping: a tone-mapped frame's mean is exposed and tone mapped before the encode.
+  const toneMapped = colourCeiling(state) === Infinity, exposure = state.exposure ?? 1, curve = state.toneMapping ?? 'none';
   // NDC size of one stratum; NDC y points up while rows go down (the camera accounts for it).
   const fx = 2 / (width * n);
   const fy = 2 / (height * n);
@@ -136,9 +140,10 @@ export function renderScene(scene: Scene, state: ViewState, images?: SceneImages
         }
       }
       keys[i] = first;
+      if (toneMapped) toneMap(curve, sum, sum[0] * weight * exposure, sum[1] * weight * exposure, sum[2] * weight * exposure);
       // Stryker disable next-line EqualityOperator: k = 3 writes the next pixel's red and alpha, both written again (or past the end)
       for (let k = 0; k < 3; k++) {
-        const mean = sum[k] * weight;
+        const mean = toneMapped ? sum[k] : sum[k] * weight;
         const c = encode ? linearToSrgb(mean) : mean;
         rgb[3 * i + k] = c;
         rgba[4 * i + k] = Math.round(c * 255);

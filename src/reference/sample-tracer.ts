@@ -9,8 +9,8 @@ import type { DecodedImage } from '../scene/decoded-image';
 import { ViewCamera } from './view-camera';
 import { Ray } from './ray';
 import { RayScene } from './ray-scene';
-import type { ViewState } from './reference-state';
-import { clamp01, composeGlass, glassFresnel, prepareLight, shadeObject, shadePbr, type PreparedLight } from './shade';
+import { colourCeiling, type ViewState } from './reference-state';
+import { clamp01, clampTo, composeGlass, glassFresnel, prepareLight, shadeObject, shadePbr, type PreparedLight } from './shade';
 import type { SurfaceCodes } from './surface-codes';
 import { SurfaceHit, SURFACE_NONE } from './surface-hit';
 import { Layer } from './layer';
@@ -75,6 +75,8 @@ export class SampleTracer {
    */
   microfacets: Microfacets | null = null;
   private readonly rough = new RoughGlass();
+  /** What a colour is held to: 1 as an 8-bit target, Infinity in a tone-mapped frame (colourCeiling). */
+  private readonly top: number;
 
   constructor(
     scene: Scene, private readonly view: ViewState, filter: TextureFilter,
@@ -90,15 +92,13 @@ export class SampleTracer {
     this.texture = new SurfaceTexture(filter, view.colorSpace, images);
     const bg = scene.background;
     for (let k = 0; k < 3; k++) this.backgroundColour[k] = view.colorSpace === 'srgb' ? srgbToLinear(bg[k]) : bg[k];
-    this.plane = this.scene.glass === null ? null : this.scene.glass.plane;
+    this.plane = this.scene.glass?.plane ?? null;
     this.alpha = ggxAlpha(view.roughness ?? 0);
+    this.top = colourCeiling(view);
     this.side = this.plane === null ? 1
       : viewerSide(this.plane, this.camera.eye, this.camera.forward, view.projection ?? 'perspective');
     if (this.plane !== null) reflectPoint(this.mirroredEye, this.camera.eye, this.plane);
-    for (let i = 0; i <= MAX_LAYERS; i++) {
-      this.direct.push(new Layer());
-      this.mirror.push(new Layer());
-    }
+    for (let i = 0; i <= MAX_LAYERS; i++) { this.direct.push(new Layer()); this.mirror.push(new Layer()); }
   }
 
   /**
@@ -151,7 +151,7 @@ export class SampleTracer {
     if (this.alpha > 0 && this.microfacets !== null) {
       this.rough.apply(this, ray, this.mirrored, glass, level, this.side, this.plane!, this.alpha, this.view.ior, this.microfacets, layer.reflection, layer.behind);
     }
-    composeGlass(model, f, transparency, this.texture.glassTexture(glass, ray), layer.reflection, layer.behind, out);
+    composeGlass(model, f, transparency, this.texture.glassTexture(glass, ray), layer.reflection, layer.behind, out, this.top);
     this.first = glass.surface;
     return behind;
   }
@@ -239,7 +239,7 @@ export class SampleTracer {
       behind = this.mirror[level + 1].colour;
       next = this.mirroredAlong(ray, hit.t, level + 1, behind);
     }
-    for (let k = 0; k < 3; k++) out[k] = clamp01(out[k] * alpha + behind[k] * (1 - alpha));
+    for (let k = 0; k < 3; k++) out[k] = clampTo(out[k] * alpha + behind[k] * (1 - alpha), this.top);
     return next;
   }
 
@@ -293,6 +293,6 @@ export class SampleTracer {
     const tex = this.texture.objectTexture(hit, ray, m, object.bounds, layer.tex);
     if (m.pbr) shadePbr(hit, m.pbr, m.emissive, tex, this.lights, eye, out, view);
     else shadeObject(hit, m, tex, this.lights, eye, out, view);
-    out[0] = clamp01(out[0]); out[1] = clamp01(out[1]); out[2] = clamp01(out[2]);
+    out[0] = clampTo(out[0], this.top); out[1] = clampTo(out[1], this.top); out[2] = clampTo(out[2], this.top);
   }
 }

@@ -9,6 +9,10 @@ import type { SurfaceHit } from './surface-hit';
 // Stryker disable next-line EqualityOperator: at 0 and at 1 the clamp returns x itself either way
 export const clamp01 = (x: number): number => (x < 0 ? 0 : x > 1 ? 1 : x);
 
+/** x held to [0, top] (top 1: an 8-bit target's clamp; Infinity: a tone-mapped frame's, reference-state.ts colourCeiling). */
+// Stryker disable next-line EqualityOperator: at 0 and at top the clamp returns x itself either way
+export const clampTo = (x: number, top: number): number => (x < 0 ? 0 : x > top ? top : x);
+
 /** A light with its vector ready: a unit direction towards it, or its position. */
 export interface PreparedLight {
   point: boolean;
@@ -105,9 +109,11 @@ export function shadePbr(
   eye: Float64Array, out: Float64Array, towardsViewer: Float64Array | null = null,
 ): Float64Array {
   const base = pbrPoint.baseColor;
+  // Stryker disable next-line EqualityOperator: k = 3 writes base[3], past the end of its 3 elements: dropped
   for (let k = 0; k < 3; k++) base[k] = pbr.baseColor[k] * tex[k];
   if (pbr.unlit) out.set(base);
   else litPbr(hit, pbr, lights, eye, out, towardsViewer);
+  // Stryker disable next-line EqualityOperator: k = 3 writes out[3], past the end of its 3 elements: dropped
   if (emissive !== undefined) for (let k = 0; k < 3; k++) out[k] += emissive[k];
   return out;
 }
@@ -140,6 +146,7 @@ function litPbr(hit: SurfaceHit, pbr: PbrMaterial, lights: readonly PreparedLigh
     const hl = Math.hypot(hx, hy, hz);
     gltfBrdf(brdf, pbrPoint, nl, nv, (n[0] * hx + n[1] * hy + n[2] * hz) / hl, (vx * hx + vy * hy + vz * hz) / hl);
     const m = Math.PI * Math.max(nl, 0);
+    // Stryker disable next-line EqualityOperator: k = 3 writes out[3], past the end of its 3 elements: dropped
     for (let k = 0; k < 3; k++) out[k] += light.ambient[k] * base[k] * dielectric + m * light.diffuse[k] * brdf[k];
   }
 }
@@ -156,11 +163,11 @@ export function glassFresnel(model: FresnelModel, ior: number, hit: SurfaceHit, 
  * clamped as the GPU's 8-bit targets hold them and the glass texture value `tex`:
  * exact/schlick: out = F·R + (1 − F)(T·B + (1 − T)·D);
  * classic: a = (1 − T)(0.2 + 0.8F), out = mix(D, R, F)·a + B·(1 − a).
- * D = tex ⊙ tint ⊙ darkness. `out` is clamped to [0, 1].
+ * D = tex ⊙ tint ⊙ darkness. `out` is clamped to [0, top] (1 but in a tone-mapped frame).
  */
 export function composeGlass(
   model: FresnelModel, f: number, transparency: number, tex: number,
-  r: Float64Array, b: Float64Array, out: Float64Array,
+  r: Float64Array, b: Float64Array, out: Float64Array, top = 1,
 ): Float64Array {
   const t = transparency;
   const a = (1 - t) * (0.2 + 0.8 * f);
@@ -169,7 +176,7 @@ export function composeGlass(
     const c = model === 'classic'
       ? (d + (r[k] - d) * f) * a + b[k] * (1 - a)
       : f * r[k] + (1 - f) * (t * b[k] + (1 - t) * d);
-    out[k] = clamp01(c);
+    out[k] = clampTo(c, top);
   }
   return out;
 }

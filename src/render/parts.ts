@@ -2,8 +2,9 @@
 // A frame that needs one waits for it; the renderer draws without it if it cannot load.
 import type { LazyPartSpec } from '../frame/lazy-parts';
 import { isRough } from '../frame/roughness';
+import { toneMapped } from '../frame/linear-light';
 import type { FrameState } from '../frame/types';
-import type { Scene } from '../scene/scene';
+import { hasPbrMaterial, type Scene } from '../scene/scene';
 import type { PassContext } from './passes/pass-context';
 import type { RoughGlass } from './rough-glass';
 
@@ -71,17 +72,12 @@ export const MESH_EXTRAS: Part<typeof import('./mesh-extras')> = {
   arrived: (h, m) => h.ctx.objectMeshes.setExtras(m),
 };
 
-/** Whether a scene has a glTF material (docs/pbr.md#the-scenes-lights). Reads; allocates nothing. */
-export function hasPbr(scene: Scene): boolean {
-  for (const o of scene.objects) if (o.material.pbr !== undefined) return true;
-  return false;
-}
-
-/** glTF materials' shader part, given to the program cache. */
+/** glTF materials' and tone mapping's shader parts, given to the program cache. */
 export const PBR_MATERIALS: Part<typeof import('./pbr-gl')> = {
-  name: 'glTF materials', chunk: 'pbr-gl', load: () => import('./pbr-gl'),
-  needed: (h) => hasPbr(h.ctx.scene), holds: true, instead: 'drawing them with their Blinn-Phong stand-in',
-  arrived: (h, m) => h.ctx.programs.setPbrSource(m.PBR_SOURCE),
+  name: 'glTF materials and tone mapping', chunk: 'pbr-gl', load: () => import('./pbr-gl'),
+  needed: (h) => hasPbrMaterial(h.ctx.scene) || toneMapped(h.ctx.state), holds: true,
+  instead: 'drawing glTF materials with their Blinn-Phong stand-in, without tone mapping',
+  arrived: (h, m) => h.ctx.programs.setPbrSources(m.PBR_SOURCE, m.TONE_MAP_SOURCE),
 };
 
 /** debug-view reflection, fresnel and passes. */

@@ -7,12 +7,16 @@ import blitVert from '../../shaders/blit.vert?raw';
 import encodeFrag from '../../shaders/encode.frag?raw';
 import lighting from '../../shaders/lighting.glsl?raw';
 import type { FresnelModel } from '../math/fresnel';
+import type { ToneMapping } from '../math/tone-map';
 import type { Shading } from '../frame/types';
 import { MAPPINGS, MAX_LIGHTS, type Mapping } from '../scene/scene';
 import { Program, ShaderError } from './gl/program';
 import type { SharedResources } from './gl/shared-resources';
 
 export type ClipMode = 'none' | 'clip-distance' | 'discard';
+
+/** The tone-mapped encodes' names (built once: no string is made in a frame). */
+const ENCODES: Record<ToneMapping, string> = { neutral: 'encode:neutral', aces: 'encode:aces', none: 'encode:none' };
 
 /** What an object's draw needs beyond clip and shading; each a #define (docs/knobs.md#shader-variants: only what is in use). */
 export interface ObjectVariant {
@@ -85,8 +89,9 @@ export class ProgramCache {
   private readonly screens = new Map<string, Program>();
   /** Rough glass's shader parts, once its chunk has loaded (setRoughSources). */
   private rough: RoughSources | null = null;
-  /** The PBR variant's shader part, once its chunk has loaded (setPbrSource). */
+  /** The PBR variant's and the tone mapping's shader parts, once their chunk has loaded (setPbrSources). */
   private pbr: string | null = null;
+  private toneMap: string | null = null;
   /**
    * Variants that failed to compile, by key: asked again (the same state drawn again), they throw
    * the same error without compiling again. A new context means a new cache, so a restore retries.
@@ -119,12 +124,13 @@ export class ProgramCache {
     this.rough = sources;
   }
 
-  /** Takes the PBR variant's shader part once its chunk has loaded (PBR_MATERIALS, render/parts.ts). */
-  setPbrSource(source: string): void {
-    this.pbr = source;
+  /** Takes the PBR variant's and the tone mapping's shader parts once their chunk has loaded (PBR_MATERIALS, render/parts.ts). */
+  setPbrSources(pbr: string, toneMap: string): void {
+    this.pbr = pbr;
+    this.toneMap = toneMap;
   }
 
-  /** Whether the PBR variant can be built: its chunk is in. */
+  /** Whether the PBR variant and the tone-mapped encodes can be built: their chunk is in. */
   get hasPbr(): boolean {
     return this.pbr !== null;
   }
@@ -158,15 +164,25 @@ export class ProgramCache {
    * A full-screen triangle (shaders/blit.vert) with the fragment shader `frag`, compiled the
    * first time `name` is asked for: the debug views' blit (render/debug-views.ts) and the two below.
    */
-  fullScreen(name: string, frag: string): Program {
+  fullScreen(name: string, frag: string, header: string[] = []): Program {
     let p = this.screens.get(name);
-    if (!p) this.screens.set(name, (p = this.build(name, blitVert, frag, [])));
+    if (!p) this.screens.set(name, (p = this.build(name, blitVert, frag, header)));
     return p;
   }
 
-  /** The frame's one sRGB encode (docs/colour.md#the-transfer-curve). */
-  encode(): Program {
-    return this.fullScreen('encode', encodeFrag);
+  /**
+   * The frame's one sRGB encode (docs/colour.md#the-transfer-curve); with `curve`, a tone-mapped frame's: exposed and tone
+   * mapped first (docs/pbr.md#tone-mapping; its chunk must be in).
+   */
+  encode(curve: ToneMapping | null = null): Program {
+    if (curve === null) return this.fullScreen('encode', encodeFrag);
+    const name = ENCODES[curve];
+    return this.screens.get(name) ?? this.fullScreen(name, encodeFrag, [`#define TONE_${curve.toUpperCase()}`, this.toneMapSource()]);
+  }
+
+  private toneMapSource(): string {
+    if (this.toneMap === null) throw new Error('glass-plane-scene: a tone-mapped encode was asked for before its chunk loaded');
+    return this.toneMap;
   }
 
   /** Rough glass's distance code into a target's alpha (shaders/distance.frag). */

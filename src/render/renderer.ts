@@ -14,7 +14,7 @@ import { ResourceCounter } from './gl/resource-counter';
 import { TextureCache } from './texture-cache';
 import { LinearFrame } from './linear-frame';
 import { srgbToLinear } from '../math/srgb';
-import { encodesAtEnd } from '../frame/linear-light';
+import { encodesAtEnd, toneMapped } from '../frame/linear-light';
 import { readFramebuffer, type Pixels } from './gl/read-pixels';
 import { SharedResources } from './gl/shared-resources';
 import { FrameSetup } from '../frame/frame-setup';
@@ -137,6 +137,7 @@ export class Renderer implements DebugViewFrame {
       clipExtension: gl.getExtension('WEBGL_clip_cull_distance') as { CLIP_DISTANCE0_WEBGL: number } | null,
       cull: true,
       transparentDepth: false,
+      hdr: false,
       scissor: null,
       triangles: { scene: 0, reflection: 0 },
     };
@@ -250,6 +251,7 @@ export class Renderer implements DebugViewFrame {
     this.textures.sync(scene, images);
     for (let k = 0; k < 3; k++) this.background[k] = srgb ? srgbToLinear(scene.background[k]) : scene.background[k];
     this.setup.update(state, scene);
+    this.ctx.hdr = toneMapped(state) && this.canHalfFloat && this.programs.hasPbr;
     this.objectMeshes.trim(scene.objects.length);
     this.objectMeshes.beginFrame(this.setup.halfHeight);
     this.ctx.triangles.scene = this.ctx.triangles.reflection = 0;
@@ -267,7 +269,7 @@ export class Renderer implements DebugViewFrame {
     // grazing incidence F nears 1 and an 8-bit reflection's rounding shows through undimmed
     // (+3.6 dB on the glass at 89° in the bench); rgba8 where half float cannot be rendered to.
     // In linear light an 8-bit reflection is held encoded (SRGB8_ALPHA8): linear in 8 bits bands.
-    const format = state.reflectionFormat === 'rgba16f' && this.canHalfFloat ? 'rgba16f' : srgb ? 'srgb8' : 'rgba8';
+    const format = (state.reflectionFormat === 'rgba16f' && this.canHalfFloat) || this.ctx.hdr ? 'rgba16f' : srgb ? 'srgb8' : 'rgba8';
     if (format !== this.reflection.format) {
       this.reflection.dispose();
       this.reflectionMsaa?.dispose();
@@ -328,8 +330,9 @@ export class Renderer implements DebugViewFrame {
     const samples = this.samplesFor(state);
     // The fresnel view is a number, not a picture: drawn as stored in either space (docs/colour.md#debug-views).
     if (encodesAtEnd(state)) {
-      const n = this.drawView(state, this.linearFrame.begin(state.width, state.height, samples));
-      return n + this.linearFrame.end(destination);
+      const hdr = this.ctx.hdr;
+      const n = this.drawView(state, this.linearFrame.begin(state.width, state.height, samples, hdr));
+      return n + this.linearFrame.end(destination, hdr ? state.toneMapping ?? 'none' : null, state.exposure ?? 1);
     }
     if (samples === 0) return this.drawView(state, destination);
     const msaa = (this.mainMsaa ??= new MultisampleTarget(this.gl, this.counter));

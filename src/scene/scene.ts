@@ -105,6 +105,12 @@ export interface Scene {
   background: Vec3;
 }
 
+/** Whether a scene has a glTF material (docs/pbr.md#the-scenes-lights). Reads; allocates nothing (asked every frame). */
+export function hasPbrMaterial(scene: Scene): boolean {
+  for (const o of scene.objects) if (o.material.pbr !== undefined) return true;
+  return false;
+}
+
 /**
  * `value` and everything in it frozen, but typed arrays (which cannot be): the scene value the
  * element hands over. A page that changed it in place would otherwise see some renderers follow

@@ -3,6 +3,9 @@
 // search (8.4 ms of a 30 ms frame at 640×360 and 1 sample per pixel; this takes 2.4).
 // Also the resolve itself: n×n samples per pixel averaged (in linear light when encoding) to RGBA8.
 import { linearToSrgbByte, srgbToLinear } from '../math/srgb';
+import { toneMap, type ToneMapping } from '../math/tone-map';
+import { encodesAtEnd, toneMapped } from '../frame/linear-light';
+import type { FrameState } from '../frame/types';
 
 /**
  * Bins per unit of linear light. Two byte thresholds are never closer than 1/(255·12.92) ≈
@@ -90,4 +93,45 @@ export function resolveSamples(
       out[p + 3] = 255;
     }
   }
+}
+
+const mapped = new Float64Array(3);
+
+/**
+ * The resolve of a tone-mapped frame (docs/pbr.md#tone-mapping): n×n samples averaged in linear light, times
+ * `exposure`, through the tone-mapping curve, then encoded (each step as the GPU's resolve and encode pass).
+ */
+export function resolveToneMapped(
+  out: Uint8ClampedArray, source: Float32Array, width: number, height: number, n: number, curve: ToneMapping, exposure: number,
+): void {
+  const W = width * n, k = exposure / (n * n);
+  for (let y = 0; y < height; y++) {
+    for (let x = 0; x < width; x++) {
+      let r = 0, g = 0, b = 0;
+      for (let sy = 0; sy < n; sy++) {
+        let o = 3 * ((y * n + sy) * W + x * n);
+        for (let sx = 0; sx < n; sx++, o += 3) {
+          r += source[o]; g += source[o + 1]; b += source[o + 2];
+        }
+      }
+      toneMap(curve, mapped, r * k, g * k, b * k);
+      const p = 4 * (y * width + x);
+      out[p] = encodeByte(mapped[0]);
+      out[p + 1] = encodeByte(mapped[1]);
+      out[p + 2] = encodeByte(mapped[2]);
+      out[p + 3] = 255;
+    }
+  }
+}
+
+/**
+ * What the shaders hold a colour to (docs/pbr.md#tone-mapping): Infinity in a tone-mapped frame, which keeps light above 1
+ * until the resolve; else 1, as 8-bit targets clamp.
+ */
+export const colourCeiling = (state: FrameState): number => (toneMapped(state) ? Infinity : 1);
+
+/** A frame's resolve: tone mapped (toneMapped), else resolveSamples, encoded when the frame encodes at its end (docs/colour.md#srgb). */
+export function resolveFrame(out: Uint8ClampedArray, source: Float32Array, width: number, height: number, n: number, state: FrameState): void {
+  if (toneMapped(state)) resolveToneMapped(out, source, width, height, n, state.toneMapping ?? 'none', state.exposure ?? 1);
+  else resolveSamples(out, source, width, height, n, encodesAtEnd(state));
 }

@@ -27,6 +27,8 @@ export class GlassShader implements FragmentShader {
   model: FresnelModel = 'exact';
   ior = 1.5;
   transparency = 0.5;
+  /** What R and the result are held to: 1 as 8-bit targets, Infinity in a tone-mapped frame (docs/pbr.md#tone-mapping). */
+  top = 1;
   texture!: MipTexture;
   /** Rough glass (docs/rough-glass.md#the-gather): R̃ (and B̃ with `roughTransmission`) gathered once per pixel; null: polished. */
   rough: RoughGather | null = null;
@@ -201,34 +203,34 @@ export class GlassShader implements FragmentShader {
       this.composeRough(sample);
       return;
     }
-    const tex = this.tex[0], t = this.transparency, refl = this.reflection;
+    const tex = this.tex[0], t = this.transparency, refl = this.reflection, top = this.top;
     if (this.model === 'classic') {
       // Classic, the original prototype's glass verbatim: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha.
       const a = (1 - t) * (0.2 + 0.8 * f);
       for (let k = 0; k < 3; k++) {
-        const d = tex * BODY[k], rk = Math.min(refl[o + k], 1);
+        const d = tex * BODY[k], rk = Math.min(refl[o + k], top);
         const x = (d + (rk - d) * f) * a + out[o + k] * (1 - a);
-        out[o + k] = x < 0 ? 0 : x > 1 ? 1 : x; // inline: a helper's double result is boxed
+        out[o + k] = x < 0 ? 0 : x > top ? top : x; // inline: a helper's double result is boxed
       }
       return;
     }
-    // out = F·R + (1 − F)·(T·B + (1 − T)·D), R clamped as the 8-bit reflection target holds it.
+    // out = F·R + (1 − F)·(T·B + (1 − T)·D), R clamped as the 8-bit reflection target holds it (top 1; a tone-mapped frame: Infinity).
     for (let k = 0; k < 3; k++) {
-      const d = tex * BODY[k], rk = Math.min(refl[o + k], 1);
+      const d = tex * BODY[k], rk = Math.min(refl[o + k], top);
       const x = f * rk + (1 - f) * (t * out[o + k] + (1 - t) * d);
-      out[o + k] = x < 0 ? 0 : x > 1 ? 1 : x;
+      out[o + k] = x < 0 ? 0 : x > top ? top : x;
     }
   }
 
   /** repeat()'s glass equation with the pixel's R̃ and B̃ in place of each sample's R and B. */
   private composeRough(sample: number): void {
     const f = this.f, o = 3 * sample, out = this.colour, refl = this.reflection;
-    const tex = this.tex[0], t = this.transparency, rr = this.rr, rb = this.rb, hasR = this.hasR, hasB = this.hasB;
+    const tex = this.tex[0], t = this.transparency, rr = this.rr, rb = this.rb, hasR = this.hasR, hasB = this.hasB, top = this.top;
     const classic = this.model === 'classic', a = (1 - t) * (0.2 + 0.8 * f);
     for (let k = 0; k < 3; k++) {
-      const d = tex * BODY[k], rk = Math.min(hasR ? rr[k] : refl[o + k], 1), b = hasB ? rb[k] : out[o + k];
+      const d = tex * BODY[k], rk = Math.min(hasR ? rr[k] : refl[o + k], top), b = hasB ? rb[k] : out[o + k];
       const x = classic ? (d + (rk - d) * f) * a + b * (1 - a) : f * rk + (1 - f) * (t * b + (1 - t) * d);
-      out[o + k] = x < 0 ? 0 : x > 1 ? 1 : x;
+      out[o + k] = x < 0 ? 0 : x > top ? top : x;
     }
   }
 }

@@ -69,6 +69,8 @@ class ConstantShader implements FragmentShader {
 export class ObjectShader implements FragmentShader {
   /** RGB per pixel, 0..1, written by the fragments. */
   colour: Float32Array = new Float32Array(0);
+  /** What a colour is held to: 1 as an 8-bit target, Infinity in a tone-mapped frame (docs/pbr.md#tone-mapping). */
+  top = 1;
   /** Set by the bench only: phase times are added here (see SoftwareTiming). */
   timing: SoftwareTiming | null = null;
   private readonly constant = new ConstantShader();
@@ -164,7 +166,7 @@ export class ObjectShader implements FragmentShader {
     i = put(k, i, m.ambient, 3);
     i = put(k, i, m.diffuse, 3);
     i = put(k, i, m.specular, 3);
-    k[i++] = m.shininess; k[i++] = m.opacity; k[i++] = d.twoSided ? 1 : 0;
+    k[i++] = m.shininess; k[i++] = m.opacity; k[i++] = d.twoSided ? 1 : 0; k[i++] = this.top;
     if (m.emissive) i = put(k, i, m.emissive, 3); else i += 3;
     // Stryker disable next-line ConditionalExpression,EqualityOperator,StringLiteral: culling picks faces, not colours
     k[i++] = r.width; k[i++] = r.height; k[i++] = r.shadeEvery; k[i++] = r.frontCCW ? 1 : 0; k[i++] = r.cull === 'back' ? 1 : 0;
@@ -277,9 +279,9 @@ export class ObjectShader implements FragmentShader {
       cr = sums[0]; cg = sums[1]; cb = sums[2];
     }
     if (e !== undefined) { cr += e[0]; cg += e[1]; cb += e[2]; }
-    this.cr = cr < 0 ? 0 : cr > 1 ? 1 : cr;
-    this.cg = cg < 0 ? 0 : cg > 1 ? 1 : cg;
-    this.cb = cb < 0 ? 0 : cb > 1 ? 1 : cb;
+    this.cr = cr < 0 ? 0 : cr > this.top ? this.top : cr;
+    this.cg = cg < 0 ? 0 : cg > this.top ? this.top : cg;
+    this.cb = cb < 0 ? 0 : cb > this.top ? this.top : cb;
     if (cache !== null) cache.set(entry, r.face, this.cr, this.cg, this.cb);
     if (this.codes !== null) {
       // The fragment's world point (the model matrix over its object-space position) and its

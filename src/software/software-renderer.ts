@@ -5,11 +5,10 @@
 import { isRough } from '../frame/roughness';
 import { eyeRelativePlane } from '../math/mirror';
 import { srgbToLinear, type ColorSpace } from '../math/srgb';
-import { resolveSamples } from './encode';
+import { colourCeiling, resolveFrame } from './encode';
 import { CourseProjection } from '../frame/course-projection';
 import { orthographicView } from '../frame/orthographic-view';
 import { FrameSetup } from '../frame/frame-setup';
-import { encodesAtEnd } from '../frame/linear-light';
 import type { FrameState } from '../frame/types';
 import type { DecodedImage, SceneImages } from '../scene/decoded-image';
 import { DefaultSceneCache } from '../scene/default-scene';
@@ -154,6 +153,7 @@ export class SoftwareRenderer {
     this.from = top * n * W;
     this.to = bottom * n * W;
     this.prepare(scene, state);
+    this.objectShader.top = this.glassShader.top = colourCeiling(state);
 
     const view = state.view; // 'passes' is tiled by render()
     let source = this.colour;
@@ -195,7 +195,7 @@ export class SoftwareRenderer {
     }
     // F is a number, shown unencoded in either space (docs/colour.md#debug-views); every other view is a picture.
     const out = this.output.subarray(4 * top * width, 4 * bottom * width);
-    resolveSamples(out, source.subarray(3 * this.from, 3 * this.to), width, bottom - top, n, encodesAtEnd(state));
+    resolveFrame(out, source.subarray(3 * this.from, 3 * this.to), width, bottom - top, n, state);
     return this.output;
   }
 

@@ -77,7 +77,7 @@ test('README picture: a rough glass floor at 640×360', async ({ page }) => {
 
 // The README's glTF picture (docs/gltf.md): a GLB made by the tests — the Stanford bunny, gold, its
 // node scaling and turning it — standing on a glass floor, its metallic-roughness material lit by the
-// scene's light (docs/pbr.md#the-scenes-lights); the environment's light and tone mapping are still to come.
+// scene's light (docs/pbr.md#the-scenes-lights), tone mapped (PBR Neutral, tone-mapping="auto"); the environment's light is still to come.
 test('README picture: a GLB on a glass floor at 640×360', async ({ page }) => {
   const glb = await bunnyGlb();
   await page.route('**/wild/bunny.glb', (route) => route.fulfill({ status: 200, contentType: 'model/gltf-binary', body: Buffer.from(glb) }));

@@ -83,7 +83,7 @@ test('if it cannot load: one warning, no error, the model drawn with its Blinn-P
   expect(seen.filter((e) => e.type === 'load').length).toBe(1);
   const standIn = await settled(page);
   expect(same(standIn, lit)).toBe(false);
-  expectOneWarning(consoleLog, 'glTF materials could not load');
+  expectOneWarning(consoleLog, 'glTF materials and tone mapping could not load');
   // The stand-in draws the model: not the empty floor.
   await openPage(page);
   await mountHtml(page, SCENE());

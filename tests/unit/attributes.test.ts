@@ -58,9 +58,10 @@ describe('defaults', () => {
     const names = ATTRIBUTES.map((s) => s.attribute);
     expect(new Set(names).size).toBe(names.length);
     expect([...names].sort()).toEqual([
-      'background', 'camera-position', 'camera-rotation', 'camera-src', 'camera-target', 'color-space', 'controls', 'cube-distance', 'debug-view', 'fov',
-      'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'poster', 'projection', 'reflection-format',
-      'reflection-scale', 'renderer', 'roughness', 'roughness-quality', 'samples', 'shading', 'spin', 'tessellation', 'time', 'transparency',
+      'background', 'camera-position', 'camera-rotation', 'camera-src', 'camera-target', 'color-space', 'controls', 'cube-distance', 'debug-view',
+      'exposure', 'fov', 'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'poster', 'projection', 'reflection-format',
+      'reflection-scale', 'renderer', 'roughness', 'roughness-quality', 'samples', 'shading', 'spin', 'tessellation', 'time', 'tone-mapping',
+      'transparency',
     ]);
     for (const s of ATTRIBUTES) {
       expect(s.attribute.replace(/-([a-z])/g, (_, c: string) => c.toUpperCase())).toBe(s.property);
@@ -268,6 +269,7 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
           case 'shading': expect(['phong', 'gouraud', 'flat']).toContain(v); break;
           case 'reflectionFormat': expect(['rgba8', 'rgba16f']).toContain(v); break;
           case 'colorSpace': expect(['srgb', 'none']).toContain(v); break;
+          case 'toneMapping': expect(['auto', 'neutral', 'aces', 'none']).toContain(v); break;
           case 'roughnessQuality': expect(['low', 'medium', 'high']).toContain(v); break;
           case 'projection': expect(['perspective', 'orthographic']).toContain(v); break;
           case 'renderer': expect(['auto', 'webgl', 'software']).toContain(v); break;

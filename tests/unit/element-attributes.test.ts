@@ -1,6 +1,7 @@
 // The attribute table's parsers called directly (docs/element.md#attribute-table): every default, every range's
 // boundaries (just inside, at, just outside), the fallbacks and the exact warning of each, and the formatters.
 import { describe, expect, it } from 'vitest';
+import { TONE_MAPPINGS } from '../../src/math/tone-map';
 import {
   ATTRIBUTE_BY_NAME, ATTRIBUTES, DEFAULT_BACKGROUND, DEFAULT_CAMERA_POSITION, DEFAULT_CAMERA_ROTATION, DEFAULT_CUBE_DISTANCE,
   defaultAttributes, propertyToRaw, type AttributeSpec, type Parsed,
@@ -27,7 +28,7 @@ describe('defaults (docs/element.md#attribute-table)', () => {
       transparency: 0.5, cubeDistance: 0.75, ior: 1.5, fresnel: 'exact', cameraPosition: [3.6, 2.4, 0.2],
       cameraRotation: [-169, -23.6], fov: 60, projection: 'perspective', controls: null, renderer: 'auto', cameraTarget: null,
       cameraSrc: null, poster: null, spin: 0.8, time: null, debugView: 'none', reflectionScale: 1, samples: 4, shading: 'phong',
-      tessellation: 'auto', pixelRatio: 'auto', reflectionFormat: 'rgba8', colorSpace: 'srgb', roughness: 0,
+      tessellation: 'auto', pixelRatio: 'auto', reflectionFormat: 'rgba8', colorSpace: 'srgb', toneMapping: 'auto', exposure: 1, roughness: 0,
       roughnessQuality: 'medium', glassCenter: [0, 1, 0], glassNormal: [0, 0, 1], glassSize: [8, 4], background: [0.1, 0.1, 0.1],
     });
     expect(DEFAULT_CAMERA_POSITION).toEqual([3.6, 2.4, 0.2]);
@@ -86,6 +87,16 @@ describe('numbers in a range', () => {
     expectParse('fov', '179', 179);
     expectParse('fov', '179.001', 179, 'above 179, clamped');
     expectParse('fov', 'wide', 60, 'not a number, using 60');
+  });
+
+  it('exposure: 0..64, default 1', () => {
+    expectParse('exposure', '-0.001', 0, 'below 0, clamped');
+    expectParse('exposure', '0', 0);
+    expectParse('exposure', '2.5', 2.5);
+    expectParse('exposure', '64', 64);
+    expectParse('exposure', '64.001', 64, 'above 64, clamped');
+    expectParse('exposure', 'Infinity', 64, 'above 64, clamped');
+    expectParse('exposure', 'bright', 1, 'not a number, using 1');
   });
 
   it('reflection-scale: 0.125..2, default 1', () => {
@@ -187,6 +198,7 @@ describe('keywords: trimmed, any case, else the first with a warning', () => {
     ['shading', ['phong', 'gouraud', 'flat']],
     ['reflection-format', ['rgba8', 'rgba16f']],
     ['color-space', ['srgb', 'none']],
+    ['tone-mapping', ['auto', ...TONE_MAPPINGS]],
     ['roughness-quality', ['medium', 'low', 'high']],
   ];
   for (const [name, words] of cases) {

@@ -8,6 +8,7 @@ import { compareImages, renderScene, type ImageComparison } from '../../src/refe
 import { SoftwareRenderer } from '../../src/software';
 import type { Scene, Vec3 } from '../../src/scene/scene';
 import { defaultFrameState } from './helpers/frame-state';
+import { instrumented } from './helpers/collections';
 import { BOX_STATE as STATE, HAND_CASES as CASES, boxScene, pbrMaterial, sphereGrid } from './helpers/pbr-scenes';
 
 const CENTRE = 16 * 33 + 16;
@@ -52,7 +53,8 @@ const line = (c: ImageComparison): string => {
 };
 
 describe('the grid of spheres (metallic × roughness) over a glass floor', () => {
-  it(`the software renderer against the reference (${SAMPLES}×${SAMPLES} samples): every region within ${MARGIN_DB} dB of its figure`, () => {
+  // Under StrykerJS a frame of either renderer takes seconds: the box worked by hand judges the mutants.
+  it.skipIf(instrumented)(`the software renderer against the reference (${SAMPLES}×${SAMPLES} samples): every region within ${MARGIN_DB} dB of its figure`, () => {
     const scene = sphereGrid();
     const ref = renderScene(scene, GRID_STATE, null, { samplesPerAxis: SAMPLES });
     const cmp = compareImages(ref, new SoftwareRenderer({ samplesPerAxis: SAMPLES }).render(scene, GRID_STATE));

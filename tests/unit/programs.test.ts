@@ -61,7 +61,7 @@ describe('ProgramCache', () => {
     const P = { ...V, pbr: true };
     expect(cache.hasPbr).toBe(false);
     expect(() => cache.standard('none', 'phong', P)).toThrow(/glTF material's program was asked for before its chunk loaded/);
-    cache.setPbrSource('// the PBR part');
+    cache.setPbrSources('// the PBR part', '// the tone map part');
     expect(cache.hasPbr).toBe(true);
     const phong = cache.standard('none', 'phong', P);
     expect(phong.name).toBe('standard:none:phong:pbr:lights1/0:uv');

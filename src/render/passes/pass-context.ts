@@ -37,6 +37,11 @@ export interface PassContext {
    * gather (docs/rough-glass.md#the-gather). Off otherwise: depth from transparent objects decides nothing.
    */
   transparentDepth: boolean;
+  /**
+   * The frame keeps light above 1 in half-float targets and tone maps it at the end (docs/pbr.md#tone-mapping): asked for
+   * (toneMapped), and the context can render to half float, and the tone-mapping chunk is in.
+   */
+  hdr: boolean;
   /** Triangles submitted since the frame began, by the eye they were drawn from. */
   triangles: { scene: number; reflection: number };
 }
