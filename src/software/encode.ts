@@ -105,7 +105,9 @@ export function resolveToneMapped(
   out: Uint8ClampedArray, source: Float32Array, width: number, height: number, n: number, curve: ToneMapping, exposure: number,
 ): void {
   const W = width * n, k = exposure / (n * n);
+  // Stryker disable next-line EqualityOperator: y = height writes past the end of `out` (its band): dropped
   for (let y = 0; y < height; y++) {
+    // Stryker disable next-line EqualityOperator: x = width writes the next row's first pixel, which that row writes again (or past the end)
     for (let x = 0; x < width; x++) {
       let r = 0, g = 0, b = 0;
       for (let sy = 0; sy < n; sy++) {

@@ -9,6 +9,9 @@ import { SoftwareRenderer } from '../../src/software';
 import { linearToSrgb } from '../../src/math/srgb';
 import { toneMap } from '../../src/math/tone-map';
 import type { FrameState } from '../../src/frame/types';
+import { colourCeiling } from '../../src/reference/reference-state';
+import { toneMapped } from '../../src/frame/linear-light';
+import { resolveFrame } from '../../src/software/encode';
 import { BOX, BOX_STATE as STATE, CENTRE, FLOOR, FLOOR_STATE, NEUTRAL } from './helpers/tone-scenes';
 
 describe('a box face of light (3, 1.5, 0.75), tone mapped', () => {
@@ -57,5 +60,40 @@ describe('a glass reflecting light above 1', () => {
     // its glass pixels against the tone-mapped reference lose more than 2 dB.
     const clipped = new SoftwareRenderer({ samplesPerAxis: 2 }).render(FLOOR, { ...FLOOR_STATE });
     expect(compareImages(ref, clipped).psnr.glass).toBeLessThan(p.glass - 10);
+  });
+});
+
+describe('which frames are tone mapped (frame/linear-light.ts, and the reference\'s own reading)', () => {
+  it('encoded at the end, with a curve other than none or an exposure other than 1', () => {
+    const rows: [Partial<FrameState>, boolean][] = [
+      [{}, false],
+      [{ toneMapping: 'none' }, false],
+      [{ toneMapping: 'none', exposure: 1 }, false],
+      [{ toneMapping: 'neutral' }, true],
+      [{ toneMapping: 'aces' }, true],
+      [{ exposure: 0.5 }, true],
+      [{ toneMapping: 'none', exposure: 2 }, true],
+      // Not encoded at the end: values as stored, or F shown as a number.
+      [{ toneMapping: 'neutral', colorSpace: 'none' }, false],
+      [{ exposure: 2, colorSpace: 'none' }, false],
+      [{ toneMapping: 'neutral', view: 'fresnel' }, false],
+      [{ toneMapping: 'neutral', view: 'reflection' }, true],
+      [{ toneMapping: 'neutral', view: 'scene' }, true],
+    ];
+    for (const [over, want] of rows) {
+      const state = { ...STATE, toneMapping: undefined, exposure: undefined, ...over };
+      expect(toneMapped(state), JSON.stringify(over)).toBe(want);
+      expect(colourCeiling(state), JSON.stringify(over)).toBe(want ? Infinity : 1);
+    }
+  });
+
+  it('the software resolve: an exposure without a curve is none\'s (clipped at 1), by pixel and sample', () => {
+    // Two pixels of 2×2 samples: (0.5, 1, 3) and (0.2, 0.4, 0.8) light, each sample alike.
+    const source = new Float32Array(2 * 4 * 3);
+    for (let y = 0; y < 2; y++) for (let x = 0; x < 4; x++) source.set(x < 2 ? [0.5, 1, 3] : [0.2, 0.4, 0.8], 3 * (y * 4 + x));
+    const out = new Uint8ClampedArray(8);
+    resolveFrame(out, source, 2, 1, 2, { ...STATE, toneMapping: undefined, exposure: 0.5 });
+    const byte = (l: number) => Math.round(linearToSrgb(l) * 255);
+    expect([...out]).toEqual([byte(0.25), byte(0.5), 255, 255, byte(0.1), byte(0.2), byte(0.4), 255]);
   });
 });
