@@ -9,7 +9,7 @@ import { smithVisibility } from './pbr';
 export const DFG_SAMPLES = 4096;
 
 /** The i-th of n points of the Hammersley set: (i + ½)/n and the bits of i reversed. */
-function hammersley(i: number, n: number, out: Float64Array): void {
+export function hammersley(i: number, n: number, out: Float64Array): void {
   let bits = i >>> 0;
   bits = ((bits << 16) | (bits >>> 16)) >>> 0;
   bits = (((bits & 0x55555555) << 1) | ((bits & 0xaaaaaaaa) >>> 1)) >>> 0;

@@ -6,18 +6,7 @@
 import { describe, expect, it } from 'vitest';
 import { environmentLight, strategyShares, STUDIO_LIGHT, type EnvironmentLight } from '../../src/reference/pbr-light';
 import { gltfBrdf, type PbrPoint } from '../../src/math/pbr';
-
-/** A seeded generator (mulberry32): the same numbers every run. */
-function seeded(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+import { seeded } from './helpers/seeded';
 
 const UP = [0, 1, 0];
 const uniform: EnvironmentLight = { radiance: (out) => out.fill(1) };
