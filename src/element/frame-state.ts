@@ -15,6 +15,7 @@ export class FrameStates {
   };
   /** The state of the last frame drawn; null before the first. */
   last: FrameState | null = null;
+  // Stryker disable next-line ArrayDeclaration: drawn() writes all three before anything reads them
   private readonly lastPosition: [number, number, number] = [0, 0, 0];
   /** The frame timestamp the live clock counts from (the first frame's). */
   private clockStart = -1;
@@ -50,6 +51,7 @@ export class FrameStates {
 
   /** A frame of `state` is on the canvas: keep a copy (its camera position copied too: the live pose moves on). */
   drawn(state: FrameState): void {
+    // Stryker disable next-line ObjectLiteral: Object.assign below copies every field into the new object either way
     const last = (this.last ??= { ...state });
     Object.assign(last, state);
     this.lastPosition[0] = state.cameraPosition[0];
