@@ -38,7 +38,7 @@ function rgbFunction(args: string): Rgb | null {
   } else {
     const [colour, a, extra] = args.split('/').map((s) => s.trim());
     if (extra !== undefined) return null;
-    parts = colour.split(/\s+/).filter((s) => s !== '');
+    parts = colour.split(/\s+/); // trimmed above: no empty part at either end
     alpha = a;
   }
   if (parts.length !== 3 || !alphaOk(alpha)) return null;

@@ -41,8 +41,8 @@ export function dfg(out: Float64Array | number[], mu: number, roughness: number,
     const nh = Math.sqrt(c2), sh = Math.sqrt(1 - c2), phi = 2 * Math.PI * xi[1];
     const hx = sh * Math.cos(phi), hz = nh;
     const vh = vx * hx + vz * hz;
+    // Below the surface (n·l ≤ 0) V is 0 and the sample weighs nothing; v·h ≤ 0 puts l there.
     const nl = 2 * vh * hz - vz;
-    if (nl <= 0 || vh <= 0) continue;
     const w = (4 * smithVisibility(alpha, nl, nv) * nl * vh) / nh;
     const k = 1 - vh, fc = k * k * k * k * k;
     a += (1 - fc) * w;

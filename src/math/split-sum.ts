@@ -30,7 +30,8 @@ export function prefiltered(out: Float64Array, env: RadianceFn, r: ArrayLike<num
     s0 += rad[0] * nl; s1 += rad[1] * nl; s2 += rad[2] * nl;
     w += nl;
   }
-  out[0] = w > 0 ? s0 / w : 0; out[1] = w > 0 ? s1 / w : 0; out[2] = w > 0 ? s2 / w : 0;
+  // w > 0: the first point (ξ₁ = ½/samples) is within a hair of R, whatever the roughness.
+  out[0] = s0 / w; out[1] = s1 / w; out[2] = s2 / w;
   return out;
 }
 
@@ -54,7 +55,7 @@ export function irradiance(out: Float64Array, env: RadianceFn, n: ArrayLike<numb
 export function dominantDirection(out: Float64Array, toSurface: ArrayLike<number>, n: ArrayLike<number>, roughness: number): Float64Array {
   reflectAbout(out, toSurface, n);
   const r = Math.min(1, Math.max(0, roughness)), a = r * r, s = (1 - a) * (Math.sqrt(1 - a) + a);
-  for (let c = 0; c < 3; c++) out[c] = n[c] + (out[c] - n[c]) * s;
+  out[0] = n[0] + (out[0] - n[0]) * s; out[1] = n[1] + (out[1] - n[1]) * s; out[2] = n[2] + (out[2] - n[2]) * s;
   const len = Math.hypot(out[0], out[1], out[2]);
   out[0] /= len; out[1] /= len; out[2] /= len;
   return out;
@@ -81,7 +82,7 @@ export function splitSum(
   prefiltered(spec, env, refl, roughness, samples);
   irradiance(diff, env, n, samples);
   dfg(ab, nv, roughness);
-  for (let c = 0; c < 3; c++) {
+  for (let c = 0; c !== 3; c++) {
     const f0 = DIELECTRIC_F0 * (1 - metallic) + base[c] * metallic;
     out[c] = spec[c] * (f0 * ab[0] + ab[1]) + base[c] * (1 - metallic) * (1 - f0) * diff[c] / Math.PI;
   }

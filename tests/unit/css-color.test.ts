@@ -30,9 +30,12 @@ describe('parseCssColor', () => {
     expect(parseCssColor('rgb(  10%   20%\t30%  )')).toEqual([0.1, 0.2, 0.3]);
     expect(parseCssColor('rgb(300 -5 1e2)')).toEqual([1, 0, 100 / 255]);
     expect(parseCssColor('rgb(.5 +1 2.)')).toEqual([0.5 / 255, 1 / 255, 2 / 255]);
+    expect(parseCssColor('rgb(.55 1e+2 25E-1)')).toEqual([0.55 / 255, 100 / 255, 2.5 / 255]);
+    expect(parseCssColor('rgb(1e10 0 0)')).toEqual([1, 0, 0]);
+    expect(parseCssColor('rgba(255, 0, 51, 5)')).toEqual([1, 0, 0.2]);
     for (const bad of [
       'rgb()', 'rgb(1 2)', 'rgb(1 2 3 4)', 'rgb(1, 2)', 'rgb(1, 2, 3, 4, 5)', 'rgb(1 2 3 / 4 / 5)', 'rgb(1 2 x)', 'rgb(1, 2, 3, x)',
-      'rgb(1 2 3 / x%)', 'rgb(1% 2 %3)', 'rgb(1 2 3', 'rgb 1 2 3)', 'xrgb(1 2 3)', 'rgb(1 2 3) x', 'rgb(1, 2 3)', 'rgb(e 2 3)',
+      'rgb(1 2 3 / x%)', 'rgb(1 2 3 / 5x%)', 'rgb(1% 2 %3)', 'rgb(1x 2 3)', 'rgb(1e 2 3)', 'rgb(1e+ 2 3)', 'rgb(1 2 3', 'rgb 1 2 3)', 'xrgb(1 2 3)', 'rgb(1 2 3) x', 'rgb(1, 2 3)', 'rgb(e 2 3)',
     ]) expect(parseCssColor(bad), bad).toBeNull();
   });
 
@@ -66,6 +69,8 @@ describe('browserCssColor', () => {
     expect(browserCssColor('RebeccaPurple')).toEqual([0x66 / 255, 0x33 / 255, 0x99 / 255]);
     expect(browserCssColor('hsl(120 100% 50%)')).toEqual([0, 1, 0]);
     expect(browserCssColor('not a colour')).toBeNull();
+    // Again, right after one the canvas refused (the second sentinel still in place): still null.
+    expect(browserCssColor('nor this')).toBeNull();
     // The canvas is made once and asked for a 2d context.
     expect(fake.createElement).toHaveBeenCalledTimes(1);
     expect(fake.createElement).toHaveBeenCalledWith('canvas');

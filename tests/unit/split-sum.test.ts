@@ -25,8 +25,17 @@ describe('the split sum', () => {
       const base = [0.9, 0.5, 0.2][c], f0 = 0.04 * 0.75 + base * 0.25;
       expect(out[c]).toBeCloseTo(L * (f0 * ab[0] + ab[1]) + base * 0.75 * (1 - f0) * L, 12);
     });
-    // Seen from behind: nothing.
+    // Seen from behind, or exactly edge-on: nothing.
     expect([...splitSum(out, [1, 1, 1], 1, 0.5, n, [0, -1, 0], sky, 16)]).toEqual([0, 0, 0]);
+    expect([...splitSum(out, [1, 1, 1], 1, 0.5, n, [1, 0, 0], sky, 16)]).toEqual([0, 0, 0]);
+    // A tilted normal, a view with all three components: n·v = 0.8·0.6 + … worked by the same rule.
+    const nt = unit([0.3, 0.8, -0.5]), vt = unit([-0.4, 0.5, -0.6]);
+    const mu = nt[0] * vt[0] + nt[1] * vt[1] + nt[2] * vt[2], abt = dfg([0, 0], mu, 0.5);
+    splitSum(out, [0.9, 0.5, 0.2], 0.25, 0.5, nt, vt, sky, 256);
+    [1, 0.5, 0.25].forEach((L, c) => {
+      const base = [0.9, 0.5, 0.2][c], f0 = 0.04 * 0.75 + base * 0.25;
+      expect(out[c]).toBeCloseTo(L * (f0 * abt[0] + abt[1]) + base * 0.75 * (1 - f0) * L, 12);
+    });
   });
 
   it('the dominant direction: the mirror direction when polished, the normal at roughness 1, between by s = (1 − α)(√(1 − α) + α)', () => {
