@@ -25,6 +25,18 @@ test('WebGL: a glTF material head-on to a directional light, as worked by hand',
   }
 });
 
+test('WebGL: the base colour texture multiplies the base colour and a metal\'s F0 (pbr-shading.test.ts\'s 1×1 image)', async ({ page }) => {
+  const url = 'https://example.com/one.png';
+  const rgba = [Math.round(0.5 * 255), Math.round(0.25 * 255), 255, 255];
+  const scene = boxScene(pbrMaterial({ baseColor: [1, 1, 1, 1], metallic: 1, roughness: 0.5 }));
+  const textured = { ...scene, objects: [{ ...scene.objects[0], material: { ...scene.objects[0].material, texture: { kind: 'image' as const, url } } }] };
+  const image = await drawScene(page, BOX_STATE, textured, { [url]: { width: 1, height: 1, rgba } });
+  const centre = 4 * (16 * 33 + 16);
+  const got = [...image.data.subarray(centre, centre + 3)];
+  const want = rgba.slice(0, 3).map((t) => 0.8 * t);
+  got.forEach((g, k) => expect(Math.abs(g - want[k]), `channel ${k}: ${got} against ${want}`).toBeLessThanOrEqual(1));
+});
+
 test('WebGL: a glTF material is lit per fragment whatever the shading', async ({ page }) => {
   const scene = sphereGrid();
   const state = defaultFrameState({ width: 160, height: 90, cameraPosition: [0, 1.5, 3.3], yaw: -90, pitch: -8, time: 0, spin: 0, samples: 0 });

@@ -13,6 +13,23 @@ import { BOX_STATE as STATE, HAND_CASES as CASES, boxScene, pbrMaterial, sphereG
 
 const CENTRE = 16 * 33 + 16;
 
+describe('the base colour texture', () => {
+  it('multiplies the base colour, and so a metal\'s F0: a 1×1 image (0.5, 0.25, 1) on a white metal of roughness ½', () => {
+    // Head-on, 0.2·F0/(4α²) with F0 = the textured base and 4α² = ¼: (0.4, 0.2, 0.8).
+    const url = 'https://example.com/one.png';
+    const images = new Map([[url, { width: 1, height: 1, data: new Uint8ClampedArray([Math.round(0.5 * 255), Math.round(0.25 * 255), 255, 255]) }]]);
+    const tex = [Math.round(0.5 * 255) / 255, Math.round(0.25 * 255) / 255, 1];
+    const scene = boxScene(pbrMaterial({ baseColor: [1, 1, 1, 1], metallic: 1, roughness: 0.5 }));
+    const textured: Scene = { ...scene, objects: [{ ...scene.objects[0], material: { ...scene.objects[0].material, texture: { kind: 'image', url } } }] };
+    const ref = renderScene(textured, STATE, images, { samplesPerAxis: 1 }).rgb;
+    const soft = new SoftwareRenderer({ samplesPerAxis: 1 }).render(textured, STATE, images);
+    tex.forEach((t, k) => {
+      expect(ref[3 * CENTRE + k], `reference channel ${k}`).toBeCloseTo(0.8 * t, 12);
+      expect(soft[4 * CENTRE + k], `software channel ${k}`).toBe(Math.round(0.8 * t * 255));
+    });
+  });
+});
+
 describe('a glTF material head-on to a directional light, worked by hand', () => {
   it('is lit per pixel whatever the frame\'s shading (a box lit by a near point light: Blinn-Phong\'s gouraud and flat differ)', () => {
     const near = (pbr: boolean): Scene => {
