@@ -9,13 +9,13 @@ export default [
   {
     name: 'K1 the final encode missing: the frame in linear light goes to the canvas as it is',
     why: 'GLSL: Stryker does not mutate shader source (shaders/)',
-    edits: [{ file: 'shaders/encode.frag', find: 'outColor = vec4(encode(texelFetch(uSource, ivec2(gl_FragCoord.xy), 0).rgb), 1.0);', replace: 'outColor = vec4(clamp(texelFetch(uSource, ivec2(gl_FragCoord.xy), 0).rgb, 0.0, 1.0), 1.0);' }],
+    edits: [{ file: 'shaders/encode.frag', find: 'outColor = vec4(encode(c), 1.0);', replace: 'outColor = vec4(clamp(c, 0.0, 1.0), 1.0);' }],
     tests: [COLOR],
   },
   {
     name: 'K2 the encode applied twice',
     why: 'GLSL: Stryker does not mutate shader source (shaders/)',
-    edits: [{ file: 'shaders/encode.frag', find: 'outColor = vec4(encode(texelFetch(uSource, ivec2(gl_FragCoord.xy), 0).rgb), 1.0);', replace: 'outColor = vec4(encode(encode(texelFetch(uSource, ivec2(gl_FragCoord.xy), 0).rgb)), 1.0);' }],
+    edits: [{ file: 'shaders/encode.frag', find: 'outColor = vec4(encode(c), 1.0);', replace: 'outColor = vec4(encode(encode(c)), 1.0);' }],
     tests: [COLOR],
   },
   {
@@ -39,10 +39,7 @@ export default [
   {
     name: 'K6 the frame in linear light held in an 8-bit linear target (RGBA8): the darks band',
     why: 'WebGL render target format: only a browser draws it',
-    edits: [
-      { file: 'src/render/linear-frame.ts', find: "const target = (this.target ??= new RenderTarget(gl, this.counter, 'srgb8'));", replace: "const target = (this.target ??= new RenderTarget(gl, this.counter, 'rgba8'));" },
-      { file: 'src/render/linear-frame.ts', find: "const msaa = (this.msaa ??= new MultisampleTarget(gl, this.counter, 'srgb8'));", replace: "const msaa = (this.msaa ??= new MultisampleTarget(gl, this.counter, 'rgba8'));" },
-    ],
+    edits: [{ file: 'src/render/linear-frame.ts', find: "const format = hdr ? 'rgba16f' : 'srgb8';", replace: "const format = hdr ? 'rgba16f' : 'rgba8';" }],
     tests: [COLOR],
   },
   {

@@ -1,0 +1,83 @@
+// glTF materials and tone mapping on the GPU (docs/pbr.md): the BRDF's terms in shaders/pbr.glsl, the encode's tone
+// mapping in shaders/tone-map.glsl and encode.frag, the half-float targets and the glass's ceiling that keep light
+// above 1, and the chunk that brings them. The CPU renderers' same maths is src/ (StrykerJS).
+// Each: { name, why (what keeps it out of Stryker's reach), edits: [{ file, find, replace }], tests }.
+const PBR = 'tests/e2e/pbr.spec.ts';
+const TONE = 'tests/e2e/tone-mapping.spec.ts';
+const CHUNK = 'tests/e2e/pbr-chunk.spec.ts';
+const GLSL = 'GLSL: Stryker does not mutate shader source (shaders/)';
+
+export default [
+  {
+    name: 'P1 D without its square: α²/(π·q) for α²/(π·q²)',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: 'float d = nh > 0.0 ? a2 / (3.141592653589793 * q * q) : 0.0;', replace: 'float d = nh > 0.0 ? a2 / (3.141592653589793 * q) : 0.0;' }],
+    tests: [PBR],
+  },
+  {
+    name: 'P2 V halved (G/(8 n·l n·v))',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: 'float vis = 0.5 / (', replace: 'float vis = 0.25 / (' }],
+    tests: [PBR],
+  },
+  {
+    name: 'P3 Schlick\'s Fresnel with (1 − v·h)³ for (1 − v·h)⁵',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: 'vec3 fr = f0 + (1.0 - f0) * (k2 * k2 * k);', replace: 'vec3 fr = f0 + (1.0 - f0) * (k2 * k);' }],
+    tests: [PBR],
+  },
+  {
+    name: 'P4 F0 not mixed by metallic: 0.04 + base·metallic',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: 'vec3 f0 = vec3(0.04) * (1.0 - metallic) + base * metallic;', replace: 'vec3 f0 = vec3(0.04) + base * metallic;' }],
+    tests: [PBR],
+  },
+  {
+    name: 'P5 a metal keeps its diffuse colour (c_diff = base)',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: 'vec3 cdiff = base * (1.0 - metallic);', replace: 'vec3 cdiff = base;' }],
+    tests: [PBR],
+  },
+  {
+    name: 'P6 the lights\' α without its floor (roughness 0: α = 0, D = 0/0)',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: 'float alpha = max(r * r, 0.002);', replace: 'float alpha = r * r;' }],
+    tests: [PBR],
+  },
+  {
+    name: 'P7 a glTF material lit per vertex under gouraud (the frame\'s shading obeyed)',
+    why: 'the variant chosen for a WebGL draw: only a browser draws it',
+    edits: [{ file: 'src/render/programs.ts', find: "const shading = v.pbr ? 'phong' : requested;", replace: 'const shading = requested;' }],
+    tests: [PBR],
+  },
+  {
+    name: 'P8 the exposure after the curve: toneMap(c)·exposure',
+    why: GLSL,
+    edits: [{ file: 'shaders/encode.frag', find: 'c = toneMap(c * uExposure);', replace: 'c = toneMap(c) * uExposure;' }],
+    tests: [TONE],
+  },
+  {
+    name: 'P9 a tone-mapped frame in an 8-bit target: light above 1 clipped before the curve',
+    why: 'WebGL render target format: only a browser draws it',
+    edits: [{ file: 'src/render/linear-frame.ts', find: "const format = hdr ? 'rgba16f' : 'srgb8';", replace: "const format = 'srgb8';" }],
+    tests: [TONE],
+  },
+  {
+    name: 'P10 the glass reads R clipped at 1 in a tone-mapped frame',
+    why: 'a uniform of the WebGL glass pass: only a browser draws it',
+    edits: [{ file: 'src/render/passes/glass-pass.ts', find: "gl.uniform1f(program.location('uCeiling'), ctx.hdr ? 65504 : 1);", replace: "gl.uniform1f(program.location('uCeiling'), 1);" }],
+    tests: [TONE],
+  },
+  {
+    name: 'P11 PBR Neutral without its desaturation toward white',
+    why: GLSL,
+    edits: [{ file: 'shaders/tone-map.glsl', find: 'return mix(c, vec3(newPeak), g);', replace: 'return c;' }],
+    tests: [TONE],
+  },
+  {
+    name: 'P12 a frame with a glTF material does not wait for its chunk: the stand-in drawn meanwhile',
+    why: 'a lazy chunk\'s timing in a page: only a browser loads it',
+    edits: [{ file: 'src/render/parts.ts', find: 'needed: (h) => hasPbrMaterial(h.ctx.scene) || toneMapped(h.ctx.state), holds: true,', replace: 'needed: (h) => hasPbrMaterial(h.ctx.scene) || toneMapped(h.ctx.state), holds: false,' }],
+    tests: [CHUNK],
+  },
+];
