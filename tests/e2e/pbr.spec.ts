@@ -17,7 +17,7 @@ test.beforeEach(async ({ page }) => {
 test('WebGL: a glTF material head-on to a directional light, as worked by hand', async ({ page }) => {
   const centre = 4 * (16 * 33 + 16);
   for (const c of HAND_CASES) {
-    const image = await drawScene(page, BOX_STATE, boxScene(pbrMaterial(c.pbr), c.emissive));
+    const image = await drawScene(page, BOX_STATE, boxScene(pbrMaterial(c.pbr), c.emissive, c.light));
     const got = [...image.data.subarray(centre, centre + 3)];
     const want = c.want.map((w) => Math.min(w, 1) * 255);
     // The 8-bit target rounds; a GPU may land one level either side of the exact value.

@@ -48,7 +48,7 @@ describe('a glTF material head-on to a directional light, worked by hand', () =>
 
   for (const c of CASES) {
     it(`${c.name}: the reference to 1e-12, the software renderer to the 8-bit level`, () => {
-      const scene = boxScene(pbrMaterial(c.pbr), c.emissive);
+      const scene = boxScene(pbrMaterial(c.pbr), c.emissive, c.light);
       const ref = renderScene(scene, STATE, null, { samplesPerAxis: 1 }).rgb;
       const soft = new SoftwareRenderer({ samplesPerAxis: 1 }).render(scene, STATE);
       c.want.forEach((w, k) => {

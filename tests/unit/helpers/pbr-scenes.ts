@@ -54,14 +54,28 @@ export function sphereGrid(): Scene {
 // colour is not a glTF material's: 7, to show it is not read).
 export const IA = 0.1, ID = 0.2;
 
-export function boxScene(pbr: PbrMaterial, emissive?: Vec3): Scene {
+export function boxScene(pbr: PbrMaterial, emissive?: Vec3, light: Light = HEAD_ON): Scene {
   const material = { ...withPbr(pbr), ...(emissive ? { emissive } : {}) };
   return {
     glass: null, background: [0, 0, 0],
     objects: [{ geometry: { kind: 'box', size: 1 }, transform: { position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], spin: 0 }, material, bounds: { center: [0, 0, 0], radius: 0.9 } }],
-    lights: [{ kind: 'directional', vector: [0, 0, 1], ambient: [IA, IA, IA], diffuse: [ID, ID, ID], specular: [7, 7, 7] }],
+    lights: [light],
   };
 }
+
+const HEAD_ON: Light = { kind: 'directional', vector: [0, 0, 1], ambient: [IA, IA, IA], diffuse: [ID, ID, ID], specular: [7, 7, 7] };
+
+/**
+ * A light of 100 at 85° from the face's normal (and from the view), no ambient: v·h = cos 42.5°, so Schlick's F is
+ * F0 + (1 − F0)(1 − cos 42.5°)⁵, not F0. A dark metal (F0 0.02) at roughness 1 (D = 1/π, Vis = ½/(cos 85° + 1)):
+ * 100·cos 85°·F·Vis (π·D = 1).
+ */
+export const GRAZING: Light = { kind: 'directional', vector: [Math.sin(85 * Math.PI / 180), 0, Math.cos(85 * Math.PI / 180)], ambient: [0, 0, 0], diffuse: [100, 100, 100], specular: [7, 7, 7] };
+const GRAZING_WANT = (() => {
+  const nl = Math.cos((85 * Math.PI) / 180), vh = Math.cos((42.5 * Math.PI) / 180);
+  const f = 0.02 + 0.98 * (1 - vh) ** 5;
+  return 100 * nl * f * (0.5 / (nl + 1));
+})();
 
 /** 33×33, the camera 4 from the box's +Z face, head-on; colour space none (the values as they are). */
 export const BOX_STATE = defaultFrameState({ width: 33, height: 33, cameraPosition: [0, 0, 4], yaw: -90, pitch: 0, colorSpace: 'none', time: 0, spin: 0, samples: 0 });
@@ -70,7 +84,9 @@ export const BOX_STATE = defaultFrameState({ width: 33, height: 33, cameraPositi
  * The centre pixel, by hand: Ia·c_diff + π·Id·((1 − F0)·c_diff/π + F0/(4πα²)) = Ia·c_diff + Id·((1 − F0)·c_diff + F0/(4α²)),
  * c_diff = base·(1 − m), F0 = 0.04·(1 − m) + base·m, α = roughness² (at least 0.002).
  */
-export const HAND_CASES: { name: string; pbr: Partial<PbrMaterial>; emissive?: Vec3; want: number[] }[] = [
+export const HAND_CASES: { name: string; pbr: Partial<PbrMaterial>; emissive?: Vec3; light?: Light; want: number[] }[] = [
+  // GRAZING: Fresnel away from normal incidence (0.0851 here; with (1 − v·h)³ it would be 0.1514).
+  { name: 'a dark metal under a light at 85°', pbr: { baseColor: [0.02, 0.02, 0.02, 1], metallic: 1, roughness: 1 }, light: GRAZING, want: [GRAZING_WANT, GRAZING_WANT, GRAZING_WANT] },
   // m 0, roughness 1 (α 1), base 0.5: 0.1·0.5 + 0.2·(0.96·0.5 + 0.04/4) = 0.05 + 0.2·0.49 = 0.148.
   { name: 'a rough dielectric', pbr: { baseColor: [0.5, 0.5, 0.5, 1], metallic: 0, roughness: 1 }, want: [0.148, 0.148, 0.148] },
   // m 1, roughness 1, base (0.5, 0.8, 0.2): c_diff 0, F0 = base: 0.2·base/4 = 0.05·base.
