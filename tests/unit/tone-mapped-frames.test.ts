@@ -63,6 +63,21 @@ describe('a glass reflecting light above 1', () => {
   });
 });
 
+describe('frames that are not tone mapped, whatever they ask', () => {
+  it('colour space none or the fresnel view: the curve and exposure ignored, in both CPU renderers; an exposure alone is none\'s', () => {
+    for (const base of [{ colorSpace: 'none' as const }, { view: 'fresnel' as const }]) {
+      const plain = { ...STATE, ...base };
+      const asked = { ...plain, toneMapping: 'neutral' as const, exposure: 2 };
+      expect(Buffer.from(renderScene(BOX, asked, null, { samplesPerAxis: 1 }).rgba).equals(Buffer.from(renderScene(BOX, plain, null, { samplesPerAxis: 1 }).rgba)), JSON.stringify(base)).toBe(true);
+      expect(Buffer.from(new SoftwareRenderer({ samplesPerAxis: 1 }).render(BOX, asked)).equals(Buffer.from(new SoftwareRenderer({ samplesPerAxis: 1 }).render(BOX, plain))), JSON.stringify(base)).toBe(true);
+    }
+    const alone = renderScene(BOX, { ...STATE, toneMapping: undefined, exposure: 0.5 }, null, { samplesPerAxis: 1 }).rgba;
+    const none = renderScene(BOX, { ...STATE, toneMapping: 'none', exposure: 0.5 }, null, { samplesPerAxis: 1 }).rgba;
+    expect(Buffer.from(alone).equals(Buffer.from(none))).toBe(true);
+    expect(alone[4 * CENTRE]).toBe(255);
+  });
+});
+
 describe('which frames are tone mapped (frame/linear-light.ts, and the reference\'s own reading)', () => {
   it('encoded at the end, with a curve other than none or an exposure other than 1', () => {
     const rows: [Partial<FrameState>, boolean][] = [
