@@ -48,6 +48,11 @@ describe('the split sum', () => {
     expect(out[0]).toBeCloseTo(d[0] / len, 12);
     expect(out[1]).toBeCloseTo(d[1] / len, 12);
     expect(out[2]).toBe(0);
+    // A tilted normal: the mirror direction R = 2(n·v)n − v, then n + (R − n)·s, unit.
+    const nt = unit([0.3, 0.8, -0.5]), vt = unit([-0.4, 0.5, -0.6]), k = 2 * (nt[0] * vt[0] + nt[1] * vt[1] + nt[2] * vt[2]);
+    const rt = [0, 1, 2].map((c) => k * nt[c] - vt[c]), dt = [0, 1, 2].map((c) => nt[c] + (rt[c] - nt[c]) * s5), lt = Math.hypot(...dt);
+    dominantDirection(out, vt.map((x) => -x), nt, 0.5);
+    for (let c = 0; c < 3; c++) expect(out[c]).toBeCloseTo(dt[c] / lt, 12);
   });
 
   it('the studio\'s irradiance and prefiltered light against quadratures over the hemisphere (within 1 %)', () => {
