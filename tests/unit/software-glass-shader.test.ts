@@ -9,7 +9,7 @@ import { MipTexture } from '../../src/software/mip-texture';
 import { Rasterizer } from '../../src/software/raster';
 import type { RoughGather } from '../../src/software/rough-gather';
 import type { GlassFrame } from '../../src/scene/glass-frame';
-import type { FresnelModel } from '../../src/math/fresnel';
+import { fresnel, type FresnelModel } from '../../src/math/fresnel';
 
 // software-glass.test.ts's view: 32×16 pixels, fov 90°, the eye 2 units in front of the 16×8 glass z = 0, whose corners
 // project onto NDC (±2, ±2): the glass fills the view, u = (x + 8)/16 and v = (y + 4)/8 affine in the screen (the
@@ -275,6 +275,142 @@ describe('the frame-to-frame cache: a frame shades as a fresh shader would', () 
   });
 });
 
+/** A texture that counts its reads (the glass cache's work saved shows as reads not made). */
+class Counting extends MipTexture {
+  reads = 0;
+  override sample(a: Float64Array, out: Float64Array): void {
+    this.reads++;
+    super.sample(a, out);
+  }
+}
+
+describe('the frame-to-frame cache: what it reads, and when it reads none', () => {
+  const P = W * H;
+  /** Draws `list` in turn with one shader and rasterizer: the texture reads each frame made, and the last frame's colour. */
+  function reads(list: Settings[], n = 1, depth?: (frame: number, r: Rasterizer) => void) {
+    const g = new GlassShader(), r = rasterizer(n), count: number[] = [];
+    list.forEach((s, frame) => {
+      const tex = (s.texture ?? g.texture) as Counting;
+      const before = tex.reads;
+      apply(g, s, P * n * n);
+      r.clearDepth();
+      depth?.(frame, r);
+      g.draw(r, GLASS_INDICES);
+      count.push(tex.reads - before);
+    });
+    return { count, colour: g.colour };
+  }
+  const tex = new Counting(1, 4, 4, Float32Array.from({ length: 16 }, (_, i) => ((i * 5) % 16) / 16), true);
+  const base: Settings = { texture: tex, transparency: 0.3 };
+
+  for (const n of [1, 2]) {
+    it(`compose: a pixel's texel read in the first two frames of a still glass, none in the third (shadeEvery ${n})`, () => {
+      // Multisampled, the 32 pixels the rectangle's diagonal splits are shaded by both triangles, each at a sample of
+      // its own: one entry a pixel keeps the last, so those pixels read again every frame (twice).
+      const [first, still] = n === 1 ? [P, 0] : [P + 32, 64];
+      expect(reads([base, base, base, base], n).count).toEqual([first, first, still, still]);
+      // The fresnel view and the footprint read no texel; the mode is part of the key.
+      const f = { ...base, mode: 'fresnel' as const }, m = { ...base, mode: 'mask' as const };
+      expect(reads([base, base, f, f, f, base, base, base], n).count).toEqual([first, first, 0, 0, 0, first, first, still]);
+      // The renderer's order, footprint then glass each frame: the footprint leaves the cache as the glass left it.
+      const run = reads([m, base, m, base, m, base], n);
+      expect(run.count).toEqual([0, first, 0, first, 0, still]);
+      expect([...run.colour]).toEqual([...reads([base], n).colour]);
+    });
+
+    it(`rough glass neither reads nor keeps entries: the polished frame after it starts again (shadeEvery ${n})`, () => {
+      const rough = { gather: (out: Float64Array) => { out.set([0.9, 0.1, 0.4]); return true; } } as unknown as RoughGather;
+      const r = { ...base, rough, roughTransmission: true };
+      const [first, still] = n === 1 ? [P, 0] : [P + 32, 64];
+      const run = reads([base, base, r, r, base, base, base], n);
+      expect(run.count).toEqual([first, first, first, first, first, first, still]);
+      expect([...run.colour]).toEqual([...reads([base], n).colour]);
+    });
+  }
+
+  it('an object moving over a still glass: the pixels it uncovers read their texel afresh (the footprint pass keeps none)', () => {
+    // The renderer's order, footprint then glass; the glass's left half hidden in frame 3 only.
+    const m = { ...base, mode: 'mask' as const };
+    const hideLeft = (frame: number, r: Rasterizer) => {
+      if (frame === 3) for (let p = 0; p < P; p++) if (p % W < W / 2) r.depth[p] = -1;
+    };
+    const run = reads([m, base, m, base, m, base], 1, hideLeft);
+    expect(run.count).toEqual([0, P, 0, P / 2, 0, P / 2]);
+    expect([...run.colour]).toEqual([...reads([base]).colour]);
+  });
+
+  it('multisampled: an entry is read back only at the sample that shaded it', () => {
+    // Sample 0 of every pixel hidden (frames 0–2), then samples 0 and 1 (frames 3–4): the pixel is shaded at its
+    // sample 1, then 2; the first frame at a new sample reads again, the next reads the entry.
+    const hide = (frame: number, r: Rasterizer) => {
+      for (let p = 0; p < 4 * P; p++) {
+        const x = p % (2 * W), y = Math.floor(p / (2 * W)), s = 2 * (y % 2) + (x % 2);
+        if (s === 0 || (frame >= 3 && s === 1)) r.depth[p] = -1;
+      }
+    };
+    // The diagonal's 16 pixels whose shaded samples both triangles hold read again each frame, as above.
+    const run = reads([base, base, base, base, base], 2, hide);
+    expect(run.count).toEqual([P + 16, P + 16, 32, P + 16, 32]);
+    const fresh = reads([base], 2, (_, r) => hide(3, r));
+    expect([...run.colour]).toEqual([...fresh.colour]);
+  });
+});
+
+describe('the cache key: each of its numbers alone changed starts again', () => {
+  // A normal and an orthographic view vector with no zero component: flipping any one changes N·V.
+  const N: GlassFrame = { ...FRAME, plane: [0.48, 0.6, 0.64, 0] };
+  const V = [0.6, 0.48, 0.64, 0];
+  const tex = new MipTexture(1, 4, 4, Float32Array.from({ length: 16 }, (_, i) => ((i * 7) % 16) / 16), true);
+  const base: Settings = { texture: tex, frame: N, view: V, transparency: 0.3 };
+  const flip = (v: number[], k: number) => v.map((c, i) => (i === k ? -c : c));
+  const changes: [string, Settings][] = [
+    ...[0, 1, 2].map((k): [string, Settings] => [`view ${'xyz'[k]}`, { view: flip(V, k) }]),
+    ['view w (perspective)', { view: [...V.slice(0, 3), 1] }],
+    ...[0, 1, 2].map((k): [string, Settings] => [`normal ${'xyz'[k]}`, { frame: { ...N, plane: flip(N.plane as number[], k) as unknown as GlassFrame['plane'] } }]),
+  ];
+  for (const [name, change] of changes) {
+    it(`${name}`, () => {
+      const next = { ...base, ...change };
+      const want = frames([next]);
+      expect([...frames([base, base, next])]).toEqual([...want]);
+      expect([...want]).not.toEqual([...frames([base])]);
+    });
+  }
+
+  it('F at cos θ = |N·V| of a normal and view vector with no zero component; a zero view vector counts as cos θ = 1', () => {
+    const want = Math.fround(fresnel('exact', 0.288 + 0.288 + 0.4096, 1.5));
+    for (const [i, j] of [[0, 0], [20, 9]]) expect(at(frames([{ ...base, mode: 'fresnel' }]), i, j)[1]).toBeCloseTo(want, 7);
+    expect(at(frames([{ mode: 'fresnel', view: [0, 0, 0, 0] }]), 9, 9)).toEqual([F0, F0, F0].map(Math.fround));
+  });
+
+  it('the grid: the same samples shaded once per 2×2 pixel after once each', () => {
+    const g = new GlassShader(), one = new Rasterizer(2 * W, 2 * H), two = new Rasterizer(2 * W, 2 * H);
+    two.shadeEvery = 2;
+    for (const r of [one, one, two]) { apply(g, base, 4 * W * H); r.clearDepth(); g.draw(r, GLASS_INDICES); }
+    expect([...g.colour]).toEqual([...frames([base], 2)]);
+  });
+});
+
+describe('the glass equation off normal incidence (F between 0 and 1), each model, polished and rough', () => {
+  // Orthographic, V = (0, 0, 1) on the normal (0.6, 0, 0.8): cos θ = 0.8 everywhere.
+  const frame: GlassFrame = { ...FRAME, plane: [0.6, 0, 0.8, 0] };
+  const B = [0.6, 0.3, 0.1], R = [0.2, 0.5, 0.9], T = 0.3, D = BODY.map((k) => 0.8 * k);
+  const R2 = [0.9, 0.1, 0.4], B2 = [0.3, 0.35, 0.8];
+  const rough = { gather: (out: Float64Array, _: unknown, pass: number) => { out.set(pass === 0 ? R2 : B2); return true; } } as unknown as RoughGather;
+  for (const model of ['exact', 'schlick', 'classic'] as const) {
+    const f = fresnel(model, 0.8, 1.5);
+    const glass = (r: number[], b: number[]) => D.map((d, k) => model === 'classic'
+      ? (d + (r[k] - d) * f) * ((1 - T) * (0.2 + 0.8 * f)) + b[k] * (1 - (1 - T) * (0.2 + 0.8 * f))
+      : f * r[k] + (1 - f) * (T * b[k] + (1 - T) * d));
+    it(`${model}: F = ${f.toFixed(4)}`, () => {
+      expect(f).toBeGreaterThan(0.007);
+      const s: Settings = { model, frame, view: [0, 0, 1, 0], transparency: T, B, R };
+      at(frames([s]), 11, 6).forEach((x, k) => expect(x).toBeCloseTo(glass(R, B)[k], 6));
+      at(frames([{ ...s, rough, roughTransmission: true }]), 11, 6).forEach((x, k) => expect(x).toBeCloseTo(glass(R2, B2)[k], 6));
+    });
+  }
+});
+
 describe('a tilted glass seen by a turned camera, every pixel against rays cast here', () => {
   // The glass through the origin with normal (0.6, 0, 0.8): u along (0.8, 0, −0.6) (16 wide), v along +Y (8 high).
   const TILTED: GlassFrame = {
@@ -284,8 +420,8 @@ describe('a tilted glass seen by a turned camera, every pixel against rays cast 
   const eye = [1, 0.5, 9];
 
   /** Eye-relative view-projection: `projection` × the turn of a camera at `eye` looking at the origin. */
-  function relativeVP(projection: mat4): Float64Array {
-    const view = mat4.lookAt(mat4.create(), eye as [number, number, number], [0, 0, 0], [0, 1, 0]);
+  function relativeVP(projection: mat4, up: [number, number, number] = [0, 1, 0]): Float64Array {
+    const view = mat4.lookAt(mat4.create(), eye as [number, number, number], [0, 0, 0], up);
     view[12] = view[13] = view[14] = 0;
     return Float64Array.from(mat4.multiply(mat4.create(), projection, view));
   }
@@ -363,6 +499,78 @@ describe('a tilted glass seen by a turned camera, every pixel against rays cast 
         if (!h.inside) continue;
         inside++;
         expect(f[3 * p]).toBeCloseTo(want, 6);
+      }
+    }
+    expect(inside).toBeGreaterThan(150);
+    expect(inside).toBeLessThan(W * H);
+  });
+
+  // A camera rolled about its axis and looking down at the glass: every entry of the view-projection is non-zero, the
+  // glass's v runs across the screen as well as down it.
+  const ROLLED = relativeVP(mat4.perspective(mat4.create(), Math.PI / 3, W / H, 0.1, 100), [0.5, 1, 0.2]);
+  const uvAt = (x: number, y: number) => {
+    const h = hit(ROLLED, x - 0.5, y - 0.5), w = [eye[0] + h.rel[0], eye[1] + h.rel[1], eye[2] + h.rel[2]];
+    return [(0.8 * w[0] - 0.6 * w[2] + 8) / 16, (w[1] + 4) / 8];
+  };
+
+  it("rolled: the texture is read at each pixel's UV with the UV's derivatives across and down the screen", () => {
+    const g = new GlassShader(), r = rasterizer();
+    let pixel = -1;
+    const reads = new Map<number, number[]>();
+    g.texture = { sample: (a: Float64Array, out: Float64Array) => { reads.set(pixel, [...a]); out[0] = 0.5; } } as unknown as MipTexture;
+    const fragment = g.fragment.bind(g);
+    g.fragment = (p: number, rr: Rasterizer) => { pixel = p; fragment(p, rr); };
+    g.colour = new Float32Array(3 * W * H);
+    g.reflection = new Float32Array(3 * W * H);
+    g.mask = new Uint8Array(W * H);
+    g.setup(TILTED, eye, ROLLED, [0, 0, 0, 1]);
+    g.draw(r, GLASS_INDICES);
+    let checked = 0;
+    for (let j = 0; j < H; j++) {
+      for (let i = 0; i < W; i++) {
+        if (!hit(ROLLED, i, j).inside) continue;
+        const got = reads.get(j * W + i);
+        expect(got, `${i},${j}`).toBeDefined();
+        const x = i + 0.5, y = j + 0.5, d = 1e-3;
+        const uv = uvAt(x, y), px = uvAt(x + d, y), mx = uvAt(x - d, y), py = uvAt(x, y + d), my = uvAt(x, y - d);
+        const want = [uv[0], uv[1], (px[0] - mx[0]) / (2 * d), (px[1] - mx[1]) / (2 * d), (py[0] - my[0]) / (2 * d), (py[1] - my[1]) / (2 * d)];
+        // The corners snap to 1/256 px: UV within 3e-4 (a 64th of a pixel's step), the derivatives within 2 %.
+        for (let k = 0; k < 2; k++) expect(Math.abs(got![k] - want[k]), `${i},${j} ${k}`).toBeLessThan(3e-4);
+        for (let k = 2; k < 6; k++) expect(Math.abs(got![k] - want[k]), `${i},${j} ${k}`).toBeLessThan(0.02 * Math.abs(want[k]) + 1e-5);
+        checked++;
+      }
+    }
+    expect(checked).toBeGreaterThan(150);
+    expect(Math.min(...[2, 3, 4, 5].map((k) => Math.max(...[...reads.values()].map((a) => Math.abs(a[k])))))).toBeGreaterThan(0.005);
+  });
+
+  it('rolled: the footprint where the rays meet the rectangle, at the depth of the plane there', () => {
+    const mask = draw(ROLLED, [0, 0, 0, 1], 'mask').mask;
+    const depthAt = (rel: number[]) => {
+      const v = ROLLED, c = [2, 3].map((k) => v[k] * rel[0] + v[4 + k] * rel[1] + v[8 + k] * rel[2] + v[12 + k]);
+      return c[0] / c[1];
+    };
+    // A surface 1e-4 in front of the glass at every pixel hides it; one 1e-4 behind it does not.
+    const drawn = (offset: number) => {
+      const g = new GlassShader(), r = rasterizer();
+      g.mode = 'fresnel';
+      g.colour = new Float32Array(3 * W * H).fill(-1);
+      g.setup(TILTED, eye, ROLLED, [0, 0, 0, 1]);
+      for (let j = 0; j < H; j++) for (let i = 0; i < W; i++) r.depth[j * W + i] = depthAt(hit(ROLLED, i, j).rel) + offset;
+      g.draw(r, GLASS_INDICES);
+      return g.colour;
+    };
+    const front = drawn(-1e-4), behind = drawn(1e-4);
+    let inside = 0;
+    for (let j = 0; j < H; j++) {
+      for (let i = 0; i < W; i++) {
+        const h = hit(ROLLED, i, j), p = j * W + i;
+        if (!h.inside && mask[p] === 1) continue;
+        expect(mask[p], `${i},${j}`).toBe(h.inside ? 1 : 0);
+        if (!h.inside) continue;
+        inside++;
+        expect(front[3 * p], `${i},${j}`).toBe(-1);
+        expect(behind[3 * p], `${i},${j}`).toBeGreaterThan(0);
       }
     }
     expect(inside).toBeGreaterThan(150);
