@@ -37,9 +37,12 @@ export class GlassShader implements FragmentShader {
   private readonly rr = new Float64Array(3);
   private readonly rb = new Float64Array(3);
   /** Whether this pixel's R̃ / B̃ were gathered (else its samples keep their own R / B). */
+  // Stryker disable next-line BooleanLiteral: fragment() sets it before composeRough() reads it (a rough glass is never cached)
   private hasR = false;
+  // Stryker disable next-line BooleanLiteral: fragment() sets it before composeRough() reads it (a rough glass is never cached)
   private hasB = false;
   /** The frame's view vector (FrameSetup.viewVectorMain): w = 0, orthographic, xyz toward the eye. */
+  // Stryker disable next-line ArrayDeclaration: setup() sets it before draw() reads it
   private view: ArrayLike<number> = [0, 0, 0, 1];
   /** The glass's unit normal. */
   private nx = 0;
@@ -53,6 +56,7 @@ export class GlassShader implements FragmentShader {
   /** F and the texel per pixel from the frames before (the camera and glass still); this frame's key. */
   private readonly cache = new GlassCache();
   private readonly key = new Float64Array(GLASS_KEY_LENGTH);
+  // Stryker disable next-line ArrayDeclaration: beginCache() empties it before filling it
   private readonly keyObjects: unknown[] = [];
 
   /**
@@ -83,6 +87,7 @@ export class GlassShader implements FragmentShader {
     r.userClip = false;
     r.cull = 'none';
     r.derivatives = this.mode === 'compose';
+    // Stryker disable next-line ConditionalExpression,EqualityOperator,StringLiteral: on in 'mask' only computes b for a fragment that reads none; off, fragment() calls perspective() itself before reading b
     r.barycentrics = this.mode !== 'mask';
     r.depthTest = true;
     r.depthWrite = false;
