@@ -258,6 +258,24 @@ describe('the frame-to-frame cache: a frame shades as a fresh shader would', () 
     }
   }
 
+  for (const [w, h] of [[2 * W, H], [W, 2 * H]]) {
+    it(`a rasterizer of another width or height alone starts again (${w}×${h} and ${W}×${H}, either first)`, () => {
+      const draw = (s: GlassShader, width: number, height: number) => {
+        const r = new Rasterizer(width, height);
+        r.clearDepth();
+        apply(s, base, width * height);
+        s.draw(r, GLASS_INDICES);
+        return [...s.colour];
+      };
+      for (const [[w0, h0], [w1, h1]] of [[[W, H], [w, h]], [[w, h], [W, H]]]) {
+        const g = new GlassShader();
+        draw(g, w0, h0);
+        draw(g, w0, h0);
+        expect(draw(g, w1, h1)).toEqual(draw(new GlassShader(), w1, h1));
+      }
+    });
+  }
+
   it('a rasterizer of another size starts again', () => {
     const g = new GlassShader();
     let r = rasterizer();
@@ -513,7 +531,9 @@ describe('a tilted glass seen by a turned camera, every pixel against rays cast 
     return [(0.8 * w[0] - 0.6 * w[2] + 8) / 16, (w[1] + 4) / 8];
   };
 
-  it("rolled: the texture is read at each pixel's UV with the UV's derivatives across and down the screen", () => {
+  // The same rectangle with its corners in the other order (u from the far side): its triangles wind the other way.
+  const FLIPPED: GlassFrame = { ...TILTED, corners: [TILTED.corners[1], TILTED.corners[0], TILTED.corners[3], TILTED.corners[2]] };
+  for (const [name, glassFrame, flip] of [['', TILTED, false], [', its corners in the other order', FLIPPED, true]] as const) it(`rolled${name}: the texture is read at each pixel's UV with the UV's derivatives across and down the screen`, () => {
     const g = new GlassShader(), r = rasterizer();
     let pixel = -1;
     const reads = new Map<number, number[]>();
@@ -523,7 +543,7 @@ describe('a tilted glass seen by a turned camera, every pixel against rays cast 
     g.colour = new Float32Array(3 * W * H);
     g.reflection = new Float32Array(3 * W * H);
     g.mask = new Uint8Array(W * H);
-    g.setup(TILTED, eye, ROLLED, [0, 0, 0, 1]);
+    g.setup(glassFrame, eye, ROLLED, [0, 0, 0, 1]);
     g.draw(r, GLASS_INDICES);
     let checked = 0;
     for (let j = 0; j < H; j++) {
@@ -534,6 +554,7 @@ describe('a tilted glass seen by a turned camera, every pixel against rays cast 
         const x = i + 0.5, y = j + 0.5, d = 1e-3;
         const uv = uvAt(x, y), px = uvAt(x + d, y), mx = uvAt(x - d, y), py = uvAt(x, y + d), my = uvAt(x, y - d);
         const want = [uv[0], uv[1], (px[0] - mx[0]) / (2 * d), (px[1] - mx[1]) / (2 * d), (py[0] - my[0]) / (2 * d), (py[1] - my[1]) / (2 * d)];
+        if (flip) [0, 2, 4].forEach((k) => (want[k] = k === 0 ? 1 - want[0] : -want[k]));
         // The corners snap to 1/256 px: UV within 3e-4 (a 64th of a pixel's step), the derivatives within 2 %.
         for (let k = 0; k < 2; k++) expect(Math.abs(got![k] - want[k]), `${i},${j} ${k}`).toBeLessThan(3e-4);
         for (let k = 2; k < 6; k++) expect(Math.abs(got![k] - want[k]), `${i},${j} ${k}`).toBeLessThan(0.02 * Math.abs(want[k]) + 1e-5);
