@@ -66,6 +66,7 @@ export class SoftwareRenderer {
   private output = new Uint8ClampedArray(0);
   /** Each image's texture, built once per colour space it is drawn in. */
   private readonly images: Record<ColorSpace, WeakMap<DecodedImage, MipTexture | null>> = { srgb: new WeakMap(), none: new WeakMap() };
+  // Stryker disable StringLiteral,ArrayDeclaration,ObjectLiteral,BooleanLiteral: first values, each set before it is read (space, transparent, the glass's texture by prepare(), every field of draw by drawObjects()); options {} has no samplesPerAxis either
   /** The frame's colour space, and the background in it (decoded with 'srgb'). */
   private space: ColorSpace = 'none';
   private readonly background = new Float64Array(3);
@@ -95,15 +96,15 @@ export class SoftwareRenderer {
 
   constructor(options: SoftwareRendererOptions = {}) {
     this.samplesPerAxis = options.samplesPerAxis ?? 1;
-    const procedural = proceduralMipTexture('none');
-    this.glassShader.texture = procedural;
+    this.glassShader.texture = proceduralMipTexture('none');
     this.draw = {
       mesh: { positions: new Float32Array(0), normals: new Float32Array(0), uvs: new Float32Array(0), indices: new Uint16Array(0) },
       model: new Float64Array(16), normal: new Float64Array(9), eye: [0, 0, 0], view: [0, 0, 0, 1], viewProjection: new Float64Array(16),
       clipPlane: null, material: undefined as unknown as ObjectDraw['material'], bounds: { center: [0, 0, 0], radius: 1 },
-      texture: procedural, twoSided: false, shading: 'phong', lights: this.lightsMain, cache: null, index: 0,
+      texture: this.glassShader.texture, twoSided: false, shading: 'phong', lights: this.lightsMain, cache: null, index: 0,
     };
   }
+  // Stryker restore StringLiteral,ArrayDeclaration,ObjectLiteral,BooleanLiteral
 
   /** Whether `band` is drawn as a band for this state (else the whole frame is: rough glass, the `passes` view). */
   drawsBands(state: FrameState): boolean {
