@@ -1,7 +1,9 @@
 // The software glass shader (src/software/glass-shader.ts) beyond software-glass.test.ts's uniform colours: what draw()
 // sets on the rasterizer and restores, the footprint (mask mode), the texture read through the glass's UV and its
 // screen derivatives, an orthographic view vector, the clamps, rough glass's gathered R̃ and B̃ (a stand-in gather),
-// multisampling, and the frame-to-frame cache (a frame after a change shades as a fresh shader does).
+// multisampling, and the frame-to-frame cache (a frame after a change shades as a fresh shader does; the texture reads it
+// saves, counted, and each number of its key alone), the glass equation at F between 0 and 1 for each model, and a
+// rolled camera's UV, derivatives and depth against rays cast here.
 import { describe, expect, it } from 'vitest';
 import { mat4 } from 'gl-matrix';
 import { GlassShader, GLASS_INDICES, GLASS_TIE_BIAS, type GlassMode } from '../../src/software/glass-shader';
