@@ -117,17 +117,8 @@ export async function glLimits(page: Page): Promise<GlLimits> {
   });
 }
 
-/** mulberry32: a small seeded PRNG, so the fuzz is the same sequence on every run. */
-export function mulberry32(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+/** mulberry32: a small seeded PRNG, so the fuzz is the same sequence on every run (the unit tests' own, tests/unit/helpers/seeded.ts). */
+export { seeded as mulberry32 } from '../../unit/helpers/seeded';
 
 /** STABILITY_DEBUG=1: print the measured figures and keep the frames (tests/e2e/__output__/stability/). */
 export const DEBUG = process.env.STABILITY_DEBUG === '1';
