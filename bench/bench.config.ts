@@ -3,7 +3,9 @@
 // configuration for two frames (part of `npm test`, so the bench cannot rot).
 import { defineConfig } from '@playwright/test';
 
-const PORT = Number(process.env.BENCH_PORT ?? 5184);
+// The smoke run (in `npm test`) serves on a port of its own, so that `npm test` and a full `npm run bench` run side by side
+// (each its own Vite; with one port the second to start found it taken and failed).
+const PORT = Number(process.env.BENCH_PORT ?? (process.env.BENCH_SMOKE ? 5185 : 5184));
 
 export default defineConfig({
   testDir: '.',
