@@ -45,10 +45,23 @@ export class MicrofacetSamples {
 }
 
 /** A 32-bit integer hash (lowbias32, Wellons), as an unsigned number. */
-function hash(x: number): number {
+export function hash(x: number): number {
   x = (x ^ (x >>> 16)) >>> 0;
   x = Math.imul(x, 0x7feb352d) >>> 0;
   x = (x ^ (x >>> 15)) >>> 0;
   x = Math.imul(x, 0x846ca68b) >>> 0;
   return (x ^ (x >>> 16)) >>> 0;
+}
+
+/** A counter-based stream of numbers in [0, 1): the k-th after `restart(key)` is hash(hash(key) + k), so every frame is the same frame. */
+export class HashStream {
+  private seed = 0;
+  private counter = 0;
+
+  restart(key: number): void {
+    this.seed = hash(key >>> 0);
+    this.counter = 0;
+  }
+
+  readonly next = (): number => hash((this.seed + this.counter++) >>> 0) / 4294967296;
 }

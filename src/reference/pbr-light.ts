@@ -62,7 +62,9 @@ export function environmentLight(m: PbrPoint, n: ArrayLike<number>, v: ArrayLike
   const toSurface = new Float64Array([-v[0], -v[1], -v[2]]);
   const sum = new Float64Array(3), sum2 = new Float64Array(3);
   for (let k = 0; k < count; k++) {
-    const pick = random(), u1 = random(), u2 = random();
+    // The way is picked stratified over the samples ((k + ξ)/count), so each way draws its share of them to within one: unbiased
+    // still (the mean over k of a pick uniform in its stratum is a pick uniform in [0, 1)), without the noise of how many each drew.
+    const pick = (k + random()) / count, u1 = random(), u2 = random();
     // Stryker disable next-line EqualityOperator: pick exactly at a share's end is one number in 2⁵³
     const way = pick < cSpec ? 0 : pick < cSpec + cDiff ? 1 : 2;
     if (way === 0) {

@@ -9,7 +9,8 @@ import type { SurfaceCodes } from './surface-codes';
 import { linearToSrgb } from '../math/srgb';
 import { toneMap } from '../math/tone-map';
 import { colourCeiling } from './reference-state';
-import { MicrofacetSamples } from './microfacet-samples';
+import { HashStream, MicrofacetSamples } from './microfacet-samples';
+import { STUDIO_LIGHT } from './pbr-light';
 
 export interface ReferenceOptions {
   /**
@@ -32,7 +33,15 @@ export interface ReferenceOptions {
    * state's roughness is 0.
    */
   microfacetSamples?: number;
+  /**
+   * Light from the scene's environment on glTF materials (docs/pbr.md#the-reference): directions per pixel for its Monte Carlo,
+   * rounded up to a whole number per sample (each shading in that sample draws them). Default 256. Unused without an environment.
+   */
+  environmentSamples?: number;
 }
+
+/** The default of ReferenceOptions.environmentSamples. */
+export const DEFAULT_ENVIRONMENT_SAMPLES = 256;
 
 /**
  * The default of docs/rough-glass.md#reference-monte-carlo. Measured on the bench's rough floor (cube on the glass, sphere 1.5 above,
@@ -72,6 +81,8 @@ export interface ReferenceImage {
   codes?: SurfaceCodes;
   /** Microfacet normals averaged per pixel for rough glass (docs/rough-glass.md#reference-monte-carlo); 0 when the glass is polished. */
   microfacetSamples?: number;
+  /** Environment directions per pixel (docs/pbr.md#the-reference); 0 without an environment. */
+  environmentSamples?: number;
 }
 
 /**
@@ -104,6 +115,10 @@ export function renderScene(scene: Scene, state: ViewState, images?: SceneImages
   const perSample = rough ? Math.max(1, Math.ceil((options.microfacetSamples ?? DEFAULT_MICROFACET_SAMPLES) / (n * n))) : 0;
   const facets = rough ? new MicrofacetSamples(perSample * n * n) : null;
   tracer.microfacets = facets ? { xi1: facets.xi1, xi2: facets.xi2, first: 0, count: perSample } : null;
+  // docs/pbr.md#the-reference: each sample's shadings draw `envSamples` directions from a stream keyed by pixel and sample.
+  const env = scene.environment ?? null, stream = new HashStream();
+  const envSamples = env ? Math.max(1, Math.ceil((options.environmentSamples ?? DEFAULT_ENVIRONMENT_SAMPLES) / (n * n))) : 0;
+  tracer.environment = env ? { light: STUDIO_LIGHT, intensity: env.intensity, samples: envSamples, random: stream.next } : null;
   const codes = tracer.scene.codes;
   const rgb = new Float64Array(width * height * 3);
   const rgba = new Uint8ClampedArray(width * height * 4);
@@ -132,6 +147,7 @@ export function renderScene(scene: Scene, state: ViewState, images?: SceneImages
         for (let sx = 0; sx < n; sx++) {
           const x = (px + (sx + 0.5) / n) * (2 / width) - 1;
           if (tracer.microfacets) tracer.microfacets.first = (sy * n + sx) * perSample;
+          stream.restart((i * n + sy) * n + sx);
           const key = tracer.sample(x, y, fx, fy, colour);
           if (sx === 0 && sy === 0) first = key;
           else if (key !== first) mixed[i] = 1;
@@ -154,6 +170,6 @@ export function renderScene(scene: Scene, state: ViewState, images?: SceneImages
   return {
     width, height, view: state.view, samplesPerAxis: n, textureFilter,
     rgba, rgb, regions: regionMap(keys, mixed, width, height, regionOfCodes(scene, codes)), keys, codes,
-    microfacetSamples: perSample * n * n,
+    microfacetSamples: perSample * n * n, environmentSamples: envSamples * n * n,
   };
 }

@@ -10,7 +10,7 @@ import { ViewCamera } from './view-camera';
 import { Ray } from './ray';
 import { RayScene } from './ray-scene';
 import { colourCeiling, type ViewState } from './reference-state';
-import { clamp01, clampTo, composeGlass, glassFresnel, prepareLight, shadeObject, shadePbr, type PreparedLight } from './shade';
+import { clamp01, clampTo, composeGlass, glassFresnel, prepareLight, shadeObject, shadePbr, type EnvironmentShading, type PreparedLight } from './shade';
 import type { SurfaceCodes } from './surface-codes';
 import { SurfaceHit, SURFACE_NONE } from './surface-hit';
 import { Layer } from './layer';
@@ -29,7 +29,6 @@ const TIE = 1e-9;
 
 /** Surfaces one ray passes through at most: the last one is taken as opaque. */
 export const MAX_LAYERS = 16;
-
 
 /**
  * Traces samples of one frame. A sample returns its colour and a key naming what it saw:
@@ -74,6 +73,7 @@ export class SampleTracer {
    * count), set by the renderer before each sample (renderScene's MicrofacetSamples).
    */
   microfacets: Microfacets | null = null;
+  environment: EnvironmentShading | null = null; // the scene's, its stream restarted before each sample (renderScene)
   private readonly rough = new RoughGlass();
   /** What a colour is held to: 1 as an 8-bit target, Infinity in a tone-mapped frame (colourCeiling). */
   private readonly top: number;
@@ -291,7 +291,7 @@ export class SampleTracer {
   private shade(hit: SurfaceHit, ray: Ray, eye: Float64Array, layer: Layer, out: Float64Array): void {
     const object = this.scene.scene.objects[hit.object], m = object.material, view = this.camera.orthographic ? this.towardsViewer(ray) : null;
     const tex = this.texture.objectTexture(hit, ray, m, object.bounds, layer.tex);
-    if (m.pbr) shadePbr(hit, m.pbr, m.emissive, tex, this.lights, eye, out, view);
+    if (m.pbr) shadePbr(hit, m.pbr, m.emissive, tex, this.lights, eye, out, view, this.environment);
     else shadeObject(hit, m, tex, this.lights, eye, out, view);
     out[0] = clampTo(out[0], this.top); out[1] = clampTo(out[1], this.top); out[2] = clampTo(out[2], this.top);
   }

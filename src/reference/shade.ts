@@ -5,6 +5,17 @@ import type { PbrMaterial } from '../scene/pbr-material';
 import { GLASS_BODY as BODY } from '../scene/default-scene';
 import type { Light, Material, Vec3 } from '../scene/scene';
 import type { SurfaceHit } from './surface-hit';
+import { environmentLight, type EnvironmentLight } from './pbr-light';
+import { ggxAlpha } from '../math/ggx';
+
+/** An environment as the reference lights glTF materials with it (docs/pbr.md#the-reference): its light times `intensity`, `samples` per shading. */
+export interface EnvironmentShading {
+  light: EnvironmentLight;
+  intensity: number;
+  samples: number;
+  /** Numbers in [0, 1): the sample's own seeded stream. */
+  random: () => number;
+}
 
 // Stryker disable next-line EqualityOperator: at 0 and at 1 the clamp returns x itself either way
 export const clamp01 = (x: number): number => (x < 0 ? 0 : x > 1 ? 1 : x);
@@ -102,23 +113,29 @@ const brdf = new Float64Array(3);
  * A glTF material (docs/pbr.md#the-scenes-lights): out = Σ over lights of Ia⊙c_diff + π·f(l, v)⊙Id·max(N·L, 0), with
  * f the glTF BRDF at α = punctualAlpha(roughness), the base colour times `tex` (so the texture sets a
  * metal's F0 too), c_diff = base·(1 − metallic), V as shadeObject's (unlit: the base colour times `tex`);
+ * plus, under an environment, its light integrated by Monte Carlo at α = roughness² (docs/pbr.md#the-reference);
  * plus the material's emissive (which the element does not give an unlit material).
  */
 export function shadePbr(
   hit: SurfaceHit, pbr: PbrMaterial, emissive: Vec3 | undefined, tex: Float64Array, lights: readonly PreparedLight[],
-  eye: Float64Array, out: Float64Array, towardsViewer: Float64Array | null = null,
+  eye: Float64Array, out: Float64Array, towardsViewer: Float64Array | null = null, environment: EnvironmentShading | null = null,
 ): Float64Array {
   const base = pbrPoint.baseColor;
   // Stryker disable next-line EqualityOperator: k = 3 writes base[3], past the end of its 3 elements: dropped
   for (let k = 0; k < 3; k++) base[k] = pbr.baseColor[k] * tex[k];
   if (pbr.unlit) out.set(base);
-  else litPbr(hit, pbr, lights, eye, out, towardsViewer);
+  else litPbr(hit, pbr, lights, eye, out, towardsViewer, environment);
   // Stryker disable next-line EqualityOperator: k = 3 writes out[3], past the end of its 3 elements: dropped
   if (emissive !== undefined) for (let k = 0; k < 3; k++) out[k] += emissive[k];
   return out;
 }
 
-function litPbr(hit: SurfaceHit, pbr: PbrMaterial, lights: readonly PreparedLight[], eye: Float64Array, out: Float64Array, towardsViewer: Float64Array | null): void {
+const view = new Float64Array(3);
+
+function litPbr(
+  hit: SurfaceHit, pbr: PbrMaterial, lights: readonly PreparedLight[], eye: Float64Array, out: Float64Array, towardsViewer: Float64Array | null,
+  environment: EnvironmentShading | null,
+): void {
   const base = pbrPoint.baseColor;
   const n = hit.n, p = hit.p;
   let vx: number, vy: number, vz: number;
@@ -149,6 +166,12 @@ function litPbr(hit: SurfaceHit, pbr: PbrMaterial, lights: readonly PreparedLigh
     // Stryker disable next-line EqualityOperator: k = 3 writes out[3], past the end of its 3 elements: dropped
     for (let k = 0; k < 3; k++) out[k] += light.ambient[k] * base[k] * dielectric + m * light.diffuse[k] * brdf[k];
   }
+  if (environment === null) return;
+  view[0] = vx; view[1] = vy; view[2] = vz;
+  pbrPoint.alpha = ggxAlpha(pbr.roughness);
+  const { mean } = environmentLight(pbrPoint, n, view, environment.light, environment.samples, environment.random);
+  // Stryker disable next-line EqualityOperator: k = 3 writes out[3], past the end of its 3 elements: dropped
+  for (let k = 0; k < 3; k++) out[k] += environment.intensity * mean[k];
 }
 
 /** F for a glass hit seen along `direction`: cosθ = |N·V| clamped to [0, 1], as glass.frag does. */

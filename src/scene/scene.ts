@@ -95,6 +95,15 @@ export interface Glass {
   size: readonly [number, number];
 }
 
+/**
+ * Light from every direction (docs/pbr.md#the-environment), which lights glTF materials only: `studio` is the neutral studio of
+ * math/studio.ts, its radiance times `intensity`.
+ */
+export interface Environment {
+  kind: 'studio';
+  intensity: number;
+}
+
 export interface Scene {
   /** Null: no glass, hence no glass pass and no reflection pass (a plain model viewer). */
   glass: Glass | null;
@@ -103,6 +112,8 @@ export interface Scene {
   lights: readonly Light[];
   /** Clear colour, also of the reflection. */
   background: Vec3;
+  /** Absent or null: none; glTF materials see only the lights. */
+  environment?: Environment | null;
 }
 
 /** Whether a scene has a glTF material (docs/pbr.md#the-scenes-lights). Reads; allocates nothing (asked every frame). */

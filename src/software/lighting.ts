@@ -2,6 +2,7 @@
 // light Ka⊙Ia + Kd⊙Id·max(N·L, 0) into `a` (which the texture multiplies) and
 // Ks⊙Is·max(N·H, 0)^n into `s` where N·L > 0. Positions are relative to the eye drawn from.
 import { gltfBrdf, punctualAlpha, type PbrPoint } from '../math/pbr';
+import { preparedFor, type PreparedEnvironment } from '../frame/environment-cache';
 import type { PbrMaterial } from '../scene/pbr-material';
 import { MAX_LIGHTS, type Material, type Scene } from '../scene/scene';
 
@@ -13,6 +14,9 @@ export class Lights {
   readonly ambient = new Float64Array(3 * MAX_LIGHTS);
   readonly diffuse = new Float64Array(3 * MAX_LIGHTS);
   readonly specular = new Float64Array(3 * MAX_LIGHTS);
+  /** The scene's environment made ready (frame/environment-cache.ts), and its intensity; null without one or before it is ready. */
+  environment: PreparedEnvironment | null = null;
+  intensity = 0;
 
   /**
    * The scene's lights (up to MAX_LIGHTS) as seen from `eye`; `world` holds each light's vector
@@ -21,6 +25,9 @@ export class Lights {
   set(scene: Scene, world: ArrayLike<number>, eye: ArrayLike<number>): void {
     const n = Math.min(scene.lights.length, MAX_LIGHTS);
     this.count = n;
+    const env = scene.environment ?? null;
+    this.environment = env === null ? null : preparedFor(env);
+    this.intensity = env === null ? 0 : env.intensity;
     for (let i = 0; i < n; i++) {
       const l = scene.lights[i];
       let x = world[3 * i], y = world[3 * i + 1], z = world[3 * i + 2];
@@ -88,12 +95,13 @@ export function blinnPhong(lights: Lights, m: Material, twoSided: boolean, g: Fl
 }
 
 const point: PbrPoint & { baseColor: Float64Array } = { baseColor: new Float64Array(3), metallic: 0, alpha: 0 };
-const brdf = new Float64Array(3);
+const brdf = new Float64Array(3), normal = new Float64Array(3), toViewer = new Float64Array(3), sum = new Float64Array(3);
 
 /**
  * A metallic-roughness surface under the scene's lights (docs/pbr.md#the-scenes-lights), into out[0..2], for g as
  * blinnPhong's and `base` the base colour times its texture: per light Ia⊙c_diff, and where N·L > 0
- * and N·V > 0, π·f(l, v)⊙Id·(N·L) with f of math/pbr.ts at α = punctualAlpha(roughness). Unlit: the base colour.
+ * and N·V > 0, π·f(l, v)⊙Id·(N·L) with f of math/pbr.ts at α = punctualAlpha(roughness); plus the environment's split sum
+ * from its maps (PreparedEnvironment.add, docs/pbr.md#prefiltered-maps). Unlit: the base colour.
  */
 export function pbrLights(lights: Lights, m: PbrMaterial, twoSided: boolean, g: Float64Array, base: ArrayLike<number>, out: Float64Array): void {
   const br = base[0], bg = base[1], bb = base[2];
@@ -126,6 +134,13 @@ export function pbrLights(lights: Lights, m: PbrMaterial, twoSided: boolean, g: 
     gltfBrdf(brdf, point, nl, nv, (nx * hx + ny * hy + nz * hz) / hl, (vx * hx + vy * hy + vz * hz) / hl);
     const k = Math.PI * nl;
     r += k * id[3 * i] * brdf[0]; gr += k * id[3 * i + 1] * brdf[1]; b += k * id[3 * i + 2] * brdf[2];
+  }
+  const env = lights.environment;
+  if (env !== null) {
+    normal[0] = nx; normal[1] = ny; normal[2] = nz; toViewer[0] = vx; toViewer[1] = vy; toViewer[2] = vz;
+    sum[0] = r; sum[1] = gr; sum[2] = b;
+    env.add(sum, lights.intensity, point.baseColor, metallic, m.roughness, normal, toViewer);
+    r = sum[0]; gr = sum[1]; b = sum[2];
   }
   out[0] = r; out[1] = gr; out[2] = b;
 }

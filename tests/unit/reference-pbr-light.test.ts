@@ -84,21 +84,39 @@ describe('under a uniform sky of radiance 1', () => {
     expect(Math.abs(a.mean[0] - b.mean[0])).toBeLessThan(4 * Math.hypot(a.error[0], b.error[0]));
   });
 
-  it('averages its samples: two samples are the mean of the two one-sample estimates drawn from the same numbers', () => {
+  it('averages its samples: two samples are the mean of the two one-sample estimates drawn from the same numbers, each way picked in its half', () => {
     const m = { baseColor: [0.9, 0.6, 0.3], metallic: 0.3, alpha: 0.25 };
     const stream = seeded(10), numbers = Array.from({ length: 64 }, stream);
     let at = 0;
     const replay = () => numbers[at++];
     const two = environmentLight(m, UP, [0.6, 0.8, 0], STUDIO_LIGHT, 2, replay);
-    at = 0;
-    const first = environmentLight(m, UP, [0.6, 0.8, 0], STUDIO_LIGHT, 1, replay);
-    const second = environmentLight(m, UP, [0.6, 0.8, 0], STUDIO_LIGHT, 1, replay);
+    // Of two samples, sample k picks its way at (k + ξ)/2, ξ its first number: the one-sample estimates are given that pick.
+    let start = 0, k = 0;
+    const onePick = () => (at === start ? (k + numbers[at++]) / 2 : numbers[at++]);
+    at = start = 0;
+    const first = environmentLight(m, UP, [0.6, 0.8, 0], STUDIO_LIGHT, 1, onePick);
+    start = at; k = 1;
+    const second = environmentLight(m, UP, [0.6, 0.8, 0], STUDIO_LIGHT, 1, onePick);
     for (let c = 0; c < 3; c++) {
       expect(two.mean[c]).toBeCloseTo((first.mean[c] + second.mean[c]) / 2, 14);
       // Two samples x₁, x₂: variance ((x₁ − x₂)/2)², standard error √(variance/2) = |x₁ − x₂| / (2√2).
       expect(two.error[c]).toBeCloseTo(Math.abs(first.mean[c] - second.mean[c]) / (2 * Math.SQRT2), 14);
     }
     expect(first.mean[0]).not.toBe(second.mean[0]);
+  });
+
+  it('picks its ways stratified: of 100 samples, the lights draw exactly their half', () => {
+    // Every number ½: sample k picks at (k + ½)/100, and the lights' share is the last half, [½, 1): k = 50 … 99.
+    // (Picking at the number itself, every sample would pick ½ and draw from the lights: 100.)
+    const m = { baseColor: [1, 1, 1], metallic: 1, alpha: 0.25 };
+    expect(strategyShares(m, true)[2]).toBe(0.5);
+    let draws = 0;
+    const counting: EnvironmentLight = {
+      radiance: (o) => { o[0] = o[1] = o[2] = 1; },
+      lights: { draw: (o) => { draws++; o[0] = 0; o[1] = 1; o[2] = 0; }, density: () => 1 },
+    };
+    environmentLight(m, UP, UP, counting, 100, () => 0.5);
+    expect(draws).toBe(50);
   });
 
   it('returns nothing for a surface seen from behind, or without samples', () => {

@@ -1,0 +1,27 @@
+// The environments made ready on this page (or in this worker), by kind (docs/pbr.md#prefiltered-maps): what a renderer reads when
+// it lights a glTF material from the scene's environment. Filled by frame/environment-light.ts (the maker, loaded only by a
+// scene with an environment); a renderer that finds nothing here draws without the environment.
+import type { EnvironmentMaps } from '../math/environment-maps';
+import type { Environment } from '../scene/scene';
+
+export interface PreparedEnvironment {
+  maps: EnvironmentMaps;
+  /** dfgTable() of math/dfg.ts: (A, B) by n·v and roughness. */
+  dfg: Float32Array;
+  /**
+   * out += intensity × the split sum from these maps and table (addEnvironment of math/environment-maps.ts), for a surface of linear
+   * `base`, `metallic`, `roughness`, unit normal n and unit v toward the viewer. It comes with the maps, so that a renderer's own
+   * code holds none of it (a CPU renderer without an environment loads none).
+   */
+  add(out: Float64Array, intensity: number, base: ArrayLike<number>, metallic: number, roughness: number, n: ArrayLike<number>, v: ArrayLike<number>): void;
+}
+
+const prepared = new Map<Environment['kind'], PreparedEnvironment>();
+
+/** The maps and table of `environment`'s kind if they were made here, else null. Reads; allocates nothing. */
+export const preparedFor = (environment: Environment): PreparedEnvironment | null => prepared.get(environment.kind) ?? null;
+
+/** Keeps what was made for `environment`'s kind, for every renderer after. */
+export function keepPrepared(environment: Environment, value: PreparedEnvironment): void {
+  prepared.set(environment.kind, value);
+}
