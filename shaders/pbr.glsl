@@ -44,5 +44,8 @@ vec3 pbrLights(vec3 n, vec3 v, vec3 relPos, vec3 base) {
 #if LIGHT_COUNT > 3
   ADD_PBR_LIGHT(3, LIGHT3_POINT);
 #endif
+#ifdef ENVIRONMENT
+  c += environmentLight(n, v, base, uPbr.x, uPbr.y);
+#endif
   return c;
 }

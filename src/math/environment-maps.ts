@@ -4,7 +4,6 @@
 // Read here: a bilinear lookup in each of the two levels about a roughness, mixed; and the split sum from them.
 // Tied down by tests/unit/environment-maps.test.ts (the read worked by hand, the split sum in a furnace and against splitSum()).
 import { dfgLookup } from './dfg';
-import { DIELECTRIC_F0 } from './pbr';
 import { dominantDirection } from './split-sum';
 
 /** One equirectangular map: `width` = 2·`height` texels, RGB, row 0 at the zenith (+y), column 0 at azimuth −π (φ = atan2(x, z)). */
@@ -75,7 +74,8 @@ export function addEnvironment(
   prefilteredAt(diff, maps, n[0], n[1], n[2], 1);
   dfgLookup(ab, table, nv, roughness);
   for (let c = 0; c < 3; c++) {
-    const f0 = DIELECTRIC_F0 * (1 - metallic) + base[c] * metallic;
+    // 0.04: a dielectric's F0 (DIELECTRIC_F0 of math/pbr.ts, not imported: this file goes into WebGL's environment chunk alone).
+    const f0 = 0.04 * (1 - metallic) + base[c] * metallic;
     out[c] += intensity * (spec[c] * (f0 * ab[0] + ab[1]) + base[c] * (1 - metallic) * (1 - f0) * diff[c]);
   }
 }

@@ -1,6 +1,6 @@
-// Rough glass (docs/rough-glass.md#ggx-microfacets): GGX microfacet normals and the directions a view ray takes off one —
-// reflected about it, or refracted through it into thin glass and out of a smooth face parallel
-// to the plane. Shared by the float64 reference and the renderers' approximations: tied down by
+// Rough glass (docs/rough-glass.md#ggx-microfacets): GGX's width and density, and the direction a view ray takes off a microfacet
+// refracted through it into thin glass and out of a smooth face parallel to the plane (drawing a microfacet normal and
+// reflecting about it: ggx-sample.ts). Shared by the float64 reference and the renderers' approximations: tied down by
 // tests/unit/ggx.test.ts (the sampled density against D(m)·cosθm integrated by quadrature,
 // Snell's law worked by hand).
 
@@ -20,38 +20,6 @@ export function ggxD(alpha: number, cosTheta: number): number {
   const c2 = cosTheta * cosTheta, t2 = (1 - c2) / c2, a2 = alpha * alpha;
   const s = a2 + t2;
   return a2 / (Math.PI * c2 * c2 * s * s);
-}
-
-/**
- * out = the microfacet normal for (ξ1, ξ2) ∈ [0, 1)², drawn with density D(m)·cosθm about the
- * unit normal `n` (the viewer's side): θm = atan(α·√(ξ1/(1 − ξ1))), φm = 2π·ξ2, measured from
- * a tangent frame of `n` (any orthonormal one: the density is symmetric about `n`).
- */
-export function ggxNormal(out: Out3, alpha: number, xi1: number, xi2: number, n: In3): Out3 {
-  const tan = alpha * Math.sqrt(xi1 / (1 - xi1));
-  const cos = 1 / Math.sqrt(1 + tan * tan), sin = tan * cos;
-  const phi = 2 * Math.PI * xi2;
-  const cx = sin * Math.cos(phi), cy = sin * Math.sin(phi);
-  // Tangent frame (Duff et al. 2017, "Building an orthonormal basis, revisited").
-  const nx = n[0], ny = n[1], nz = n[2];
-  // Stryker disable next-line EqualityOperator: at nz = 0 either sign gives an orthonormal frame (any one will do)
-  const sign = nz >= 0 ? 1 : -1;
-  const a = -1 / (sign + nz), b = nx * ny * a;
-  const tx = 1 + sign * nx * nx * a, ty = sign * b, tz = -sign * nx;
-  const bx = b, by = sign + ny * ny * a, bz = -ny;
-  out[0] = cx * tx + cy * bx + cos * nx;
-  out[1] = cx * ty + cy * by + cos * ny;
-  out[2] = cx * tz + cy * bz + cos * nz;
-  return out;
-}
-
-/** out = d − 2(d·m)m: the unit direction `d` reflected about the unit normal `m`. `out` may alias `d`. */
-export function reflectAbout(out: Out3, d: In3, m: In3): Out3 {
-  const k = 2 * (d[0] * m[0] + d[1] * m[1] + d[2] * m[2]);
-  out[0] = d[0] - k * m[0];
-  out[1] = d[1] - k * m[1];
-  out[2] = d[2] - k * m[2];
-  return out;
 }
 
 /**

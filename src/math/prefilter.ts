@@ -3,7 +3,7 @@
 // (prefiltered() of math/split-sum.ts). Made once per environment (frame/environment-light.ts); the code only a scene with an
 // environment needs. Tied down by tests/unit/environment-maps.test.ts (widths by hand, texels against prefiltered()).
 import { hammersley } from './dfg';
-import { ggxNormal, reflectAbout } from './ggx';
+import { ggxNormal, reflectAbout } from './ggx-sample';
 import type { EnvironmentMaps, EquirectMap } from './environment-maps';
 import type { RadianceFn } from './split-sum';
 

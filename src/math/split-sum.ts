@@ -4,7 +4,7 @@
 // (reference/pbr-light.ts) measures the split sum's own error; the renderers' maps add theirs on top.
 // Tied down by tests/unit/split-sum.test.ts.
 import { dfg, hammersley } from './dfg';
-import { ggxNormal, reflectAbout } from './ggx';
+import { ggxNormal, reflectAbout } from './ggx-sample';
 import { DIELECTRIC_F0 } from './pbr';
 
 /** out = the radiance arriving from the unit direction (x, y, z), linear RGB. */

@@ -4,7 +4,8 @@
 // cosine lobe, and the environment's own bright parts when it can draw them — each sample weighted
 // by the balance heuristic, f·L·cos / Σ cᵢ·pᵢ(l), which is unbiased wherever some pᵢ covers f·L.
 // It reports its own noise: the standard error of the mean, per channel.
-import { ggxD, ggxNormal, reflectAbout } from '../math/ggx';
+import { ggxD } from '../math/ggx';
+import { ggxNormal, reflectAbout } from '../math/ggx-sample';
 import { gltfBrdf, type PbrPoint } from '../math/pbr';
 import { panelSolidAngle, samplePanel, studioPanelAt, studioRadiance, STUDIO_PANELS } from '../math/studio';
 

@@ -1,6 +1,7 @@
 // docs/rough-glass.md#reference-monte-carlo in the reference: at a glass hit, R̃ and B̃ as means over the sample's microfacet
 // normals of what arrives at P along each reflected and each transmitted direction.
-import { ggxNormal, reflectAbout, refractThin } from '../math/ggx';
+import { refractThin } from '../math/ggx';
+import { ggxNormal, reflectAbout } from '../math/ggx-sample';
 import type { Plane } from '../math/mirror';
 import { Ray } from './ray';
 import type { SurfaceHit } from './surface-hit';

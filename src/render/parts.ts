@@ -7,12 +7,14 @@ import type { FrameState } from '../frame/types';
 import { hasPbrMaterial, type Scene } from '../scene/scene';
 import type { PassContext } from './passes/pass-context';
 import type { RoughGlass } from './rough-glass';
+import type { ResourceCounter } from './gl/resource-counter';
 
 /** What the renderer's parts read and are handed to: the frame's context, and whether checks are on. */
 export interface RenderPartsHost {
   readonly ctx: PassContext;
   readonly checks: boolean;
   readonly rough: RoughGlass;
+  readonly counter: ResourceCounter;
 }
 
 type Part<T> = LazyPartSpec<RenderPartsHost, T>;
@@ -80,6 +82,17 @@ export const PBR_MATERIALS: Part<typeof import('./pbr-gl')> = {
   arrived: (h, m) => h.ctx.programs.setPbrSources(m.PBR_SOURCE, m.TONE_MAP_SOURCE),
 };
 
+/** An environment's light on glTF materials (docs/pbr.md#the-environment): its shader part, given to the program cache, and its textures. */
+export const ENVIRONMENT_LIGHT: Part<typeof import('./environment-gl')> = {
+  name: 'the environment', chunk: 'environment-gl', load: () => import('./environment-gl'),
+  needed: (h) => !!h.ctx.scene.environment && hasPbrMaterial(h.ctx.scene), holds: true,
+  instead: 'lighting glTF materials by the scene\'s lights alone',
+  arrived: (h, m) => {
+    h.ctx.programs.setEnvironmentSource(m.ENVIRONMENT_SOURCE);
+    h.ctx.environment ??= new m.EnvironmentGl(h.ctx.gl, h.counter);
+  },
+};
+
 /** debug-view reflection, fresnel and passes. */
 export const DEBUG_VIEWS: Part<typeof import('./debug-views')> = {
   name: 'debug-view', chunk: 'diagnostics', load: () => import('./debug-views'),
@@ -87,5 +100,5 @@ export const DEBUG_VIEWS: Part<typeof import('./debug-views')> = {
 };
 
 export const RENDER_PARTS: readonly Part<unknown>[] = [
-  FRAME_CHECKS, ROUGH_GLASS, COURSE_PROJECTION, ORTHOGRAPHIC_VIEW, MESH_EXTRAS, PBR_MATERIALS, DEBUG_VIEWS,
+  FRAME_CHECKS, ROUGH_GLASS, COURSE_PROJECTION, ORTHOGRAPHIC_VIEW, MESH_EXTRAS, PBR_MATERIALS, ENVIRONMENT_LIGHT, DEBUG_VIEWS,
 ];

@@ -15,6 +15,12 @@ import type { SharedResources } from './gl/shared-resources';
 
 export type ClipMode = 'none' | 'clip-distance' | 'discard';
 
+/** A lazy chunk's shader part, or the error of a program asked for before it loaded. */
+function loaded(source: string | null, whose: string): string {
+  if (source === null) throw new Error(`glass-plane-scene: ${whose} program was asked for before its chunk loaded`);
+  return source;
+}
+
 /** The tone-mapped encodes' names (built once: no string is made in a frame). */
 const ENCODES: Record<ToneMapping, string> = { neutral: 'encode:neutral', aces: 'encode:aces', none: 'encode:none' };
 
@@ -29,9 +35,11 @@ export interface ObjectVariant {
   mapping: Mapping;
   /** A glTF material (docs/pbr.md#the-scenes-lights): lit per fragment by the glTF BRDF, whatever the shading (its chunk must be in). */
   pbr: boolean;
+  /** A glTF material lit by an environment too (docs/pbr.md#the-environment; its chunk must be in). */
+  environment: boolean;
 }
 
-function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant, pbr: string | null): string[] {
+function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant, pbr: string | null, environment: string | null): string[] {
   const header: string[] =
     clip === 'none' ? [] :
     clip === 'clip-distance' ? ['#extension GL_ANGLE_clip_cull_distance : require', '#define CLIP_PLANE', '#define CLIP_DISTANCE'] :
@@ -39,9 +47,11 @@ function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant, pbr:
   header.push(`#define SHADING_${shading.toUpperCase()}`);
   if (v.twoSided) header.push('#define TWO_SIDED');
   if (pbr !== null) header.push('#define PBR');
+  if (environment !== null) header.push('#define ENVIRONMENT');
   header.push(`#define LIGHT_COUNT ${v.lights}`, `#define MAPPING_${v.mapping.toUpperCase()}`);
   for (let i = 0; i < MAX_LIGHTS; i++) header.push(`#define LIGHT${i}_POINT ${(v.pointMask >> i) & 1 ? 'true' : 'false'}`);
   header.push(lighting);
+  if (environment !== null) header.push(environment);
   if (pbr !== null) header.push(pbr);
   return header;
 }
@@ -91,6 +101,8 @@ export class ProgramCache {
   private rough: RoughSources | null = null;
   /** The PBR variant's and the tone mapping's shader parts, once their chunk has loaded (setPbrSources). */
   private pbr: string | null = null;
+  /** The ENVIRONMENT variant's shader part, once its chunk has loaded (setEnvironmentSource). */
+  private environment: string | null = null;
   private toneMap: string | null = null;
   /**
    * Variants that failed to compile, by key: asked again (the same state drawn again), they throw
@@ -111,11 +123,13 @@ export class ProgramCache {
     const variants = ((this.standards[clip] ??= {})[shading] ??= []);
     const lights = Math.max(1, Math.min(MAX_LIGHTS, v.lights));
     const points = v.pointMask & ((1 << lights) - 1);
-    const i = (v.pbr ? 2 : 0) + (v.twoSided ? 1 : 0)
-      + 4 * (lights - 1 + MAX_LIGHTS * (points + (1 << MAX_LIGHTS) * MAPPINGS.indexOf(v.mapping)));
+    const env = v.pbr && v.environment;
+    const i = (v.pbr ? (env ? 4 : 2) : 0) + (v.twoSided ? 1 : 0)
+      + 6 * (lights - 1 + MAX_LIGHTS * (points + (1 << MAX_LIGHTS) * MAPPINGS.indexOf(v.mapping)));
     return (variants[i] ??= this.build(
-      `standard:${clip}:${shading}${v.twoSided ? ':two-sided' : ''}${v.pbr ? ':pbr' : ''}:lights${lights}/${points}:${v.mapping}`,
-      standardVert, standardFrag, standardHeader(clip, shading, { ...v, lights, pointMask: points }, v.pbr ? this.pbrSource() : null),
+      `standard:${clip}:${shading}${v.twoSided ? ':two-sided' : ''}${v.pbr ? ':pbr' : ''}${env ? ':environment' : ''}:lights${lights}/${points}:${v.mapping}`,
+      standardVert, standardFrag,
+      standardHeader(clip, shading, { ...v, lights, pointMask: points }, v.pbr ? this.pbrSource() : null, env ? this.environmentSource() : null),
     ));
   }
 
@@ -130,14 +144,22 @@ export class ProgramCache {
     this.toneMap = toneMap;
   }
 
+  /** Takes the ENVIRONMENT variant's shader part once its chunk has loaded (ENVIRONMENT_LIGHT, render/parts.ts). */
+  setEnvironmentSource(source: string): void {
+    this.environment = source;
+  }
+
+  private environmentSource(): string {
+    return loaded(this.environment, 'an environment\'s');
+  }
+
   /** Whether the PBR variant and the tone-mapped encodes can be built: their chunk is in. */
   get hasPbr(): boolean {
     return this.pbr !== null;
   }
 
   private pbrSource(): string {
-    if (this.pbr === null) throw new Error('glass-plane-scene: a glTF material\'s program was asked for before its chunk loaded');
-    return this.pbr;
+    return loaded(this.pbr, 'a glTF material\'s');
   }
 
   private roughSources(): RoughSources {

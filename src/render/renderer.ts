@@ -138,10 +138,11 @@ export class Renderer implements DebugViewFrame {
       cull: true,
       transparentDepth: false,
       hdr: false,
+      environment: null,
       scissor: null,
       triangles: { scene: 0, reflection: 0 },
     };
-    this.parts = new LazyParts(RENDER_PARTS, { ctx: this.ctx, checks: options.checks === true, rough: this.rough }, options.parts ?? CONSOLE_PARTS);
+    this.parts = new LazyParts(RENDER_PARTS, { ctx: this.ctx, checks: options.checks === true, rough: this.rough, counter: this.counter }, options.parts ?? CONSOLE_PARTS);
   }
 
   /**
@@ -231,6 +232,7 @@ export class Renderer implements DebugViewFrame {
     this.mainMsaa?.dispose();
     this.reflectionMsaa = this.mainMsaa = null;
     this.rough.dispose();
+    this.ctx.environment?.dispose();
     this.glassMesh.dispose();
     this.textures.dispose();
     this.shared.release();

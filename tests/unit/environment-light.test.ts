@@ -9,9 +9,10 @@ import { SoftwareRenderer } from '../../src/software';
 import type { Environment, Scene } from '../../src/scene/scene';
 import { defaultFrameState } from './helpers/frame-state';
 import { instrumented } from './helpers/collections';
-import { BOX_STATE, boxScene, pbrMaterial, sphereGrid } from './helpers/pbr-scenes';
+import { BOX_STATE, STUDIO, boxScene, mirrorToKey, pbrMaterial, studioGrid } from './helpers/pbr-scenes';
 
-const STUDIO: Environment = { kind: 'studio', intensity: 1 };
+
+const CENTRE = 16 * 33 + 16;
 
 it('the software renderer draws without the environment until its maps are made (frame/environment-cache.ts), then with it', () => {
   // First in this file: no maps made yet in this worker.
@@ -20,23 +21,6 @@ it('the software renderer draws without the environment until its maps are made 
   expect(prepareEnvironment(STUDIO)).toBe(prepareEnvironment({ kind: 'studio', intensity: 3 }));
   expect(draw()).toBe(153);
 });
-const CENTRE = 16 * 33 + 16;
-const DEG = 180 / Math.PI;
-
-/**
- * A box whose +Z face has the normal n halfway between the view (+z, the camera 4 in front of it) and the key panel's centre
- * (φ −45°, e 45°: d = (−½, √½, ½)): n = (v + d)/|v + d|. The box turned about X by −asin(n_y), then about Y by atan2(n_x, n_z).
- */
-function mirrorToKey(pbr = pbrMaterial({ baseColor: [0.1, 0.1, 0.1, 1], metallic: 1, roughness: 0 }), environment: Environment | null = STUDIO): Scene {
-  const d = [-0.5, Math.SQRT1_2, 0.5], h = [d[0], d[1], d[2] + 1], len = Math.hypot(h[0], h[1], h[2]);
-  const n = h.map((x) => x / len);
-  const s = boxScene(pbr);
-  const o = s.objects[0];
-  return {
-    ...s, lights: [], environment,
-    objects: [{ ...o, transform: { ...o.transform, rotation: [-Math.asin(n[1]) * DEG, Math.atan2(n[0], n[2]) * DEG, 0] } }],
-  };
-}
 
 describe('a mirror metal reflecting the key panel, worked by hand', () => {
   beforeAll(() => { prepareEnvironment(STUDIO); });
@@ -95,7 +79,7 @@ describe('the grid of spheres in the studio, over a glass floor, tone mapped', (
   beforeAll(() => { prepareEnvironment(STUDIO); });
 
   it.skipIf(instrumented)(`the software renderer against the reference (${SAMPLES}×${SAMPLES} samples): every region within ${MARGIN_DB} dB of its figure`, () => {
-    const scene: Scene = { ...sphereGrid(), environment: STUDIO };
+    const scene = studioGrid();
     // 1,024 directions a pixel: at the default 256 the reference's own noise (against itself at 2,048) is 42.2 dB on the objects.
     const ref = renderScene(scene, GRID_STATE, null, { samplesPerAxis: SAMPLES, environmentSamples: 1024 });
     const cmp = compareImages(ref, new SoftwareRenderer({ samplesPerAxis: SAMPLES }).render(scene, GRID_STATE));

@@ -2,7 +2,8 @@
 // the sampled normals against D(m)·cosθm integrated by an independent quadrature, and the
 // reflected and refracted directions against Snell's law worked by hand in one plane.
 import { describe, expect, it } from 'vitest';
-import { ggxAlpha, ggxD, ggxNormal, reflectAbout, refractThin } from '../../src/math/ggx';
+import { ggxAlpha, ggxD, refractThin } from '../../src/math/ggx';
+import { ggxNormal, reflectAbout } from '../../src/math/ggx-sample';
 
 const DEG = Math.PI / 180;
 /** A unit direction in the xz-plane at angle ψ from +z towards +x. */

@@ -160,7 +160,7 @@ describe.skipIf(instrumented)('the frame\'s one question allocates nothing when 
 
   it('the renderer\'s parts, none needed (the default scene, the default state)', async () => {
     const state = defaultFrameState(), scene = defaultScene(state.cubeDistance, state.spin);
-    const host = { ctx: { state, scene } as never, checks: false, rough: null as never };
+    const host = { ctx: { state, scene } as never, checks: false, rough: null as never, counter: null as never };
     const parts = new LazyParts(RENDER_PARTS, host, recorder());
     let answers = 0;
     expect(await collections(() => {

@@ -11,7 +11,7 @@ import { fakeGl } from './helpers/fake-gl';
 const CLIPS: ClipMode[] = ['none', 'clip-distance', 'discard'];
 const SHADINGS: Shading[] = ['phong', 'gouraud', 'flat'];
 /** The default scene's draws: one-sided, one light, UV mapping. */
-const V: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false };
+const V: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false };
 
 describe('ProgramCache', () => {
   it('compiles each variant once and returns the same program after', () => {
@@ -76,6 +76,29 @@ describe('ProgramCache', () => {
     const headers = sources.filter((src) => src.includes('// the PBR part'));
     expect(headers.length).toBeGreaterThan(0);
     expect(sources.filter((src) => src.includes('#define PBR\n')).length).toBe(headers.length);
+  });
+
+  it('a glTF material under an environment is a variant of its own, its part before the PBR part (docs/pbr.md#the-environment)', () => {
+    const { gl, sources } = fakeGl();
+    const cache = new ProgramCache(gl, SharedResources.acquire(gl));
+    cache.setPbrSources('// the PBR part', '// the tone map part');
+    const E = { ...V, pbr: true, environment: true };
+    expect(() => cache.standard('none', 'phong', E)).toThrow(/environment's program was asked for before its chunk loaded/);
+    cache.setEnvironmentSource('// the environment part');
+    const lit = cache.standard('none', 'phong', E);
+    expect(lit.name).toBe('standard:none:phong:pbr:environment:lights1/0:uv');
+    const plain = cache.standard('none', 'phong', { ...V, pbr: true });
+    expect(plain).not.toBe(lit);
+    // Without a glTF material the flag is nothing: the Blinn-Phong variant.
+    expect(cache.standard('none', 'phong', { ...V, environment: true })).toBe(cache.standard('none', 'phong', V));
+    expect(new Set([lit, cache.standard('none', 'phong', { ...E, twoSided: true }), plain, cache.standard('none', 'phong', V)]).size).toBe(4);
+    const withPart = sources.filter((src) => src.includes('// the environment part'));
+    expect(withPart.length).toBeGreaterThan(0);
+    for (const src of withPart) {
+      expect(src).toContain('#define ENVIRONMENT\n');
+      expect(src.indexOf('// the environment part')).toBeLessThan(src.indexOf('// the PBR part'));
+    }
+    expect(sources.filter((src) => src.includes('#define ENVIRONMENT\n')).length).toBe(withPart.length);
   });
 
   it('dispose deletes every program and shader', () => {

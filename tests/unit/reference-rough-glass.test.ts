@@ -1,7 +1,8 @@
 // Rough glass in the reference (src/reference/rough-glass.ts): which microfacet samples it traces, along which rays
 // (directions reflected or refracted by hand for GGX normals at α = 1), and the means it leaves, with recorded paths.
 import { describe, expect, it } from 'vitest';
-import { ggxNormal, reflectAbout, refractThin } from '../../src/math/ggx';
+import { refractThin } from '../../src/math/ggx';
+import { ggxNormal, reflectAbout } from '../../src/math/ggx-sample';
 import { Ray } from '../../src/reference/ray';
 import { RoughGlass, type Microfacets, type RoughPaths } from '../../src/reference/rough-glass';
 import { SurfaceHit } from '../../src/reference/surface-hit';

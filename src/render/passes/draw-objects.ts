@@ -18,7 +18,7 @@ export function prepareObjectPrograms(ctx: PassContext, clip: ClipMode): void {
 }
 
 /** The object's variant, filled in place (no allocation per draw). */
-const variant: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false };
+const variant: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false };
 function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
   variant.twoSided = isTwoSided(o.geometry);
   variant.lights = ctx.setup.lightCount;
@@ -26,6 +26,9 @@ function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
   variant.mapping = o.material.mapping;
   // Without the PBR chunk (not in yet, or failed: render/parts.ts), the Blinn-Phong stand-in.
   variant.pbr = o.material.pbr !== undefined && ctx.programs.hasPbr;
+  // Without its chunk (not in yet, or failed), glTF materials are lit by the scene's lights alone.
+  const env = ctx.scene.environment;
+  variant.environment = variant.pbr && !!env && ctx.environment !== null && ctx.environment.use(env);
   return variant;
 }
 
@@ -71,6 +74,7 @@ export function drawObjects(
         current = program;
         program.use();
         setLights(gl, program, setup, mirrored);
+        if (variant.environment) ctx.environment!.bind(program, ctx.scene.environment!.intensity);
         if (mirrored) gl.uniform4fv(program.location('uClipPlane'), setup.clipPlane);
         else if (farSide) gl.uniform4fv(program.location('uClipPlane'), farSide);
       }

@@ -6,6 +6,7 @@ import type { TextureCache } from '../texture-cache';
 import type { DrawMatrices, FrameSetup, LightVectors } from '../../frame/frame-setup';
 import type { ObjectMeshes } from '../object-meshes';
 import type { ProgramCache } from '../programs';
+import type { EnvironmentGl } from '../environment-gl';
 import type { FrameState, Viewport } from '../../frame/types';
 import type { Material, Scene, SceneObject } from '../../scene/scene';
 
@@ -42,6 +43,8 @@ export interface PassContext {
    * (toneMapped), and the context can render to half float, and the tone-mapping chunk is in.
    */
   hdr: boolean;
+  /** An environment's textures (docs/pbr.md#the-environment), once its chunk is in (ENVIRONMENT_LIGHT, render/parts.ts); the renderer disposes them. */
+  environment: EnvironmentGl | null;
   /** Triangles submitted since the frame began, by the eye they were drawn from. */
   triangles: { scene: number; reflection: number };
 }

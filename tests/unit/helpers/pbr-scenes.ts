@@ -2,7 +2,7 @@
 // spheres, metallic 0, ½, 1 by rows and roughness 0.05 … 1 by columns, over a glass floor, lit by a
 // directional and a point light. Used by the software renderer's and WebGL's comparisons with the reference.
 import type { PbrMaterial } from '../../../src/scene/pbr-material';
-import type { Light, Material, Scene, SceneObject, Vec3 } from '../../../src/scene/scene';
+import type { Environment, Light, Material, Scene, SceneObject, Vec3 } from '../../../src/scene/scene';
 import { defaultFrameState } from './frame-state';
 
 export const METALLIC = [0, 0.5, 1] as const;
@@ -104,3 +104,25 @@ export const HAND_CASES: { name: string; pbr: Partial<PbrMaterial>; emissive?: V
   { name: 'a mirror metal', pbr: { baseColor: [0.5, 0.5, 0.5, 1], metallic: 1, roughness: 0 }, want: [1, 1, 1] },
 ];
 
+/** The studio at intensity 1 (docs/pbr.md#the-environment). */
+export const STUDIO: Environment = { kind: 'studio', intensity: 1 };
+
+/** The grid of spheres with its two lights, in the studio. */
+export const studioGrid = (): Scene => ({ ...sphereGrid(), environment: STUDIO });
+
+const DEG = 180 / Math.PI;
+
+/**
+ * A box whose +Z face has the normal n halfway between the view (+z, the camera 4 in front of it) and the key panel's centre
+ * (φ −45°, e 45°: d = (−½, √½, ½)): n = (v + d)/|v + d|. The box turned about X by −asin(n_y), then about Y by atan2(n_x, n_z).
+ */
+export function mirrorToKey(pbr = pbrMaterial({ baseColor: [0.1, 0.1, 0.1, 1], metallic: 1, roughness: 0 }), environment: Environment | null = STUDIO): Scene {
+  const d = [-0.5, Math.SQRT1_2, 0.5], h = [d[0], d[1], d[2] + 1], len = Math.hypot(h[0], h[1], h[2]);
+  const n = h.map((x) => x / len);
+  const s = boxScene(pbr);
+  const o = s.objects[0];
+  return {
+    ...s, lights: [], environment,
+    objects: [{ ...o, transform: { ...o.transform, rotation: [-Math.asin(n[1]) * DEG, Math.atan2(n[0], n[2]) * DEG, 0] } }],
+  };
+}
