@@ -5,6 +5,7 @@
 const PBR = 'tests/e2e/pbr.spec.ts';
 const TONE = 'tests/e2e/tone-mapping.spec.ts';
 const CHUNK = 'tests/e2e/pbr-chunk.spec.ts';
+const ENV = 'tests/e2e/environment.spec.ts';
 const GLSL = 'GLSL: Stryker does not mutate shader source (shaders/)';
 
 export default [
@@ -79,5 +80,47 @@ export default [
     why: 'a lazy chunk\'s timing in a page: only a browser loads it',
     edits: [{ file: 'src/render/parts.ts', find: 'needed: (h) => hasPbrMaterial(h.ctx.scene) || toneMapped(h.ctx.state), holds: true,', replace: 'needed: (h) => hasPbrMaterial(h.ctx.scene) || toneMapped(h.ctx.state), holds: false,' }],
     tests: [CHUNK],
+  },
+  {
+    name: 'P13 the prefilter\'s level chosen linearly in roughness (r·7) for √r·7',
+    why: GLSL,
+    edits: [{ file: 'shaders/environment.glsl', find: 'float p = sqrt(clamp(roughness, 0.0, 1.0)) * LAST_LEVEL;', replace: 'float p = clamp(roughness, 0.0, 1.0) * LAST_LEVEL;' }],
+    tests: [ENV],
+  },
+  {
+    name: 'P14 the lobe read toward the mirror direction, not the dominant one',
+    why: GLSL,
+    edits: [{ file: 'shaders/environment.glsl', find: 'vec3 dominant = normalize(n + (mirror - n) * s);', replace: 'vec3 dominant = mirror;' }],
+    tests: [ENV],
+  },
+  {
+    name: 'P15 the environment read upside down (the lookup\'s direction flipped in y)',
+    why: GLSL,
+    edits: [{ file: 'shaders/environment.glsl', find: 'acos(clamp(d.y, -1.0, 1.0))', replace: 'acos(clamp(-d.y, -1.0, 1.0))' }],
+    tests: [ENV],
+  },
+  {
+    name: 'P16 the diffuse lobe read at the surface\'s roughness, not the irradiance level',
+    why: GLSL,
+    edits: [{ file: 'shaders/environment.glsl', find: 'prefilteredAt(n, 1.0)', replace: 'prefilteredAt(n, r)' }],
+    tests: [ENV],
+  },
+  {
+    name: 'P17 the split-sum table\'s A and B swapped (F0·B + A)',
+    why: GLSL,
+    edits: [{ file: 'shaders/environment.glsl', find: '(f0 * ab.x + ab.y)', replace: '(f0 * ab.y + ab.x)' }],
+    tests: [ENV],
+  },
+  {
+    name: 'P18 the environment\'s intensity not applied',
+    why: 'a uniform of the WebGL object pass: only a browser draws it',
+    edits: [{ file: 'src/render/environment-gl.ts', find: "gl.uniform1f(program.location('uEnvironmentIntensity'), intensity);", replace: "gl.uniform1f(program.location('uEnvironmentIntensity'), 1);" }],
+    tests: [ENV],
+  },
+  {
+    name: 'P19 a frame with an environment does not wait for its chunk',
+    why: 'a lazy chunk\'s timing in a page: only a browser loads it',
+    edits: [{ file: 'src/render/parts.ts', find: "needed: (h) => !!h.ctx.scene.environment && hasPbrMaterial(h.ctx.scene), holds: true,", replace: "needed: (h) => !!h.ctx.scene.environment && hasPbrMaterial(h.ctx.scene), holds: false," }],
+    tests: [ENV],
   },
 ];
