@@ -25,13 +25,18 @@ export interface EnvironmentMaps {
  */
 export function sampleEquirect(out: Float64Array, map: EquirectMap, x: number, y: number, z: number): Float64Array {
   const { width, height, rgb: t } = map;
+  // Stryker disable next-line ArithmeticOperator: − π shifts u by one whole turn (width texels), which the wrap below takes back
   const u = ((Math.atan2(x, z) + Math.PI) / (2 * Math.PI)) * width - 0.5;
+  // y held to [−1, 1] (a direction a rounding past unit length would make acos NaN).
+  // Stryker disable next-line EqualityOperator: at y = ±1 the clamp returns y itself either way
   const v = (Math.acos(y < -1 ? -1 : y > 1 ? 1 : y) / Math.PI) * height - 0.5;
   const i0 = Math.floor(u), fu = u - i0;
+  // Stryker disable next-line EqualityOperator: at 0 and at height − 1 the clamp returns v itself either way
   const vv = v < 0 ? 0 : v > height - 1 ? height - 1 : v;
   const j0 = Math.min(height - 2, Math.floor(vv)), fv = vv - j0;
   const a = ((i0 % width) + width) % width, b = (a + 1) % width;
   const r0 = j0 * width, r1 = r0 + width;
+  // Stryker disable next-line EqualityOperator: c = 3 writes out[3], past the end of its 3 elements: dropped
   for (let c = 0; c < 3; c++) {
     const upper = t[3 * (r0 + a) + c] * (1 - fu) + t[3 * (r0 + b) + c] * fu;
     const lower = t[3 * (r1 + a) + c] * (1 - fu) + t[3 * (r1 + b) + c] * fu;
@@ -47,10 +52,12 @@ const lo = new Float64Array(3), hi = new Float64Array(3);
  * r^(1/gamma)·(levels − 1), each read bilinearly, mixed linearly. At roughness 1 it is E/π, the irradiance over π.
  */
 export function prefilteredAt(out: Float64Array, maps: EnvironmentMaps, x: number, y: number, z: number, roughness: number): Float64Array {
+  // Stryker disable next-line EqualityOperator: at 0 and at 1 the clamp returns the roughness itself either way
   const n = maps.levels.length, p = (roughness < 0 ? 0 : roughness > 1 ? 1 : roughness) ** (1 / maps.gamma) * (n - 1);
   const k = Math.min(n - 2, Math.floor(p)), f = p - k;
   sampleEquirect(lo, maps.levels[k], x, y, z);
   sampleEquirect(hi, maps.levels[k + 1], x, y, z);
+  // Stryker disable next-line EqualityOperator: c = 3 writes out[3], past the end of its 3 elements: dropped
   for (let c = 0; c < 3; c++) out[c] = lo[c] + (hi[c] - lo[c]) * f;
   return out;
 }
@@ -73,6 +80,7 @@ export function addEnvironment(
   prefilteredAt(spec, maps, refl[0], refl[1], refl[2], roughness);
   prefilteredAt(diff, maps, n[0], n[1], n[2], 1);
   dfgLookup(ab, table, nv, roughness);
+  // Stryker disable next-line EqualityOperator: c = 3 adds to out[3], past the end of its 3 elements: dropped
   for (let c = 0; c < 3; c++) {
     // 0.04: a dielectric's F0 (DIELECTRIC_F0 of math/pbr.ts, not imported: this file goes into WebGL's environment chunk alone).
     const f0 = 0.04 * (1 - metallic) + base[c] * metallic;

@@ -32,14 +32,17 @@ export interface EnvironmentMapOptions {
  */
 export function levelWidth(roughness: number, width: number, minWidth: number): number {
   const alpha = roughness * roughness;
+  // Stryker disable next-line ConditionalExpression: a shortcut: at α = 0, 4π/α is Infinity and the loop doubles w to `width` anyway
   if (alpha === 0) return width;
   let w = minWidth;
+  // Stryker disable next-line ConditionalExpression,EqualityOperator: past `width` the min below takes it back; 4π/α a power of two exactly never happens
   while (w < width && w < (4 * Math.PI) / alpha) w *= 2;
   return Math.min(w, width);
 }
 
 /** out = the unit direction through the centre of texel (i, j) of a `width` × `height` map. */
 export function texelDirection(out: Float64Array, i: number, j: number, width: number, height: number): Float64Array {
+  // Stryker disable next-line ArithmeticOperator: + π is φ one whole turn on, the same direction
   const phi = ((i + 0.5) / width) * 2 * Math.PI - Math.PI, theta = ((j + 0.5) / height) * Math.PI;
   const s = Math.sin(theta);
   out[0] = s * Math.sin(phi); out[1] = Math.cos(theta); out[2] = s * Math.cos(phi);
@@ -61,6 +64,7 @@ function lobeMean(out: Float64Array, env: RadianceFn, r: Float64Array, alpha: nu
     ggxNormal(h, alpha, xi[0], xi[1], r);
     reflectAbout(l, toSurface, h);
     const nl = r[0] * l[0] + r[1] * l[1] + r[2] * l[2];
+    // Stryker disable next-line EqualityOperator: at n·l = 0 the sample adds 0 to every sum and to the weight
     if (nl <= 0) continue;
     env(rgb, l[0], l[1], l[2]);
     s0 += rgb[0] * nl; s1 += rgb[1] * nl; s2 += rgb[2] * nl;
@@ -83,6 +87,7 @@ export function makeEnvironmentMaps(env: RadianceFn, options: EnvironmentMapOpti
     for (let j = 0; j < height; j++) {
       for (let i = 0; i < width; i++) {
         texelDirection(dir, i, j, width, height);
+        // Stryker disable next-line ConditionalExpression: a shortcut: at α = 0 every point's normal is the texel's direction, so the lobe's mean is its light, read `samples` times
         if (alpha === 0) env(rgb, dir[0], dir[1], dir[2]);
         else lobeMean(rgb, env, dir, alpha, samples);
         map.rgb.set(rgb, 3 * (j * width + i));

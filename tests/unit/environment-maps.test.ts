@@ -38,6 +38,9 @@ describe('the equirectangular map', () => {
     // The zenith (φ = 0, between columns 3 and 4): row 0 held; the nadir: row 3.
     expect(round(sampleEquirect(out, map, 0, 1, 0))).toEqual([3.5, 0, 3.5]);
     expect(sampleEquirect(out, map, 0, -1, 1e-12)[1]).toBe(3);
+    // A direction a rounding made a hair longer than 1 reads the pole, not NaN.
+    expect(round(sampleEquirect(out, map, 0, 1.0000000000000002, 0))).toEqual([3.5, 0, 3.5]);
+    expect(sampleEquirect(out, map, 0, -1.0000000000000002, 1e-12)[1]).toBe(3);
   });
 });
 
@@ -85,8 +88,9 @@ describe('the split sum from the maps', () => {
       const f0 = 0.04 * 0.75 + b * 0.25;
       expect(sum[c]).toBeCloseTo([0.1, 0.2, 0.3][c] + 2 * (f0 * ab[0] + ab[1] + b * 0.75 * (1 - f0)), 6);
     });
-    // Seen from behind: nothing added.
+    // Seen from behind, or edge-on (n·v = 0): nothing added.
     addEnvironment(sum.fill(0), furnace, table, 2, [1, 1, 1], 1, 0.4, n, [0, -1, 0]);
+    addEnvironment(sum, furnace, table, 2, [1, 1, 1], 1, 0.4, n, [1, 0, 0]);
     expect(Array.from(sum)).toEqual([0, 0, 0]);
   });
 
