@@ -99,6 +99,8 @@ describe('ProgramCache', () => {
       expect(src.indexOf('// the environment part')).toBeLessThan(src.indexOf('// the PBR part'));
     }
     expect(sources.filter((src) => src.includes('#define ENVIRONMENT\n')).length).toBe(withPart.length);
+    // The variants without it take no stand-in for it either (no empty or null part).
+    for (const src of sources) expect(src).not.toMatch(/^(null|undefined)$/m);
   });
 
   it('dispose deletes every program and shader', () => {
