@@ -123,4 +123,10 @@ export default [
     edits: [{ file: 'src/render/parts.ts', find: "needed: (h) => !!h.ctx.scene.environment && hasPbrMaterial(h.ctx.scene), holds: true,", replace: "needed: (h) => !!h.ctx.scene.environment && hasPbrMaterial(h.ctx.scene), holds: false," }],
     tests: [ENV],
   },
+  {
+    name: 'P20 the studio\'s maps made in one task when the frame needs them (the page held a second)',
+    why: 'a page\'s tasks: only a browser runs them',
+    edits: [{ file: 'src/render/parts.ts', find: "load: () => import('./environment-gl').then((m) => m.studioReady().then(() => m)),", replace: "load: () => import('./environment-gl')," }],
+    tests: [ENV],
+  },
 ];

@@ -1,23 +1,65 @@
 // An environment made ready once per page (or worker) for the renderers (docs/pbr.md#prefiltered-maps): its prefiltered maps
 // (math/prefilter.ts) and the split-sum table, made the first time it is asked for and kept (frame/environment-cache.ts) for
 // every element and frame after. The code only a scene with an environment needs.
-import { dfgTable } from '../math/dfg';
-import { makeEnvironmentMaps } from '../math/prefilter';
-import { addEnvironment } from '../math/environment-maps';
+import { dfgTableSteps } from '../math/dfg';
+import { environmentMapSteps } from '../math/prefilter';
+import { addEnvironment, type EnvironmentMaps } from '../math/environment-maps';
 import { studioRadiance } from '../math/studio';
+import type { RadianceFn } from '../math/split-sum';
 import type { Environment } from '../scene/scene';
 import { keepPrepared, preparedFor, type PreparedEnvironment } from './environment-cache';
 
-/** The maps and table of `environment` (its kind; the intensity is applied when shading): kept ones, or made now and kept. */
-export function prepareEnvironment(environment: Environment): PreparedEnvironment {
-  const kept = preparedFor(environment);
-  if (kept !== null) return kept;
-  // One kind so far: the studio.
-  const maps = makeEnvironmentMaps((out, x, y, z) => { out[0] = out[1] = out[2] = studioRadiance(x, y, z); }), dfg = dfgTable();
+// One kind so far: the studio.
+const studio: RadianceFn = (out, x, y, z) => { out[0] = out[1] = out[2] = studioRadiance(x, y, z); };
+
+function keep(environment: Environment, maps: EnvironmentMaps, dfg: Float32Array): PreparedEnvironment {
   const made: PreparedEnvironment = {
     maps, dfg,
     add: (out, intensity, base, metallic, roughness, n, v) => addEnvironment(out, maps, dfg, intensity, base, metallic, roughness, n, v),
   };
   keepPrepared(environment, made);
   return made;
+}
+
+/** Runs `steps` to the end at once. */
+function runAll<T>(steps: Generator<void, T, void>): T {
+  for (;;) {
+    const step = steps.next();
+    if (step.done) return step.value;
+  }
+}
+
+/** The maps and table of `environment` (its kind; the intensity is applied when shading): kept ones, or made now and kept. */
+export function prepareEnvironment(environment: Environment): PreparedEnvironment {
+  return preparedFor(environment) ?? keep(environment, runAll(environmentMapSteps(studio)), runAll(dfgTableSteps()));
+}
+
+/** Runs `steps` in slices of about `sliceMs`, each in a task of its own: the page answers between them. */
+async function runSliced<T>(steps: Generator<void, T, void>, sliceMs: number): Promise<T> {
+  let start = performance.now();
+  for (;;) {
+    const step = steps.next();
+    if (step.done) return step.value;
+    if (performance.now() - start >= sliceMs) {
+      await new Promise((resolve) => setTimeout(resolve, 0));
+      start = performance.now();
+    }
+  }
+}
+
+let making: Promise<PreparedEnvironment> | null = null;
+
+/**
+ * prepareEnvironment on a page's main thread: the maps and table made a row at a time, in tasks of about `sliceMs` (the making
+ * takes a second or more here, which one task would hold the page for). One making at a time, shared by whoever asks.
+ */
+export function prepareEnvironmentSliced(environment: Environment, sliceMs = 8): Promise<PreparedEnvironment> {
+  const kept = preparedFor(environment);
+  if (kept !== null) return Promise.resolve(kept);
+  making ??= (async () => {
+    const maps = await runSliced(environmentMapSteps(studio), sliceMs);
+    const dfg = await runSliced(dfgTableSteps(), sliceMs);
+    return keep(environment, maps, dfg);
+  })().finally(() => { making = null; });
+  return making;
 }

@@ -62,6 +62,15 @@ export const DFG_SIZE = 32;
  * dfgCoordinate).
  */
 export function dfgTable(size = DFG_SIZE, samples = DFG_SAMPLES): Float32Array {
+  const steps = dfgTableSteps(size, samples);
+  for (;;) {
+    const step = steps.next();
+    if (step.done) return step.value;
+  }
+}
+
+/** dfgTable a row at a time: each next() fills one roughness; the last returns the table. */
+export function* dfgTableSteps(size = DFG_SIZE, samples = DFG_SAMPLES): Generator<void, Float32Array, void> {
   const t = new Float32Array(size * size * 2), ab = new Float64Array(2);
   for (let j = 0; j < size; j++) {
     for (let i = 0; i < size; i++) {
@@ -69,6 +78,7 @@ export function dfgTable(size = DFG_SIZE, samples = DFG_SAMPLES): Float32Array {
       t[2 * (j * size + i)] = ab[0];
       t[2 * (j * size + i) + 1] = ab[1];
     }
+    yield;
   }
   return t;
 }

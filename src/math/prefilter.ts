@@ -74,8 +74,17 @@ function lobeMean(out: Float64Array, env: RadianceFn, r: Float64Array, alpha: nu
   out[0] = s0 / w; out[1] = s1 / w; out[2] = s2 / w;
 }
 
-/** The prefiltered maps of `env` (see EnvironmentMapOptions for the defaults). */
+/** The prefiltered maps of `env` (see EnvironmentMapOptions for the defaults), made at once. */
 export function makeEnvironmentMaps(env: RadianceFn, options: EnvironmentMapOptions = {}): EnvironmentMaps {
+  const steps = environmentMapSteps(env, options);
+  for (;;) {
+    const step = steps.next();
+    if (step.done) return step.value;
+  }
+}
+
+/** makeEnvironmentMaps a row at a time: each next() makes one row of one level; the last returns the maps (frame/environment-light.ts spreads them over a page's tasks). */
+export function* environmentMapSteps(env: RadianceFn, options: EnvironmentMapOptions = {}): Generator<void, EnvironmentMaps, void> {
   const count = Math.max(2, options.levels ?? 8), top = options.width ?? 256, bottom = options.minWidth ?? 32;
   const budget = options.budget ?? 1 << 20, gamma = options.gamma ?? 2;
   const levels: EquirectMap[] = [];
@@ -92,6 +101,7 @@ export function makeEnvironmentMaps(env: RadianceFn, options: EnvironmentMapOpti
         else lobeMean(rgb, env, dir, alpha, samples);
         map.rgb.set(rgb, 3 * (j * width + i));
       }
+      yield;
     }
     levels.push(map);
   }

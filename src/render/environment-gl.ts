@@ -4,7 +4,7 @@
 // which are made once per page. Loaded the first time a frame has a glTF material and an environment (ENVIRONMENT_LIGHT,
 // render/parts.ts).
 import source from '../../shaders/environment.glsl?raw';
-import { prepareEnvironment } from '../frame/environment-light';
+import { prepareEnvironment, prepareEnvironmentSliced } from '../frame/environment-light';
 import { sampleEquirect, type EquirectMap } from '../math/environment-maps';
 import { texelDirection } from '../math/prefilter';
 import type { Environment } from '../scene/scene';
@@ -14,6 +14,9 @@ import { DFG_SIZE } from '../math/dfg';
 
 /** shaders/environment.glsl: standard.frag's ENVIRONMENT variant takes it before pbr.glsl. */
 export const ENVIRONMENT_SOURCE: string = source;
+
+/** The studio's maps made, a row at a time so that the page answers meanwhile: what the chunk's load waits for (ENVIRONMENT_LIGHT). */
+export const studioReady = (): Promise<unknown> => prepareEnvironmentSliced({ kind: 'studio', intensity: 1 });
 
 /** The texture units the maps and the table are bound to (the object's own texture is unit 0). */
 const MAPS_UNIT = 3, TABLE_UNIT = 4;

@@ -84,7 +84,8 @@ export const PBR_MATERIALS: Part<typeof import('./pbr-gl')> = {
 
 /** An environment's light on glTF materials (docs/pbr.md#the-environment): its shader part, given to the program cache, and its textures. */
 export const ENVIRONMENT_LIGHT: Part<typeof import('./environment-gl')> = {
-  name: 'the environment', chunk: 'environment-gl', load: () => import('./environment-gl'),
+  // The load takes the making of the studio's maps too (the one environment there is), in slices: the frame waits, the page does not.
+  name: 'the environment', chunk: 'environment-gl', load: () => import('./environment-gl').then((m) => m.studioReady().then(() => m)),
   needed: (h) => !!h.ctx.scene.environment && hasPbrMaterial(h.ctx.scene), holds: true,
   instead: 'lighting glTF materials by the scene\'s lights alone',
   arrived: (h, m) => {

@@ -40,6 +40,27 @@ function toBase64(bytes: Uint8ClampedArray): string {
 
 const api = {
   /**
+   * Loads what a frame of `scene` needs and draws it (then reads a pixel: the GPU done), and answers the longest wait between
+   * the ticks of a 5 ms timer meanwhile (ms).
+   */
+  async loadWatched(state: FrameState, scene: Scene): Promise<number> {
+    let last = performance.now(), worst = 0;
+    const tick = setInterval(() => {
+      const now = performance.now();
+      worst = Math.max(worst, now - last);
+      last = now;
+    }, 5);
+    await renderer.load(revive(scene), state);
+    // A task of its own after the load's last, so that the timer's wait before it counts apart from the frame's.
+    await new Promise((resolve) => setTimeout(resolve, 20));
+    canvas.width = state.width;
+    canvas.height = state.height;
+    renderer.render(revive(scene), state, decoded);
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
+    clearInterval(tick);
+    return Math.max(worst, performance.now() - last);
+  },
+  /**
    * RGBA8 of `state.view` of `scene`, top row first, base64 (after loading what it needs: rough
    * glass's chunk), with `images` added to those of the draws before.
    */
