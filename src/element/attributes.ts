@@ -69,6 +69,10 @@ export interface SceneAttributes {
   toneMapping: ToneMapping | 'auto';
   /** A factor on the frame's light before tone mapping (docs/pbr.md#tone-mapping). */
   exposure: number;
+  /** The light from all around that glTF materials are lit by (docs/pbr.md#the-environment): the studio, or none. */
+  environment: 'neutral' | 'none';
+  /** A factor on the environment's light. */
+  environmentIntensity: number;
   /** The glass's roughness, 0..1 (docs/rough-glass.md#roughness): 0 polished. */
   roughness: number;
   /** How many neighbours rough glass gathers per pixel (frame/rough-glass.ts). */
@@ -317,6 +321,8 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
   keywordSpec('colorSpace', 'color-space', COLOR_SPACES),
   keywordSpec('toneMapping', 'tone-mapping', TONE_MAPPING_WORDS),
   numberSpec('exposure', 'exposure', 1, 0, 64),
+  keywordSpec('environment', 'environment', ['neutral', 'none']),
+  numberSpec('environmentIntensity', 'environment-intensity', 1, 0, 64),
   numberSpec('roughness', 'roughness', 0, 0, 1),
   keywordSpec('roughnessQuality', 'roughness-quality', ['medium', 'low', 'high']),
   tupleSpec('glassCenter', 'glass-center', [0, 1, 0], '"x y z"', clampCoords),

@@ -2,11 +2,13 @@
 // children's objects replace the default cube and sphere, children's lights the default light,
 // and with neither it is the default scene exactly (docs/default-scene.md). Pure: no DOM.
 import { defaultScene } from '../scene/default-scene';
-import type { Glass, Light, Scene, SceneObject } from '../scene/scene';
+import { hasPbrMaterial, type Glass, type Light, type Scene, type SceneObject } from '../scene/scene';
 import type { SceneAttributes } from './attributes';
 
 /** The attributes the scene value is built from: a change of any other builds nothing. */
-export const SCENE_ATTRIBUTES = ['cubeDistance', 'glassCenter', 'glassNormal', 'glassSize', 'background', 'spin'] as const;
+export const SCENE_ATTRIBUTES = [
+  'cubeDistance', 'glassCenter', 'glassNormal', 'glassSize', 'background', 'spin', 'environment', 'environmentIntensity',
+] as const;
 
 /** `spin` is the cube's spin as drawn (0 under reduced motion unless `spin` is set). */
 export type SceneInputs = Pick<SceneAttributes, (typeof SCENE_ATTRIBUTES)[number]>;
@@ -21,12 +23,15 @@ export function composeScene(v: SceneInputs, parts: ChildParts): Scene {
   const base = defaultScene(v.cubeDistance, v.spin);
   const [w, h] = v.glassSize;
   const glass: Glass | null = w > 0 && h > 0 ? { center: [...v.glassCenter], normal: [...v.glassNormal], size: [w, h] } : null;
-  return {
+  const scene: Scene = {
     glass,
     objects: parts.objects ?? base.objects,
     lights: parts.lights ?? base.lights,
     background: [...v.background],
   };
+  // The environment lights glTF materials alone (docs/pbr.md#the-environment): a scene without one is left as it was.
+  if (v.environment === 'neutral' && hasPbrMaterial(scene)) scene.environment = { kind: 'studio', intensity: v.environmentIntensity };
+  return scene;
 }
 
 /**

@@ -32,8 +32,8 @@ export const CHUNKS = {
   // R to, the tone-mapped encodes' variants — the curves themselves are in pbr-gl; then an environment's light on glTF
   // materials in WebGL (+267 B, 32,396): the part that fetches environment-gl, the variant, the slot for its textures and their
   // binding — the shader part, the textures and the maps' making are in environment-gl; then the part's load waiting for
-  // the studio's maps (+14 B, 32,410).
-  core: { budget: 32425, when: 'with the element' },
+  // the studio's maps (+14 B, 32,410); then `environment` and `environment-intensity` into the scene value (+79 B, 32,489).
+  core: { budget: 32500, when: 'with the element' },
   // Checks, debug views and the texts of failures: for developers, or when something went wrong.
   diagnostics: {
     budget: 1400, when: 'debug-view, frame checks, or a failure',
@@ -73,8 +73,12 @@ export const CHUNKS = {
   // the environment's term in the lights' sum (+35 B, 1,107).
   'pbr-gl': { budget: 1125, when: 'a glTF material or tone mapping (WebGL)' },
   // An environment's light in WebGL (docs/pbr.md#the-environment): its shader part and textures, and the code that makes its maps.
-  // 3,467 until the maps were made a row at a time in tasks of their own (+230 B, 3,697).
-  'environment-gl': { budget: 3725, when: 'a glTF material under an environment (WebGL)' },
+  // The shader part and the textures (1,407): the making of the maps is environment-light, which the CPU renderer loads too.
+  'environment-gl': { budget: 1425, when: 'a glTF material under an environment (WebGL)' },
+  // The making of an environment's maps and the split-sum table, a row at a time (frame/environment-light.ts, math/prefilter.ts,
+  // the studio), once a page: by environment-gl, or by the CPU renderer on the main thread (2,515); the same in its workers (2,456).
+  'environment-light': { budget: 2525, when: 'a glTF material under an environment' },
+  'assets/environment-light': { budget: 2475, when: 'the same, in the CPU renderer\'s workers' },
   // What the CPU renderer and environment-gl share: the glTF BRDF (math/pbr.ts: the CPU renderer's glTF materials, the
   // split-sum table's visibility) and the environments made ready on a page (frame/environment-cache.ts: the CPU renderer
   // reads them, environment-gl makes them).
@@ -105,7 +109,8 @@ export const CHUNKS = {
   'assets/draco_decoder_nodejs': { budget: 12800, when: 'the same, read in the glTF worker' },
   'assets/draco-wasm-url': { budget: 150, when: 'the same, read in the glTF worker' },
   'course-files': { budget: 1200, when: 'a course file' },
-  'software-start': { budget: 2150, when: 'the CPU renderer' },
+  // 2,150 until the main thread waited for the environment's maps before a frame (+122 B, 2,224).
+  'software-start': { budget: 2225, when: 'the CPU renderer' },
   // 15,400 until emissive and reflect="false" (+7 B), then glTF materials under the scene's lights
   // (the BRDF of math/pbr.ts and pbrLights: +631 B, 16,081), then tone mapping (the curves, the resolve: +614 B, 16,695), then
   // the hook for an environment's light (the split sum's code comes with the maps, frame/environment-light.ts), with math/pbr.ts
@@ -113,8 +118,8 @@ export const CHUNKS = {
   'software-renderer': { budget: 16700, when: 'the CPU renderer' },
   // 23,850 until rough glass's gather read its centre on the fragment's footprint (23,864).
   // then emissive and reflect="false" (+13 B), then glTF materials (+658 B, 24,608), then tone mapping (+616 B, 25,224), then
-  // the hook for an environment's light (+149 B, 25,399).
-  'assets/worker': { budget: 25425, when: 'the CPU renderer' },
+  // the hook for an environment's light (+149 B, 25,399), then requests queued behind the environment's maps (+221 B, 25,620).
+  'assets/worker': { budget: 25625, when: 'the CPU renderer' },
   // The bundler's glue for lazy chunks that share modules: written by rolldown, not by us.
   // 200 until glTF's chunks shared modules with the others (+229 B).
   'rolldown-runtime': { budget: 450, when: 'with the first lazy chunk' },

@@ -8,6 +8,7 @@ import { unpackScene, type SoftwareRequest, type SoftwareResponse } from './prot
 import type { MeshData } from '../scene/geometry/mesh-data';
 import type { DecodedImage } from '../scene/decoded-image';
 import type { Scene } from '../scene/scene';
+import { environmentReady } from './environment-ready';
 
 const renderer = new SoftwareRenderer();
 const meshes = new Map<string, MeshData>();
@@ -16,8 +17,29 @@ const images = new Map<string, DecodedImage>();
 let scene: Scene | null = null;
 const scope = self as unknown as DedicatedWorkerGlobalScope;
 
+/**
+ * While a request waits for the environment's maps (made here once, environment-ready.ts), the requests after it wait
+ * behind it, in the order they came; otherwise each is drawn as it arrives.
+ */
+let waiting: Promise<void> | null = null;
+
 scope.onmessage = (e: MessageEvent<SoftwareRequest>) => {
   const r = e.data;
+  // The packed scene has the environment and the materials as they are (only meshes travel apart).
+  const ready = r.scene ? environmentReady(r.scene) : null;
+  if (ready) waiting = (waiting ?? Promise.resolve()).then(() => ready);
+  if (waiting === null) {
+    draw(r);
+    return;
+  }
+  const after: Promise<void> = waiting.then(() => draw(r));
+  waiting = after;
+  void after.then(() => {
+    if (waiting === after) waiting = null;
+  });
+};
+
+function draw(r: SoftwareRequest): void {
   for (const [key, data] of r.meshes) meshes.set(key, data);
   for (const [url, image] of r.images) images.set(url, image);
   let response: SoftwareResponse;
@@ -33,4 +55,4 @@ scope.onmessage = (e: MessageEvent<SoftwareRequest>) => {
     response = { id: r.id, error: err instanceof Error ? err.message : String(err) };
     scope.postMessage(response);
   }
-};
+}

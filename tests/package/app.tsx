@@ -32,7 +32,7 @@ export function App() {
       shading="gouraud"
       tessellation="auto"
       pixel-ratio={2}
-      reflection-format="rgba16f" color-space="srgb" tone-mapping="aces" exposure={1.5} roughness={0.3} roughness-quality="high"
+      reflection-format="rgba16f" color-space="srgb" tone-mapping="aces" exposure={1.5} environment="neutral" environment-intensity={1.2} roughness={0.3} roughness-quality="high"
       glass-center="0 1 0"
       glass-normal="0 0 1"
       glass-size="8 4"

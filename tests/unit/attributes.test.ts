@@ -59,7 +59,7 @@ describe('defaults', () => {
     expect(new Set(names).size).toBe(names.length);
     expect([...names].sort()).toEqual([
       'background', 'camera-position', 'camera-rotation', 'camera-src', 'camera-target', 'color-space', 'controls', 'cube-distance', 'debug-view',
-      'exposure', 'fov', 'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'poster', 'projection', 'reflection-format',
+      'environment', 'environment-intensity', 'exposure', 'fov', 'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'poster', 'projection', 'reflection-format',
       'reflection-scale', 'renderer', 'roughness', 'roughness-quality', 'samples', 'shading', 'spin', 'tessellation', 'time', 'tone-mapping',
       'transparency',
     ]);
@@ -270,6 +270,7 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
           case 'reflectionFormat': expect(['rgba8', 'rgba16f']).toContain(v); break;
           case 'colorSpace': expect(['srgb', 'none']).toContain(v); break;
           case 'toneMapping': expect(['auto', 'neutral', 'aces', 'none']).toContain(v); break;
+          case 'environment': expect(['neutral', 'none']).toContain(v); break;
           case 'roughnessQuality': expect(['low', 'medium', 'high']).toContain(v); break;
           case 'projection': expect(['perspective', 'orthographic']).toContain(v); break;
           case 'renderer': expect(['auto', 'webgl', 'software']).toContain(v); break;
@@ -305,7 +306,7 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
           }
           default: {
             expect(Number.isFinite(v), `${s.attribute}="${raw.slice(0, 20)}" → ${String(v)}`).toBe(true);
-            const range = { transparency: [0, 1], ior: [1, 10], fov: [1, 179], reflectionScale: [0.125, 2] }[s.property as string];
+            const range = { transparency: [0, 1], ior: [1, 10], fov: [1, 179], reflectionScale: [0.125, 2], environmentIntensity: [0, 64] }[s.property as string];
             if (range) {
               expect(v as number).toBeGreaterThanOrEqual(range[0]);
               expect(v as number).toBeLessThanOrEqual(range[1]);

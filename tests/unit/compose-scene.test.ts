@@ -5,10 +5,19 @@ import { composeScene, sceneSpins, type SceneInputs } from '../../src/element/co
 import { defaultAttributes } from '../../src/element/attributes';
 import { defaultScene, DEFAULT_LIGHT } from '../../src/scene/default-scene';
 import type { SceneObject } from '../../src/scene/scene';
+import { pbrMaterial } from './helpers/pbr-scenes';
 
 const inputs = (over: Partial<SceneInputs> = {}): SceneInputs => ({ ...defaultAttributes(), spin: 0.8, ...over });
 
 describe('composeScene', () => {
+  it('gives a scene with a glTF material the studio at environment-intensity; none with environment="none"; a scene without one is left as it was', () => {
+    const base = defaultScene(0.75, 0.8).objects[0];
+    const gltf: SceneObject = { ...base, material: { ...base.material, pbr: pbrMaterial() } };
+    expect(composeScene(inputs({ environmentIntensity: 2.5 }), { objects: [gltf], lights: null }).environment).toEqual({ kind: 'studio', intensity: 2.5 });
+    expect(composeScene(inputs({ environment: 'none' }), { objects: [gltf], lights: null }).environment).toBeUndefined();
+    expect('environment' in composeScene(inputs(), { objects: [base], lights: null })).toBe(false);
+  });
+
   it('is the default scene with the default attributes and no children', () => {
     expect(composeScene(inputs({ cubeDistance: 0.5, spin: 0.3 }), { objects: null, lights: null })).toEqual(defaultScene(0.5, 0.3));
   });

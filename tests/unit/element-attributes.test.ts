@@ -28,7 +28,7 @@ describe('defaults (docs/element.md#attribute-table)', () => {
       transparency: 0.5, cubeDistance: 0.75, ior: 1.5, fresnel: 'exact', cameraPosition: [3.6, 2.4, 0.2],
       cameraRotation: [-169, -23.6], fov: 60, projection: 'perspective', controls: null, renderer: 'auto', cameraTarget: null,
       cameraSrc: null, poster: null, spin: 0.8, time: null, debugView: 'none', reflectionScale: 1, samples: 4, shading: 'phong',
-      tessellation: 'auto', pixelRatio: 'auto', reflectionFormat: 'rgba8', colorSpace: 'srgb', toneMapping: 'auto', exposure: 1, roughness: 0,
+      tessellation: 'auto', pixelRatio: 'auto', reflectionFormat: 'rgba8', colorSpace: 'srgb', toneMapping: 'auto', exposure: 1, environment: 'neutral', environmentIntensity: 1, roughness: 0,
       roughnessQuality: 'medium', glassCenter: [0, 1, 0], glassNormal: [0, 0, 1], glassSize: [8, 4], background: [0.1, 0.1, 0.1],
     });
     expect(DEFAULT_CAMERA_POSITION).toEqual([3.6, 2.4, 0.2]);
@@ -87,6 +87,17 @@ describe('numbers in a range', () => {
     expectParse('fov', '179', 179);
     expectParse('fov', '179.001', 179, 'above 179, clamped');
     expectParse('fov', 'wide', 60, 'not a number, using 60');
+  });
+
+  it('environment: neutral or none, default neutral; environment-intensity: 0..64, default 1', () => {
+    expectParse('environment', 'none', 'none');
+    expectParse('environment', ' NEUTRAL ', 'neutral');
+    expectParse('environment', 'studio', 'neutral', 'expected one of neutral, none; using neutral');
+    expectParse('environment-intensity', '0', 0);
+    expectParse('environment-intensity', '2.5', 2.5);
+    expectParse('environment-intensity', '-1', 0, 'below 0, clamped');
+    expectParse('environment-intensity', '65', 64, 'above 64, clamped');
+    expectParse('environment-intensity', 'bright', 1, 'not a number, using 1');
   });
 
   it('exposure: 0..64, default 1', () => {

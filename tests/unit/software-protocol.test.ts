@@ -11,6 +11,7 @@ import { SentResources, unpackScene, type SoftwareRequest, type SoftwareResponse
 import { renderBand } from '../../src/software/bands';
 import { SoftwareRenderer } from '../../src/software';
 import { defaultFrameState } from './helpers/frame-state';
+import { BOX_STATE, mirrorToKey } from './helpers/pbr-scenes';
 
 /** The default scene with its first object made a mesh of `data` under `key`. */
 function meshScene(key: string, data: MeshData): Scene {
@@ -161,5 +162,23 @@ describe('the worker (src/software/worker.ts) under a stand-in worker scope', ()
     // What a worker may meet: a thrown value that is not an Error.
     onmessage({ data: request({ id: 11, state: { ...state, get height(): number { throw 'plain words'; } } }) });
     expect(posted.pop()!.message).toEqual({ id: 11, error: 'plain words' });
+  });
+
+  it('a glTF material under an environment: the worker makes the maps first, and the requests after it wait their turn', async () => {
+    // The mirror metal reflecting the key panel (environment-light.test.ts): 153 at the centre with the studio, 0 without.
+    const sent = new SentResources().pack(mirrorToKey(), new Map());
+    onmessage({ data: request({ id: 12, ...sent, state: BOX_STATE }) });
+    onmessage({ data: request({ id: 13, state: BOX_STATE }) });
+    // Neither is drawn yet: the maps are on their way.
+    expect(posted).toEqual([]);
+    await vi.waitFor(() => expect(posted.length).toBe(2), { timeout: 30_000 });
+    const [first, second] = posted.splice(0).map((p) => p.message as Extract<SoftwareResponse, { pixels: Uint8ClampedArray }>);
+    expect([first.id, second.id]).toEqual([12, 13]);
+    const centre = 4 * (16 * 33 + 16);
+    expect(first.pixels[centre]).toBe(153);
+    expect(second.pixels[centre]).toBe(153);
+    // Made once: the next scene with the studio is drawn at once.
+    onmessage({ data: request({ id: 14, ...new SentResources().pack(mirrorToKey(), new Map()), state: BOX_STATE }) });
+    expect((posted.pop()!.message as typeof first).pixels[centre]).toBe(153);
   });
 });
