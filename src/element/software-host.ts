@@ -4,7 +4,7 @@
 // when a page uses it. One frame in flight at a time; the element asks again when it is back.
 // With several workers (one per core, up to MAX_WORKERS) a frame is cut into bands of rows, one
 // per worker, each drawn as in the whole frame (software/bands.ts) and put back together here.
-import { environmentReady } from '../software/environment-ready';
+import { hasPbrMaterial } from '../scene/scene';
 import type { FrameState } from '../frame/types';
 import type { Scene } from '../scene/scene';
 import type { DecodedImage } from '../scene/decoded-image';
@@ -144,9 +144,11 @@ export class SoftwareHost {
    */
   render(scene: Scene, state: FrameState, samplesPerAxis = 1): Promise<Uint8ClampedArray> {
     if (!this.workers.length) {
-      // On the main thread the environment's maps are made here, once (the workers make their own).
-      const ready = environmentReady(scene);
-      return ready ? ready.then(() => this.renderNow(scene, state, samplesPerAxis)) : Promise.resolve(this.renderNow(scene, state, samplesPerAxis));
+      // On the main thread the environment's maps are made here, once (the workers make their own): its code loaded only then.
+      if (scene.environment && hasPbrMaterial(scene)) {
+        return import('../software/environment-ready').then((m) => m.environmentReady(scene)).then(() => this.renderNow(scene, state, samplesPerAxis));
+      }
+      return Promise.resolve(this.renderNow(scene, state, samplesPerAxis));
     }
     const id = ++this.nextId, bands = this.bandsOf(state);
     const drawn = bands.map((band, i) => this.workers[i].draw({ id, state, samplesPerAxis, band }, scene, this.images));

@@ -7,7 +7,12 @@ import { addEnvironment, type EnvironmentMaps } from '../math/environment-maps';
 import { studioRadiance } from '../math/studio';
 import type { RadianceFn } from '../math/split-sum';
 import type { Environment } from '../scene/scene';
-import { keepPrepared, preparedFor, type PreparedEnvironment } from './environment-cache';
+import type { PreparedEnvironment } from './environment-cache';
+
+// The table frame/environment-cache.ts reads, under the same registered symbol (not imported: see there).
+type Table = Map<Environment['kind'], PreparedEnvironment>;
+const table = (): Table => ((globalThis as Record<symbol, Table>)[Symbol.for('glass-plane-scene.environments')] ??= new Map());
+const preparedFor = (environment: Environment): PreparedEnvironment | null => table().get(environment.kind) ?? null;
 
 // One kind so far: the studio.
 const studio: RadianceFn = (out, x, y, z) => { out[0] = out[1] = out[2] = studioRadiance(x, y, z); };
@@ -17,7 +22,7 @@ function keep(environment: Environment, maps: EnvironmentMaps, dfg: Float32Array
     maps, dfg,
     add: (out, intensity, base, metallic, roughness, n, v) => addEnvironment(out, maps, dfg, intensity, base, metallic, roughness, n, v),
   };
-  keepPrepared(environment, made);
+  table().set(environment.kind, made);
   return made;
 }
 

@@ -3,7 +3,20 @@
 // A = ∫ (1 − Fc)·D·V·(n·l) dω and B = ∫ Fc·D·V·(n·l) dω, Fc = (1 − v·h)⁵. The renderers read it to light a
 // metallic-roughness surface from a prefiltered environment; the reference integrates the BRDF itself.
 // Tied down by tests/unit/dfg.test.ts (the albedos of pbr.test.ts at μ = 1, a quadrature over l elsewhere).
-import { smithVisibility } from './pbr';
+
+/**
+ * Smith's height-correlated visibility, ½/((n·l)√((n·v)²(1 − α²) + α²) + (n·v)√((n·l)²(1 − α²) + α²)): smithVisibility of
+ * math/pbr.ts written again (dfg.test.ts holds the two equal), so that the table's making (the environment's chunk) does
+ * not share a module, and with it a chunk, with the CPU renderer's BRDF. Zero where n·l ≤ 0 (n·v is at least 10⁻⁴ here).
+ */
+function visibility(alpha: number, nl: number, nv: number): number {
+  if (nl <= 0) return 0;
+  const a2 = alpha * alpha;
+  return 0.5 / (nl * Math.sqrt(nv * nv * (1 - a2) + a2) + nv * Math.sqrt(nl * nl * (1 - a2) + a2));
+}
+
+/** The table's visibility, for its test. */
+export const dfgVisibility = visibility;
 
 /** Samples per entry of the table: a Hammersley set over the GGX lobe. */
 export const DFG_SAMPLES = 4096;
@@ -43,7 +56,7 @@ export function dfg(out: Float64Array | number[], mu: number, roughness: number,
     const vh = vx * hx + vz * hz;
     // Below the surface (n·l ≤ 0) V is 0 and the sample weighs nothing; v·h ≤ 0 puts l there.
     const nl = 2 * vh * hz - vz;
-    const w = (4 * smithVisibility(alpha, nl, nv) * nl * vh) / nh;
+    const w = (4 * visibility(alpha, nl, nv) * nl * vh) / nh;
     const k = 1 - vh, fc = k * k * k * k * k;
     a += (1 - fc) * w;
     b += fc * w;

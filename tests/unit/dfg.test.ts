@@ -3,7 +3,7 @@
 // l written out here (θ, φ on a grid, f = Fc·D·V from math/pbr.ts's terms, tied down there); the table's addressing:
 // roughness 1 reads roughness 1, μ = 1 reads μ = 1, between entries bilinear.
 import { describe, expect, it } from 'vitest';
-import { DFG_SIZE, dfg, dfgCoordinate, dfgLookup, dfgTable } from '../../src/math/dfg';
+import { DFG_SIZE, dfg, dfgCoordinate, dfgLookup, dfgTable, dfgVisibility } from '../../src/math/dfg';
 import { smithVisibility } from '../../src/math/pbr';
 import { ggxD } from '../../src/math/ggx';
 
@@ -92,5 +92,15 @@ describe('the table', () => {
       expect(out[c]).toBeCloseTo(((e(2, 5) + e(3, 5)) / 2) * 0.75 + ((e(2, 6) + e(3, 6)) / 2) * 0.25, 6);
     }
     expect(DFG_SIZE).toBe(32);
+  });
+});
+
+describe('the table\'s visibility', () => {
+  it('is smithVisibility of math/pbr.ts, written again: equal on a grid of α, n·l and n·v, and 0 below the surface', () => {
+    for (const alpha of [1e-4, 0.01, 0.25, 0.7, 1]) {
+      for (const nl of [-0.3, 0, 1e-4, 0.2, 0.5, 0.9, 1]) {
+        for (const nv of [1e-4, 0.1, 0.6, 1]) expect(dfgVisibility(alpha, nl, nv), `α ${alpha}, n·l ${nl}, n·v ${nv}`).toBe(smithVisibility(alpha, nl, nv));
+      }
+    }
   });
 });
