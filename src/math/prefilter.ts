@@ -2,10 +2,8 @@
 // roughness, each an equirectangular map as fine as its lobe needs, each texel the lobe's mean about its centre
 // (prefiltered() of math/split-sum.ts). Made once per environment (frame/environment-light.ts); the code only a scene with an
 // environment needs. Tied down by tests/unit/environment-maps.test.ts (widths by hand, texels against prefiltered()).
-import { hammersley } from './dfg';
-import { ggxNormal, reflectAbout } from './ggx-sample';
 import type { EnvironmentMaps, EquirectMap } from './environment-maps';
-import type { RadianceFn } from './split-sum';
+import { prefiltered, type RadianceFn } from './split-sum';
 
 /** Level k's roughness of `levels`: (k/(levels − 1))^gamma. */
 export const levelRoughness = (k: number, levels: number, gamma: number): number => (k / (levels - 1)) ** gamma;
@@ -49,30 +47,7 @@ export function texelDirection(out: Float64Array, i: number, j: number, width: n
   return out;
 }
 
-const dir = new Float64Array(3), rgb = new Float64Array(3), xi = new Float64Array(2), h = new Float64Array(3), l = new Float64Array(3);
-const toSurface = new Float64Array(3);
-
-/**
- * The light about R (unit) averaged over the GGX lobe at α (> 0) with n = v = R, each direction weighted by its R·l: prefiltered()
- * of math/split-sum.ts, its Hammersley points drawn once per texel. Into out.
- */
-function lobeMean(out: Float64Array, env: RadianceFn, r: Float64Array, alpha: number, samples: number): void {
-  toSurface[0] = -r[0]; toSurface[1] = -r[1]; toSurface[2] = -r[2];
-  let s0 = 0, s1 = 0, s2 = 0, w = 0;
-  for (let i = 0; i < samples; i++) {
-    hammersley(i, samples, xi);
-    ggxNormal(h, alpha, xi[0], xi[1], r);
-    reflectAbout(l, toSurface, h);
-    const nl = r[0] * l[0] + r[1] * l[1] + r[2] * l[2];
-    // Stryker disable next-line EqualityOperator: at n·l = 0 the sample adds 0 to every sum and to the weight
-    if (nl <= 0) continue;
-    env(rgb, l[0], l[1], l[2]);
-    s0 += rgb[0] * nl; s1 += rgb[1] * nl; s2 += rgb[2] * nl;
-    w += nl;
-  }
-  // w > 0: the first point (ξ₁ = ½/samples) is within a hair of R, whatever α.
-  out[0] = s0 / w; out[1] = s1 / w; out[2] = s2 / w;
-}
+const dir = new Float64Array(3), rgb = new Float64Array(3);
 
 /** The prefiltered maps of `env` (see EnvironmentMapOptions for the defaults), made at once. */
 export function makeEnvironmentMaps(env: RadianceFn, options: EnvironmentMapOptions = {}): EnvironmentMaps {
@@ -98,7 +73,7 @@ export function* environmentMapSteps(env: RadianceFn, options: EnvironmentMapOpt
         texelDirection(dir, i, j, width, height);
         // Stryker disable next-line ConditionalExpression: a shortcut: at α = 0 every point's normal is the texel's direction, so the lobe's mean is its light, read `samples` times
         if (alpha === 0) env(rgb, dir[0], dir[1], dir[2]);
-        else lobeMean(rgb, env, dir, alpha, samples);
+        else prefiltered(rgb, env, dir, r, samples);
         map.rgb.set(rgb, 3 * (j * width + i));
       }
       yield;
