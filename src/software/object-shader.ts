@@ -166,7 +166,7 @@ export class ObjectShader implements FragmentShader {
     i = put(k, i, m.ambient, 3);
     i = put(k, i, m.diffuse, 3);
     i = put(k, i, m.specular, 3);
-    k[i++] = m.shininess; k[i++] = m.opacity; k[i++] = d.twoSided ? 1 : 0; k[i++] = this.top;
+    k[i++] = m.shininess; k[i++] = m.opacity; k[i++] = d.twoSided ? 1 : 0; k[i++] = this.top; k[i++] = l.intensity;
     if (m.emissive) i = put(k, i, m.emissive, 3); else i += 3;
     // Stryker disable next-line ConditionalExpression,EqualityOperator,StringLiteral: culling picks faces, not colours
     k[i++] = r.width; k[i++] = r.height; k[i++] = r.shadeEvery; k[i++] = r.frontCCW ? 1 : 0; k[i++] = r.cull === 'back' ? 1 : 0;
@@ -181,7 +181,7 @@ export class ObjectShader implements FragmentShader {
     }
     const o = this.keyObjects;
     o.length = 0;
-    o.push(mesh, mesh.positions, mesh.normals, mesh.uvs, mesh.indices, mesh.centroids, d.texture, d.shading, m.mapping, m.pbr);
+    o.push(mesh, mesh.positions, mesh.normals, mesh.uvs, mesh.indices, mesh.centroids, d.texture, d.shading, m.mapping, m.pbr, l.environment);
     return k;
   }
 

@@ -13,6 +13,8 @@ import { DEFAULT_CUBE_DISTANCE } from '../../src/element/attributes';
 import { defaultFrameState } from './helpers/frame-state';
 import { differingBytes } from './helpers/pixel-diff';
 import { instrumented } from './helpers/collections';
+import { prepareEnvironment } from '../../src/frame/environment-light';
+import { STUDIO, studioGrid } from './helpers/pbr-scenes';
 import { courseBasis, type CourseCamera } from '../../src/math/course-camera';
 
 const key = (...values: number[]) => {
@@ -150,4 +152,19 @@ describe.skipIf(instrumented)('the software renderer across resizes', () => {
       }
     });
   }
+});
+
+// The environment is a light: a cached colour from before its intensity or its presence changed is stale (a change of
+// `environment-intensity` or `environment` keeps the scene's materials as they were, so nothing else in the key moves).
+describe.skipIf(instrumented)('the software renderer across environment changes', () => {
+  it('every frame of a run of intensities, and of the environment on and off, is a fresh renderer\'s', () => {
+    prepareEnvironment(STUDIO);
+    const state = defaultFrameState({ width: 64, height: 36, cameraPosition: [0, 1.5, 3.3], yaw: -90, pitch: -8, time: 0, spin: 0, toneMapping: 'neutral' });
+    const grid = studioGrid(), live = new SoftwareRenderer();
+    for (const environment of [STUDIO, STUDIO, { ...STUDIO, intensity: 3 }, { ...STUDIO, intensity: 3 }, null, null, STUDIO]) {
+      const scene = { ...grid, environment };
+      const got = live.render(scene, state).slice(), want = new SoftwareRenderer().render(scene, state);
+      expect(differingBytes(got, want), `environment ${JSON.stringify(environment)}`).toBe(0);
+    }
+  });
 });
