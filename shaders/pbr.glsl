@@ -4,14 +4,22 @@
 // fetched by the first frame with a glTF material.
 uniform vec3 uBaseColor;
 uniform vec3 uPbr; // metallic, roughness, unlit (1) or not (0)
+// The maps besides the base colour (docs/gltf.md#drawing), white where a material has none: G roughness and B metallic, R
+// occlusion (by uOcclusionStrength), the emission's colour.
+uniform sampler2D uMetalRough;
+uniform sampler2D uOcclusion;
+uniform sampler2D uEmissiveMap;
+uniform float uOcclusionStrength;
 
-void addPbrLight(vec3 l, vec3 ia, vec3 id, vec3 n, vec3 v, vec3 base, inout vec3 c) {
+// s: metallic, roughness, occlusion (the factors times the maps).
+void addPbrLight(vec3 l, vec3 ia, vec3 id, vec3 n, vec3 v, vec3 base, vec3 s, inout vec3 c) {
   // α = roughness² clamped to [0, 1], at least 0.002 under a point or directional light (punctualAlpha).
-  float r = clamp(uPbr.y, 0.0, 1.0);
+  float r = clamp(s.y, 0.0, 1.0);
   float alpha = max(r * r, 0.002);
-  float metallic = uPbr.x, a2 = alpha * alpha;
+  float metallic = s.x, a2 = alpha * alpha;
   vec3 cdiff = base * (1.0 - metallic);
-  c += ia * cdiff;
+  // Light from everywhere (the ambient term, the environment) is what occlusion dims.
+  c += ia * cdiff * s.z;
   float nl = dot(n, l), nv = dot(n, v);
   if (nl <= 0.0 || nv <= 0.0) return;
   vec3 h = normalize(l + v);
@@ -28,12 +36,22 @@ void addPbrLight(vec3 l, vec3 ia, vec3 id, vec3 n, vec3 v, vec3 base, inout vec3
   c += 3.141592653589793 * id * nl * ((1.0 - fr) * cdiff / 3.141592653589793 + fr * (d * vis));
 }
 
-#define ADD_PBR_LIGHT(i, point) addPbrLight(LIGHT_DIR(i, point), uLightAmbient[i], uLightDiffuse[i], n, v, base, c)
+#define ADD_PBR_LIGHT(i, point) addPbrLight(LIGHT_DIR(i, point), uLightAmbient[i], uLightDiffuse[i], n, v, base, s, c)
 
-/** The lit colour of a glTF material whose base colour (times its texture) is `base`; unlit: `base`. */
-vec3 pbrLights(vec3 n, vec3 v, vec3 relPos, vec3 base) {
-  if (uPbr.z > 0.5) return base;
-  vec3 c = vec3(0.0);
+/**
+ * The colour of a glTF material whose base colour (times its texture) is `base` and emission `e`, its maps read at the UV `uv`
+ * (an image's: at (u, 1 − v)) where the mapping is uv; unlit: `base` + `e`.
+ */
+vec3 pbrColor(vec3 n, vec3 v, vec3 relPos, vec3 base, vec3 e, vec2 uv) {
+  if (uPbr.z > 0.5) return base + e;
+  vec3 s = vec3(uPbr.xy, 1.0);
+#ifdef MAPPING_UV
+  vec2 st = vec2(uv.x, 1.0 - uv.y);
+  s *= vec3(texture(uMetalRough, st).bg, 1.0);
+  s.z = 1.0 + uOcclusionStrength * (texture(uOcclusion, st).r - 1.0);
+  e *= texture(uEmissiveMap, st).rgb;
+#endif
+  vec3 c = e;
   ADD_PBR_LIGHT(0, LIGHT0_POINT);
 #if LIGHT_COUNT > 1
   ADD_PBR_LIGHT(1, LIGHT1_POINT);
@@ -45,7 +63,7 @@ vec3 pbrLights(vec3 n, vec3 v, vec3 relPos, vec3 base) {
   ADD_PBR_LIGHT(3, LIGHT3_POINT);
 #endif
 #ifdef ENVIRONMENT
-  c += environmentLight(n, v, base, uPbr.x, uPbr.y);
+  c += s.z * environmentLight(n, v, base, s.x, s.y);
 #endif
   return c;
 }

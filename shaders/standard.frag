@@ -73,8 +73,7 @@ void main() {
 #if defined(PBR)
   vec3 v = viewVector(vRelPos);
   // The texture is in the base colour, which also sets a metal's F0 (docs/pbr.md#the-scenes-lights).
-  vec3 lit = pbrLights(facing(normalize(vNormal), v), v, vRelPos, uBaseColor * surfaceTexture());
-  outColor = vec4(lit + uEmissive, uOpacity);
+  outColor = vec4(pbrColor(facing(normalize(vNormal), v), v, vRelPos, uBaseColor * surfaceTexture(), uEmissive, vUv), uOpacity);
 #else
 #if defined(SHADING_PHONG)
   vec3 v = viewVector(vRelPos);

@@ -6,6 +6,7 @@ const PBR = 'tests/e2e/pbr.spec.ts';
 const TONE = 'tests/e2e/tone-mapping.spec.ts';
 const CHUNK = 'tests/e2e/pbr-chunk.spec.ts';
 const ENV = 'tests/e2e/environment.spec.ts';
+const MAPS = 'tests/e2e/pbr-maps.spec.ts';
 const GLSL = 'GLSL: Stryker does not mutate shader source (shaders/)';
 
 export default [
@@ -128,5 +129,41 @@ export default [
     why: 'a page\'s tasks: only a browser runs them',
     edits: [{ file: 'src/render/parts.ts', find: "load: () => import('./environment-gl').then((m) => m.studioReady().then(() => m)),", replace: "load: () => import('./environment-gl')," }],
     tests: [ENV],
+  },
+  {
+    name: 'P21 the maps read at (u, v), not at an image\'s (u, 1 − v)',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: '  vec2 st = vec2(uv.x, 1.0 - uv.y);', replace: '  vec2 st = uv;' }],
+    tests: [MAPS],
+  },
+  {
+    name: 'P22 the metallic-roughness map\'s channels swapped (G metallic, B roughness)',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: 's *= vec3(texture(uMetalRough, st).bg, 1.0);', replace: 's *= vec3(texture(uMetalRough, st).gb, 1.0);' }],
+    tests: [MAPS],
+  },
+  {
+    name: 'P23 the occlusion map\'s strength not applied (R itself)',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: 's.z = 1.0 + uOcclusionStrength * (texture(uOcclusion, st).r - 1.0);', replace: 's.z = texture(uOcclusion, st).r;' }],
+    tests: [MAPS],
+  },
+  {
+    name: 'P24 occlusion not applied to the environment',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: 'c += s.z * environmentLight(n, v, base, s.x, s.y);', replace: 'c += environmentLight(n, v, base, s.x, s.y);' }],
+    tests: [MAPS],
+  },
+  {
+    name: 'P25 the emissive map held as stored in srgb, not as colour',
+    why: 'a texture\'s format in WebGL: only a browser samples it',
+    edits: [{ file: 'src/render/pbr-maps-gl.ts', find: 'mipmap: true, repeat: true, srgb, anisotropic: srgb }', replace: 'mipmap: true, repeat: true, srgb: false, anisotropic: srgb }' }],
+    tests: [MAPS],
+  },
+  {
+    name: 'P26 the occlusion map bound on the emissive map\'s unit',
+    why: 'texture units of the WebGL object pass: only a browser draws them',
+    edits: [{ file: 'src/render/pbr-maps-gl.ts', find: "gl.uniform1i(p.location('uOcclusion'), OCCLUSION_UNIT);", replace: "gl.uniform1i(p.location('uOcclusion'), EMISSIVE_UNIT);" }],
+    tests: [MAPS],
   },
 ];

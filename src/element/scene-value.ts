@@ -8,7 +8,7 @@
 // in, `scene` is the value unturned.
 import type { ReadonlyQuat } from 'gl-matrix';
 import { isIdentity, type SceneTurn } from '../scene/turn';
-import { deepFreeze, type Scene } from '../scene/scene';
+import { deepFreeze, materialImages, type Scene } from '../scene/scene';
 import { composeScene, SCENE_ATTRIBUTES, type ChildParts, type SceneInputs } from './compose-scene';
 import type { SceneAttributes } from './attributes';
 
@@ -51,7 +51,7 @@ export class SceneValue {
   get current(): Scene {
     if (!this.value) {
       this.value = deepFreeze(composeScene(this.host.inputs(), this.host.parts()));
-      this.images = this.value.objects.some((o) => o.material.texture.kind === 'image');
+      this.images = this.value.objects.some((o) => materialImages(o.material).length > 0);
       this.centered = false;
       this.builds++;
     }

@@ -2,11 +2,13 @@
 // per page into the pixels every renderer takes (DecodedImage), handed to the element's backend
 // when ready. Until then, or when an image fails (one warning per URL), the object keeps the
 // procedural texture and the scene keeps drawing.
-import type { Scene } from '../scene/scene';
+import { materialImages, type Scene } from '../scene/scene';
 import type { DecodedImage } from '../scene/decoded-image';
 import { warn } from './warnings';
 
 const decoded = new Map<string, Promise<DecodedImage | null>>();
+/** The images whose decoding has settled (null: failed), for whoever asks after: handed over at once, not a task later. */
+const settled = new Map<string, DecodedImage | null>();
 
 /** A bitmap's pixels, read once through a 2D canvas (RGBA8, top row first); the bitmap is closed. */
 function pixelsOf(bitmap: ImageBitmap): DecodedImage {
@@ -31,6 +33,10 @@ export function decodeImage(url: string): Promise<DecodedImage | null> {
       .catch((e: unknown) => {
         warn(`texture "${url}" could not be loaded (${e instanceof Error ? e.message : String(e)}); using the procedural texture`);
         return null;
+      })
+      .then((image) => {
+        settled.set(url, image);
+        return image;
       });
     decoded.set(url, p);
   }
@@ -71,17 +77,25 @@ export class TextureImages {
   sync(scene: Scene): void {
     if (scene === this.lastScene) return;
     this.lastScene = scene;
-    for (const o of scene.objects) {
-      const t = o.material.texture;
-      if (t.kind !== 'image' || this.asked.has(t.url)) continue;
-      const url = t.url;
+    for (const o of scene.objects) for (const url of materialImages(o.material)) {
+      if (this.asked.has(url)) continue;
       this.asked.add(url);
+      // Decoded already (a child's `load` waits for its images): in this frame, the one `load` promised them to.
+      const now = settled.get(url);
+      if (now !== undefined) {
+        if (now) this.take(url, now);
+        continue;
+      }
       void decodeImage(url).then((image) => {
         if (!image) return;
-        this.ready.set(url, image);
-        this.host.sink()?.setImage(url, image);
+        this.take(url, image);
         this.host.loaded();
       });
     }
+  }
+
+  private take(url: string, image: DecodedImage): void {
+    this.ready.set(url, image);
+    this.host.sink()?.setImage(url, image);
   }
 }

@@ -10,7 +10,8 @@ import { ViewCamera } from './view-camera';
 import { Ray } from './ray';
 import { RayScene } from './ray-scene';
 import { colourCeiling, type ViewState } from './reference-state';
-import { clamp01, clampTo, composeGlass, glassFresnel, prepareLight, shadeObject, shadePbr, type EnvironmentShading, type PreparedLight } from './shade';
+import { clamp01, clampTo, composeGlass, glassFresnel, prepareLight, shadeObject, type EnvironmentShading, type PreparedLight } from './shade';
+import { shadeGltf } from './gltf-surface';
 import type { SurfaceCodes } from './surface-codes';
 import { SurfaceHit, SURFACE_NONE } from './surface-hit';
 import { Layer } from './layer';
@@ -20,7 +21,6 @@ import { ggxAlpha } from '../math/ggx';
 import { RoughGlass, type Microfacets } from './rough-glass';
 
 export { MAX_FOOTPRINT_TEXELS, type TextureFilter } from './surface-texture';
-
 /** Surfaces per key digit in the default scene (0 none, 1..6 cube faces, 7 sphere, 8 glass). */
 export const KEY_BASE = 9;
 
@@ -291,7 +291,7 @@ export class SampleTracer {
   private shade(hit: SurfaceHit, ray: Ray, eye: Float64Array, layer: Layer, out: Float64Array): void {
     const object = this.scene.scene.objects[hit.object], m = object.material, view = this.camera.orthographic ? this.towardsViewer(ray) : null;
     const tex = this.texture.objectTexture(hit, ray, m, object.bounds, layer.tex);
-    if (m.pbr) shadePbr(hit, m.pbr, m.emissive, tex, this.lights, eye, out, view, this.environment);
+    if (m.pbr) shadeGltf(this.texture, hit, ray, m, tex, this.lights, eye, out, view, this.environment);
     else shadeObject(hit, m, tex, this.lights, eye, out, view);
     out[0] = clampTo(out[0], this.top); out[1] = clampTo(out[1], this.top); out[2] = clampTo(out[2], this.top);
   }

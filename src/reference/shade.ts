@@ -3,7 +3,7 @@ import { fresnel, type FresnelModel } from '../math/fresnel';
 import { gltfBrdf, punctualAlpha, type PbrPoint } from '../math/pbr';
 import type { PbrMaterial } from '../scene/pbr-material';
 import { GLASS_BODY as BODY } from '../scene/default-scene';
-import type { Light, Material, Vec3 } from '../scene/scene';
+import type { Light, Material } from '../scene/scene';
 import type { SurfaceHit } from './surface-hit';
 import { environmentLight, type EnvironmentLight } from './pbr-light';
 import { ggxAlpha } from '../math/ggx';
@@ -117,14 +117,15 @@ const brdf = new Float64Array(3);
  * plus the material's emissive (which the element does not give an unlit material).
  */
 export function shadePbr(
-  hit: SurfaceHit, pbr: PbrMaterial, emissive: Vec3 | undefined, tex: Float64Array, lights: readonly PreparedLight[],
+  hit: SurfaceHit, pbr: PbrMaterial, emissive: ArrayLike<number> | undefined, tex: Float64Array, lights: readonly PreparedLight[],
   eye: Float64Array, out: Float64Array, towardsViewer: Float64Array | null = null, environment: EnvironmentShading | null = null,
+  surface: PbrSurface | null = null,
 ): Float64Array {
   const base = pbrPoint.baseColor;
   // Stryker disable next-line EqualityOperator: k = 3 writes base[3], past the end of its 3 elements: dropped
   for (let k = 0; k < 3; k++) base[k] = pbr.baseColor[k] * tex[k];
   if (pbr.unlit) out.set(base);
-  else litPbr(hit, pbr, lights, eye, out, towardsViewer, environment);
+  else litPbr(hit, surface ?? { metallic: pbr.metallic, roughness: pbr.roughness, occlusion: 1 }, lights, eye, out, towardsViewer, environment);
   // Stryker disable next-line EqualityOperator: k = 3 writes out[3], past the end of its 3 elements: dropped
   if (emissive !== undefined) for (let k = 0; k < 3; k++) out[k] += emissive[k];
   return out;
@@ -132,8 +133,16 @@ export function shadePbr(
 
 const view = new Float64Array(3);
 
+/** A glTF material's metallic, roughness and occlusion at a point: its factors times its maps (reference/gltf-surface.ts). */
+export interface PbrSurface {
+  metallic: number;
+  roughness: number;
+  /** 1 + strength·(map − 1): what the ambient term and the environment are multiplied by. */
+  occlusion: number;
+}
+
 function litPbr(
-  hit: SurfaceHit, pbr: PbrMaterial, lights: readonly PreparedLight[], eye: Float64Array, out: Float64Array, towardsViewer: Float64Array | null,
+  hit: SurfaceHit, pbr: PbrSurface, lights: readonly PreparedLight[], eye: Float64Array, out: Float64Array, towardsViewer: Float64Array | null,
   environment: EnvironmentShading | null,
 ): void {
   const base = pbrPoint.baseColor;
@@ -164,14 +173,14 @@ function litPbr(
     gltfBrdf(brdf, pbrPoint, nl, nv, (n[0] * hx + n[1] * hy + n[2] * hz) / hl, (vx * hx + vy * hy + vz * hz) / hl);
     const m = Math.PI * Math.max(nl, 0);
     // Stryker disable next-line EqualityOperator: k = 3 writes out[3], past the end of its 3 elements: dropped
-    for (let k = 0; k < 3; k++) out[k] += light.ambient[k] * base[k] * dielectric + m * light.diffuse[k] * brdf[k];
+    for (let k = 0; k < 3; k++) out[k] += light.ambient[k] * base[k] * dielectric * pbr.occlusion + m * light.diffuse[k] * brdf[k];
   }
   if (environment === null) return;
   view[0] = vx; view[1] = vy; view[2] = vz;
   pbrPoint.alpha = ggxAlpha(pbr.roughness);
   const { mean } = environmentLight(pbrPoint, n, view, environment.light, environment.samples, environment.random);
   // Stryker disable next-line EqualityOperator: k = 3 writes out[3], past the end of its 3 elements: dropped
-  for (let k = 0; k < 3; k++) out[k] += environment.intensity * mean[k];
+  for (let k = 0; k < 3; k++) out[k] += environment.intensity * pbr.occlusion * mean[k];
 }
 
 /** F for a glass hit seen along `direction`: cosθ = |N·V| clamped to [0, 1], as glass.frag does. */

@@ -24,6 +24,7 @@ export class SurfaceTexture {
   singular = false;
   readonly procedural: ChannelTexture;
   private readonly images = new Map<string, ChannelTexture | null>();
+  private readonly maps: Record<ColorSpace, Map<string, ChannelTexture | null>> = { srgb: new Map(), none: new Map() };
   private readonly edge1 = new Float64Array(2);
   private readonly edge2 = new Float64Array(2);
   private readonly uv = new Float64Array(2);
@@ -58,6 +59,21 @@ export class SurfaceTexture {
       this.images.set(source.url, tex);
     }
     return tex ?? (source.fallback === 'none' ? this.plain() : this.procedural);
+  }
+
+  /**
+   * A glTF map's image by URL at the hit's UV (TEXCOORD_0) into `out` (docs/gltf.md#drawing): decoded to linear light when it is
+   * `colour` in an srgb frame, as stored otherwise; null when its image is missing or malformed (the factor alone).
+   */
+  mapAt(url: string, colour: boolean, hit: SurfaceHit, ray: Ray, out: Float64Array): Float64Array | null {
+    const space = colour ? this.colorSpace : 'none', built = this.maps[space];
+    let tex = built.get(url);
+    if (tex === undefined) {
+      const image = this.decoded.get(url);
+      tex = image === undefined ? null : imageTexture(image, space);
+      built.set(url, tex);
+    }
+    return tex === null ? null : this.sample(tex, hit.u, hit.v, hit.gu, hit.gv, hit, ray, out);
   }
 
   /** 1×1 white: no texture. */

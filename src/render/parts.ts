@@ -79,7 +79,10 @@ export const PBR_MATERIALS: Part<typeof import('./pbr-gl')> = {
   name: 'glTF materials and tone mapping', chunk: 'pbr-gl', load: () => import('./pbr-gl'),
   needed: (h) => hasPbrMaterial(h.ctx.scene) || toneMapped(h.ctx.state), holds: true,
   instead: 'drawing glTF materials with their Blinn-Phong stand-in, without tone mapping',
-  arrived: (h, m) => h.ctx.programs.setPbrSources(m.PBR_SOURCE, m.TONE_MAP_SOURCE),
+  arrived: (h, m) => {
+    h.ctx.programs.setPbrSources(m.PBR_SOURCE, m.TONE_MAP_SOURCE);
+    h.ctx.pbrMaps ??= new m.PbrMapsGl(h.ctx.gl, h.counter);
+  },
 };
 
 /** An environment's light on glTF materials (docs/pbr.md#the-environment): its shader part, given to the program cache, and its textures. */

@@ -10,3 +10,5 @@ export const PBR_SOURCE: string = pbr;
 
 /** shaders/tone-map.glsl: encode.frag's TONE_* variants take it after their #define. */
 export const TONE_MAP_SOURCE: string = toneMap;
+
+export { PbrMapsGl } from './pbr-maps-gl';

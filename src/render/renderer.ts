@@ -139,6 +139,7 @@ export class Renderer implements DebugViewFrame {
       transparentDepth: false,
       hdr: false,
       environment: null,
+      pbrMaps: null,
       scissor: null,
       triangles: { scene: 0, reflection: 0 },
     };
@@ -233,6 +234,7 @@ export class Renderer implements DebugViewFrame {
     this.reflectionMsaa = this.mainMsaa = null;
     this.rough.dispose();
     this.ctx.environment?.dispose();
+    this.ctx.pbrMaps?.dispose();
     this.glassMesh.dispose();
     this.textures.dispose();
     this.shared.release();
@@ -251,6 +253,7 @@ export class Renderer implements DebugViewFrame {
     const srgb = state.colorSpace === 'srgb';
     this.textures.setColorSpace(srgb);
     this.textures.sync(scene, images);
+    this.ctx.pbrMaps?.sync(scene, images, srgb);
     for (let k = 0; k < 3; k++) this.background[k] = srgb ? srgbToLinear(scene.background[k]) : scene.background[k];
     this.setup.update(state, scene);
     this.ctx.hdr = toneMapped(state) && this.canHalfFloat && this.programs.hasPbr;

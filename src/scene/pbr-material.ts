@@ -47,3 +47,9 @@ export interface PbrMaterialOf<Source> {
 /** A texture of the scene: an image by URL (absolute, data: or blob:). */
 export type PbrTexture = PbrTextureOf<{ url: string }>;
 export type PbrMaterial = PbrMaterialOf<{ url: string }>;
+
+/**
+ * A map as every renderer reads it (docs/gltf.md#drawing): on TEXCOORD_0, the mesh's UV; one on TEXCOORD_1 is not read (the
+ * material's factor alone), as the base colour's is not.
+ */
+export const readMap = (t: PbrTexture | null): PbrTexture | null => (t !== null && t.texCoord === 0 ? t : null);

@@ -2,7 +2,7 @@
 // float64 reference read. The element builds it from its attributes and children; nothing
 // downstream knows what an object is called, only its geometry, transform and material.
 import type { MeshData } from './geometry/mesh-data';
-import type { PbrMaterial } from './pbr-material';
+import { readMap, type PbrMaterial } from './pbr-material';
 
 export type Vec3 = readonly [number, number, number];
 
@@ -114,6 +114,17 @@ export interface Scene {
   background: Vec3;
   /** Absent or null: none; glTF materials see only the lights. */
   environment?: Environment | null;
+}
+
+/** The images `m` draws with, by URL: its texture's, and a glTF material's maps' (docs/gltf.md#drawing). Asked when a scene is new. */
+export function materialImages(m: Material): string[] {
+  const urls = m.texture.kind === 'image' ? [m.texture.url] : [];
+  const p = m.pbr;
+  if (p) for (const t of [p.metallicRoughnessTexture, p.occlusionTexture, p.emissiveTexture]) {
+    const read = readMap(t);
+    if (read) urls.push(read.source.url);
+  }
+  return urls;
 }
 
 /** Whether a scene has a glTF material (docs/pbr.md#the-scenes-lights). Reads; allocates nothing (asked every frame). */

@@ -99,11 +99,14 @@ const brdf = new Float64Array(3), normal = new Float64Array(3), toViewer = new F
 
 /**
  * A metallic-roughness surface under the scene's lights (docs/pbr.md#the-scenes-lights), into out[0..2], for g as
- * blinnPhong's and `base` the base colour times its texture: per light Ia⊙c_diff, and where N·L > 0
- * and N·V > 0, π·f(l, v)⊙Id·(N·L) with f of math/pbr.ts at α = punctualAlpha(roughness); plus the environment's split sum
- * from its maps (PreparedEnvironment.add, docs/pbr.md#prefiltered-maps). Unlit: the base colour.
+ * blinnPhong's, `base` the base colour times its texture and `surface` its metallic, roughness and occlusion (the factors times
+ * their maps): per light Ia⊙c_diff·occlusion, and where N·L > 0 and N·V > 0, π·f(l, v)⊙Id·(N·L) with f of math/pbr.ts at
+ * α = punctualAlpha(roughness); plus the environment's split sum from its maps (PreparedEnvironment.add,
+ * docs/pbr.md#prefiltered-maps) times the occlusion. Unlit: the base colour.
  */
-export function pbrLights(lights: Lights, m: PbrMaterial, twoSided: boolean, g: Float64Array, base: ArrayLike<number>, out: Float64Array): void {
+export function pbrLights(
+  lights: Lights, m: PbrMaterial, twoSided: boolean, g: Float64Array, base: ArrayLike<number>, surface: ArrayLike<number>, out: Float64Array,
+): void {
   const br = base[0], bg = base[1], bb = base[2];
   if (m.unlit) {
     out[0] = br; out[1] = bg; out[2] = bb;
@@ -113,14 +116,15 @@ export function pbrLights(lights: Lights, m: PbrMaterial, twoSided: boolean, g: 
   let nx = g[3], ny = g[4], nz = g[5];
   if (twoSided && nx * vx + ny * vy + nz * vz < 0) { nx = -nx; ny = -ny; nz = -nz; }
   const nv = nx * vx + ny * vy + nz * vz;
-  const metallic = m.metallic, dielectric = 1 - metallic;
+  const metallic = surface[0], roughness = surface[1], occlusion = surface[2], dielectric = 1 - metallic;
   point.baseColor[0] = br; point.baseColor[1] = bg; point.baseColor[2] = bb;
   point.metallic = metallic;
-  point.alpha = punctualAlpha(m.roughness);
+  point.alpha = punctualAlpha(roughness);
   let r = 0, gr = 0, b = 0;
   const vec = lights.vector, ia = lights.ambient, id = lights.diffuse;
   for (let i = 0; i < lights.count; i++) {
-    r += ia[3 * i] * br * dielectric; gr += ia[3 * i + 1] * bg * dielectric; b += ia[3 * i + 2] * bb * dielectric;
+    // Light from everywhere (the ambient term, the environment) is what occlusion dims (docs/gltf.md#drawing).
+    r += ia[3 * i] * br * dielectric * occlusion; gr += ia[3 * i + 1] * bg * dielectric * occlusion; b += ia[3 * i + 2] * bb * dielectric * occlusion;
     let lx = vec[3 * i], ly = vec[3 * i + 1], lz = vec[3 * i + 2];
     if (lights.point[i] === 1) {
       lx -= px; ly -= py; lz -= pz;
@@ -138,9 +142,9 @@ export function pbrLights(lights: Lights, m: PbrMaterial, twoSided: boolean, g: 
   const env = lights.environment;
   if (env !== null) {
     normal[0] = nx; normal[1] = ny; normal[2] = nz; toViewer[0] = vx; toViewer[1] = vy; toViewer[2] = vz;
-    sum[0] = r; sum[1] = gr; sum[2] = b;
-    env.add(sum, lights.intensity, point.baseColor, metallic, m.roughness, normal, toViewer);
-    r = sum[0]; gr = sum[1]; b = sum[2];
+    sum[0] = 0; sum[1] = 0; sum[2] = 0;
+    env.add(sum, lights.intensity, point.baseColor, metallic, roughness, normal, toViewer);
+    r += occlusion * sum[0]; gr += occlusion * sum[1]; b += occlusion * sum[2];
   }
   out[0] = r; out[1] = gr; out[2] = b;
 }

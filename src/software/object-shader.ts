@@ -6,7 +6,9 @@ import { cylindricalUV, sphericalUV, triplanarScale, triplanarUV, TRIPLANAR_U, T
 import type { MeshData } from '../scene/geometry/mesh-data';
 import type { Bounds, Material } from '../scene/scene';
 import type { Shading } from '../frame/types';
-import { blinnPhong, pbrLights, type Lights } from './lighting';
+import { blinnPhong, type Lights } from './lighting';
+import { pbrFragment } from './pbr-fragment';
+import type { PbrMaps } from './image-textures';
 import type { MipTexture } from './mip-texture';
 import { CLIP_DISTANCE, VARYINGS, type FragmentShader, type Rasterizer } from './raster';
 import { OBJECT_KEY_LENGTH, type ObjectCache } from './object-cache';
@@ -32,6 +34,7 @@ export interface ObjectDraw {
   material: Material;
   bounds: Bounds;
   texture: MipTexture;
+  maps: PbrMaps;
   twoSided: boolean;
   shading: Shading;
   lights: Lights;
@@ -181,7 +184,8 @@ export class ObjectShader implements FragmentShader {
     }
     const o = this.keyObjects;
     o.length = 0;
-    o.push(mesh, mesh.positions, mesh.normals, mesh.uvs, mesh.indices, mesh.centroids, d.texture, d.shading, m.mapping, m.pbr, l.environment);
+    const t = d.maps;
+    o.push(mesh, mesh.positions, mesh.normals, mesh.uvs, mesh.indices, mesh.centroids, d.texture, d.shading, m.mapping, m.pbr, l.environment, t.metalRough, t.occlusion, t.emissive);
     return k;
   }
 
@@ -271,14 +275,12 @@ export class ObjectShader implements FragmentShader {
     let cr: number, cg: number, cb: number;
     if (pbr === undefined) {
       cr = tex[0] * sums[0] + sums[3]; cg = tex[1] * sums[1] + sums[4]; cb = tex[2] * sums[2] + sums[5];
+      if (e !== undefined) { cr += e[0]; cg += e[1]; cb += e[2]; }
     } else {
-      // A glTF material: its texture is in the base colour, which also sets a metal's F0.
-      const bc = pbr.baseColor, base = this.part;
-      base[0] = bc[0] * tex[0]; base[1] = bc[1] * tex[1]; base[2] = bc[2] * tex[2];
-      pbrLights(d.lights, pbr, d.twoSided, this.geometry, base, sums);
+      // A glTF material: its texture is in the base colour, which also sets a metal's F0; its maps read at the UV.
+      pbrFragment(d.lights, d.material, d.twoSided, this.geometry, tex, d.maps, d.material.mapping === 'uv' ? this.lookup : null, sums);
       cr = sums[0]; cg = sums[1]; cb = sums[2];
     }
-    if (e !== undefined) { cr += e[0]; cg += e[1]; cb += e[2]; }
     this.cr = cr < 0 ? 0 : cr > this.top ? this.top : cr;
     this.cg = cg < 0 ? 0 : cg > this.top ? this.top : cg;
     this.cb = cb < 0 ? 0 : cb > this.top ? this.top : cb;
@@ -394,6 +396,4 @@ function setGeometry(
   g[0] = px; g[1] = py; g[2] = pz; g[3] = nx; g[4] = ny; g[5] = nz; g[6] = vx; g[7] = vy; g[8] = vz;
 }
 
-function addScaled(out: Float64Array, v: Float64Array, w: number): void {
-  out[0] += w * v[0]; out[1] += w * v[1]; out[2] += w * v[2];
-}
+const addScaled = (out: Float64Array, v: Float64Array, w: number): void => { out[0] += w * v[0]; out[1] += w * v[1]; out[2] += w * v[2]; };

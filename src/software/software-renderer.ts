@@ -10,14 +10,15 @@ import { CourseProjection } from '../frame/course-projection';
 import { orthographicView } from '../frame/orthographic-view';
 import { FrameSetup } from '../frame/frame-setup';
 import type { FrameState } from '../frame/types';
-import type { DecodedImage, SceneImages } from '../scene/decoded-image';
+import type { SceneImages } from '../scene/decoded-image';
 import { DefaultSceneCache } from '../scene/default-scene';
 import type { Scene, SceneObject } from '../scene/scene';
 import { GlassShader, GLASS_INDICES, GLASS_TIE_BIAS } from './glass-shader';
 import { Lights } from './lighting';
 import { isTwoSided } from '../frame/mesh-choice';
 import { SoftwareMeshes } from './meshes';
-import { imageMipTexture, proceduralMipTexture, type MipTexture } from './mip-texture';
+import { proceduralMipTexture } from './mip-texture';
+import { ImageTextures } from './image-textures';
 import { ObjectShader, type ObjectDraw, type SoftwareTiming } from './object-shader';
 import { ObjectCache } from './object-cache';
 import { Rasterizer } from './raster';
@@ -41,8 +42,6 @@ type Selection = 'opaque' | 'transparent';
 type Side = 'all' | 'eye' | 'beyond';
 
 const BLACK = [0, 0, 0] as const;
-/** A plain material's texture (tex = 1, in either colour space). */
-const WHITE = imageMipTexture({ width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }, 'none')!;
 
 export class SoftwareRenderer {
   samplesPerAxis: number;
@@ -64,8 +63,7 @@ export class SoftwareRenderer {
   private reflection = new Float32Array(0);
   private mask = new Uint8Array(0);
   private output = new Uint8ClampedArray(0);
-  /** Each image's texture, built once per colour space it is drawn in. */
-  private readonly images: Record<ColorSpace, WeakMap<DecodedImage, MipTexture | null>> = { srgb: new WeakMap(), none: new WeakMap() };
+  private readonly textures = new ImageTextures();
   // Stryker disable StringLiteral,ArrayDeclaration,ObjectLiteral,BooleanLiteral: first values, each set before it is read (space, transparent, the glass's texture by prepare(), every field of draw by drawObjects()); options {} has no samplesPerAxis either
   /** The frame's colour space, and the background in it (decoded with 'srgb'). */
   private space: ColorSpace = 'none';
@@ -101,7 +99,7 @@ export class SoftwareRenderer {
       mesh: { positions: new Float32Array(0), normals: new Float32Array(0), uvs: new Float32Array(0), indices: new Uint16Array(0) },
       model: new Float64Array(16), normal: new Float64Array(9), eye: [0, 0, 0], view: [0, 0, 0, 1], viewProjection: new Float64Array(16),
       clipPlane: null, material: undefined as unknown as ObjectDraw['material'], bounds: { center: [0, 0, 0], radius: 1 },
-      texture: this.glassShader.texture, twoSided: false, shading: 'phong', lights: this.lightsMain, cache: null, index: 0,
+      texture: this.glassShader.texture, twoSided: false, shading: 'phong', lights: this.lightsMain, cache: null, index: 0, maps: { metalRough: null, occlusion: null, emissive: null },
     };
   }
   // Stryker restore StringLiteral,ArrayDeclaration,ObjectLiteral,BooleanLiteral
@@ -370,7 +368,8 @@ export class SoftwareRenderer {
       d.clipPlane = clip;
       d.material = o.material;
       d.bounds = o.bounds;
-      d.texture = this.textureOf(o, images);
+      d.texture = this.textures.base(o.material, images, this.space);
+      this.textures.maps(o.material.pbr, images, this.space, d.maps);
       d.twoSided = isTwoSided(o.geometry);
       d.shading = state.shading;
       d.lights = mirrored ? this.lightsMirrored : this.lightsMain;
@@ -383,18 +382,5 @@ export class SoftwareRenderer {
       this.objectShader.render(d, r);
     }
     r.depthBias = 0;
-  }
-
-  private textureOf(o: SceneObject, images: SceneImages | null | undefined): MipTexture {
-    const source = o.material.texture, space = this.space;
-    if (source.kind === 'none') return WHITE;
-    if (source.kind !== 'image') return proceduralMipTexture(space);
-    const missing = source.fallback === 'none' ? WHITE : proceduralMipTexture(space);
-    const image = images?.get(source.url);
-    if (image === undefined) return missing;
-    const built = this.images[space];
-    let t = built.get(image);
-    if (t === undefined) built.set(image, (t = imageMipTexture(image, space)));
-    return t ?? missing;
   }
 }

@@ -6,6 +6,8 @@ import type { Page } from '@playwright/test';
 import { test, expect, mount, openPage, capture, setAttributes, type SceneElement } from './fixtures';
 import { countGlObjects, glCensus, liveTotal, type Census } from './helpers/gl-census';
 import { compareImages } from './helpers/golden';
+import { mountHtml } from './helpers/scene-children';
+import { mapsGlb } from './helpers/gltf-models';
 
 const SIZE = { width: 160, height: 90 };
 
@@ -189,4 +191,22 @@ test('a removed element takes no part in a later context loss and restore: no er
   await page.evaluate(() => new Promise((r) => setTimeout(r, 300)));
   expect(await page.evaluate(() => (window as unknown as { __removedErrors: number }).__removedErrors), 'error events on the removed element').toBe(0);
   expect((await glCensus(page)).live, 'live GL objects after the restore: the remaining element\'s only').toEqual(onlyA);
+});
+
+test('a glTF material\'s maps and the environment\'s textures are counted and deleted with the element', async ({ page }) => {
+  const before = (await glCensus(page)).live;
+  const glb = await mapsGlb();
+  await page.route('**/wild/maps.glb', (route) => route.fulfill({ status: 200, contentType: 'model/gltf-binary', body: Buffer.from(glb) }));
+  await mountHtml(page, `<glass-plane-scene id="maps" time="0" spin="0" style="width: 160px; height: 90px">
+    <glass-object src="/wild/maps.glb"></glass-object></glass-plane-scene>`);
+  await page.evaluate(() => new Promise((r) => {
+    const el = document.querySelector('#maps') as unknown as HTMLElement & { requestRender(): void };
+    el.addEventListener('frame', r, { once: true });
+    el.requestRender();
+  }));
+  const { live } = await glCensus(page);
+  // The three maps, the white texel that stands for a missing one, and the environment's two textures, at least.
+  expect(live.textures, 'live textures while mounted').toBeGreaterThanOrEqual(6);
+  expect(liveTotal(live) - live.syncs, 'census = stats.resources.total while mounted').toBe(await elementTotal(page, '#maps'));
+  expect(await remove(page, '#maps'), 'live GL objects after removal, per kind').toEqual(before);
 });

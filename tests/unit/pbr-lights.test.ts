@@ -45,7 +45,7 @@ const LIGHTS: Light[] = [
 function software(ls: Light[], n: V3, v: V3, twoSided = false, m = M, lights = new Lights()): Float64Array {
   lights.set(litBy(ls), ls.flatMap((l) => l.vector), [0, 0, 0]);
   const out = new Float64Array(6);
-  pbrLights(lights, m, twoSided, new Float64Array([...P, ...n, ...v]), BASE, out);
+  pbrLights(lights, m, twoSided, new Float64Array([...P, ...n, ...v]), BASE, [m.metallic, m.roughness, 1], out);
   return out;
 }
 

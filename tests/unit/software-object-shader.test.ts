@@ -67,7 +67,7 @@ function draw(o: Partial<ObjectDraw> = {}): ObjectDraw {
   return {
     mesh: quad(UP), model: identity4(), normal: identity3(), eye: [0, 0, 2], view: [0, 0, 1, 0], viewProjection: VP(),
     clipPlane: null, material: material(), bounds: { center: [0, 0, 0], radius: 1 }, texture: WHITE, twoSided: false,
-    shading: 'phong', lights: AMBIENT_ONLY(), cache: null, index: 0, ...o,
+    shading: 'phong', lights: AMBIENT_ONLY(), cache: null, index: 0, maps: { metalRough: null, occlusion: null, emissive: null }, ...o,
   };
 }
 
@@ -566,13 +566,18 @@ describe('the frame-to-frame cache', () => {
     r.shadeEvery = 2;
     r.clearDepth();
     s.colour = new Float32Array(3 * 96);
-    s.render(base({ cache, index: 3 }), r);
+    // The environment and the maps are keyed by identity: markers stand for them.
+    const lit = AMBIENT_ONLY(), env = {} as NonNullable<Lights['environment']>;
+    lit.environment = env;
+    const maps = { metalRough: {} as MipTexture, occlusion: {} as MipTexture, emissive: {} as MipTexture };
+    s.render(base({ cache, index: 3, lights: lit, maps }), r);
     // 8×12 samples at 2×2 a pixel: 4×6 = 24 pixels.
     expect(begin).toHaveBeenCalledWith(3, expect.any(Float64Array), expect.any(Array), 24);
     const objects = begin.mock.calls[0][2] as unknown[];
-    expect(objects.length).toBe(10);
+    expect(objects.length).toBe(14);
     expect(objects[0]).toBe(SHARED);
-    expect(objects.slice(6)).toEqual([TEX, 'phong', 'uv', undefined]);
+    expect(objects.slice(6, 10)).toEqual([TEX, 'phong', 'uv', undefined]);
+    [env, maps.metalRough, maps.occlusion, maps.emissive].forEach((o, k) => expect(objects[10 + k], `object ${10 + k}`).toBe(o));
   });
 
   it('is not used by transparent draws, by draws that write distance codes, or by the constant-fragment timing run', () => {

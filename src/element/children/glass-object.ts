@@ -3,7 +3,7 @@
 // removed `src` aborts the old load, whose result is never shown.
 import { normalizeObj } from '../../loaders/obj-normalize';
 import type { ObjResult } from '../../loaders/obj';
-import type { SceneObject, Transform } from '../../scene/scene';
+import { materialImages, type SceneObject, type Transform } from '../../scene/scene';
 import { builtinShape } from './builtin-shapes';
 import { ChildElement, defineChildProperties } from './child-element';
 import { acquireModel, loadErrorDetail, type ModelHandle } from './model-cache';
@@ -158,7 +158,7 @@ export class GlassObject extends ChildElement<ObjectAttributes> {
         // `load` when the object can be drawn with its textures (docs/scene-model.md#loading): after its images
         // decode (or fail, with a warning), the scene element draws them on its next frame.
         const images = new Set<string>();
-        for (const o of this.toSceneObjects()) if (o.material.texture.kind === 'image') images.add(o.material.texture.url);
+        for (const o of this.toSceneObjects()) for (const url of materialImages(o.material)) images.add(url);
         void Promise.all([...images].map(decodeImage)).then(() => {
           if (this.handle !== handle) return;
           this.pending = false;

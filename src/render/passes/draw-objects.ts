@@ -101,6 +101,7 @@ export function drawObjects(
       }
       setMatrices(gl, program, mirrored ? m.mirrored : m.main);
       setMaterial(gl, program, o);
+      if (variant.pbr) ctx.pbrMaps?.bind(program, o.material.pbr!);
       if (mirrored) {
         const d = Math.hypot(m.center[0] - eye[0], m.center[1] - eye[1], m.center[2] - eye[2]);
         const mesh = ctx.objectMeshes.mirrored(i, o.geometry, m, ctx.state, setup.orthographic ? orthoPpu : focal / d);

@@ -7,6 +7,7 @@ import type { DrawMatrices, FrameSetup, LightVectors } from '../../frame/frame-s
 import type { ObjectMeshes } from '../object-meshes';
 import type { ProgramCache } from '../programs';
 import type { EnvironmentGl } from '../environment-gl';
+import type { PbrMapsGl } from '../pbr-maps-gl';
 import type { FrameState, Viewport } from '../../frame/types';
 import type { Material, Scene, SceneObject } from '../../scene/scene';
 
@@ -45,6 +46,8 @@ export interface PassContext {
   hdr: boolean;
   /** An environment's textures (docs/pbr.md#the-environment), once its chunk is in (ENVIRONMENT_LIGHT, render/parts.ts); the renderer disposes them. */
   environment: EnvironmentGl | null;
+  /** glTF materials' maps (docs/gltf.md#drawing), once the PBR chunk is in (PBR_MATERIALS); the renderer disposes them. */
+  pbrMaps: PbrMapsGl | null;
   /** Triangles submitted since the frame began, by the eye they were drawn from. */
   triangles: { scene: number; reflection: number };
 }

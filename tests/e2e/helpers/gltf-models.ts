@@ -88,3 +88,30 @@ export async function bunnyGlb(): Promise<Uint8Array> {
   doc.createScene('scene').addChild(node);
   return new NodeIO().writeBinary(doc);
 }
+
+/**
+ * The product's box with a glTF material's other maps (docs/gltf.md#drawing), each a 4×4 PNG checker: metallic-roughness
+ * (polished metal against rough dielectric), occlusion (none against 0.35, at strength 0.8) and emissive (two colours, on an
+ * emissive factor); the base colour a factor. On a plain plinth, turned as the product is.
+ */
+export async function mapsGlb(): Promise<Uint8Array> {
+  const doc = new Document();
+  const buffer = doc.createBuffer();
+  const mesh = (h: number, material: Material) => {
+    const b = boxArrays(h);
+    const acc = (type: "VEC3" | "VEC2" | "SCALAR", a: Float32Array<ArrayBuffer> | Uint16Array<ArrayBuffer>) => doc.createAccessor().setType(type).setArray(a).setBuffer(buffer);
+    return doc.createMesh().addPrimitive(doc.createPrimitive().setAttribute('POSITION', acc('VEC3', b.positions))
+      .setAttribute('NORMAL', acc('VEC3', b.normals)).setAttribute('TEXCOORD_0', acc('VEC2', b.uvs)).setIndices(acc('SCALAR', b.indices)).setMaterial(material));
+  };
+  const png = (name: string, a: [number, number, number], b: [number, number, number]) => doc.createTexture(name).setImage(checkerPng(a, b)).setMimeType('image/png');
+  const box = doc.createMaterial('mapped').setBaseColorFactor([0.9, 0.6, 0.3, 1]).setMetallicFactor(1).setRoughnessFactor(1)
+    .setMetallicRoughnessTexture(png('metal rough', [0, 50, 255], [0, 230, 0]))
+    .setOcclusionTexture(png('occlusion', [255, 255, 255], [90, 90, 90])).setOcclusionStrength(0.8)
+    .setEmissiveTexture(png('emissive', [255, 40, 0], [0, 0, 0])).setEmissiveFactor([0.6, 0.6, 0.6]);
+  const grey = doc.createMaterial('plinth').setBaseColorFactor([0.5, 0.5, 0.55, 1]).setMetallicFactor(0).setRoughnessFactor(0.6);
+  const parent = doc.createNode('product').setScale([1.2, 1.2, 1.2]).setRotation([0, Math.sin(Math.PI / 12), 0, Math.cos(Math.PI / 12)]);
+  parent.addChild(doc.createNode('plinth').setMesh(mesh(0.5, grey)).setScale([1, 0.2, 1]));
+  parent.addChild(doc.createNode('box').setMesh(mesh(0.3, box)).setTranslation([0, 0.45, 0]));
+  doc.createScene('scene').addChild(parent);
+  return new NodeIO().writeBinary(doc);
+}

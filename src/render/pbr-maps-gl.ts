@@ -1,0 +1,79 @@
+// A glTF material's maps besides its base colour in WebGL (docs/gltf.md#drawing): metallic-roughness and occlusion held as
+// stored (RGBA8, read isotropically, as the software renderer reads data), the emissive map as colour in the frame's space
+// (SRGB8_ALPHA8 in srgb, anisotropic, as an image texture is); a white texel stands for a map a material lacks or whose image
+// is not in (the factor alone). Uploaded by sync() before any pass (creating a texture binds it), bound per draw on units
+// 5–7, freed with the renderer. In the PBR chunk (pbr-gl): a scene without glTF materials never loads it.
+import { Texture } from './gl/texture';
+import type { ResourceCounter } from './gl/resource-counter';
+import type { Program } from './gl/program';
+import { readMap, type PbrMaterial, type PbrTexture } from '../scene/pbr-material';
+import type { Scene } from '../scene/scene';
+import type { DecodedImage, SceneImages } from '../scene/decoded-image';
+
+/** Units 0 (the base colour) and 3–4 (the environment) are the draw's others. */
+const METAL_ROUGH_UNIT = 5, OCCLUSION_UNIT = 6, EMISSIVE_UNIT = 7;
+
+interface Held {
+  source: DecodedImage;
+  texture: Texture;
+}
+
+export class PbrMapsGl {
+  /** By URL, after 's' for a map held as colour in srgb, 'd' for one held as stored. */
+  private readonly held = new Map<string, Held>();
+  private white: Texture | null = null;
+  private srgb = true;
+
+  constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter) {}
+
+  /** The frame's maps, before any pass: each image new in `images` uploaded, each gone (or replaced) freed; an unchanged map allocates nothing. */
+  sync(scene: Scene, images: SceneImages | null | undefined, srgb: boolean): void {
+    this.white ??= new Texture(this.gl, this.counter, { width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]), repeat: true });
+    this.srgb = srgb;
+    for (const o of scene.objects) {
+      const pbr = o.material.pbr;
+      if (pbr === undefined) continue;
+      this.hold(pbr.metallicRoughnessTexture, images, false);
+      this.hold(pbr.occlusionTexture, images, false);
+      this.hold(pbr.emissiveTexture, images, srgb);
+    }
+  }
+
+  /** `m`'s maps on their units, and the uniforms that read them (the PBR program is in use). */
+  bind(p: Program, m: PbrMaterial): void {
+    const gl = this.gl;
+    this.texture(m.metallicRoughnessTexture, false).bind(METAL_ROUGH_UNIT);
+    this.texture(m.occlusionTexture, false).bind(OCCLUSION_UNIT);
+    this.texture(m.emissiveTexture, this.srgb).bind(EMISSIVE_UNIT);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.uniform1i(p.location('uMetalRough'), METAL_ROUGH_UNIT);
+    gl.uniform1i(p.location('uOcclusion'), OCCLUSION_UNIT);
+    gl.uniform1i(p.location('uEmissiveMap'), EMISSIVE_UNIT);
+    gl.uniform1f(p.location('uOcclusionStrength'), m.occlusionStrength);
+  }
+
+  dispose(): void {
+    for (const e of this.held.values()) e.texture.dispose();
+    this.held.clear();
+    this.white?.dispose();
+    this.white = null;
+  }
+
+  private texture(t: PbrTexture | null, srgb: boolean): Texture {
+    const map = readMap(t);
+    return (map && this.held.get((srgb ? 's' : 'd') + map.source.url)?.texture) ?? this.white!;
+  }
+
+  private hold(t: PbrTexture | null, images: SceneImages | null | undefined, srgb: boolean): void {
+    const map = readMap(t);
+    if (map === null) return;
+    const key = (srgb ? 's' : 'd') + map.source.url, image = images?.get(map.source.url), e = this.held.get(key);
+    if (e?.source === image) return;
+    e?.texture.dispose();
+    this.held.delete(key);
+    if (image) {
+      const { width, height, data } = image;
+      this.held.set(key, { source: image, texture: new Texture(this.gl, this.counter, { width, height, data, mipmap: true, repeat: true, srgb, anisotropic: srgb }) });
+    }
+  }
+}

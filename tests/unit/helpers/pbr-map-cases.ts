@@ -1,0 +1,83 @@
+// A glTF material's maps on the box face head-on to the camera and to a directional light (tests/unit/helpers/pbr-scenes.ts
+// boxScene), each map a 1×1 image, the centre pixel worked out by hand in colour space none: shared by the CPU renderers'
+// test (tests/unit/pbr-maps.test.ts) and the GLSL's (tests/e2e/pbr-maps.spec.ts).
+import type { PbrMaterial, PbrTexture } from '../../../src/scene/pbr-material';
+import type { Scene, Vec3 } from '../../../src/scene/scene';
+import type { DecodedImage } from '../../../src/scene/decoded-image';
+import { IA, ID, boxScene, pbrMaterial } from './pbr-scenes';
+
+export const MR = 'https://example.com/metal rough.png', AO = 'https://example.com/occlusion.png', EM = 'https://example.com/emissive.png';
+
+export const image = (r: number, g: number, b: number): DecodedImage => ({ width: 1, height: 1, data: new Uint8ClampedArray([r, g, b, 255]) });
+export const IMAGES = new Map<string, DecodedImage>([[MR, image(0, 191, 255)], [AO, image(64, 0, 0)], [EM, image(255, 128, 0)]]);
+
+export const map = (url: string, texCoord = 0): PbrTexture => ({
+  source: { url }, texCoord, sampler: { magFilter: undefined, minFilter: undefined, wrapS: 10497, wrapT: 10497 }, transform: null,
+});
+
+/** A box of `pbr` with `emissive` (the element's Material.emissive: the factor times its strength). */
+export const box = (over: Partial<PbrMaterial>, emissive?: Vec3): Scene => boxScene(pbrMaterial(over), emissive);
+
+/** Head-on (N = V = L = H): Ia·c_diff·occlusion + Id·((1 − F0)·c_diff + F0/(4α²)), α = roughness², F0 = 0.04(1 − m) + base·m. */
+export const lit = (base: number, metallic: number, roughness: number, occlusion = 1): number => {
+  const cdiff = base * (1 - metallic), f0 = 0.04 * (1 - metallic) + base * metallic, a = roughness * roughness;
+  return IA * cdiff * occlusion + ID * ((1 - f0) * cdiff + f0 / (4 * a * a));
+};
+
+const grey = (x: number): number[] => [x, x, x];
+const GREY = [0.5, 0.5, 0.5, 1] as const;
+const factorOnly = grey(lit(0.5, 1, 1));
+
+export interface MapCase {
+  name: string;
+  scene: Scene;
+  images: Map<string, DecodedImage>;
+  /** The centre pixel, linear, in colour space none. */
+  want: number[];
+}
+
+export const MAP_CASES: MapCase[] = [
+  // G roughness, B metallic: (·, 191, 255) on factors 1, 1 is a metal of roughness 191/255.
+  { name: 'metallic-roughness (·, 191, 255) on factors 1, 1', scene: box({ baseColor: GREY, metallic: 1, roughness: 1, metallicRoughnessTexture: map(MR) }), images: IMAGES, want: grey(lit(0.5, 1, 191 / 255)) },
+  // The factors scale what the map gives: metallic ½ × 1, roughness 0.8 × 191/255.
+  { name: 'metallic-roughness on factors ½, 0.8', scene: box({ baseColor: GREY, metallic: 0.5, roughness: 0.8, metallicRoughnessTexture: map(MR) }), images: IMAGES, want: grey(lit(0.5, 0.5, 0.8 * 191 / 255)) },
+  // B is metallic, not R: (0, 191, 0) makes a metal a dielectric.
+  { name: 'metallic-roughness (0, 191, 0): B is metallic', scene: box({ baseColor: GREY, metallic: 1, roughness: 1, metallicRoughnessTexture: map(MR) }), images: new Map([[MR, image(0, 191, 0)]]), want: grey(lit(0.5, 0, 191 / 255)) },
+  // 1 + strength·(R − 1) dims the ambient term, not the direct light.
+  ...[0.5, 1].map((strength) => ({
+    name: `occlusion R 64 at strength ${strength}`, images: IMAGES,
+    scene: box({ baseColor: GREY, metallic: 0, roughness: 1, occlusionTexture: map(AO), occlusionStrength: strength }),
+    want: grey(lit(0.5, 0, 1, 1 + strength * (64 / 255 - 1))),
+  })),
+  // The emission times the map: (255, 128, 0) on (0.3, 0.2, 0.1).
+  { name: 'emissive (255, 128, 0) on (0.3, 0.2, 0.1)', scene: box({ baseColor: GREY, metallic: 0, roughness: 1, emissiveTexture: map(EM) }, [0.3, 0.2, 0.1]), images: IMAGES, want: [1, 128 / 255, 0].map((t, k) => lit(0.5, 0, 1) + [0.3, 0.2, 0.1][k] * t) },
+  // Not read, the factor alone: the image missing; on TEXCOORD_1; under a mapping other than uv (the maps follow the mesh's UV).
+  // (A URL no case gives an image for: the GLSL's page keeps the images of the draws before.)
+  { name: 'a map whose image is missing', scene: box({ baseColor: GREY, metallic: 1, roughness: 1, metallicRoughnessTexture: map('https://example.com/gone.png') }), images: new Map(), want: factorOnly },
+  { name: 'a map on TEXCOORD_1', scene: box({ baseColor: GREY, metallic: 1, roughness: 1, metallicRoughnessTexture: map(MR, 1) }), images: IMAGES, want: factorOnly },
+  {
+    name: 'maps under the triplanar mapping', images: IMAGES, want: factorOnly,
+    scene: ((s: Scene) => ({ ...s, objects: [{ ...s.objects[0], material: { ...s.objects[0].material, mapping: 'triplanar' as const } }] }))(
+      box({ baseColor: GREY, metallic: 1, roughness: 1, metallicRoughnessTexture: map(MR), occlusionTexture: map(AO) })),
+  },
+];
+
+/** 2×2 RGBA8, rows top first: (top left, top right, bottom left, bottom right). */
+const quad = (...texels: [number, number, number][]): DecodedImage => ({ width: 2, height: 2, data: new Uint8ClampedArray(texels.flatMap((t) => [...t, 255])) });
+
+/**
+ * Which way up a map is read: each map 2×2 with a texel of its own per quadrant, magnified over the face (filtered between
+ * them), the whole face compared between renderers — a map read at (u, v) for (u, 1 − v), or with its channels swapped,
+ * moves the quadrants.
+ */
+export const QUADRANTS: MapCase = {
+  name: 'three 2×2 maps on the face', want: [],
+  images: new Map([
+    [MR, quad([0, 40, 255], [0, 230, 255], [0, 120, 0], [0, 255, 128])],
+    [AO, quad([255, 0, 0], [30, 0, 0], [160, 0, 0], [90, 0, 0])],
+    [EM, quad([0, 0, 0], [255, 0, 0], [0, 80, 255], [200, 200, 0])],
+  ]),
+  scene: box({
+    baseColor: [0.6, 0.5, 0.4, 1], metallic: 1, roughness: 1, metallicRoughnessTexture: map(MR), occlusionTexture: map(AO), emissiveTexture: map(EM),
+  }, [0.3, 0.3, 0.3]),
+};
