@@ -166,4 +166,10 @@ export default [
     edits: [{ file: 'src/render/pbr-maps-gl.ts', find: "gl.uniform1i(p.location('uOcclusion'), OCCLUSION_UNIT);", replace: "gl.uniform1i(p.location('uOcclusion'), EMISSIVE_UNIT);" }],
     tests: [MAPS],
   },
+  {
+    name: 'P27 a single-sided glTF mesh drawn with its back faces (culling off)',
+    why: 'face culling is the GPU\'s: only a browser draws it',
+    edits: [{ file: 'src/render/passes/draw-objects.ts', find: '      const twoSided = drawnTwoSided(o);', replace: '      const twoSided = true;' }],
+    tests: ['tests/e2e/double-sided.spec.ts'],
+  },
 ];

@@ -5,12 +5,18 @@
 import { boxMesh } from '../scene/geometry/box';
 import type { MeshData } from '../scene/geometry/mesh-data';
 import { segmentsForScreenRadius, sphereMesh } from '../scene/geometry/sphere';
-import type { Geometry } from '../scene/scene';
+import type { Geometry, SceneObject } from '../scene/scene';
 import { AUTO_SILHOUETTE_ERROR_PX, sphereScreenRadius } from './sphere-screen';
 import type { FrameState } from './types';
 
 /** Built-ins are closed and wound outwards (back faces culled); meshes from files are neither. */
 export const isTwoSided = (g: Geometry): boolean => g.kind === 'mesh' || g.kind === 'gaussian';
+
+/**
+ * Drawn from both sides, its normal turned to the viewer (docs/scene-model.md#two-sided-lighting): as its geometry is, but a
+ * glTF material says for its mesh — single-sided unless `doubleSided` (docs/gltf.md#drawing): back faces culled, as glTF winds them.
+ */
+export const drawnTwoSided = (o: SceneObject): boolean => isTwoSided(o.geometry) && o.material.pbr?.doubleSided !== false;
 
 /**
  * Segments of a sphere whose world bounds are `centre`, `worldRadius`: the tessellation asked

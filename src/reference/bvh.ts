@@ -72,12 +72,12 @@ export class Bvh {
   }
 
   /**
-   * Nearest triangle hit with tMin < t ≤ tMax along o + t·d (both faces: no culling);
-   * Möller–Trumbore in float64, edges inclusive. Returns false, leaving `hit` untouched, on a miss.
+   * Nearest triangle hit with tMin < t ≤ tMax along o + t·d (both faces, or with `frontOnly` those counter-clockwise as the ray
+   * sees them: det = −d·(e1 × e2) > 0); Möller–Trumbore in float64, edges inclusive. Returns false, leaving `hit` as it was, on a miss.
    */
   intersect(
     ox: number, oy: number, oz: number, dx: number, dy: number, dz: number,
-    tMin: number, tMax: number, hit: BvhHit,
+    tMin: number, tMax: number, hit: BvhHit, frontOnly = false,
   ): boolean {
     if (this.order.length === 0) return false;
     const { bounds, nodes, edges, stack } = this;
@@ -118,7 +118,7 @@ export class Bvh {
         const px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
         const det = e1x * px + e1y * py + e1z * pz;
         // Stryker disable next-line ConditionalExpression, LogicalOperator: det 0 or NaN makes u, v, t infinite or NaN: turned down below
-        if (det === 0 || det !== det) continue;
+        if (det === 0 || det !== det || (frontOnly && det < 0)) continue;
         const inv = 1 / det;
         const sx = ox - edges[e], sy = oy - edges[e + 1], sz = oz - edges[e + 2];
         const u = (sx * px + sy * py + sz * pz) * inv;

@@ -24,7 +24,7 @@ export function bvhOf(mesh: MeshData): Bvh {
 }
 
 /**
- * Nearest triangle in the kept interval, both faces (user meshes are not back-face culled).
+ * Nearest triangle in the kept interval, both faces (user meshes are not back-face culled) unless `frontOnly`.
  * Normals and UVs are interpolated with the barycentric weights; the shading normal is then
  * turned towards the viewer (two-sided lighting, docs/scene-model.md#two-sided-lighting): it faces against the ray.
  */
@@ -38,6 +38,8 @@ export class MeshTracer implements ObjectTracer {
 
   constructor(
     readonly frame: ObjectFrame, private readonly mesh: MeshData, private readonly object: number, private readonly code: number,
+    /** Front faces alone (counter-clockwise seen from outside, as glTF winds them); false: both. */
+    private readonly frontOnly = false,
   ) {
     this.bvh = bvhOf(mesh);
   }
@@ -47,7 +49,7 @@ export class MeshTracer implements ObjectTracer {
     if (!keptInterval(ray, tMin, clipSide, plane, range)) return false;
     frame.pointToObject(o, ray.origin);
     frame.directionToObject(d, ray.direction);
-    if (!this.bvh.intersect(o[0], o[1], o[2], d[0], d[1], d[2], range[0], range[1], found)) return false;
+    if (!this.bvh.intersect(o[0], o[1], o[2], d[0], d[1], d[2], range[0], range[1], found, this.frontOnly)) return false;
     this.fill(ray, found, out);
     return true;
   }

@@ -29,7 +29,8 @@ function tracerOf(object: SceneObject, index: number, code: number, time: number
     case 'box': return new BoxTracer(frame, g.size, index, code);
     case 'sphere': return new SphereTracer(frame, g.radius, index, code);
     case 'gaussian': return new MeshTracer(frame, gaussianOf(g.resolution), index, code);
-    case 'mesh': return new MeshTracer(frame, g.data, index, code);
+    // A glTF material's mesh is single-sided unless it says otherwise (docs/gltf.md#drawing): its back faces are not hit.
+    case 'mesh': return new MeshTracer(frame, g.data, index, code, object.material.pbr?.doubleSided === false);
   }
 }
 

@@ -15,7 +15,7 @@ import { DefaultSceneCache } from '../scene/default-scene';
 import type { Scene, SceneObject } from '../scene/scene';
 import { GlassShader, GLASS_INDICES, GLASS_TIE_BIAS } from './glass-shader';
 import { Lights } from './lighting';
-import { isTwoSided } from '../frame/mesh-choice';
+import { drawnTwoSided } from '../frame/mesh-choice';
 import { SoftwareMeshes } from './meshes';
 import { proceduralMipTexture } from './mip-texture';
 import { ImageTextures } from './image-textures';
@@ -370,7 +370,7 @@ export class SoftwareRenderer {
       d.bounds = o.bounds;
       d.texture = this.textures.base(o.material, images, this.space);
       this.textures.maps(o.material.pbr, images, this.space, d.maps);
-      d.twoSided = isTwoSided(o.geometry);
+      d.twoSided = drawnTwoSided(o);
       d.shading = state.shading;
       d.lights = mirrored ? this.lightsMirrored : this.lightsMain;
       d.cache = selection === 'opaque' ? (mirrored ? this.mirrorCache : this.mainCache) : null;

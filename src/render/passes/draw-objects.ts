@@ -7,7 +7,7 @@ import type { Texture } from '../gl/texture';
 import type { ClipMode, ObjectVariant } from '../programs';
 import type { SceneObject } from '../../scene/scene';
 import { setLights, setMaterial, setMatrices, type PassContext } from './pass-context';
-import { isTwoSided } from '../../frame/mesh-choice';
+import { drawnTwoSided } from '../../frame/mesh-choice';
 
 /**
  * Compiles (or finds) every variant the objects need before the caller touches GL state:
@@ -20,7 +20,7 @@ export function prepareObjectPrograms(ctx: PassContext, clip: ClipMode): void {
 /** The object's variant, filled in place (no allocation per draw). */
 const variant: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false };
 function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
-  variant.twoSided = isTwoSided(o.geometry);
+  variant.twoSided = drawnTwoSided(o);
   variant.lights = ctx.setup.lightCount;
   variant.pointMask = ctx.setup.pointMask;
   variant.mapping = o.material.mapping;
@@ -67,7 +67,7 @@ export function drawObjects(
       // Culling, not selection (docs/rendering.md#what-is-skipped): bounds wholly beyond the glass cannot be reflected.
       if (mirrored && ctx.cull && m.viewerDistance <= -m.radius) continue;
       if (farSide && ctx.cull && m.viewerDistance >= m.radius) continue;
-      const twoSided = isTwoSided(o.geometry);
+      const twoSided = drawnTwoSided(o);
       const program = ctx.programs.standard(clip, ctx.state.shading, variantOf(ctx, o));
       const switched = program !== current;
       if (switched) {
