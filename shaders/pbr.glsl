@@ -10,6 +10,21 @@ uniform sampler2D uMetalRough;
 uniform sampler2D uOcclusion;
 uniform sampler2D uEmissiveMap;
 uniform float uOcclusionStrength;
+// Each texture's KHR_texture_transform as two rows (u' = row0·(u, v, 1), v' = row1·(u, v, 1)): the base colour's, the
+// metallic-roughness map's, the occlusion map's, the emissive map's.
+uniform vec3 uUvRows[8];
+
+/** The UV texture i reads at the mesh's UV `uv`. */
+vec2 moveUv(int i, vec2 uv) {
+  vec3 p = vec3(uv, 1.0);
+  return vec2(dot(uUvRows[2 * i], p), dot(uUvRows[2 * i + 1], p));
+}
+
+/** Where an image is read for texture i: at (u', 1 − v'). */
+vec2 mapUv(int i, vec2 uv) {
+  vec2 m = moveUv(i, uv);
+  return vec2(m.x, 1.0 - m.y);
+}
 
 // s: metallic, roughness, occlusion (the factors times the maps).
 void addPbrLight(vec3 l, vec3 ia, vec3 id, vec3 n, vec3 v, vec3 base, vec3 s, inout vec3 c) {
@@ -46,10 +61,9 @@ vec3 pbrColor(vec3 n, vec3 v, vec3 relPos, vec3 base, vec3 e, vec2 uv) {
   if (uPbr.z > 0.5) return base + e;
   vec3 s = vec3(uPbr.xy, 1.0);
 #ifdef MAPPING_UV
-  vec2 st = vec2(uv.x, 1.0 - uv.y);
-  s *= vec3(texture(uMetalRough, st).bg, 1.0);
-  s.z = 1.0 + uOcclusionStrength * (texture(uOcclusion, st).r - 1.0);
-  e *= texture(uEmissiveMap, st).rgb;
+  s *= vec3(texture(uMetalRough, mapUv(1, uv)).bg, 1.0);
+  s.z = 1.0 + uOcclusionStrength * (texture(uOcclusion, mapUv(2, uv)).r - 1.0);
+  e *= texture(uEmissiveMap, mapUv(3, uv)).rgb;
 #endif
   vec3 c = e;
   ADD_PBR_LIGHT(0, LIGHT0_POINT);

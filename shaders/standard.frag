@@ -73,7 +73,12 @@ void main() {
 #if defined(PBR)
   vec3 v = viewVector(vRelPos);
   // The texture is in the base colour, which also sets a metal's F0 (docs/pbr.md#the-scenes-lights).
-  outColor = vec4(pbrColor(facing(normalize(vNormal), v), v, vRelPos, uBaseColor * surfaceTexture(), uEmissive, vUv), uOpacity);
+#ifdef MAPPING_UV
+  vec3 t = tex(moveUv(0, vUv)); // the base colour texture through its transform
+#else
+  vec3 t = surfaceTexture();
+#endif
+  outColor = vec4(pbrColor(facing(normalize(vNormal), v), v, vRelPos, uBaseColor * t, uEmissive, vUv), uOpacity);
 #else
 #if defined(SHADING_PHONG)
   vec3 v = viewVector(vRelPos);

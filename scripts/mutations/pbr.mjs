@@ -172,4 +172,16 @@ export default [
     edits: [{ file: 'src/render/passes/draw-objects.ts', find: '      const twoSided = drawnTwoSided(o);', replace: '      const twoSided = true;' }],
     tests: ['tests/e2e/double-sided.spec.ts'],
   },
+  {
+    name: 'P28 the base colour texture read without its transform',
+    why: GLSL,
+    edits: [{ file: 'shaders/standard.frag', find: '  vec3 t = tex(moveUv(0, vUv));', replace: '  vec3 t = tex(vUv);' }],
+    tests: [MAPS],
+  },
+  {
+    name: 'P29 a transform\'s rows read the other way round (v\' from the first)',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: 'return vec2(dot(uUvRows[2 * i], p), dot(uUvRows[2 * i + 1], p));', replace: 'return vec2(dot(uUvRows[2 * i + 1], p), dot(uUvRows[2 * i], p));' }],
+    tests: [MAPS],
+  },
 ];

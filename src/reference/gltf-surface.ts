@@ -1,6 +1,7 @@
 // A glTF material at a hit for the reference (docs/gltf.md#drawing): metallic and roughness times the metallic-roughness
 // map's B and G, the occlusion map's R by its strength, the emission times the emissive map — each map read by the
-// reference's own sampler (surface-texture.ts) at the hit's UV, where the mapping is `uv` — then shadePbr.
+// reference's own sampler (surface-texture.ts) at the hit's UV moved by its transform, where the mapping is `uv`; the base
+// colour texture read again where it has a transform — then shadePbr.
 import { readMap } from '../scene/pbr-material';
 import type { Material } from '../scene/scene';
 import type { Ray } from './ray';
@@ -20,16 +21,18 @@ export function shadeGltf(
   surface.metallic = pbr.metallic;
   surface.roughness = pbr.roughness;
   surface.occlusion = 1;
+  const bt = uv ? readMap(pbr.baseColorTexture) : null;
+  if (bt !== null && bt.transform !== null) textures.mapAt(bt.source.url, true, bt.transform, hit, ray, tex);
   const mr = uv ? readMap(pbr.metallicRoughnessTexture) : null;
-  if (mr !== null && textures.mapAt(mr.source.url, false, hit, ray, texel) !== null) {
+  if (mr !== null && textures.mapAt(mr.source.url, false, mr.transform, hit, ray, texel) !== null) {
     surface.roughness *= texel[1];
     surface.metallic *= texel[2];
   }
   const ao = uv ? readMap(pbr.occlusionTexture) : null;
-  if (ao !== null && textures.mapAt(ao.source.url, false, hit, ray, texel) !== null) surface.occlusion = 1 + pbr.occlusionStrength * (texel[0] - 1);
+  if (ao !== null && textures.mapAt(ao.source.url, false, ao.transform, hit, ray, texel) !== null) surface.occlusion = 1 + pbr.occlusionStrength * (texel[0] - 1);
   let emissive: ArrayLike<number> | undefined = m.emissive;
   const em = uv ? readMap(pbr.emissiveTexture) : null;
-  if (emissive !== undefined && em !== null && textures.mapAt(em.source.url, true, hit, ray, texel) !== null) {
+  if (emissive !== undefined && em !== null && textures.mapAt(em.source.url, true, em.transform, hit, ray, texel) !== null) {
     // Stryker disable next-line EqualityOperator: k = 3 writes emitted[3], past the end of its 3 elements: dropped
     for (let k = 0; k < 3; k++) emitted[k] = emissive[k] * texel[k];
     emissive = emitted;

@@ -62,10 +62,11 @@ export class SurfaceTexture {
   }
 
   /**
-   * A glTF map's image by URL at the hit's UV (TEXCOORD_0) into `out` (docs/gltf.md#drawing): decoded to linear light when it is
-   * `colour` in an srgb frame, as stored otherwise; null when its image is missing or malformed (the factor alone).
+   * A glTF map's image by URL at the hit's UV (TEXCOORD_0) moved by its transform `m` (u' = a·u + b·v + c, v' = d·u + e·v + f;
+   * null: none) into `out` (docs/gltf.md#drawing): decoded to linear light when it is `colour` in an srgb frame, as stored
+   * otherwise; null when its image is missing or malformed (the factor alone).
    */
-  mapAt(url: string, colour: boolean, hit: SurfaceHit, ray: Ray, out: Float64Array): Float64Array | null {
+  mapAt(url: string, colour: boolean, m: readonly number[] | null, hit: SurfaceHit, ray: Ray, out: Float64Array): Float64Array | null {
     const space = colour ? this.colorSpace : 'none', built = this.maps[space];
     let tex = built.get(url);
     if (tex === undefined) {
@@ -73,7 +74,16 @@ export class SurfaceTexture {
       tex = image === undefined ? null : imageTexture(image, space);
       built.set(url, tex);
     }
-    return tex === null ? null : this.sample(tex, hit.u, hit.v, hit.gu, hit.gv, hit, ray, out);
+    if (tex === null) return null;
+    if (m === null) return this.sample(tex, hit.u, hit.v, hit.gu, hit.gv, hit, ray, out);
+    // The gradients move with the map's linear part: ∇u' = a∇u + b∇v, ∇v' = d∇u + e∇v.
+    const { gu, gv } = this;
+    // Stryker disable next-line EqualityOperator: k = 3 writes past the end of gu and gv (Float64Array(3)): dropped
+    for (let k = 0; k < 3; k++) {
+      gu[k] = m[0] * hit.gu[k] + m[1] * hit.gv[k];
+      gv[k] = m[3] * hit.gu[k] + m[4] * hit.gv[k];
+    }
+    return this.sample(tex, m[0] * hit.u + m[1] * hit.v + m[2], m[3] * hit.u + m[4] * hit.v + m[5], gu, gv, hit, ray, out);
   }
 
   /** 1×1 white: no texture. */

@@ -10,6 +10,10 @@ import { readMap, type PbrMaterial, type PbrTexture } from '../scene/pbr-materia
 import type { Scene } from '../scene/scene';
 import type { DecodedImage, SceneImages } from '../scene/decoded-image';
 
+/** Each texture's transform, two rows of three (u' = a·u + b·v + c, v' = d·u + e·v + f), for uUvRows; none is the identity. */
+const ROWS = new Float32Array(24), IDENTITY = [1, 0, 0, 0, 1, 0];
+const rows = (i: number, t: PbrTexture | null): void => ROWS.set(t?.transform ?? IDENTITY, 6 * i);
+
 /** Units 0 (the base colour) and 3–4 (the environment) are the draw's others. */
 const METAL_ROUGH_UNIT = 5, OCCLUSION_UNIT = 6, EMISSIVE_UNIT = 7;
 
@@ -50,6 +54,11 @@ export class PbrMapsGl {
     gl.uniform1i(p.location('uOcclusion'), OCCLUSION_UNIT);
     gl.uniform1i(p.location('uEmissiveMap'), EMISSIVE_UNIT);
     gl.uniform1f(p.location('uOcclusionStrength'), m.occlusionStrength);
+    rows(0, m.baseColorTexture);
+    rows(1, m.metallicRoughnessTexture);
+    rows(2, m.occlusionTexture);
+    rows(3, m.emissiveTexture);
+    gl.uniform3fv(p.location('uUvRows'), ROWS);
   }
 
   dispose(): void {

@@ -16,7 +16,10 @@ export interface PbrTextureOf<Source> {
   /** TEXCOORD_n. */
   texCoord: number;
   sampler: PbrSampler;
-  /** KHR_texture_transform in glTF's UV space (v down), row-major [a, b, c, d, e, f]: u' = a·u + b·v + c, v' = d·u + e·v + f. */
+  /**
+   * KHR_texture_transform, row-major [a, b, c, d, e, f]: u' = a·u + b·v + c, v' = d·u + e·v + f; in the UV of whoever holds it:
+   * glTF's (v down) as the loader reads it, the scene's (the OBJ way up, loaders/gltf/as-obj.ts) in a scene value. Null: none.
+   */
   transform: readonly number[] | null;
 }
 

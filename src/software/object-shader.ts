@@ -278,7 +278,7 @@ export class ObjectShader implements FragmentShader {
       if (e !== undefined) { cr += e[0]; cg += e[1]; cb += e[2]; }
     } else {
       // A glTF material: its texture is in the base colour, which also sets a metal's F0; its maps read at the UV.
-      pbrFragment(d.lights, d.material, d.twoSided, this.geometry, tex, d.maps, d.material.mapping === 'uv' ? this.lookup : null, sums);
+      pbrFragment(d.lights, d.material, d.twoSided, this.geometry, d.texture, tex, d.maps, d.material.mapping === 'uv' ? this.lookup : null, sums);
       cr = sums[0]; cg = sums[1]; cb = sums[2];
     }
     this.cr = cr < 0 ? 0 : cr > this.top ? this.top : cr;

@@ -7,6 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { accessor, glbBin, glbJson, glbOf, makeGlb, newDocument, parse, primitive } from './helpers/gltf';
 import { io } from './helpers/gltf';
 import { VertexLayout } from '@gltf-transform/core';
+import { transformAsObj } from '../../src/loaders/gltf/as-obj';
 
 const TRI = [0, 0, 0, 1, 0, 0, 0, 1, 0];
 const round = (a: ArrayLike<number>, digits = 6) => Array.from(a, (x) => Number(x.toFixed(digits)) + 0);
@@ -185,5 +186,23 @@ describe('what is not drawn', () => {
     const r = parse(makeGlb(json, glbBin(glb)));
     expect(r.indices.length).toBe(3);
     expect(r.warnings.map((w) => w.path)).toEqual(['scenes']);
+  });
+});
+
+describe('transformAsObj', () => {
+  it('maps the same point of the surface: a glTF UV (u, v) through T lands where the OBJ-way-up UV (u, 1 − v) through it does', () => {
+    // T: rotation 0.4, scale (1.7, 0.8), offset (0.15, −0.2), as loaders/gltf/materials.ts writes it.
+    const c = Math.cos(0.4), s = Math.sin(0.4);
+    const t = [c * 1.7, s * 0.8, 0.15, -s * 1.7, c * 0.8, -0.2];
+    const m = transformAsObj(t);
+    for (const [u, v] of [[0, 0], [1, 0], [0.3, 0.8], [-2, 5]]) {
+      const gu = t[0] * u + t[1] * v + t[2], gv = t[3] * u + t[4] * v + t[5];
+      const o = [m[0] * u + m[1] * (1 - v) + m[2], m[3] * u + m[4] * (1 - v) + m[5]];
+      expect(o[0]).toBeCloseTo(gu, 12);
+      expect(o[1]).toBeCloseTo(1 - gv, 12);
+    }
+    // By hand: an offset alone (0.25, 0.5) moves v the other way, and the identity stays the identity.
+    expect(transformAsObj([1, 0, 0.25, 0, 1, 0.5])).toEqual([1, -0, 0.25, -0, 1, -0.5]);
+    expect(transformAsObj([1, 0, 0, 0, 1, 0])).toEqual([1, -0, 0, -0, 1, 0]);
   });
 });

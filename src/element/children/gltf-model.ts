@@ -4,7 +4,7 @@
 // URLs (embedded ones blob: URLs) and its materials the values an object's material is made from.
 import { LoadError, warningText } from '../../loaders/load-error';
 import { decompressGltf, gltfBuffers, openGltf, readGltf, type GltfImage, type GltfMaterial, type GltfResult, type OpenGltf } from '../../loaders/gltf';
-import { gltfAsObj, materialKey } from '../../loaders/gltf/as-obj';
+import { gltfAsObj, materialKey, transformAsObj } from '../../loaders/gltf/as-obj';
 import type { GltfJobRequest, GltfJobResponse } from '../../loaders/gltf-job';
 import type { PbrMaterial, PbrTextureOf } from '../../scene/pbr-material';
 import { absoluteUrl } from '../absolute-url';
@@ -57,7 +57,8 @@ function imageUrl(image: GltfImage, base: string): string | null {
 function withUrls(m: GltfMaterial, urls: (string | null)[]): PbrMaterial {
   const map = (t: PbrTextureOf<{ image: number }> | null): PbrTextureOf<{ url: string }> | null => {
     const u = t ? urls[t.source.image] : null;
-    return t && u ? { ...t, source: { url: u } } : null;
+    // The model's UVs are turned the OBJ way up (as-obj.ts): so is each texture's transform.
+    return t && u ? { ...t, source: { url: u }, transform: t.transform && transformAsObj(t.transform) } : null;
   };
   return {
     ...m, baseColorTexture: map(m.baseColorTexture), metallicRoughnessTexture: map(m.metallicRoughnessTexture),

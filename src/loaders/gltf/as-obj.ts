@@ -10,6 +10,15 @@ export function materialKey(index: number): string {
   return `#${index}`;
 }
 
+/**
+ * A KHR_texture_transform, row-major [a, b, c, d, e, f] in glTF's UV (v down), in the UV gltfAsObj turns to (v' = 1 − v): the
+ * same map of the surface, [a, −b, b + c, −d, e, 1 − e − f].
+ */
+export function transformAsObj(m: readonly number[]): number[] {
+  const [a, b, c, d, e, f] = m;
+  return [a, -b, b + c, -d, e, 1 - e - f];
+}
+
 export function gltfAsObj(r: GltfResult): ObjResult {
   const vertexCount = r.positions.length / 3;
   let uvs: Float32Array | null = null;

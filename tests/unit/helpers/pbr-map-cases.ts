@@ -5,14 +5,16 @@ import type { PbrMaterial, PbrTexture } from '../../../src/scene/pbr-material';
 import type { Scene, Vec3 } from '../../../src/scene/scene';
 import type { DecodedImage } from '../../../src/scene/decoded-image';
 import { IA, ID, boxScene, pbrMaterial } from './pbr-scenes';
+import { transformAsObj } from '../../../src/loaders/gltf/as-obj';
 
 export const MR = 'https://example.com/metal rough.png', AO = 'https://example.com/occlusion.png', EM = 'https://example.com/emissive.png';
 
 export const image = (r: number, g: number, b: number): DecodedImage => ({ width: 1, height: 1, data: new Uint8ClampedArray([r, g, b, 255]) });
 export const IMAGES = new Map<string, DecodedImage>([[MR, image(0, 191, 255)], [AO, image(64, 0, 0)], [EM, image(255, 128, 0)]]);
 
-export const map = (url: string, texCoord = 0): PbrTexture => ({
-  source: { url }, texCoord, sampler: { magFilter: undefined, minFilter: undefined, wrapS: 10497, wrapT: 10497 }, transform: null,
+/** A map of the scene value: `transform` in the scene's UV (the OBJ way up, as the element turns a file's: transformAsObj). */
+export const map = (url: string, texCoord = 0, transform: readonly number[] | null = null): PbrTexture => ({
+  source: { url }, texCoord, sampler: { magFilter: undefined, minFilter: undefined, wrapS: 10497, wrapT: 10497 }, transform,
 });
 
 /** A box of `pbr` with `emissive` (the element's Material.emissive: the factor times its strength). */
@@ -23,6 +25,13 @@ export const lit = (base: number, metallic: number, roughness: number, occlusion
   const cdiff = base * (1 - metallic), f0 = 0.04 * (1 - metallic) + base * metallic, a = roughness * roughness;
   return IA * cdiff * occlusion + ID * ((1 - f0) * cdiff + f0 / (4 * a * a));
 };
+
+/** 2×2 RGBA8, rows top first: (top left, top right, bottom left, bottom right). */
+const quad = (...texels: [number, number, number][]): DecodedImage => ({ width: 2, height: 2, data: new Uint8ClampedArray(texels.flatMap((t) => [...t, 255])) });
+
+const MR2 = 'https://example.com/metal rough 2×2.png', BASE2 = 'https://example.com/base 2×2.png';
+/** glTF's scale (0, 0), offset (0.75, 0.25): every UV onto the top right texel's centre (v down), in the scene's UV. */
+export const ONTO_TOP_RIGHT = transformAsObj([0, 0, 0.75, 0, 0, 0.25]);
 
 const grey = (x: number): number[] => [x, x, x];
 const GREY = [0.5, 0.5, 0.5, 1] as const;
@@ -51,6 +60,18 @@ export const MAP_CASES: MapCase[] = [
   })),
   // The emission times the map: (255, 128, 0) on (0.3, 0.2, 0.1).
   { name: 'emissive (255, 128, 0) on (0.3, 0.2, 0.1)', scene: box({ baseColor: GREY, metallic: 0, roughness: 1, emissiveTexture: map(EM) }, [0.3, 0.2, 0.1]), images: IMAGES, want: [1, 128 / 255, 0].map((t, k) => lit(0.5, 0, 1) + [0.3, 0.2, 0.1][k] * t) },
+  // KHR_texture_transform: scale 0 and offset (0.75, 0.25) in glTF's UV read the top right texel's centre everywhere, exactly.
+  {
+    name: 'a transform onto one texel: the metallic-roughness map\'s top right (·, 191, 255) among (·, 40, 0)', want: grey(lit(0.5, 1, 191 / 255)),
+    images: new Map([[MR2, quad([0, 40, 0], [0, 191, 255], [0, 40, 0], [0, 40, 0])]]),
+    scene: box({ baseColor: GREY, metallic: 1, roughness: 1, metallicRoughnessTexture: map(MR2, 0, ONTO_TOP_RIGHT) }),
+  },
+  {
+    name: 'a transform onto one texel: the base colour texture\'s top right (128) among (255)', want: grey(lit(128 / 255, 0, 1)),
+    images: new Map([[BASE2, quad([255, 255, 255], [128, 128, 128], [255, 255, 255], [255, 255, 255])]]),
+    scene: ((s: Scene) => ({ ...s, objects: [{ ...s.objects[0], material: { ...s.objects[0].material, texture: { kind: 'image' as const, url: BASE2 } } }] }))(
+      box({ baseColor: [1, 1, 1, 1], metallic: 0, roughness: 1, baseColorTexture: map(BASE2, 0, ONTO_TOP_RIGHT) })),
+  },
   // Not read, the factor alone: the image missing; on TEXCOORD_1; under a mapping other than uv (the maps follow the mesh's UV).
   // (A URL no case gives an image for: the GLSL's page keeps the images of the draws before.)
   { name: 'a map whose image is missing', scene: box({ baseColor: GREY, metallic: 1, roughness: 1, metallicRoughnessTexture: map('https://example.com/gone.png') }), images: new Map(), want: factorOnly },
@@ -62,8 +83,6 @@ export const MAP_CASES: MapCase[] = [
   },
 ];
 
-/** 2×2 RGBA8, rows top first: (top left, top right, bottom left, bottom right). */
-const quad = (...texels: [number, number, number][]): DecodedImage => ({ width: 2, height: 2, data: new Uint8ClampedArray(texels.flatMap((t) => [...t, 255])) });
 
 /**
  * Which way up a map is read: each map 2×2 with a texel of its own per quadrant, magnified over the face (filtered between
@@ -80,4 +99,20 @@ export const QUADRANTS: MapCase = {
   scene: box({
     baseColor: [0.6, 0.5, 0.4, 1], metallic: 1, roughness: 1, metallicRoughnessTexture: map(MR), occlusionTexture: map(AO), emissiveTexture: map(EM),
   }, [0.3, 0.3, 0.3]),
+};
+
+/** KHR_texture_transform's T·R·S in glTF's UV (loaders/gltf/materials.ts), then in the scene's. */
+const MOVED = ((r: number, [sx, sy]: [number, number], [ox, oy]: [number, number]) => {
+  const c = Math.cos(r), s = Math.sin(r);
+  return transformAsObj([c * sx, s * sy, ox, -s * sx, c * sy, oy]);
+})(0.4, [1.7, 0.8], [0.15, -0.2]);
+
+/** QUADRANTS with every map, and a base colour texture, moved by one transform (rotated, scaled, offset): the renderers compared. */
+export const QUADRANTS_MOVED: MapCase = {
+  name: 'three 2×2 maps and a base colour texture on the face, transformed', want: [],
+  images: new Map([...QUADRANTS.images, [BASE2, quad([255, 255, 255], [128, 128, 128], [60, 200, 90], [255, 255, 255])]]),
+  scene: ((s: Scene) => ({ ...s, objects: [{ ...s.objects[0], material: { ...s.objects[0].material, texture: { kind: 'image' as const, url: BASE2 } } }] }))(box({
+    baseColor: [0.6, 0.5, 0.4, 1], metallic: 1, roughness: 1, baseColorTexture: map(BASE2, 0, MOVED), metallicRoughnessTexture: map(MR, 0, MOVED),
+    occlusionTexture: map(AO, 0, MOVED), emissiveTexture: map(EM, 0, MOVED),
+  }, [0.3, 0.3, 0.3])),
 };
