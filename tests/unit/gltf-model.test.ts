@@ -95,4 +95,17 @@ describe('modelOf', () => {
     expect(model.materials.get('#1')!.pbr!.name).toBe('b');
     expect(model.warnings).toEqual(['glass-plane-scene: https://example.com/models/chair.glb at meshes[0].primitives[1].mode: points and lines are not drawn (the first named; any others too)']);
   });
+
+  it('turns each texture\'s transform the OBJ way up with the UVs (transformAsObj), and keeps none as none', () => {
+    const base: GltfMaterial = { ...DEFAULT_MATERIAL, name: 'a' };
+    const ref = (transform: number[] | null) => ({ source: { image: 0 }, texCoord: 0, sampler: { magFilter: undefined, minFilter: undefined, wrapS: 10497, wrapT: 10497 }, transform });
+    const model = modelOf(result({
+      materials: [{ ...base, baseColorTexture: ref([1, 0, 0.25, 0, 1, 0.5]), occlusionTexture: ref(null) }],
+      images: [{ kind: 'uri', uri: 'a.png', name: 'images[0]' }],
+    }), 'https://example.com/m.gltf');
+    const pbr = model.materials.get('#0')!.pbr!;
+    // An offset (0.25, 0.5) in glTF's UV (v down) is (0.25, −0.5) the OBJ way up.
+    expect(pbr.baseColorTexture!.transform).toEqual([1, -0, 0.25, -0, 1, -0.5]);
+    expect(pbr.occlusionTexture!.transform).toBeNull();
+  });
 });
