@@ -67,5 +67,6 @@ test('WebGL: 2×2 maps and a base colour texture under one KHR_texture_transform
   const regions = renderScene(QUADRANTS_MOVED.scene, state, null, { samplesPerAxis: 1 });
   const p = compareImages({ ...regions, rgba: new Uint8ClampedArray(soft) }, image.data, { against: 'rgba8' }).psnr;
   note(`2×2 maps transformed, WebGL against the software renderer: objects ${p.objects.toFixed(1)} dB`);
-  expect(p.objects).toBeGreaterThan(0);
+  // Measured here: 57.3 dB.
+  expect(p.objects).toBeGreaterThan(55.3);
 });
