@@ -11,8 +11,8 @@ uniform sampler2D uOcclusion;
 uniform sampler2D uEmissiveMap;
 uniform float uOcclusionStrength;
 // Each texture's KHR_texture_transform as two rows (u' = row0·(u, v, 1), v' = row1·(u, v, 1)): the base colour's, the
-// metallic-roughness map's, the occlusion map's, the emissive map's.
-uniform vec3 uUvRows[8];
+// metallic-roughness map's, the occlusion map's, the emissive map's, the normal map's.
+uniform vec3 uUvRows[10];
 
 /** The UV texture i reads at the mesh's UV `uv`. */
 vec2 moveUv(int i, vec2 uv) {
@@ -50,6 +50,31 @@ void addPbrLight(vec3 l, vec3 ia, vec3 id, vec3 n, vec3 v, vec3 base, vec3 s, in
   vec3 fr = f0 + (1.0 - f0) * (k2 * k2 * k);
   c += 3.141592653589793 * id * nl * ((1.0 - fr) * cdiff / 3.141592653589793 + fr * (d * vis));
 }
+
+#ifdef NORMAL_MAP
+uniform sampler2D uNormalMap;
+uniform float uNormalScale; // 0 where the map's image is not in: the interpolated normal
+
+/**
+ * The interpolated normal n (unit, not yet turned to the viewer) perturbed by the normal map (docs/gltf.md#the-normal-map): the
+ * tangent made orthogonal to it, the bitangent w·(n × t), normalize(x·T + y·B + z·N) for the texel's 2·RGB − 1 (x and y times
+ * the scale); turned to the viewer as n would be. Without a tangent (a clustered copy in the reflection), n as it is.
+ */
+vec3 mappedNormal(vec3 n, vec4 t, vec2 uv, vec3 v) {
+  vec3 tt = t.xyz - n * dot(n, t.xyz);
+  float tl = length(tt);
+  if (tl == 0.0) return facing(n, v);
+  tt /= tl;
+  vec3 b = (t.w < 0.0 ? -1.0 : 1.0) * cross(n, tt);
+  vec3 m = texture(uNormalMap, mapUv(4, uv)).rgb * 2.0 - 1.0;
+  m.xy *= uNormalScale;
+  vec3 p = normalize(m.x * tt + m.y * b + m.z * n);
+#ifdef TWO_SIDED
+  if (dot(n, v) < 0.0) p = -p;
+#endif
+  return p;
+}
+#endif
 
 #define ADD_PBR_LIGHT(i, point) addPbrLight(LIGHT_DIR(i, point), uLightAmbient[i], uLightDiffuse[i], n, v, base, s, c)
 

@@ -30,6 +30,9 @@ in vec3 vLightS;
 #if defined(CLIP_PLANE) && !defined(CLIP_DISTANCE)
 in float vClipDistance;
 #endif
+#ifdef NORMAL_MAP
+in vec4 vTangent;
+#endif
 
 out vec4 outColor;
 
@@ -78,7 +81,12 @@ void main() {
 #else
   vec3 t = surfaceTexture();
 #endif
-  outColor = vec4(pbrColor(facing(normalize(vNormal), v), v, vRelPos, uBaseColor * t, uEmissive, vUv), uOpacity);
+#ifdef NORMAL_MAP
+  vec3 n = mappedNormal(normalize(vNormal), vTangent, vUv, v);
+#else
+  vec3 n = facing(normalize(vNormal), v);
+#endif
+  outColor = vec4(pbrColor(n, v, vRelPos, uBaseColor * t, uEmissive, vUv), uOpacity);
 #else
 #if defined(SHADING_PHONG)
   vec3 v = viewVector(vRelPos);

@@ -10,6 +10,10 @@ layout(location = 2) in vec2 aUv;
 #ifdef SHADING_FLAT
 layout(location = 3) in vec3 aCentroid;
 #endif
+#ifdef NORMAL_MAP
+layout(location = 4) in vec4 aTangent; // xyz along u, w the bitangent's side (docs/gltf.md#the-normal-map)
+out vec4 vTangent;
+#endif
 
 uniform highp mat4 uModelViewProjection;
 uniform highp mat4 uModelRelative;
@@ -47,6 +51,9 @@ void main() {
 #if defined(SHADING_PHONG)
   vRelPos = rel.xyz;
   vNormal = uNormalMatrix * aNormal;
+#ifdef NORMAL_MAP
+  vTangent = vec4(mat3(uModelRelative) * aTangent.xyz, aTangent.w);
+#endif
 #elif defined(SHADING_FLAT)
   vec3 faceCentre = (uModelRelative * vec4(aCentroid, 1.0)).xyz; // "centroid" is a GLSL ES 3.0 keyword
   vec3 v = viewVector(faceCentre);

@@ -133,7 +133,7 @@ export default [
   {
     name: 'P21 the maps read at (u, v), not at an image\'s (u, 1 − v)',
     why: GLSL,
-    edits: [{ file: 'shaders/pbr.glsl', find: '  vec2 st = vec2(uv.x, 1.0 - uv.y);', replace: '  vec2 st = uv;' }],
+    edits: [{ file: 'shaders/pbr.glsl', find: '  return vec2(m.x, 1.0 - m.y);', replace: '  return m;' }],
     tests: [MAPS],
   },
   {
@@ -182,6 +182,36 @@ export default [
     name: 'P29 a transform\'s rows read the other way round (v\' from the first)',
     why: GLSL,
     edits: [{ file: 'shaders/pbr.glsl', find: 'return vec2(dot(uUvRows[2 * i], p), dot(uUvRows[2 * i + 1], p));', replace: 'return vec2(dot(uUvRows[2 * i + 1], p), dot(uUvRows[2 * i], p));' }],
+    tests: [MAPS],
+  },
+  {
+    name: 'P30 the normal map\'s bitangent on the other side (−w·(N × T))',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: 'vec3 b = (t.w < 0.0 ? -1.0 : 1.0) * cross(n, tt);', replace: 'vec3 b = (t.w < 0.0 ? 1.0 : -1.0) * cross(n, tt);' }],
+    tests: [MAPS],
+  },
+  {
+    name: 'P31 the perturbed normal not turned to the viewer on a double-sided mesh seen from behind',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: '  if (dot(n, v) < 0.0) p = -p;', replace: '' }],
+    tests: [MAPS],
+  },
+  {
+    name: 'P32 normalScale not applied',
+    why: GLSL,
+    edits: [{ file: 'shaders/pbr.glsl', find: '  m.xy *= uNormalScale;', replace: '' }],
+    tests: [MAPS],
+  },
+  {
+    name: 'P33 the tangent left in the model\'s space (not through the model matrix)',
+    why: GLSL,
+    edits: [{ file: 'shaders/standard.vert', find: 'vTangent = vec4(mat3(uModelRelative) * aTangent.xyz, aTangent.w);', replace: 'vTangent = aTangent;' }],
+    tests: [MAPS],
+  },
+  {
+    name: 'P34 a mesh\'s tangents not uploaded',
+    why: 'a vertex attribute of WebGL: only a browser draws it',
+    edits: [{ file: 'src/render/gl/mesh.ts', find: '    if (data.tangents) this.attribute(ATTRIB.tangent, data.tangents, 4);', replace: '' }],
     tests: [MAPS],
   },
 ];

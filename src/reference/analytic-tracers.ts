@@ -59,6 +59,8 @@ export class BoxTracer implements ObjectTracer {
     const face = FACE_OF[axis][d[axis] > 0 ? 1 : 0];
     const [fn, fa, fb] = BOX_FACES[face];
     hit.surface = this.firstCode + face;
+    hit.tangent[3] = 0; // no tangents: no normal map (docs/gltf.md#the-normal-map)
+    hit.flipped = false;
     hit.object = this.object;
     hit.frame = frame;
     hit.t = tNear;
@@ -116,6 +118,8 @@ export class SphereTracer implements ObjectTracer {
     if (!(h2 >= 0)) return false;
     const t = tc - Math.sqrt(h2 / a);
     hit.surface = this.code;
+    hit.tangent[3] = 0;
+    hit.flipped = false;
     hit.object = this.object;
     hit.frame = frame;
     hit.t = t;

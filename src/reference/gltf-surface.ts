@@ -1,7 +1,7 @@
 // A glTF material at a hit for the reference (docs/gltf.md#drawing): metallic and roughness times the metallic-roughness
 // map's B and G, the occlusion map's R by its strength, the emission times the emissive map — each map read by the
 // reference's own sampler (surface-texture.ts) at the hit's UV moved by its transform, where the mapping is `uv`; the base
-// colour texture read again where it has a transform — then shadePbr.
+// colour texture read again where it has a transform; the normal map turning the shading normal — then shadePbr.
 import { readMap } from '../scene/pbr-material';
 import type { Material } from '../scene/scene';
 import type { Ray } from './ray';
@@ -9,7 +9,8 @@ import { shadePbr, type EnvironmentShading, type PbrSurface, type PreparedLight 
 import type { SurfaceHit } from './surface-hit';
 import type { SurfaceTexture } from './surface-texture';
 
-const texel = new Float64Array(3), emitted = new Float64Array(3);
+const texel = new Float64Array(3), emitted = new Float64Array(3), interpolated = new Float64Array(3);
+// Stryker disable next-line ObjectLiteral: first values, each field set by shadeGltf before shadePbr reads it
 const surface: PbrSurface = { metallic: 0, roughness: 0, occlusion: 1 };
 
 /** shadePbr of `m` (a glTF material) at `hit`, its maps read; `tex` is its base colour texture's value there. */
@@ -37,5 +38,32 @@ export function shadeGltf(
     for (let k = 0; k < 3; k++) emitted[k] = emissive[k] * texel[k];
     emissive = emitted;
   }
-  return shadePbr(hit, pbr, emissive, tex, lights, eye, out, towardsViewer, environment, surface);
+  const nm = uv && hit.tangent[3] !== 0 ? readMap(pbr.normalTexture) : null;
+  if (nm === null || textures.mapAt(nm.source.url, false, nm.transform, hit, ray, texel) === null) {
+    return shadePbr(hit, pbr, emissive, tex, lights, eye, out, towardsViewer, environment, surface);
+  }
+  interpolated.set(hit.n);
+  mappedNormal(hit, texel, pbr.normalScale);
+  shadePbr(hit, pbr, emissive, tex, lights, eye, out, towardsViewer, environment, surface);
+  hit.n.set(interpolated);
+  return out;
+}
+
+/**
+ * hit.n perturbed by a normal map's texel `t` (docs/gltf.md#the-normal-map): in the frame of the interpolated normal N (as
+ * it was before it was turned to the viewer), the tangent T made orthogonal to it and the bitangent B = w·(N × T),
+ * normalize(x·T + y·B + z·N) for (x, y, z) = 2t − 1, x and y times `scale`; turned to the viewer as N was.
+ */
+function mappedNormal(hit: SurfaceHit, t: Float64Array, scale: number): void {
+  const n = hit.n, tg = hit.tangent, s = hit.flipped ? -1 : 1;
+  const nx = s * n[0], ny = s * n[1], nz = s * n[2];
+  const d = tg[0] * nx + tg[1] * ny + tg[2] * nz;
+  let tx = tg[0] - d * nx, ty = tg[1] - d * ny, tz = tg[2] - d * nz;
+  const tl = Math.hypot(tx, ty, tz) || 1;
+  tx /= tl; ty /= tl; tz /= tl;
+  const w = tg[3], bx = w * (ny * tz - nz * ty), by = w * (nz * tx - nx * tz), bz = w * (nx * ty - ny * tx);
+  const x = (2 * t[0] - 1) * scale, y = (2 * t[1] - 1) * scale, z = 2 * t[2] - 1;
+  const mx = x * tx + y * bx + z * nx, my = x * ty + y * by + z * ny, mz = x * tz + y * bz + z * nz;
+  const ml = s / (Math.hypot(mx, my, mz) || 1);
+  n[0] = mx * ml; n[1] = my * ml; n[2] = mz * ml;
 }

@@ -54,6 +54,21 @@ export class MeshTracer implements ObjectTracer {
     return true;
   }
 
+  /** The tangent interpolated at the hit, in the world, unit (docs/gltf.md#the-normal-map); w 0 where the mesh has none. */
+  private tangentAt(hit: SurfaceHit, i0: number, i1: number, i2: number, w0: number, w1: number, w2: number): void {
+    const t = this.mesh.tangents, out = hit.tangent, g = this.g;
+    if (t === undefined || t.length < 4 * (this.mesh.positions.length / 3)) {
+      out[3] = 0;
+      return;
+    }
+    // Stryker disable next-line EqualityOperator: k = 3 writes g[3], past the end of its 3 elements: dropped
+    for (let k = 0; k < 3; k++) g[k] = w0 * t[4 * i0 + k] + w1 * t[4 * i1 + k] + w2 * t[4 * i2 + k];
+    this.frame.directionToWorld(out, g);
+    const len = Math.hypot(out[0], out[1], out[2]) || 1;
+    out[0] /= len; out[1] /= len; out[2] /= len;
+    out[3] = w0 * t[4 * i0 + 3] + w1 * t[4 * i1 + 3] + w2 * t[4 * i2 + 3] < 0 ? -1 : 1;
+  }
+
   private fill(ray: Ray, found: BvhHit, hit: SurfaceHit): void {
     const { o, d, g, frame } = this;
     const { normals, uvs, indices, positions } = this.mesh;
@@ -88,7 +103,10 @@ export class MeshTracer implements ObjectTracer {
     nq[0] /= len; nq[1] /= len; nq[2] /= len;
     frame.normalToWorld(hit.n, nq);
     const n = hit.n;
-    if (n[0] * rd[0] + n[1] * rd[1] + n[2] * rd[2] > 0) { n[0] = -n[0]; n[1] = -n[1]; n[2] = -n[2]; }
+    // Two-sided: turned to the viewer. A single-sided mesh is not (its back faces are not hit; WebGL's variant does not turn it).
+    hit.flipped = !this.frontOnly && n[0] * rd[0] + n[1] * rd[1] + n[2] * rd[2] > 0;
+    if (hit.flipped) { n[0] = -n[0]; n[1] = -n[1]; n[2] = -n[2]; }
+    this.tangentAt(hit, i0, i1, i2, w0, w1, w2);
     // UVs and their gradients: ∇β = (e2 × N)/|N|², ∇γ = (N × e1)/|N|² for p = p0 + β·e1 + γ·e2.
     const uv = uvs.length >= 2 * vertices ? uvs : NO_UVS;
     const j0 = uv === NO_UVS ? 0 : i0, j1 = uv === NO_UVS ? 0 : i1, j2 = uv === NO_UVS ? 0 : i2;

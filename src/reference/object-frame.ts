@@ -63,6 +63,14 @@ export class ObjectFrame {
     return out;
   }
 
+  /** out = R·S·d: an object-space direction along the surface (a tangent) in the world. Not normalised. */
+  directionToWorld(out: Float64Array, d: ArrayLike<number>): Float64Array {
+    const m = this.matrix, s = this.scale;
+    const dx = d[0] * s[0], dy = d[1] * s[1], dz = d[2] * s[2];
+    for (let k = 0; k < 3; k++) out[k] = m[k] * dx + m[4 + k] * dy + m[8 + k] * dz;
+    return out;
+  }
+
   /** out = normalize(R·S⁻¹·n): the world normal of an object-space normal. */
   normalToWorld(out: Float64Array, n: ArrayLike<number>): Float64Array {
     this.gradientToWorld(out, n);

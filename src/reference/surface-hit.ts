@@ -27,4 +27,8 @@ export class SurfaceHit {
   v = 0;
   readonly gu = new Float64Array(3);
   readonly gv = new Float64Array(3);
+  /** A mesh's tangent where it has them (MeshData.tangents): world, unit, and w the bitangent's side (0: none). */
+  readonly tangent = new Float64Array(4);
+  /** n was turned to face the viewer (a two-sided mesh seen from its back). */
+  flipped = false;
 }

@@ -69,6 +69,7 @@ export class SurfaceTexture {
   mapAt(url: string, colour: boolean, m: readonly number[] | null, hit: SurfaceHit, ray: Ray, out: Float64Array): Float64Array | null {
     const space = colour ? this.colorSpace : 'none', built = this.maps[space];
     let tex = built.get(url);
+    // Stryker disable next-line ConditionalExpression: decoding it again gives the same texture (the cache saves the time)
     if (tex === undefined) {
       const image = this.decoded.get(url);
       tex = image === undefined ? null : imageTexture(image, space);

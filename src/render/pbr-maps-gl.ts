@@ -11,11 +11,11 @@ import type { Scene } from '../scene/scene';
 import type { DecodedImage, SceneImages } from '../scene/decoded-image';
 
 /** Each texture's transform, two rows of three (u' = a·u + b·v + c, v' = d·u + e·v + f), for uUvRows; none is the identity. */
-const ROWS = new Float32Array(24), IDENTITY = [1, 0, 0, 0, 1, 0];
+const ROWS = new Float32Array(30), IDENTITY = [1, 0, 0, 0, 1, 0];
 const rows = (i: number, t: PbrTexture | null): void => ROWS.set(t?.transform ?? IDENTITY, 6 * i);
 
 /** Units 0 (the base colour) and 3–4 (the environment) are the draw's others. */
-const METAL_ROUGH_UNIT = 5, OCCLUSION_UNIT = 6, EMISSIVE_UNIT = 7;
+const METAL_ROUGH_UNIT = 5, OCCLUSION_UNIT = 6, EMISSIVE_UNIT = 7, NORMAL_UNIT = 8;
 
 interface Held {
   source: DecodedImage;
@@ -40,6 +40,7 @@ export class PbrMapsGl {
       this.hold(pbr.metallicRoughnessTexture, images, false);
       this.hold(pbr.occlusionTexture, images, false);
       this.hold(pbr.emissiveTexture, images, srgb);
+      this.hold(pbr.normalTexture, images, false);
     }
   }
 
@@ -49,15 +50,21 @@ export class PbrMapsGl {
     this.texture(m.metallicRoughnessTexture, false).bind(METAL_ROUGH_UNIT);
     this.texture(m.occlusionTexture, false).bind(OCCLUSION_UNIT);
     this.texture(m.emissiveTexture, this.srgb).bind(EMISSIVE_UNIT);
+    const normal = this.texture(m.normalTexture, false);
+    normal.bind(NORMAL_UNIT);
     gl.activeTexture(gl.TEXTURE0);
     gl.uniform1i(p.location('uMetalRough'), METAL_ROUGH_UNIT);
     gl.uniform1i(p.location('uOcclusion'), OCCLUSION_UNIT);
     gl.uniform1i(p.location('uEmissiveMap'), EMISSIVE_UNIT);
+    gl.uniform1i(p.location('uNormalMap'), NORMAL_UNIT);
+    // White stands for a missing map: flat only at scale 0 (its 2·1 − 1 = 1 in x and y too).
+    gl.uniform1f(p.location('uNormalScale'), normal === this.white ? 0 : m.normalScale);
     gl.uniform1f(p.location('uOcclusionStrength'), m.occlusionStrength);
     rows(0, m.baseColorTexture);
     rows(1, m.metallicRoughnessTexture);
     rows(2, m.occlusionTexture);
     rows(3, m.emissiveTexture);
+    rows(4, m.normalTexture);
     gl.uniform3fv(p.location('uUvRows'), ROWS);
   }
 

@@ -120,7 +120,7 @@ export interface Scene {
 export function materialImages(m: Material): string[] {
   const urls = m.texture.kind === 'image' ? [m.texture.url] : [];
   const p = m.pbr;
-  if (p) for (const t of [p.metallicRoughnessTexture, p.occlusionTexture, p.emissiveTexture]) {
+  if (p) for (const t of [p.metallicRoughnessTexture, p.occlusionTexture, p.emissiveTexture, p.normalTexture]) {
     const read = readMap(t);
     if (read) urls.push(read.source.url);
   }

@@ -7,6 +7,7 @@ import { readMap, type PbrMaterial } from '../scene/pbr-material';
 import type { Material } from '../scene/scene';
 
 /** A plain material's texture (tex = 1, in either colour space). */
+// Stryker disable next-line StringLiteral: 255 is 1 as stored and decoded alike
 const WHITE = imageMipTexture({ width: 1, height: 1, data: new Uint8Array([255, 255, 255, 255]) }, 'none')!;
 
 /** A glTF material's maps besides its base colour, null where it has none or its image is not there (the factor alone). */
@@ -17,6 +18,8 @@ export interface PbrMaps {
   occlusion: MipTexture | null;
   /** Colour: decoded to linear light in srgb. */
   emissive: MipTexture | null;
+  /** A tangent-space normal (2·RGB − 1): data, as stored. */
+  normal: MipTexture | null;
 }
 
 export class ImageTextures {
@@ -35,6 +38,7 @@ export class ImageTextures {
     out.metalRough = this.map(pbr?.metallicRoughnessTexture, images, 'none');
     out.occlusion = this.map(pbr?.occlusionTexture, images, 'none');
     out.emissive = this.map(pbr?.emissiveTexture, images, space);
+    out.normal = this.map(pbr?.normalTexture, images, 'none');
   }
 
   private map(t: PbrMaterial['emissiveTexture'] | undefined, images: SceneImages | null | undefined, space: ColorSpace): MipTexture | null {
@@ -48,6 +52,7 @@ export class ImageTextures {
     if (image === undefined) return null;
     const built = this.built[space];
     let t = built.get(image);
+    // Stryker disable next-line ConditionalExpression: building it again gives the same texture (the cache saves the time)
     if (t === undefined) built.set(image, (t = imageMipTexture(image, space)));
     return t;
   }

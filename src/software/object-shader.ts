@@ -12,11 +12,12 @@ import type { PbrMaps } from './image-textures';
 import type { MipTexture } from './mip-texture';
 import { CLIP_DISTANCE, VARYINGS, type FragmentShader, type Rasterizer } from './raster';
 import { OBJECT_KEY_LENGTH, type ObjectCache } from './object-cache';
+import { objectKey } from './object-key';
 
 // Varyings, after the clip-space slots: phong carries the eye-relative position and normal,
 // gouraud and flat the two light sums in the same slots; then UV, object position and normal.
-const REL = 0, NRM = 3, UV = 6, OBJ = 8, OBJ_N = 11;
-export const OBJECT_STRIDE = VARYINGS + 14;
+const REL = 0, NRM = 3, UV = 6, OBJ = 8, OBJ_N = 11, TAN = 14;
+export const OBJECT_STRIDE = VARYINGS + 18;
 
 /** One object's draw: what the vertex stage and the fragments read. */
 export interface ObjectDraw {
@@ -97,6 +98,9 @@ export class ObjectShader implements FragmentShader {
   /** blinnPhong's point, normal and view vector; a texture lookup's UV and derivatives. */
   private readonly geometry = new Float64Array(9);
   private readonly lookup = new Float64Array(6);
+  /** The fragment's tangent (xyz and w; w 0: none), for a normal map; whether the draw's vertices carry one. */
+  private readonly tangent = new Float64Array(4);
+  private tangents = false;
   private readonly tex = new Float64Array(3);
   private readonly part = new Float64Array(3);
   private readonly uv0 = new Float64Array(2);
@@ -111,7 +115,7 @@ export class ObjectShader implements FragmentShader {
   /** The draw's cache while its fragments are read and kept (null: shaded every frame), and its key. */
   private cache: ObjectCache | null = null;
   private readonly key = new Float64Array(OBJECT_KEY_LENGTH);
-  // Stryker disable next-line ArrayDeclaration: cacheKey empties it (o.length = 0) before each use
+  // Stryker disable next-line ArrayDeclaration: objectKey empties it (o.length = 0) before each use
   private readonly keyObjects: unknown[] = [];
 
   /** Runs the vertex stage of `d` and rasterizes its triangles with `r`. */
@@ -119,6 +123,7 @@ export class ObjectShader implements FragmentShader {
     this.draw = d;
     this.perPixel = d.shading === 'phong' || d.material.pbr !== undefined;
     const count = d.mesh.positions.length / 3;
+    this.tangents = d.material.pbr !== undefined && (d.mesh.tangents?.length ?? 0) >= 4 * count;
     if (this.vertices.length < count * OBJECT_STRIDE) this.vertices = new Float64Array(count * OBJECT_STRIDE);
     const timing = this.timing;
     const t0 = timing ? performance.now() : 0;
@@ -130,7 +135,7 @@ export class ObjectShader implements FragmentShader {
     // Opaque draws only: their colour goes to the Float32 target as it is (no blend, no codes).
     if (d.cache !== null && this.codes === null && d.material.opacity >= 1 && !timing?.constantFragments) {
       const n = r.shadeEvery;
-      d.cache.begin(d.index, this.cacheKey(d, r), this.keyObjects, (r.width / n) * (r.height / n));
+      d.cache.begin(d.index, objectKey(d, r, this.top, this.key, this.keyObjects), this.keyObjects, (r.width / n) * (r.height / n));
       if (d.cache.current !== 0) this.cache = d.cache;
     }
     if (!timing) {
@@ -148,49 +153,10 @@ export class ObjectShader implements FragmentShader {
     timing.triangles += performance.now() - t1;
   }
 
-  /**
-   * Everything a fragment's colour depends on besides the pixel and the triangle: the vertex
-   * stage's inputs, lights, material, mapping bounds and the grid (values into this.key, objects
-   * into this.keyObjects). Meshes and textures are compared by identity: scene values are never
-   * written in place.
-   */
-  private cacheKey(d: ObjectDraw, r: Rasterizer): Float64Array {
-    const k = this.key, m = d.material, l = d.lights, cp = d.clipPlane, mesh = d.mesh, c = d.bounds.center;
-    k.fill(0);
-    let i = put(k, 0, d.model, 16);
-    i = put(k, i, d.normal, 9);
-    i = put(k, i, d.viewProjection, 16);
-    i = put(k, i, d.eye, 3);
-    i = put(k, i, d.view, 4);
-    // Stryker disable next-line ConditionalExpression,EqualityOperator: no plane keys as (0, 0, 0, 0), which keeps all (0 ≥ 0)
-    k[i++] = cp === null ? 0 : 1;
-    if (cp !== null) i = put(k, i, cp, 4); else i += 4;
-    k[i++] = c[0]; k[i++] = c[1]; k[i++] = c[2]; k[i++] = d.bounds.radius;
-    i = put(k, i, m.ambient, 3);
-    i = put(k, i, m.diffuse, 3);
-    i = put(k, i, m.specular, 3);
-    k[i++] = m.shininess; k[i++] = m.opacity; k[i++] = d.twoSided ? 1 : 0; k[i++] = this.top; k[i++] = l.intensity;
-    if (m.emissive) i = put(k, i, m.emissive, 3); else i += 3;
-    // Stryker disable next-line ConditionalExpression,EqualityOperator,StringLiteral: culling picks faces, not colours
-    k[i++] = r.width; k[i++] = r.height; k[i++] = r.shadeEvery; k[i++] = r.frontCCW ? 1 : 0; k[i++] = r.cull === 'back' ? 1 : 0;
-    // Stryker disable next-line UpdateOperator: all lights' values stay keyed; a light of zeros lights nothing
-    k[i++] = l.count;
-    for (let j = 0; j < l.count; j++) {
-      i = put(k, i, l.vector.subarray(3 * j), 3);
-      k[i++] = l.point[j];
-      i = put(k, i, l.ambient.subarray(3 * j), 3);
-      i = put(k, i, l.diffuse.subarray(3 * j), 3);
-      i = put(k, i, l.specular.subarray(3 * j), 3);
-    }
-    const o = this.keyObjects;
-    o.length = 0;
-    const t = d.maps;
-    o.push(mesh, mesh.positions, mesh.normals, mesh.uvs, mesh.indices, mesh.centroids, d.texture, d.shading, m.mapping, m.pbr, l.environment, t.metalRough, t.occlusion, t.emissive);
-    return k;
-  }
-
   private vertexStage(d: ObjectDraw, count: number): void {
     const { positions: p, normals: nrm, uvs, centroids } = d.mesh;
+    // A glTF material's mesh with tangents, for its normal map (docs/gltf.md#the-normal-map): through the model's 3×3 part.
+    const tangents = this.tangents ? d.mesh.tangents! : null;
     const m = d.model, nm = d.normal, vp = d.viewProjection, e = d.eye, cp = d.clipPlane;
     const out = this.vertices, sums = this.sums;
     const phong = this.perPixel;
@@ -213,6 +179,11 @@ export class ObjectShader implements FragmentShader {
       if (phong) {
         out[v + REL] = rx; out[v + REL + 1] = ry; out[v + REL + 2] = rz;
         out[v + NRM] = wx; out[v + NRM + 1] = wy; out[v + NRM + 2] = wz;
+        if (tangents !== null) {
+          const tx = tangents[4 * i], ty = tangents[4 * i + 1], tz = tangents[4 * i + 2];
+          out[v + TAN] = m[0] * tx + m[4] * ty + m[8] * tz; out[v + TAN + 1] = m[1] * tx + m[5] * ty + m[9] * tz;
+          out[v + TAN + 2] = m[2] * tx + m[6] * ty + m[10] * tz; out[v + TAN + 3] = tangents[4 * i + 3];
+        }
       } else {
         // Gouraud lights the vertex; flat lights the face's centroid (flat meshes carry it on
         // each of the triangle's own three vertices, with the face normal: flat.ts).
@@ -278,7 +249,13 @@ export class ObjectShader implements FragmentShader {
       if (e !== undefined) { cr += e[0]; cg += e[1]; cb += e[2]; }
     } else {
       // A glTF material: its texture is in the base colour, which also sets a metal's F0; its maps read at the UV.
-      pbrFragment(d.lights, d.material, d.twoSided, this.geometry, d.texture, tex, d.maps, d.material.mapping === 'uv' ? this.lookup : null, sums);
+      const t = this.tangent;
+      t[3] = 0;
+      if (this.tangents && d.maps.normal !== null) {
+        for (let k = 0; k < 4; k++) t[k] = b0 * p[i0 + TAN + k] + b1 * p[i1 + TAN + k] + b2 * p[i2 + TAN + k];
+        t[3] = t[3] < 0 ? -1 : 1;
+      }
+      pbrFragment(d.lights, d.material, d.twoSided, this.geometry, d.texture, tex, d.maps, t, d.material.mapping === 'uv' ? this.lookup : null, sums);
       cr = sums[0]; cg = sums[1]; cb = sums[2];
     }
     this.cr = cr < 0 ? 0 : cr > this.top ? this.top : cr;
@@ -377,11 +354,6 @@ export class ObjectShader implements FragmentShader {
   }
 }
 
-/** Copies n values of `xs` into k from i; the next free index. */
-function put(k: Float64Array, i: number, xs: ArrayLike<number>, n: number): number {
-  for (let j = 0; j < n; j++) k[i + j] = xs[j];
-  return i + n;
-}
 
 /** A difference of u (period 1) taken the short way round. */
 const wrap = (du: number): number => du - Math.round(du);

@@ -16,7 +16,7 @@ const texel = new Float64Array(3), surface = new Float64Array(3), base = new Flo
  */
 export function pbrFragment(
   lights: Lights, material: Material, twoSided: boolean, g: Float64Array, baseTexture: MipTexture, tex: ArrayLike<number>,
-  maps: PbrMaps, lookup: Float64Array | null, out: Float64Array,
+  maps: PbrMaps, tangent: Float64Array, lookup: Float64Array | null, out: Float64Array,
 ): void {
   const pbr = material.pbr!, bc = pbr.baseColor;
   if (lookup !== null && readMap(pbr.baseColorTexture)?.transform) tex = sampleAt(baseTexture, pbr.baseColorTexture, lookup);
@@ -29,6 +29,10 @@ export function pbrFragment(
   }
   if (lookup !== null && maps.occlusion !== null) occlusion = 1 + pbr.occlusionStrength * (sampleAt(maps.occlusion, pbr.occlusionTexture, lookup)[0] - 1);
   surface[0] = metallic; surface[1] = roughness; surface[2] = occlusion;
+  if (lookup !== null && maps.normal !== null && tangent[3] !== 0) {
+    mappedNormal(g, tangent, sampleAt(maps.normal, pbr.normalTexture, lookup), pbr.normalScale, twoSided);
+    twoSided = false; // turned already, as the interpolated normal decided
+  }
   pbrLights(lights, pbr, twoSided, g, base, surface, out);
   const e = material.emissive;
   if (e === undefined) return;
@@ -40,8 +44,28 @@ export function pbrFragment(
   }
 }
 
+/**
+ * The normal g[3..5] (the interpolated one, unit) perturbed by a normal map's texel `t` (docs/gltf.md#the-normal-map): the
+ * tangent made orthogonal to it, the bitangent w·(N × T), normalize(x·T + y·B + z·N) for (x, y, z) = 2t − 1, x and y times
+ * `scale`; turned to the viewer (g[6..8]) where `twoSided` and the interpolated normal faces away.
+ */
+function mappedNormal(g: Float64Array, tg: Float64Array, t: Float64Array, scale: number, twoSided: boolean): void {
+  const nx = g[3], ny = g[4], nz = g[5];
+  const d = tg[0] * nx + tg[1] * ny + tg[2] * nz;
+  let tx = tg[0] - d * nx, ty = tg[1] - d * ny, tz = tg[2] - d * nz;
+  const tl = Math.sqrt(tx * tx + ty * ty + tz * tz) || 1;
+  tx /= tl; ty /= tl; tz /= tl;
+  const w = tg[3], bx = w * (ny * tz - nz * ty), by = w * (nz * tx - nx * tz), bz = w * (nx * ty - ny * tx);
+  const x = (2 * t[0] - 1) * scale, y = (2 * t[1] - 1) * scale, z = 2 * t[2] - 1;
+  const mx = x * tx + y * bx + z * nx, my = x * ty + y * by + z * ny, mz = x * tz + y * bz + z * nz;
+  const away = twoSided && nx * g[6] + ny * g[7] + nz * g[8] < 0;
+  const ml = (away ? -1 : 1) / (Math.sqrt(mx * mx + my * my + mz * mz) || 1);
+  g[3] = mx * ml; g[4] = my * ml; g[5] = mz * ml;
+}
+
 /** `t` at the lookup `l` ([u, v, ∂u/∂x, ∂v/∂x, ∂u/∂y, ∂v/∂y]) moved by the texture's transform `m` (u' = a·u + b·v + c, …): into texel. */
 function sampleAt(t: MipTexture, map: PbrTexture | null, l: Float64Array): Float64Array {
+  // Stryker disable next-line OptionalChaining: a map's texture is there only where the material names the map (image-textures.ts)
   const m = map?.transform;
   if (!m) {
     t.sample(l, texel);

@@ -1,4 +1,4 @@
-// A glTF material's metallic-roughness, occlusion and emissive maps through the element (docs/gltf.md#drawing): a GLB made here
+// A glTF material's metallic-roughness, occlusion, emissive and normal maps through the element (docs/gltf.md#drawing): a GLB made here
 // (tests/e2e/helpers/gltf-models.ts mapsGlb, checked by the Khronos validator) on the glass, in the studio, drawn by each
 // renderer as the float64 reference draws the element's own scene value with the same images; `load` fires once the maps'
 // images are in, and the picture changes when they are.
@@ -14,8 +14,8 @@ import { compareImages, renderScene } from '../../src/reference';
 const MEASURED = {
   // Against the reference at 1,024 directions a pixel: the objects within the figures of the product without maps
   // (tests/e2e/gltf.spec.ts: 39.4 and 38.8), the same reasons (the split sum edge-on, one shading a pixel where the reference takes 16).
-  webgl: { all: 40.1, objects: 41.4, glass: 52.4 },
-  software: { all: 38.6, objects: 39.5, glass: 53.4 },
+  webgl: { all: 41.7, objects: 41.4, glass: 52.4 },
+  software: { all: 38.7, objects: 39.5, glass: 53.4 },
 } as const;
 
 const nextFrame = (page: import('@playwright/test').Page) => page.evaluate(() => new Promise((r) => {
@@ -29,7 +29,7 @@ test('the maps\' GLB is valid glTF', async () => {
 });
 
 for (const renderer of ['webgl', 'software'] as const) {
-  test(`${renderer}: a GLB whose material has metallic-roughness, occlusion and emissive maps, drawn as the reference draws the element's scene value`, async ({ page, consoleLog }) => {
+  test(`${renderer}: a GLB whose material has metallic-roughness, occlusion, emissive and normal maps, drawn as the reference draws the element's scene value`, async ({ page, consoleLog }) => {
     const glb = await mapsGlb();
     await page.route('**/wild/maps.glb', (route) => route.fulfill({ status: 200, contentType: 'model/gltf-binary', body: Buffer.from(glb) }));
     await openPage(page);
@@ -44,8 +44,11 @@ for (const renderer of ['webgl', 'software'] as const) {
     const image = await capture(page);
     const { scene, state, images } = await elementScene(page, image.width, image.height, { toneMapping: 'neutral' });
     const mapped = scene.objects.find((o) => o.material.pbr?.name === 'mapped')!.material.pbr!;
-    for (const t of [mapped.metallicRoughnessTexture, mapped.occlusionTexture, mapped.emissiveTexture]) expect(t?.source.url).toMatch(/^blob:/);
-    expect(images.size, 'three maps, no base colour texture').toBe(3);
+    for (const t of [mapped.metallicRoughnessTexture, mapped.occlusionTexture, mapped.emissiveTexture, mapped.normalTexture]) expect(t?.source.url).toMatch(/^blob:/);
+    expect(images.size, 'four maps, no base colour texture').toBe(4);
+    // The reader's tangents reach the scene with the mesh (docs/gltf.md#tangents).
+    const mesh = scene.objects.find((o) => o.material.pbr?.name === 'mapped')!.geometry as { data: { tangents?: Float32Array } };
+    expect(mesh.data.tangents?.length, 'xyzw per vertex of the model (both boxes share its buffer)').toBe(4 * 48);
     const ref = renderScene(scene, state, images, { samplesPerAxis: 4, environmentSamples: 1024 });
     const cmp = compareImages(ref, image.data);
     // Without the maps' images the reference draws the factors alone: a picture far from this one.

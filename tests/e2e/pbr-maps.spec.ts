@@ -4,7 +4,7 @@
 import { test, expect } from './fixtures';
 import { drawScene, openRendererPage, type Images } from './helpers/scene-json';
 import { BOX_STATE, STUDIO, mirrorToKey } from '../unit/helpers/pbr-scenes';
-import { AO, EM, IMAGES, MAP_CASES, QUADRANTS, QUADRANTS_MOVED, box, map } from '../unit/helpers/pbr-map-cases';
+import { AO, EM, IMAGES, MAP_CASES, NORMAL_CASES, QUADRANTS, QUADRANTS_MOVED, box, map } from '../unit/helpers/pbr-map-cases';
 import { compareImages, renderScene } from '../../src/reference';
 import { SoftwareRenderer } from '../../src/software';
 import { note } from './helpers/bounds';
@@ -69,4 +69,11 @@ test('WebGL: 2×2 maps and a base colour texture under one KHR_texture_transform
   note(`2×2 maps transformed, WebGL against the software renderer: objects ${p.objects.toFixed(1)} dB`);
   // Measured here: 57.3 dB.
   expect(p.objects).toBeGreaterThan(55.3);
+});
+
+test('WebGL: the normal map on a quad with tangents, as worked by hand, to one 8-bit level', async ({ page }) => {
+  for (const c of NORMAL_CASES) {
+    const got = [...(await drawScene(page, BOX_STATE, c.scene, asImages(c.images))).data.subarray(CENTRE, CENTRE + 3)];
+    c.want.forEach((w, k) => expect(Math.abs(got[k] - Math.min(w, 1) * 255), `${c.name}, channel ${k}: ${got} against ${c.want.map((x) => x * 255)}`).toBeLessThanOrEqual(1));
+  }
 });

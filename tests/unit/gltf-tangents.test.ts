@@ -14,16 +14,16 @@ function quad(uv: (x: number, y: number) => [number, number]): Float32Array {
 const round = (a: Float32Array) => Array.from(a, (x) => Number(x.toFixed(6)) + 0);
 
 describe('computeTangents', () => {
-  it('u along +x, v along +y: T = +x, and N × T = +y points along ∂p/∂v: w = +1', () => {
-    expect(round(quad((x, y) => [x, y]))).toEqual([1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1]);
+  it('u along +x, v along +y (the image upside down, v running up it): T = +x, N × T = +y along ∂p/∂v: w = −1', () => {
+    expect(round(quad((x, y) => [x, y]))).toEqual([1, 0, 0, -1, 1, 0, 0, -1, 1, 0, 0, -1, 1, 0, 0, -1]);
   });
 
-  it('v along −y (an image drawn upright: glTF\'s v runs down): T = +x, ∂p/∂v = −y: w = −1', () => {
-    expect(round(quad((x, y) => [x, 1 - y]))).toEqual([1, 0, 0, -1, 1, 0, 0, -1, 1, 0, 0, -1, 1, 0, 0, -1]);
+  it('v along −y (an image drawn upright: glTF\'s v runs down): T = +x, N × T = +y against ∂p/∂v = −y: w = +1, the bitangent its top', () => {
+    expect(round(quad((x, y) => [x, 1 - y]))).toEqual([1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1]);
   });
 
-  it('u along +y, v along +x (UVs turned a quarter): T = +y, N × T = −x against ∂p/∂v = +x: w = −1', () => {
-    expect(round(quad((x, y) => [y, x]))).toEqual([0, 1, 0, -1, 0, 1, 0, -1, 0, 1, 0, -1, 0, 1, 0, -1]);
+  it('u along +y, v along +x (UVs turned a quarter): T = +y, N × T = −x against ∂p/∂v = +x: w = +1', () => {
+    expect(round(quad((x, y) => [y, x]))).toEqual([0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1]);
   });
 
   it('gives a vertex of no UV area a unit tangent perpendicular to its normal', () => {
@@ -40,7 +40,8 @@ describe('computeTangents', () => {
     const s = Math.SQRT1_2;
     const t = computeTangents(new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0]), new Float32Array([s, 0, s, s, 0, s, s, 0, s]),
       new Float32Array([0, 0, 1, 0, 0, 1]), new Uint32Array([0, 1, 2]));
-    expect(round(t.subarray(0, 4))).toEqual([Number(s.toFixed(6)), 0, -Number(s.toFixed(6)), 1]);
+    // N × T = (0, 2s², 0) = +y, along ∂p/∂v (v runs up the triangle here): w = −1.
+    expect(round(t.subarray(0, 4))).toEqual([Number(s.toFixed(6)), 0, -Number(s.toFixed(6)), -1]);
   });
 
   // An affine map p = p0 + T·(u − u0) + B·(v − v0): every triangle of it has ∂p/∂u = T and ∂p/∂v = B,
@@ -66,12 +67,12 @@ describe('computeTangents', () => {
     const normal = unit(cross(T, B).map((x, c) => x + [3, 4, 2][c]));
     const t = mapped(uvs, normal, [0, 1, 2]);
     const expected = unit(T.map((x, c) => x - normal[c] * dot(normal, T)));
-    // (N × T) · B > 0 with N near T × B: w = +1.
-    for (let i = 0; i < 3; i++) expectTangent(t, i, expected, 1);
-    // Mirrored (the normal turned over): (N × T) · B < 0, w = −1.
+    // (N × T) · B > 0 with N near T × B: w = −1.
+    for (let i = 0; i < 3; i++) expectTangent(t, i, expected, -1);
+    // Mirrored (the normal turned over): (N × T) · B < 0, w = +1.
     const flipped = normal.map((x) => -x);
     const m = mapped(uvs, flipped, [0, 1, 2]);
-    for (let i = 0; i < 3; i++) expectTangent(m, i, unit(T.map((x, c) => x - flipped[c] * dot(flipped, T))), -1);
+    for (let i = 0; i < 3; i++) expectTangent(m, i, unit(T.map((x, c) => x - flipped[c] * dot(flipped, T))), 1);
   });
 
   it('sums a shared vertex\'s triangles, a triangle of no UV area adding nothing', () => {
@@ -83,7 +84,7 @@ describe('computeTangents', () => {
     const positions = new Float32Array(uvs.flatMap(([u, v]) => at(u, v)));
     positions.set([9, -4, 7], 12);
     const t = computeTangents(positions, new Float32Array(uvs.flatMap(() => normal)), new Float32Array(uvs.flat()), new Uint32Array(indices));
-    for (let i = 0; i < 4; i++) expectTangent(t, i, unit(T), 1);
+    for (let i = 0; i < 4; i++) expectTangent(t, i, unit(T), -1);
     // Vertex 4's fallback: N's y is the largest of its components below 0.9, so (0, nz, −ny) made unit; no ∂p/∂v: w = +1.
     expect(Math.abs(normal[0])).toBeLessThan(0.9);
     expectTangent(t, 4, unit([0, normal[2], -normal[1]]), 1);
@@ -102,18 +103,18 @@ describe('computeTangents', () => {
       new Uint32Array([0, 1, 2, 0, 3, 4]));
     const sum = T.map((x, c) => x + T2[c]);
     const t0 = unit(sum.map((x, c) => x - normal[c] * dot(normal, sum)));
-    const w0 = Math.sign(dot(cross(normal, t0), B.map((x, c) => x + B2[c])));
-    expect(w0).toBe(-1);
+    const w0 = -Math.sign(dot(cross(normal, t0), B.map((x, c) => x + B2[c])));
+    expect(w0).toBe(1);
     expect(Math.sign(dot(cross(normal, t0), B))).toBe(1);
     expectTangent(t, 0, t0, w0);
-    expectTangent(t, 3, unit(T2.map((x, c) => x - normal[c] * dot(normal, T2))), Math.sign(dot(cross(normal, unit(T2.map((x, c) => x - normal[c] * dot(normal, T2)))), B2)));
+    expectTangent(t, 3, unit(T2.map((x, c) => x - normal[c] * dot(normal, T2))), -Math.sign(dot(cross(normal, unit(T2.map((x, c) => x - normal[c] * dot(normal, T2)))), B2)));
   });
 
   it('signs w by (N × T) · ∂p/∂v with every term of the cross product: N = (0.8, 0, 0.6), T = (0.6, 0, −0.8), ∂p/∂v = +y', () => {
-    // N × T = (0, 0.6 · 0.6 + 0.8 · 0.8, 0) = +y: w = +1 (the y term alone decides it).
+    // N × T = (0, 0.6 · 0.6 + 0.8 · 0.8, 0) = +y along ∂p/∂v: w = −1 (the y term alone decides it).
     const t = computeTangents(new Float32Array([0, 0, 0, 0.6, 0, -0.8, 0, 1, 0]), new Float32Array([0.8, 0, 0.6, 0.8, 0, 0.6, 0.8, 0, 0.6]),
       new Float32Array([0, 0, 1, 0, 0, 1]), new Uint32Array([0, 1, 2]));
-    expectTangent(t, 0, [0.6, 0, -0.8], 1);
+    expectTangent(t, 0, [0.6, 0, -0.8], -1);
   });
 
   it('falls back, without UVs, to (0, nz, −ny) or (−nz, 0, nx) made unit, and to zero for a zero normal', () => {
@@ -137,13 +138,13 @@ describe('tangents in a read model', () => {
     const square = [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0];
     const extra = () => ({
       NORMAL: accessor(doc, 'VEC3', new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1])),
-      // TEXCOORD_0 along +x/+y, TEXCOORD_1 (which the map reads) turned a quarter: T = +y, w = −1.
+      // TEXCOORD_0 along +x/+y, TEXCOORD_1 (which the map reads) turned a quarter: T = +y, w = +1.
       TEXCOORD_0: accessor(doc, 'VEC2', new Float32Array([0, 0, 1, 0, 1, 1, 0, 1])),
       TEXCOORD_1: accessor(doc, 'VEC2', new Float32Array([0, 0, 0, 1, 1, 1, 1, 0])),
     });
     root.setMesh(doc.createMesh().addPrimitive(primitive(doc, square, [0, 1, 2, 0, 2, 3], extra(), mapped)));
     const r = parse(await glbOf(doc));
-    expect(round(r.tangents!)).toEqual([0, 1, 0, -1, 0, 1, 0, -1, 0, 1, 0, -1, 0, 1, 0, -1]);
+    expect(round(r.tangents!)).toEqual([0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1]);
     const { doc: plainDoc, root: plainRoot } = newDocument();
     plainRoot.setMesh(plainDoc.createMesh().addPrimitive(primitive(plainDoc, square, [0, 1, 2, 0, 2, 3])));
     expect(parse(await glbOf(plainDoc)).tangents).toBeNull();

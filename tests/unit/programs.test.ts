@@ -11,7 +11,7 @@ import { fakeGl } from './helpers/fake-gl';
 const CLIPS: ClipMode[] = ['none', 'clip-distance', 'discard'];
 const SHADINGS: Shading[] = ['phong', 'gouraud', 'flat'];
 /** The default scene's draws: one-sided, one light, UV mapping. */
-const V: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false };
+const V: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false, normalMap: false };
 
 describe('ProgramCache', () => {
   it('compiles each variant once and returns the same program after', () => {
@@ -101,6 +101,24 @@ describe('ProgramCache', () => {
     expect(sources.filter((src) => src.includes('#define ENVIRONMENT\n')).length).toBe(withPart.length);
     // The variants without it take no stand-in for it either (no empty or null part).
     for (const src of sources) expect(src).not.toMatch(/^(null|undefined)$/m);
+  });
+
+  it('a glTF material\'s normal map is a variant of its own, with and without the environment, one- and two-sided (docs/gltf.md#the-normal-map)', () => {
+    const { gl, sources } = fakeGl();
+    const cache = new ProgramCache(gl, SharedResources.acquire(gl));
+    cache.setPbrSources('// the PBR part', '// the tone map part');
+    cache.setEnvironmentSource('// the environment part');
+    const N = { ...V, pbr: true, normalMap: true };
+    expect(cache.standard('none', 'phong', N).name).toBe('standard:none:phong:pbr:normal-map:lights1/0:uv');
+    expect(cache.standard('none', 'phong', { ...N, environment: true }).name).toBe('standard:none:phong:pbr:environment:normal-map:lights1/0:uv');
+    // Every combination its own program; without a glTF material the flag is nothing.
+    const all = [false, true].flatMap((environment) => [false, true].flatMap((normalMap) => [false, true].map((twoSided) =>
+      cache.standard('none', 'phong', { ...V, pbr: true, environment, normalMap, twoSided }))));
+    expect(new Set(all).size).toBe(8);
+    expect(cache.standard('none', 'phong', { ...V, normalMap: true })).toBe(cache.standard('none', 'phong', V));
+    const defined = sources.filter((src) => src.includes('#define NORMAL_MAP\n'));
+    expect(defined.length).toBe(2 * 2 * 2); // four programs, a vertex and a fragment shader each
+    for (const src of defined) expect(src).toContain('// the PBR part');
   });
 
   it('dispose deletes every program and shader', () => {

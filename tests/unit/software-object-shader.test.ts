@@ -67,7 +67,7 @@ function draw(o: Partial<ObjectDraw> = {}): ObjectDraw {
   return {
     mesh: quad(UP), model: identity4(), normal: identity3(), eye: [0, 0, 2], view: [0, 0, 1, 0], viewProjection: VP(),
     clipPlane: null, material: material(), bounds: { center: [0, 0, 0], radius: 1 }, texture: WHITE, twoSided: false,
-    shading: 'phong', lights: AMBIENT_ONLY(), cache: null, index: 0, maps: { metalRough: null, occlusion: null, emissive: null }, ...o,
+    shading: 'phong', lights: AMBIENT_ONLY(), cache: null, index: 0, maps: { metalRough: null, occlusion: null, emissive: null, normal: null }, ...o,
   };
 }
 
@@ -112,7 +112,8 @@ describe('ObjectShader.render: the vertex stage and the rasterizer', () => {
     s.colour = new Float32Array(3 * W * H).fill(-1);
     s.render(draw(), r);
     expect([r.stride, r.userClip, r.derivatives]).toEqual([OBJECT_STRIDE, false, true]);
-    expect(OBJECT_STRIDE).toBe(VARYINGS + 14);
+    // Position (3), normal (3), UV (2), object position (3) and normal (3), tangent (4).
+    expect(OBJECT_STRIDE).toBe(VARYINGS + 18);
     // Ambient only, white: every pixel 1.
     for (const [i, j] of PIXELS) expect(at(s.colour, i, j)).toEqual([1, 1, 1]);
     // A clip plane sets userClip.
@@ -569,15 +570,16 @@ describe('the frame-to-frame cache', () => {
     // The environment and the maps are keyed by identity: markers stand for them.
     const lit = AMBIENT_ONLY(), env = {} as NonNullable<Lights['environment']>;
     lit.environment = env;
-    const maps = { metalRough: {} as MipTexture, occlusion: {} as MipTexture, emissive: {} as MipTexture };
+    const maps = { metalRough: {} as MipTexture, occlusion: {} as MipTexture, emissive: {} as MipTexture, normal: {} as MipTexture };
     s.render(base({ cache, index: 3, lights: lit, maps }), r);
     // 8×12 samples at 2×2 a pixel: 4×6 = 24 pixels.
     expect(begin).toHaveBeenCalledWith(3, expect.any(Float64Array), expect.any(Array), 24);
     const objects = begin.mock.calls[0][2] as unknown[];
-    expect(objects.length).toBe(14);
+    expect(objects.length).toBe(16);
     expect(objects[0]).toBe(SHARED);
-    expect(objects.slice(6, 10)).toEqual([TEX, 'phong', 'uv', undefined]);
-    [env, maps.metalRough, maps.occlusion, maps.emissive].forEach((o, k) => expect(objects[10 + k], `object ${10 + k}`).toBe(o));
+    // The mesh's tangents (none here), then the texture, shading, mapping and glTF material (none).
+    expect(objects.slice(6, 11)).toEqual([undefined, TEX, 'phong', 'uv', undefined]);
+    [env, maps.metalRough, maps.occlusion, maps.emissive, maps.normal].forEach((o, k) => expect(objects[11 + k], `object ${11 + k}`).toBe(o));
   });
 
   it('is not used by transparent draws, by draws that write distance codes, or by the constant-fragment timing run', () => {

@@ -88,4 +88,44 @@ describe('TextureImages', () => {
     expect(warn).toHaveBeenCalledTimes(1);
     warn.mockRestore();
   });
+
+  it('hands over nothing for an image that fails after it was asked for, nor calls for a frame', async () => {
+    const url = fresh('fails later');
+    stubFetch({ [url]: 500 });
+    const warn = vi.spyOn(console, 'warn').mockImplementation(() => undefined);
+    const a = element();
+    a.images.sync(scene({ ao: url }));
+    expect(await decodeImage(url)).toBeNull();
+    await Promise.resolve();
+    expect(a.given).toEqual([]);
+    expect(a.host.loaded).not.toHaveBeenCalled();
+    warn.mockRestore();
+  });
+
+  it('keeps an image that arrives while no renderer draws, and calls for a frame all the same', async () => {
+    const url = fresh('while none draws');
+    stubFetch({ [url]: '1×1' });
+    const loaded = vi.fn();
+    const images = new TextureImages({ sink: () => null, loaded });
+    images.sync(scene({ mr: url }));
+    await decodeImage(url);
+    await Promise.resolve();
+    expect(loaded).toHaveBeenCalledTimes(1);
+    // A renderer that starts later is given it.
+    const given: string[] = [];
+    images.feed({ setImage: (u) => given.push(u) });
+    expect(given).toEqual([url]);
+  });
+
+  it('asks for nothing for a plain material, and for an OBJ material\'s texture alone', async () => {
+    const url = fresh('obj texture');
+    const { requests } = stubFetch({ [url]: '1×1' });
+    const a = element();
+    const plain = boxScene(pbrMaterial());
+    const obj: Scene = { ...plain, objects: [{ ...plain.objects[0], material: { ...plain.objects[0].material, pbr: undefined, texture: { kind: 'image', url } } }] };
+    a.images.sync(plain);
+    a.images.sync(obj);
+    await decodeImage(url);
+    expect(requests).toEqual([url]);
+  });
 });

@@ -49,7 +49,7 @@ export function gltfAsObj(r: GltfResult): ObjResult {
   }
   const warnings: LoadWarning[] = r.warnings.map((w) => ({ line: 0, path: w.path, message: w.message }));
   return {
-    positions: r.positions, normals: r.normals, uvs, colors, indices,
+    positions: r.positions, normals: r.normals, uvs, colors, indices, tangents: r.tangents,
     groups: r.groups.map((g) => ({ material: g.material === null ? null : materialKey(g.material), start: g.start, count: g.count })),
     mtllibs: [], objects: [], groupNames: [], bounds: { min, max }, warnings,
   };

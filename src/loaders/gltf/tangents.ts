@@ -1,7 +1,8 @@
 // Tangents where a normal map needs them and the file has none (docs/gltf.md#tangents): per
 // vertex, the sum over its triangles of each triangle's ∂position/∂u (and ∂position/∂v for the
 // handedness), in glTF's UV space (v down), made orthogonal to the vertex normal (Gram-Schmidt)
-// and unit; w = +1 where (N × T) points along ∂p/∂v, −1 where the UVs are mirrored. Not
+// and unit; w = +1 where (N × T) points against ∂p/∂v — towards the image's top, the normal map's +Y, as
+// glTF's bitangent w·(N × T) does on a texture laid upright — −1 where the UVs are mirrored. Not
 // MikkTSpace: vertices the file shares across a UV seam get one tangent, where MikkTSpace splits.
 
 /** xyzw per vertex. `uvs` as the file has them (glTF's v-down space). */
@@ -40,9 +41,9 @@ export function computeTangents(positions: Float32Array, normals: Float32Array, 
       len = Math.sqrt(tx * tx + ty * ty + tz * tz) || 1;
     }
     tx /= len; ty /= len; tz /= len;
-    // (N × T) · B: negative where the UVs are mirrored.
+    // (N × T) · ∂p/∂v: negative on a texture laid upright (v runs down it), positive where the UVs are mirrored.
     const cx = ny * tz - nz * ty, cy = nz * tx - nx * tz, cz = nx * ty - ny * tx;
-    const w = cx * b[3 * i] + cy * b[3 * i + 1] + cz * b[3 * i + 2] < 0 ? -1 : 1;
+    const w = cx * b[3 * i] + cy * b[3 * i + 1] + cz * b[3 * i + 2] > 0 ? -1 : 1;
     out.set([tx, ty, tz, w], 4 * i);
   }
   return out;

@@ -24,6 +24,8 @@ export interface ObjResult {
   uvs: Float32Array | null;
   /** rgb per vertex from `v x y z r g b`, or null when no vertex has colours. */
   colors: Float32Array | null;
+  /** xyzw per vertex for a glTF model's normal maps (MeshData.tangents), or null: an OBJ has none. */
+  tangents?: Float32Array | null;
   /** Triangles; 32-bit above 65 535 vertices (WebGL2 reserves 0xFFFF for primitive restart). */
   indices: Uint16Array | Uint32Array;
   /** One range per material, in order of first use; together they cover `indices`. */

@@ -18,7 +18,7 @@ export function prepareObjectPrograms(ctx: PassContext, clip: ClipMode): void {
 }
 
 /** The object's variant, filled in place (no allocation per draw). */
-const variant: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false };
+const variant: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false, normalMap: false };
 function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
   variant.twoSided = drawnTwoSided(o);
   variant.lights = ctx.setup.lightCount;
@@ -29,6 +29,9 @@ function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
   // Without its chunk (not in yet, or failed), glTF materials are lit by the scene's lights alone.
   const env = ctx.scene.environment;
   variant.environment = variant.pbr && !!env && ctx.environment !== null && ctx.environment.use(env);
+  // A normal map on TEXCOORD_0 and a mesh with tangents (docs/gltf.md#the-normal-map); a clustered copy in the reflection has none.
+  const g = o.geometry;
+  variant.normalMap = variant.pbr && g.kind === 'mesh' && !!g.data.tangents && o.material.pbr!.normalTexture?.texCoord === 0;
   return variant;
 }
 

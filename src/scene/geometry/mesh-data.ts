@@ -9,6 +9,11 @@ export interface MeshData {
    * triangle has vertices of its own and lighting is computed once per face, at its centroid.
    */
   centroids?: Float32Array;
+  /**
+   * xyzw per vertex where a glTF material has a normal map (docs/gltf.md#tangents): the direction of increasing u, and w the
+   * side of the bitangent w·(N × T) (the normal map's +Y). Absent: no normal map is drawn on the mesh.
+   */
+  tangents?: Float32Array;
 }
 
 export function indexArray(count: number, vertexCount: number): Uint16Array | Uint32Array {

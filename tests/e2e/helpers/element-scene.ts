@@ -22,14 +22,17 @@ export async function elementScene(page: Page, width: number, height: number, ov
     const objects = s.objects.map((o) => {
       if (o.geometry.kind !== 'mesh') return o;
       const d = o.geometry.data;
-      return { ...o, geometry: { ...o.geometry, data: { positions: [...d.positions], normals: [...d.normals], uvs: [...d.uvs], indices: [...d.indices] } } };
+      return { ...o, geometry: { ...o.geometry, data: { positions: [...d.positions], normals: [...d.normals], uvs: [...d.uvs], indices: [...d.indices], tangents: d.tangents ? [...d.tangents] : undefined } } };
     });
     return { scene: { ...s, objects } as unknown as Scene, view: { position: el.cameraPosition, rotation: el.cameraRotation, fov: el.fov, transparency: el.transparency, ior: el.ior } };
   });
   const objects = scene.objects.map((o): SceneObject => {
     if (o.geometry.kind !== 'mesh') return o;
     const g = o.geometry as unknown as JsonMesh;
-    const data = { positions: new Float32Array(g.data.positions), normals: new Float32Array(g.data.normals), uvs: new Float32Array(g.data.uvs), indices: new Uint32Array(g.data.indices) };
+    const data = {
+      positions: new Float32Array(g.data.positions), normals: new Float32Array(g.data.normals), uvs: new Float32Array(g.data.uvs), indices: new Uint32Array(g.data.indices),
+      ...(g.data.tangents ? { tangents: new Float32Array(g.data.tangents) } : {}),
+    };
     return { ...o, geometry: { kind: 'mesh', key: g.key, data } };
   });
   const images = new Map<string, DecodedImage>();

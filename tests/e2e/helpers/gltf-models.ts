@@ -91,8 +91,8 @@ export async function bunnyGlb(): Promise<Uint8Array> {
 
 /**
  * The product's box with a glTF material's other maps (docs/gltf.md#drawing), each a 4×4 PNG checker: metallic-roughness
- * (polished metal against rough dielectric), occlusion (none against 0.35, at strength 0.8) and emissive (two colours, on an
- * emissive factor); the base colour a factor. On a plain plinth, turned as the product is.
+ * (polished metal against rough dielectric), occlusion (none against 0.35, at strength 0.8), emissive (two colours, on an
+ * emissive factor) and normal (tilted either way along u); the base colour a factor. On a plain plinth, turned as the product is.
  */
 export async function mapsGlb(): Promise<Uint8Array> {
   const doc = new Document();
@@ -107,7 +107,9 @@ export async function mapsGlb(): Promise<Uint8Array> {
   const box = doc.createMaterial('mapped').setBaseColorFactor([0.9, 0.6, 0.3, 1]).setMetallicFactor(1).setRoughnessFactor(1)
     .setMetallicRoughnessTexture(png('metal rough', [0, 50, 255], [0, 230, 0]))
     .setOcclusionTexture(png('occlusion', [255, 255, 255], [90, 90, 90])).setOcclusionStrength(0.8)
-    .setEmissiveTexture(png('emissive', [255, 40, 0], [0, 0, 0])).setEmissiveFactor([0.6, 0.6, 0.6]);
+    .setEmissiveTexture(png('emissive', [255, 40, 0], [0, 0, 0])).setEmissiveFactor([0.6, 0.6, 0.6])
+    // Tilted half a radian one way and the other along u (the reader computes the tangents: the file has none).
+    .setNormalTexture(png('normal', [189, 128, 239], [67, 128, 239]));
   const grey = doc.createMaterial('plinth').setBaseColorFactor([0.5, 0.5, 0.55, 1]).setMetallicFactor(0).setRoughnessFactor(0.6);
   const parent = doc.createNode('product').setScale([1.2, 1.2, 1.2]).setRotation([0, Math.sin(Math.PI / 12), 0, Math.cos(Math.PI / 12)]);
   parent.addChild(doc.createNode('plinth').setMesh(mesh(0.5, grey)).setScale([1, 0.2, 1]));

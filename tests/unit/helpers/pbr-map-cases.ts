@@ -72,6 +72,8 @@ export const MAP_CASES: MapCase[] = [
     scene: ((s: Scene) => ({ ...s, objects: [{ ...s.objects[0], material: { ...s.objects[0].material, texture: { kind: 'image' as const, url: BASE2 } } }] }))(
       box({ baseColor: [1, 1, 1, 1], metallic: 0, roughness: 1, baseColorTexture: map(BASE2, 0, ONTO_TOP_RIGHT) })),
   },
+  // An emission without its map beside a metallic-roughness map: the factor alone, whatever that map's texel.
+  { name: 'an emissive factor without a map, beside a metallic-roughness map', scene: box({ baseColor: GREY, metallic: 1, roughness: 1, metallicRoughnessTexture: map(MR) }, [0.3, 0.2, 0.1]), images: IMAGES, want: [0.3, 0.2, 0.1].map((e) => lit(0.5, 1, 191 / 255) + e) },
   // Not read, the factor alone: the image missing; on TEXCOORD_1; under a mapping other than uv (the maps follow the mesh's UV).
   // (A URL no case gives an image for: the GLSL's page keeps the images of the draws before.)
   { name: 'a map whose image is missing', scene: box({ baseColor: GREY, metallic: 1, roughness: 1, metallicRoughnessTexture: map('https://example.com/gone.png') }), images: new Map(), want: factorOnly },
@@ -102,10 +104,11 @@ export const QUADRANTS: MapCase = {
 };
 
 /** KHR_texture_transform's T·R·S in glTF's UV (loaders/gltf/materials.ts), then in the scene's. */
-const MOVED = ((r: number, [sx, sy]: [number, number], [ox, oy]: [number, number]) => {
+const gltfTransform = (r: number, [sx, sy]: [number, number], [ox, oy]: [number, number]): number[] => {
   const c = Math.cos(r), s = Math.sin(r);
   return transformAsObj([c * sx, s * sy, ox, -s * sx, c * sy, oy]);
-})(0.4, [1.7, 0.8], [0.15, -0.2]);
+};
+const MOVED = gltfTransform(0.4, [1.7, 0.8], [0.15, -0.2]);
 
 /** QUADRANTS with every map, and a base colour texture, moved by one transform (rotated, scaled, offset): the renderers compared. */
 export const QUADRANTS_MOVED: MapCase = {
@@ -116,3 +119,65 @@ export const QUADRANTS_MOVED: MapCase = {
     occlusionTexture: map(AO, 0, MOVED), emissiveTexture: map(EM, 0, MOVED),
   }, [0.3, 0.3, 0.3])),
 };
+
+// ---- the normal map (docs/gltf.md#the-normal-map) ----
+
+export const NM = 'https://example.com/normal.png';
+/** A texel's tangent-space vector, 2·byte/255 − 1 each. */
+const unpack = (r: number, g: number, b: number): number[] => [r, g, b].map((c) => (2 * c) / 255 - 1);
+
+/**
+ * The glTF BRDF of a rough dielectric (roughness 1: D = 1/π, Vis = ½/(n·l + n·v)) of base 0.5 at the normal `n` (unit),
+ * lit by a directional light towards `l` (Ia IA, Id ID), seen along v = +z: Ia·c_diff + π·f·Id·(n·l).
+ */
+function roughDielectric(n: number[], l: number[]): number {
+  const v = [0, 0, 1], dot = (a: number[], b: number[]) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  const hl = Math.hypot(l[0] + v[0], l[1] + v[1], l[2] + v[2]), h = [0, 1, 2].map((k) => (l[k] + v[k]) / hl);
+  const nl = dot(n, l), nv = dot(n, v), f = 0.04 + 0.96 * (1 - dot(v, h)) ** 5;
+  const brdf = ((1 - f) * 0.5) / Math.PI + (f * (1 / Math.PI) * 0.5) / (nl + nv);
+  return IA * 0.5 + Math.PI * brdf * ID * nl;
+}
+
+/** The unit quad of z = 0, counter-clockwise from +z, its UVs the OBJ way up, its tangents +x with w = +1: B = N × T = +y. */
+const MAPPED_QUAD = {
+  positions: new Float32Array([-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0]),
+  normals: new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]),
+  uvs: new Float32Array([0, 0, 1, 0, 1, 1, 0, 1]),
+  indices: new Uint16Array([0, 1, 2, 0, 2, 3]),
+  tangents: new Float32Array([1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1]),
+};
+
+/** The quad with a normal map (NM) of `scale`, turned `turn`° about Y, double-sided or not, under the light towards `l`. */
+function normalMapped(scale: number, l: number[], turn = 0, doubleSided = false, url = NM): Scene {
+  const s = box({ baseColor: [0.5, 0.5, 0.5, 1], metallic: 0, roughness: 1, normalTexture: map(url), normalScale: scale, doubleSided });
+  const o = s.objects[0];
+  return {
+    ...s, lights: [{ ...s.lights[0], vector: l as [number, number, number] }],
+    objects: [{ ...o, geometry: { kind: 'mesh', key: 'mapped quad', data: MAPPED_QUAD }, bounds: { center: [0, 0, 0], radius: Math.SQRT2 }, transform: { ...o.transform, rotation: [0, turn, 0] } }],
+  };
+}
+
+const HEAD_ON = [0, 0, 1], FROM_ABOVE = [0, Math.sin(Math.PI / 6), Math.cos(Math.PI / 6)];
+const unit = (a: number[]) => a.map((x) => x / Math.hypot(...a));
+
+export const NORMAL_CASES: MapCase[] = [
+  // (218, 128, 218): tilted ~45° towards the tangent (+x).
+  { name: 'a texel tilting the normal towards T', scene: normalMapped(1, HEAD_ON), images: new Map([[NM, image(218, 128, 218)]]), want: grey(roughDielectric(unit(unpack(218, 128, 218)), HEAD_ON)) },
+  // (128, 218, 218): tilted towards the bitangent N × T = +y, the image's top: towards a light from above, brighter.
+  { name: 'a texel tilting the normal towards B, the image\'s top, under a light from above', scene: normalMapped(1, FROM_ABOVE), images: new Map([[NM, image(128, 218, 218)]]), want: grey(roughDielectric(unit(unpack(128, 218, 218)), FROM_ABOVE)) },
+  // The scale multiplies x and y: ½.
+  { name: 'normalScale ½', scene: normalMapped(0.5, HEAD_ON), images: new Map([[NM, image(218, 128, 218)]]), want: grey(roughDielectric(unit(unpack(218, 128, 218).map((c, k) => (k < 2 ? c / 2 : c))), HEAD_ON)) },
+  // Seen from behind, double-sided: the perturbed normal turned to the viewer whole (its z as from the front).
+  { name: 'double-sided, seen from behind', scene: normalMapped(1, HEAD_ON, 180, true), images: new Map([[NM, image(218, 128, 218)]]), want: grey(roughDielectric(unit(unpack(218, 128, 218)).map((c, k) => (k === 2 ? c : -c)), HEAD_ON)) },
+  // The image missing (a URL no case gives one for): the interpolated normal (0.148, tests/unit/helpers/double-sided.ts).
+  { name: 'a normal map whose image is missing', scene: normalMapped(1, HEAD_ON, 0, false, 'https://example.com/no normal.png'), images: new Map(), want: grey(0.148) },
+];
+
+/** QUADRANTS_MOVED's box with every texture under the glTF transform rotation `r`, scale, offset (its images: QUADRANTS_MOVED's). */
+export function quadrantsUnder(r: number, scale: [number, number], offset: [number, number]): Scene {
+  const t = gltfTransform(r, scale, offset), o = QUADRANTS_MOVED.scene.objects[0], p = o.material.pbr!;
+  const pbr = {
+    ...p, baseColorTexture: map(BASE2, 0, t), metallicRoughnessTexture: map(MR, 0, t), occlusionTexture: map(AO, 0, t), emissiveTexture: map(EM, 0, t),
+  };
+  return { ...QUADRANTS_MOVED.scene, objects: [{ ...o, material: { ...o.material, pbr } }] };
+}
