@@ -139,13 +139,13 @@ export default [
   {
     name: 'P22 the metallic-roughness map\'s channels swapped (G metallic, B roughness)',
     why: GLSL,
-    edits: [{ file: 'shaders/pbr.glsl', find: 's *= vec3(texture(uMetalRough, st).bg, 1.0);', replace: 's *= vec3(texture(uMetalRough, st).gb, 1.0);' }],
+    edits: [{ file: 'shaders/pbr.glsl', find: 's *= vec3(texture(uMetalRough, mapUv(1, uv)).bg, 1.0);', replace: 's *= vec3(texture(uMetalRough, mapUv(1, uv)).gb, 1.0);' }],
     tests: [MAPS],
   },
   {
     name: 'P23 the occlusion map\'s strength not applied (R itself)',
     why: GLSL,
-    edits: [{ file: 'shaders/pbr.glsl', find: 's.z = 1.0 + uOcclusionStrength * (texture(uOcclusion, st).r - 1.0);', replace: 's.z = texture(uOcclusion, st).r;' }],
+    edits: [{ file: 'shaders/pbr.glsl', find: 's.z = 1.0 + uOcclusionStrength * (texture(uOcclusion, mapUv(2, uv)).r - 1.0);', replace: 's.z = texture(uOcclusion, mapUv(2, uv)).r;' }],
     tests: [MAPS],
   },
   {
