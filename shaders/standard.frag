@@ -33,6 +33,9 @@ in float vClipDistance;
 #ifdef NORMAL_MAP
 in vec4 vTangent;
 #endif
+#ifdef VERTEX_COLORS
+in vec3 vColor;
+#endif
 
 out vec4 outColor;
 
@@ -80,6 +83,9 @@ void main() {
   vec3 t = tex(moveUv(0, vUv)); // the base colour texture through its transform
 #else
   vec3 t = surfaceTexture();
+#endif
+#ifdef VERTEX_COLORS
+  t *= vColor;
 #endif
 #ifdef NORMAL_MAP
   vec3 n = mappedNormal(normalize(vNormal), vTangent, vUv, v);

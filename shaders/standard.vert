@@ -14,6 +14,10 @@ layout(location = 3) in vec3 aCentroid;
 layout(location = 4) in vec4 aTangent; // xyz along u, w the bitangent's side (docs/gltf.md#the-normal-map)
 out vec4 vTangent;
 #endif
+#ifdef VERTEX_COLORS
+layout(location = 5) in vec3 aColor; // multiplies a glTF material's base colour (docs/gltf.md#vertex-colours)
+out vec3 vColor;
+#endif
 
 uniform highp mat4 uModelViewProjection;
 uniform highp mat4 uModelRelative;
@@ -53,6 +57,9 @@ void main() {
   vNormal = uNormalMatrix * aNormal;
 #ifdef NORMAL_MAP
   vTangent = vec4(mat3(uModelRelative) * aTangent.xyz, aTangent.w);
+#endif
+#ifdef VERTEX_COLORS
+  vColor = aColor;
 #endif
 #elif defined(SHADING_FLAT)
   vec3 faceCentre = (uModelRelative * vec4(aCentroid, 1.0)).xyz; // "centroid" is a GLSL ES 3.0 keyword

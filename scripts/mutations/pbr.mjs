@@ -214,4 +214,16 @@ export default [
     edits: [{ file: 'src/render/gl/mesh.ts', find: '    if (data.tangents) this.attribute(ATTRIB.tangent, data.tangents, 4);', replace: '' }],
     tests: [MAPS],
   },
+  {
+    name: 'P35 vertex colours not multiplied into the base colour',
+    why: GLSL,
+    edits: [{ file: 'shaders/standard.frag', find: '  t *= vColor;', replace: '' }],
+    tests: [MAPS],
+  },
+  {
+    name: 'P36 a mesh\'s vertex colours not uploaded',
+    why: 'a vertex attribute of WebGL: only a browser draws it',
+    edits: [{ file: 'src/render/gl/mesh.ts', find: '    if (data.colors) this.attribute(ATTRIB.color, data.colors, 3);', replace: '' }],
+    tests: [MAPS],
+  },
 ];

@@ -60,6 +60,7 @@ export class BoxTracer implements ObjectTracer {
     const [fn, fa, fb] = BOX_FACES[face];
     hit.surface = this.firstCode + face;
     hit.tangent[3] = 0; // no tangents: no normal map (docs/gltf.md#the-normal-map)
+    hit.color.fill(1);
     hit.flipped = false;
     hit.object = this.object;
     hit.frame = frame;
@@ -119,6 +120,7 @@ export class SphereTracer implements ObjectTracer {
     const t = tc - Math.sqrt(h2 / a);
     hit.surface = this.code;
     hit.tangent[3] = 0;
+    hit.color.fill(1);
     hit.flipped = false;
     hit.object = this.object;
     hit.frame = frame;

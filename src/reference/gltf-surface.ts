@@ -24,6 +24,9 @@ export function shadeGltf(
   surface.occlusion = 1;
   const bt = uv ? readMap(pbr.baseColorTexture) : null;
   if (bt !== null && bt.transform !== null) textures.mapAt(bt.source.url, true, bt.transform, hit, ray, tex);
+  // The vertex colour multiplies the base colour with its texture (docs/gltf.md#vertex-colours).
+  // Stryker disable next-line EqualityOperator: k = 3 writes tex[3], past the end of its 3 elements: dropped
+  for (let k = 0; k < 3; k++) tex[k] *= hit.color[k];
   const mr = uv ? readMap(pbr.metallicRoughnessTexture) : null;
   if (mr !== null && textures.mapAt(mr.source.url, false, mr.transform, hit, ray, texel) !== null) {
     surface.roughness *= texel[1];

@@ -107,6 +107,11 @@ export class MeshTracer implements ObjectTracer {
     hit.flipped = !this.frontOnly && n[0] * rd[0] + n[1] * rd[1] + n[2] * rd[2] > 0;
     if (hit.flipped) { n[0] = -n[0]; n[1] = -n[1]; n[2] = -n[2]; }
     this.tangentAt(hit, i0, i1, i2, w0, w1, w2);
+    const colors = this.mesh.colors;
+    if (colors !== undefined && colors.length >= 3 * vertices) {
+      // Stryker disable next-line EqualityOperator: k = 3 writes hit.color[3], past the end of its 3 elements: dropped
+      for (let k = 0; k < 3; k++) hit.color[k] = w0 * colors[3 * i0 + k] + w1 * colors[3 * i1 + k] + w2 * colors[3 * i2 + k];
+    } else hit.color.fill(1);
     // UVs and their gradients: ∇β = (e2 × N)/|N|², ∇γ = (N × e1)/|N|² for p = p0 + β·e1 + γ·e2.
     const uv = uvs.length >= 2 * vertices ? uvs : NO_UVS;
     const j0 = uv === NO_UVS ? 0 : i0, j1 = uv === NO_UVS ? 0 : i1, j2 = uv === NO_UVS ? 0 : i2;

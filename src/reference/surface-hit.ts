@@ -29,6 +29,8 @@ export class SurfaceHit {
   readonly gv = new Float64Array(3);
   /** A mesh's tangent where it has them (MeshData.tangents): world, unit, and w the bitangent's side (0: none). */
   readonly tangent = new Float64Array(4);
+  /** A mesh's vertex colour at the hit (MeshData.colors); white where it has none. */
+  readonly color = new Float64Array([1, 1, 1]);
   /** n was turned to face the viewer (a two-sided mesh seen from its back). */
   flipped = false;
 }

@@ -39,6 +39,8 @@ export interface ObjectVariant {
   environment: boolean;
   /** A glTF material's normal map on a mesh with tangents (docs/gltf.md#the-normal-map). */
   normalMap: boolean;
+  /** A glTF material on a mesh with vertex colours (docs/gltf.md#vertex-colours). */
+  vertexColors: boolean;
 }
 
 function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant, pbr: string | null, environment: string | null): string[] {
@@ -51,6 +53,7 @@ function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant, pbr:
   if (pbr !== null) header.push('#define PBR');
   if (environment !== null) header.push('#define ENVIRONMENT');
   if (pbr !== null && v.normalMap) header.push('#define NORMAL_MAP');
+  if (pbr !== null && v.vertexColors) header.push('#define VERTEX_COLORS');
   header.push(`#define LIGHT_COUNT ${v.lights}`, `#define MAPPING_${v.mapping.toUpperCase()}`);
   for (let i = 0; i < MAX_LIGHTS; i++) header.push(`#define LIGHT${i}_POINT ${(v.pointMask >> i) & 1 ? 'true' : 'false'}`);
   header.push(lighting);
@@ -126,11 +129,11 @@ export class ProgramCache {
     const variants = ((this.standards[clip] ??= {})[shading] ??= []);
     const lights = Math.max(1, Math.min(MAX_LIGHTS, v.lights));
     const points = v.pointMask & ((1 << lights) - 1);
-    const env = v.pbr && v.environment, normalMap = v.pbr && v.normalMap;
-    const kind = v.pbr ? 1 + (env ? 1 : 0) + (normalMap ? 2 : 0) : 0;
-    const i = 2 * kind + (v.twoSided ? 1 : 0) + 10 * (lights - 1 + MAX_LIGHTS * (points + (1 << MAX_LIGHTS) * MAPPINGS.indexOf(v.mapping)));
+    const env = v.pbr && v.environment, normalMap = v.pbr && v.normalMap, colors = v.pbr && v.vertexColors;
+    const kind = v.pbr ? 1 + (env ? 1 : 0) + (normalMap ? 2 : 0) + (colors ? 4 : 0) : 0;
+    const i = 2 * kind + (v.twoSided ? 1 : 0) + 18 * (lights - 1 + MAX_LIGHTS * (points + (1 << MAX_LIGHTS) * MAPPINGS.indexOf(v.mapping)));
     return (variants[i] ??= this.build(
-      `standard:${clip}:${shading}${v.twoSided ? ':two-sided' : ''}${v.pbr ? ':pbr' : ''}${env ? ':environment' : ''}${normalMap ? ':normal-map' : ''}:lights${lights}/${points}:${v.mapping}`,
+      `standard:${clip}:${shading}${v.twoSided ? ':two-sided' : ''}${v.pbr ? ':pbr' : ''}${env ? ':environment' : ''}${normalMap ? ':normal-map' : ''}${colors ? ':vertex-colours' : ''}:lights${lights}/${points}:${v.mapping}`,
       standardVert, standardFrag,
       standardHeader(clip, shading, { ...v, lights, pointMask: points }, v.pbr ? this.pbrSource() : null, env ? this.environmentSource() : null),
     ));

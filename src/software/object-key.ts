@@ -39,7 +39,7 @@ export function objectKey(d: ObjectDraw, r: Rasterizer, top: number, k: Float64A
   }
   o.length = 0;
   const t = d.maps;
-  o.push(mesh, mesh.positions, mesh.normals, mesh.uvs, mesh.indices, mesh.centroids, mesh.tangents, d.texture, d.shading, m.mapping, m.pbr, l.environment);
+  o.push(mesh, mesh.positions, mesh.normals, mesh.uvs, mesh.indices, mesh.centroids, mesh.tangents, mesh.colors, d.texture, d.shading, m.mapping, m.pbr, l.environment);
   o.push(t.metalRough, t.occlusion, t.emissive, t.normal);
   return k;
 }

@@ -16,8 +16,8 @@ import { objectKey } from './object-key';
 
 // Varyings, after the clip-space slots: phong carries the eye-relative position and normal,
 // gouraud and flat the two light sums in the same slots; then UV, object position and normal.
-const REL = 0, NRM = 3, UV = 6, OBJ = 8, OBJ_N = 11, TAN = 14;
-export const OBJECT_STRIDE = VARYINGS + 18;
+const REL = 0, NRM = 3, UV = 6, OBJ = 8, OBJ_N = 11, TAN = 14, COL = 18;
+export const OBJECT_STRIDE = VARYINGS + 21;
 
 /** One object's draw: what the vertex stage and the fragments read. */
 export interface ObjectDraw {
@@ -101,6 +101,9 @@ export class ObjectShader implements FragmentShader {
   /** The fragment's tangent (xyz and w; w 0: none), for a normal map; whether the draw's vertices carry one. */
   private readonly tangent = new Float64Array(4);
   private tangents = false;
+  /** The fragment's vertex colour (a glTF material's mesh with COLOR_0), white without; whether the draw's vertices carry one. */
+  private readonly color = new Float64Array(3);
+  private colors = false;
   private readonly tex = new Float64Array(3);
   private readonly part = new Float64Array(3);
   private readonly uv0 = new Float64Array(2);
@@ -124,6 +127,7 @@ export class ObjectShader implements FragmentShader {
     this.perPixel = d.shading === 'phong' || d.material.pbr !== undefined;
     const count = d.mesh.positions.length / 3;
     this.tangents = d.material.pbr !== undefined && (d.mesh.tangents?.length ?? 0) >= 4 * count;
+    this.colors = d.material.pbr !== undefined && (d.mesh.colors?.length ?? 0) >= 3 * count;
     if (this.vertices.length < count * OBJECT_STRIDE) this.vertices = new Float64Array(count * OBJECT_STRIDE);
     const timing = this.timing;
     const t0 = timing ? performance.now() : 0;
@@ -156,7 +160,7 @@ export class ObjectShader implements FragmentShader {
   private vertexStage(d: ObjectDraw, count: number): void {
     const { positions: p, normals: nrm, uvs, centroids } = d.mesh;
     // A glTF material's mesh with tangents, for its normal map (docs/gltf.md#the-normal-map): through the model's 3×3 part.
-    const tangents = this.tangents ? d.mesh.tangents! : null;
+    const tangents = this.tangents ? d.mesh.tangents! : null, colors = this.colors ? d.mesh.colors! : null;
     const m = d.model, nm = d.normal, vp = d.viewProjection, e = d.eye, cp = d.clipPlane;
     const out = this.vertices, sums = this.sums;
     const phong = this.perPixel;
@@ -184,6 +188,7 @@ export class ObjectShader implements FragmentShader {
           out[v + TAN] = m[0] * tx + m[4] * ty + m[8] * tz; out[v + TAN + 1] = m[1] * tx + m[5] * ty + m[9] * tz;
           out[v + TAN + 2] = m[2] * tx + m[6] * ty + m[10] * tz; out[v + TAN + 3] = tangents[4 * i + 3];
         }
+        if (colors !== null) { out[v + COL] = colors[3 * i]; out[v + COL + 1] = colors[3 * i + 1]; out[v + COL + 2] = colors[3 * i + 2]; }
       } else {
         // Gouraud lights the vertex; flat lights the face's centroid (flat meshes carry it on
         // each of the triangle's own three vertices, with the face normal: flat.ts).
@@ -255,7 +260,10 @@ export class ObjectShader implements FragmentShader {
         for (let k = 0; k < 4; k++) t[k] = b0 * p[i0 + TAN + k] + b1 * p[i1 + TAN + k] + b2 * p[i2 + TAN + k];
         t[3] = t[3] < 0 ? -1 : 1;
       }
-      pbrFragment(d.lights, d.material, d.twoSided, this.geometry, d.texture, tex, d.maps, t, d.material.mapping === 'uv' ? this.lookup : null, sums);
+      const c = this.color;
+      if (this.colors) for (let k = 0; k < 3; k++) c[k] = b0 * p[i0 + COL + k] + b1 * p[i1 + COL + k] + b2 * p[i2 + COL + k];
+      else c.fill(1);
+      pbrFragment(d.lights, d.material, d.twoSided, this.geometry, d.texture, tex, c, d.maps, t, d.material.mapping === 'uv' ? this.lookup : null, sums);
       cr = sums[0]; cg = sums[1]; cb = sums[2];
     }
     this.cr = cr < 0 ? 0 : cr > this.top ? this.top : cr;

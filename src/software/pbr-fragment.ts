@@ -10,17 +10,18 @@ import type { Material } from '../scene/scene';
 const texel = new Float64Array(3), surface = new Float64Array(3), base = new Float64Array(3), moved = new Float64Array(6);
 
 /**
- * Into out[0..2], for g as pbrLights' and `tex` the base colour texture `baseTexture`'s value; `lookup` is the fragment's UV
+ * Into out[0..2], for g as pbrLights', `tex` the base colour texture `baseTexture`'s value and `color` the vertex colour; `lookup` is the fragment's UV
  * and its derivatives (the texture's lookup), null where the mapping is not `uv` (the maps are then not read: the factors
  * alone, and the base colour texture's transform not applied).
  */
 export function pbrFragment(
   lights: Lights, material: Material, twoSided: boolean, g: Float64Array, baseTexture: MipTexture, tex: ArrayLike<number>,
-  maps: PbrMaps, tangent: Float64Array, lookup: Float64Array | null, out: Float64Array,
+  color: ArrayLike<number>, maps: PbrMaps, tangent: Float64Array, lookup: Float64Array | null, out: Float64Array,
 ): void {
   const pbr = material.pbr!, bc = pbr.baseColor;
   if (lookup !== null && readMap(pbr.baseColorTexture)?.transform) tex = sampleAt(baseTexture, pbr.baseColorTexture, lookup);
-  base[0] = bc[0] * tex[0]; base[1] = bc[1] * tex[1]; base[2] = bc[2] * tex[2];
+  // The vertex colour (white without) multiplies the base colour with its texture (docs/gltf.md#vertex-colours).
+  base[0] = bc[0] * tex[0] * color[0]; base[1] = bc[1] * tex[1] * color[1]; base[2] = bc[2] * tex[2] * color[2];
   let metallic = pbr.metallic, roughness = pbr.roughness, occlusion = 1;
   if (lookup !== null && maps.metalRough !== null) {
     sampleAt(maps.metalRough, pbr.metallicRoughnessTexture, lookup);

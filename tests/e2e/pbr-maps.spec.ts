@@ -4,7 +4,7 @@
 import { test, expect } from './fixtures';
 import { drawScene, openRendererPage, type Images } from './helpers/scene-json';
 import { BOX_STATE, STUDIO, mirrorToKey } from '../unit/helpers/pbr-scenes';
-import { AO, EM, IMAGES, MAP_CASES, NORMAL_CASES, QUADRANTS, QUADRANTS_MOVED, box, map } from '../unit/helpers/pbr-map-cases';
+import { AO, COLOURED, EM, IMAGES, MAP_CASES, NORMAL_CASES, QUADRANTS, QUADRANTS_MOVED, box, map } from '../unit/helpers/pbr-map-cases';
 import { compareImages, renderScene } from '../../src/reference';
 import { SoftwareRenderer } from '../../src/software';
 import { note } from './helpers/bounds';
@@ -76,4 +76,9 @@ test('WebGL: the normal map on a quad with tangents, as worked by hand, to one 8
     const got = [...(await drawScene(page, BOX_STATE, c.scene, asImages(c.images))).data.subarray(CENTRE, CENTRE + 3)];
     c.want.forEach((w, k) => expect(Math.abs(got[k] - Math.min(w, 1) * 255), `${c.name}, channel ${k}: ${got} against ${c.want.map((x) => x * 255)}`).toBeLessThanOrEqual(1));
   }
+});
+
+test('WebGL: vertex colours multiply the base colour, interpolated: half red, half blue on the quad\'s diagonal (by hand)', async ({ page }) => {
+  const got = [...(await drawScene(page, BOX_STATE, COLOURED.scene)).data.subarray(CENTRE, CENTRE + 3)];
+  COLOURED.want.forEach((w, k) => expect(Math.abs(got[k] - w * 255), `channel ${k}: ${got} against ${COLOURED.want.map((x) => x * 255)}`).toBeLessThanOrEqual(1));
 });

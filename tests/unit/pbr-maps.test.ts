@@ -11,7 +11,7 @@ import { srgbToLinear, linearToSrgb } from '../../src/math/srgb';
 import type { Scene } from '../../src/scene/scene';
 import type { DecodedImage } from '../../src/scene/decoded-image';
 import { BOX_STATE as STATE, ID, STUDIO, mirrorToKey } from './helpers/pbr-scenes';
-import { AO, EM, IMAGES, MAP_CASES, NORMAL_CASES, QUADRANTS, QUADRANTS_MOVED, box, map, quadrantsUnder } from './helpers/pbr-map-cases';
+import { AO, COLOURED, EM, IMAGES, MAP_CASES, NORMAL_CASES, QUADRANTS, QUADRANTS_MOVED, box, map, quadrantsUnder } from './helpers/pbr-map-cases';
 
 const CENTRE = 16 * 33 + 16;
 /** The centre pixel of `scene` by the reference (linear, unclamped) and the software renderer (8-bit). */
@@ -140,5 +140,21 @@ describe('where the maps are not read', () => {
     const moved = draw([3, 1, 0.2, -1, 2, 0.4]), plain = draw(null);
     expect(Buffer.from(moved.ref).equals(Buffer.from(plain.ref)), 'reference').toBe(true);
     expect(Buffer.from(moved.soft).equals(Buffer.from(plain.soft)), 'software').toBe(true);
+  });
+});
+
+describe('vertex colours', () => {
+  it('multiply the base colour, interpolated across the triangle: half red, half blue on the quad\'s diagonal (by hand)', () => {
+    expectCentre(COLOURED.scene, COLOURED.want, COLOURED.name, COLOURED.images);
+  });
+
+  it('are not read for a material that is not glTF\'s (an OBJ\'s `v x y z r g b` stays as it was drawn)', () => {
+    const o = COLOURED.scene.objects[0];
+    const obj: Scene = { ...COLOURED.scene, objects: [{ ...o, material: { ...o.material, pbr: undefined } }] };
+    const plain = (o.geometry as { data: object }).data;
+    const without: Scene = { ...obj, objects: [{ ...obj.objects[0], geometry: { kind: 'mesh', key: 'plain', data: { ...plain, colors: undefined } as never } }] };
+    const draw = (s: Scene) => Buffer.from(new SoftwareRenderer({ samplesPerAxis: 1 }).render(s, STATE));
+    expect(draw(obj).equals(draw(without))).toBe(true);
+    expect(Buffer.from(renderScene(obj, STATE, null).rgba).equals(Buffer.from(renderScene(without, STATE, null).rgba))).toBe(true);
   });
 });

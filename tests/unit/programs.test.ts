@@ -11,7 +11,7 @@ import { fakeGl } from './helpers/fake-gl';
 const CLIPS: ClipMode[] = ['none', 'clip-distance', 'discard'];
 const SHADINGS: Shading[] = ['phong', 'gouraud', 'flat'];
 /** The default scene's draws: one-sided, one light, UV mapping. */
-const V: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false, normalMap: false };
+const V: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false, normalMap: false, vertexColors: false };
 
 describe('ProgramCache', () => {
   it('compiles each variant once and returns the same program after', () => {
@@ -116,8 +116,14 @@ describe('ProgramCache', () => {
       cache.standard('none', 'phong', { ...V, pbr: true, environment, normalMap, twoSided }))));
     expect(new Set(all).size).toBe(8);
     expect(cache.standard('none', 'phong', { ...V, normalMap: true })).toBe(cache.standard('none', 'phong', V));
+    // Vertex colours: a flag of their own, combined with the others.
+    expect(cache.standard('none', 'phong', { ...N, vertexColors: true }).name).toBe('standard:none:phong:pbr:normal-map:vertex-colours:lights1/0:uv');
+    const withColours = [false, true].flatMap((environment) => [false, true].flatMap((normalMap) => [false, true].map((twoSided) =>
+      cache.standard('none', 'phong', { ...V, pbr: true, environment, normalMap, twoSided, vertexColors: true }))));
+    expect(new Set([...all, ...withColours]).size).toBe(16);
+    expect(cache.standard('none', 'phong', { ...V, vertexColors: true })).toBe(cache.standard('none', 'phong', V));
     const defined = sources.filter((src) => src.includes('#define NORMAL_MAP\n'));
-    expect(defined.length).toBe(2 * 2 * 2); // four programs, a vertex and a fragment shader each
+    expect(defined.length).toBe(2 * 8); // eight programs (four without vertex colours, four with), a vertex and a fragment shader each
     for (const src of defined) expect(src).toContain('// the PBR part');
   });
 

@@ -112,8 +112,8 @@ describe('ObjectShader.render: the vertex stage and the rasterizer', () => {
     s.colour = new Float32Array(3 * W * H).fill(-1);
     s.render(draw(), r);
     expect([r.stride, r.userClip, r.derivatives]).toEqual([OBJECT_STRIDE, false, true]);
-    // Position (3), normal (3), UV (2), object position (3) and normal (3), tangent (4).
-    expect(OBJECT_STRIDE).toBe(VARYINGS + 18);
+    // Position (3), normal (3), UV (2), object position (3) and normal (3), tangent (4), colour (3).
+    expect(OBJECT_STRIDE).toBe(VARYINGS + 21);
     // Ambient only, white: every pixel 1.
     for (const [i, j] of PIXELS) expect(at(s.colour, i, j)).toEqual([1, 1, 1]);
     // A clip plane sets userClip.
@@ -575,11 +575,11 @@ describe('the frame-to-frame cache', () => {
     // 8×12 samples at 2×2 a pixel: 4×6 = 24 pixels.
     expect(begin).toHaveBeenCalledWith(3, expect.any(Float64Array), expect.any(Array), 24);
     const objects = begin.mock.calls[0][2] as unknown[];
-    expect(objects.length).toBe(16);
+    expect(objects.length).toBe(17);
     expect(objects[0]).toBe(SHARED);
-    // The mesh's tangents (none here), then the texture, shading, mapping and glTF material (none).
-    expect(objects.slice(6, 11)).toEqual([undefined, TEX, 'phong', 'uv', undefined]);
-    [env, maps.metalRough, maps.occlusion, maps.emissive, maps.normal].forEach((o, k) => expect(objects[11 + k], `object ${11 + k}`).toBe(o));
+    // The mesh's tangents and colours (none here), then the texture, shading, mapping and glTF material (none).
+    expect(objects.slice(6, 12)).toEqual([undefined, undefined, TEX, 'phong', 'uv', undefined]);
+    [env, maps.metalRough, maps.occlusion, maps.emissive, maps.normal].forEach((o, k) => expect(objects[12 + k], `object ${12 + k}`).toBe(o));
   });
 
   it('is not used by transparent draws, by draws that write distance codes, or by the constant-fragment timing run', () => {

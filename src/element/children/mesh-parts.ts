@@ -45,7 +45,9 @@ export function meshParts(obj: ObjResult, key: string): MeshPart[] {
   return groups.map((g, i) => {
     const whole = groups.length === 1 && g.start === 0 && g.count === obj.indices.length;
     const indices = whole ? obj.indices : copyRange(obj.indices, g.start, g.count, vertexCount);
-    const data: MeshData = { positions: obj.positions, normals: obj.normals, uvs, indices, ...(obj.tangents ? { tangents: obj.tangents } : {}) };
+    const data: MeshData = {
+      positions: obj.positions, normals: obj.normals, uvs, indices, ...(obj.tangents ? { tangents: obj.tangents } : {}), ...(obj.colors ? { colors: obj.colors } : {}),
+    };
     return { geometry: { kind: 'mesh', key: `${key}#${i}`, data }, material: g.material, bounds, hasUvs };
   });
 }

@@ -3,7 +3,7 @@ import type { MeshData } from '../../scene/geometry/mesh-data';
 import type { ResourceCounter } from './resource-counter';
 
 /** Attribute locations fixed by `layout(location = …)` in every shader. */
-export const ATTRIB = { position: 0, normal: 1, uv: 2, centroid: 3, tangent: 4 } as const;
+export const ATTRIB = { position: 0, normal: 1, uv: 2, centroid: 3, tangent: 4, color: 5 } as const;
 
 export class Mesh {
   private readonly vao: WebGLVertexArrayObject;
@@ -20,6 +20,7 @@ export class Mesh {
     this.attribute(ATTRIB.uv, data.uvs, 2);
     if (data.centroids) this.attribute(ATTRIB.centroid, data.centroids, 3);
     if (data.tangents) this.attribute(ATTRIB.tangent, data.tangents, 4);
+    if (data.colors) this.attribute(ATTRIB.color, data.colors, 3);
     const ibo = this.buffer(gl.ELEMENT_ARRAY_BUFFER, data.indices);
     this.buffers.push(ibo);
     gl.bindVertexArray(null);

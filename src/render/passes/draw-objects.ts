@@ -18,7 +18,7 @@ export function prepareObjectPrograms(ctx: PassContext, clip: ClipMode): void {
 }
 
 /** The object's variant, filled in place (no allocation per draw). */
-const variant: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false, normalMap: false };
+const variant: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false, normalMap: false, vertexColors: false };
 function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
   variant.twoSided = drawnTwoSided(o);
   variant.lights = ctx.setup.lightCount;
@@ -32,6 +32,7 @@ function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
   // A normal map on TEXCOORD_0 and a mesh with tangents (docs/gltf.md#the-normal-map); a clustered copy in the reflection has none.
   const g = o.geometry;
   variant.normalMap = variant.pbr && g.kind === 'mesh' && !!g.data.tangents && o.material.pbr!.normalTexture?.texCoord === 0;
+  variant.vertexColors = variant.pbr && g.kind === 'mesh' && !!g.data.colors;
   return variant;
 }
 

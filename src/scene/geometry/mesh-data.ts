@@ -14,6 +14,8 @@ export interface MeshData {
    * side of the bitangent w·(N × T) (the normal map's +Y). Absent: no normal map is drawn on the mesh.
    */
   tangents?: Float32Array;
+  /** Linear RGB per vertex (a glTF file's COLOR_0): a glTF material's base colour is multiplied by it. Absent: white. */
+  colors?: Float32Array;
 }
 
 export function indexArray(count: number, vertexCount: number): Uint16Array | Uint32Array {

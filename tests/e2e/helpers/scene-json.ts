@@ -11,7 +11,7 @@ export function sceneToJson(scene: Scene): Scene {
     objects: scene.objects.map((o) => {
       if (o.geometry.kind !== 'mesh') return o;
       const d = o.geometry.data;
-      const data = { positions: [...d.positions], normals: [...d.normals], uvs: [...d.uvs], indices: [...d.indices], ...(d.tangents ? { tangents: [...d.tangents] } : {}) };
+      const data = { positions: [...d.positions], normals: [...d.normals], uvs: [...d.uvs], indices: [...d.indices], ...(d.tangents ? { tangents: [...d.tangents] } : {}), ...(d.colors ? { colors: [...d.colors] } : {}) };
       return { ...o, geometry: { ...o.geometry, data: data as unknown as typeof d } };
     }),
   };

@@ -7,7 +7,7 @@ import type { Scene } from '../../../src/scene/scene';
 import type { DecodedImage } from '../../../src/scene/decoded-image';
 import type { MeshData } from '../../../src/scene/geometry/mesh-data';
 
-interface JsonMesh { positions: number[]; normals: number[]; uvs: number[]; indices: number[]; tangents?: number[] }
+interface JsonMesh { positions: number[]; normals: number[]; uvs: number[]; indices: number[]; tangents?: number[]; colors?: number[] }
 
 const canvas = document.getElementById('c') as HTMLCanvasElement;
 const gl = canvas.getContext('webgl2', {
@@ -26,6 +26,7 @@ function revive(scene: Scene): Scene {
       const data: MeshData = {
         positions: new Float32Array(j.positions), normals: new Float32Array(j.normals), uvs: new Float32Array(j.uvs),
         indices: new Uint32Array(j.indices), ...(j.tangents ? { tangents: new Float32Array(j.tangents) } : {}),
+        ...(j.colors ? { colors: new Float32Array(j.colors) } : {}),
       };
       return { ...o, geometry: { ...o.geometry, data } };
     }),

@@ -181,3 +181,18 @@ export function quadrantsUnder(r: number, scale: [number, number], offset: [numb
   };
   return { ...QUADRANTS_MOVED.scene, objects: [{ ...o, material: { ...o.material, pbr } }] };
 }
+
+// ---- vertex colours (docs/gltf.md#vertex-colours) ----
+
+/**
+ * MAPPED_QUAD with COLOR_0 red, green, blue, white at its corners (0, 1, 2, 3): its centre lies on the diagonal 0–2 the two
+ * triangles share, where the colour is half red, half blue. A rough dielectric of base 0.5 head-on: per channel
+ * Ia·b + Id·(0.96·b + 0.01), b = 0.5·colour.
+ */
+export const COLOURED: MapCase = (() => {
+  const s = normalMapped(1, HEAD_ON, 0, false, 'https://example.com/no normal.png');
+  const o = s.objects[0], g = o.geometry as { kind: 'mesh'; key: string; data: typeof MAPPED_QUAD };
+  const data = { ...g.data, colors: new Float32Array([1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1]) };
+  const want = [0.5, 0, 0.5].map((c) => IA * 0.5 * c + ID * (0.96 * 0.5 * c + 0.01));
+  return { name: 'vertex colours', images: new Map(), want, scene: { ...s, objects: [{ ...o, geometry: { ...g, key: 'coloured quad', data } }] } };
+})();
