@@ -169,6 +169,13 @@ export const NORMAL_CASES: MapCase[] = [
   { name: 'normalScale ½', scene: normalMapped(0.5, HEAD_ON), images: new Map([[NM, image(218, 128, 218)]]), want: grey(roughDielectric(unit(unpack(218, 128, 218).map((c, k) => (k < 2 ? c / 2 : c))), HEAD_ON)) },
   // Seen from behind, double-sided: the perturbed normal turned to the viewer whole (its z as from the front).
   { name: 'double-sided, seen from behind', scene: normalMapped(1, HEAD_ON, 180, true), images: new Map([[NM, image(218, 128, 218)]]), want: grey(roughDielectric(unit(unpack(218, 128, 218)).map((c, k) => (k === 2 ? c : -c)), HEAD_ON)) },
+  // Turned a quarter about its normal (Z): the tangent goes through the model matrix to +y, B = N × T to −x; the tilt towards T
+  // now faces the light from above.
+  {
+    name: 'the quad turned a quarter about its normal: the tangent through the model matrix', images: new Map([[NM, image(218, 128, 218)]]),
+    scene: ((s: Scene) => ({ ...s, objects: [{ ...s.objects[0], transform: { ...s.objects[0].transform, rotation: [0, 0, 90] as [number, number, number] } }] }))(normalMapped(1, FROM_ABOVE)),
+    want: grey(roughDielectric(unit(((t) => [-t[1], t[0], t[2]])(unpack(218, 128, 218))), FROM_ABOVE)),
+  },
   // The image missing (a URL no case gives one for): the interpolated normal (0.148, tests/unit/helpers/double-sided.ts).
   { name: 'a normal map whose image is missing', scene: normalMapped(1, HEAD_ON, 0, false, 'https://example.com/no normal.png'), images: new Map(), want: grey(0.148) },
 ];
