@@ -11,7 +11,7 @@ import { srgbToLinear, linearToSrgb } from '../../src/math/srgb';
 import type { Scene } from '../../src/scene/scene';
 import type { DecodedImage } from '../../src/scene/decoded-image';
 import { BOX_STATE as STATE, ID, STUDIO, mirrorToKey } from './helpers/pbr-scenes';
-import { AO, COLOURED, EM, IMAGES, MAP_CASES, NORMAL_CASES, QUADRANTS, QUADRANTS_MOVED, box, map, quadrantsUnder } from './helpers/pbr-map-cases';
+import { AO, COLOURED, EM, IMAGES, MAP_CASES, NORMAL_CASES, QUADRANTS, QUADRANTS_MOVED, TILTED_NORMAL_MAP, box, map, quadrantsUnder } from './helpers/pbr-map-cases';
 
 const CENTRE = 16 * 33 + 16;
 /** The centre pixel of `scene` by the reference (linear, unclamped) and the software renderer (8-bit). */
@@ -156,5 +156,19 @@ describe('vertex colours', () => {
     const draw = (s: Scene) => Buffer.from(new SoftwareRenderer({ samplesPerAxis: 1 }).render(s, STATE));
     expect(draw(obj).equals(draw(without))).toBe(true);
     expect(Buffer.from(renderScene(obj, STATE, null).rgba).equals(Buffer.from(renderScene(without, STATE, null).rgba))).toBe(true);
+  });
+});
+
+describe('the normal map in no special pose', () => {
+  it('the software renderer against the reference (each turns the normal its own way)', () => {
+    const state = { ...STATE, width: 65, height: 65, colorSpace: 'srgb' as const };
+    const c = TILTED_NORMAL_MAP;
+    const ref = renderScene(c.scene, state, c.images, { samplesPerAxis: 4 });
+    const soft = new SoftwareRenderer({ samplesPerAxis: 4 }).render(c.scene, state, c.images);
+    const flat = new SoftwareRenderer({ samplesPerAxis: 4 }).render(c.scene, state, new Map());
+    const psnr = compareImages(ref, soft).psnr, without = compareImages(ref, flat).psnr;
+    // Measured: 60.0 dB; the map left out, 26.5.
+    expect(psnr.objects, `objects ${psnr.objects.toFixed(1)} dB`).toBeGreaterThan(58);
+    expect(without.objects, `without the map: objects ${without.objects.toFixed(1)} dB`).toBeLessThan(35);
   });
 });

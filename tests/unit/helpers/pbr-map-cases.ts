@@ -176,6 +176,16 @@ export const NORMAL_CASES: MapCase[] = [
     scene: ((s: Scene) => ({ ...s, objects: [{ ...s.objects[0], transform: { ...s.objects[0].transform, rotation: [0, 0, 90] as [number, number, number] } }] }))(normalMapped(1, FROM_ABOVE)),
     want: grey(roughDielectric(unit(((t) => [-t[1], t[0], t[2]])(unpack(218, 128, 218))), FROM_ABOVE)),
   },
+  // Single-sided, its normals against its winding (a file's fault): seen from its front, the normal faces away and is not
+  // turned: no direct light, the ambient term alone (0.1 · 0.5).
+  {
+    name: 'single-sided, its normals against its winding: not turned to the viewer', images: new Map([[NM, image(218, 128, 218)]]), want: grey(IA * 0.5),
+    scene: ((s: Scene) => {
+      const o = s.objects[0], g = o.geometry as { kind: 'mesh'; key: string; data: typeof MAPPED_QUAD };
+      const data = { ...g.data, normals: g.data.normals.map((x) => -x) };
+      return { ...s, objects: [{ ...o, geometry: { ...g, key: 'inside-out quad', data } }] };
+    })(normalMapped(1, HEAD_ON)),
+  },
   // The image missing (a URL no case gives one for): the interpolated normal (0.148, tests/unit/helpers/double-sided.ts).
   { name: 'a normal map whose image is missing', scene: normalMapped(1, HEAD_ON, 0, false, 'https://example.com/no normal.png'), images: new Map(), want: grey(0.148) },
 ];
@@ -202,4 +212,20 @@ export const COLOURED: MapCase = (() => {
   const data = { ...g.data, colors: new Float32Array([1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1]) };
   const want = [0.5, 0, 0.5].map((c) => IA * 0.5 * c + ID * (0.96 * 0.5 * c + 0.01));
   return { name: 'vertex colours', images: new Map(), want, scene: { ...s, objects: [{ ...o, geometry: { ...g, key: 'coloured quad', data } }] } };
+})();
+
+/**
+ * A normal-mapped quad in no special pose: turned about all three axes, its vertex normals leaning off its face and its tangents
+ * off the normals (so that every term of the frame's making counts), a 2×2 normal map, under both lights: the renderers compared.
+ */
+export const TILTED_NORMAL_MAP: MapCase = (() => {
+  const s = normalMapped(1, [-0.4, 0.8, 0.6]);
+  const o = s.objects[0], g = o.geometry as { kind: 'mesh'; key: string; data: typeof MAPPED_QUAD };
+  const n = unit([0.2, -0.15, 1]), t = [1, 0.3, 0.4, -1];
+  const data = { ...g.data, normals: new Float32Array([0, 1, 2, 3].flatMap(() => n)), tangents: new Float32Array([0, 1, 2, 3].flatMap(() => t)) };
+  return {
+    name: 'a tilted normal-mapped quad', want: [],
+    images: new Map([[NM, quad([218, 128, 218], [128, 60, 230], [40, 200, 200], [160, 170, 240])]]),
+    scene: { ...s, objects: [{ ...o, transform: { ...o.transform, rotation: [25, -35, 15] as [number, number, number] }, geometry: { ...g, key: 'tilted quad', data } }] },
+  };
 })();
