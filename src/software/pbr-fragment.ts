@@ -30,6 +30,7 @@ export function pbrFragment(
   }
   if (lookup !== null && maps.occlusion !== null) occlusion = 1 + pbr.occlusionStrength * (sampleAt(maps.occlusion, pbr.occlusionTexture, lookup)[0] - 1);
   surface[0] = metallic; surface[1] = roughness; surface[2] = occlusion;
+  // Stryker disable next-line ConditionalExpression,LogicalOperator: the object shader gives a tangent (w ≠ 0) only where the map is there, and a zero tangent turns nothing (n = normalize(z·N))
   if (lookup !== null && maps.normal !== null && tangent[3] !== 0) {
     mappedNormal(g, tangent, sampleAt(maps.normal, pbr.normalTexture, lookup), pbr.normalScale, twoSided);
     twoSided = false; // turned already, as the interpolated normal decided

@@ -167,6 +167,8 @@ export const NORMAL_CASES: MapCase[] = [
   { name: 'a texel tilting the normal towards B, the image\'s top, under a light from above', scene: normalMapped(1, FROM_ABOVE), images: new Map([[NM, image(128, 218, 218)]]), want: grey(roughDielectric(unit(unpack(128, 218, 218)), FROM_ABOVE)) },
   // The scale multiplies x and y: ½.
   { name: 'normalScale ½', scene: normalMapped(0.5, HEAD_ON), images: new Map([[NM, image(218, 128, 218)]]), want: grey(roughDielectric(unit(unpack(218, 128, 218).map((c, k) => (k < 2 ? c / 2 : c))), HEAD_ON)) },
+  // Double-sided, seen from its front: as single-sided (nothing turned).
+  { name: 'double-sided, seen from its front', scene: normalMapped(1, HEAD_ON, 0, true), images: new Map([[NM, image(218, 128, 218)]]), want: grey(roughDielectric(unit(unpack(218, 128, 218)), HEAD_ON)) },
   // Seen from behind, double-sided: the perturbed normal turned to the viewer whole (its z as from the front).
   { name: 'double-sided, seen from behind', scene: normalMapped(1, HEAD_ON, 180, true), images: new Map([[NM, image(218, 128, 218)]]), want: grey(roughDielectric(unit(unpack(218, 128, 218)).map((c, k) => (k === 2 ? c : -c)), HEAD_ON)) },
   // Turned a quarter about its normal (Z): the tangent goes through the model matrix to +y, B = N × T to −x; the tilt towards T
