@@ -8,6 +8,7 @@ import { DEFAULTS, type Knobs } from './configs';
 import type { BenchView } from './views';
 import { BENCH_SCENES } from './scenes';
 import { roughFloorScene } from './rough-scene';
+import { studioGrid } from '../tests/unit/helpers/pbr-scenes';
 import type { Shading } from '../src/frame/types';
 
 export interface Scene {
@@ -36,6 +37,7 @@ const gl = oursCanvas.getContext('webgl2', {
 const renderer = new Renderer(gl, {});
 let peer: ThreePeer | null = null;
 let roughScene: ReturnType<typeof roughFloorScene> | null = null;
+let pbrScene: ReturnType<typeof studioGrid> | null = null;
 const pixel = new Uint8Array(4);
 
 function resize(canvas: HTMLCanvasElement, s: FrameState): void {
@@ -193,6 +195,27 @@ const api = {
     await renderer.load(null, s);
     resize(oursCanvas, s);
     const px = renderer.read((roughScene ??= roughFloorScene()), s, null, 'screen');
+    return { width: px.width, height: px.height, data: toBase64(px.data) };
+  },
+
+  /** The studio grid of glTF spheres (tests/unit/helpers/pbr-scenes.ts) in frame state `s`: ms per frame over `frames` after `warmup`. */
+  async pbrTime(s: FrameState, frames: number, warmup: number): Promise<number> {
+    const scene = (pbrScene ??= studioGrid());
+    await renderer.load(scene, s);
+    resize(oursCanvas, s);
+    for (let i = 0; i < warmup; i++) renderer.render(scene, s);
+    finish(gl);
+    const t0 = performance.now();
+    for (let i = 0; i < frames; i++) renderer.render(scene, s);
+    finish(gl);
+    return (performance.now() - t0) / frames;
+  },
+
+  async pbrPixels(s: FrameState): Promise<{ width: number; height: number; data: string }> {
+    const scene = (pbrScene ??= studioGrid());
+    await renderer.load(scene, s);
+    resize(oursCanvas, s);
+    const px = renderer.read(scene, s, null, 'screen');
     return { width: px.width, height: px.height, data: toBase64(px.data) };
   },
 
