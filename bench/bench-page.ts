@@ -2,6 +2,7 @@
 // three.js peer), times batches of frames closed by a 1-pixel readback, returns pixels.
 import { Renderer } from '../src/render/renderer';
 import type { FrameState } from '../src/frame/types';
+import type { Scene as SceneValue } from '../src/scene/scene';
 import { defaultFrameState } from '../tests/unit/helpers/frame-state';
 import { ThreePeer } from './three-peer';
 import { DEFAULTS, type Knobs } from './configs';
@@ -56,6 +57,29 @@ function toBase64(bytes: Uint8ClampedArray | Uint8Array): string {
 }
 
 type Kind = 'ours' | 'ours-unoptimized' | 'scene-only' | 'clear-only' | 'three';
+
+/**
+ * `scene` in frame state `s` after loading what `loadFor` needs (the scene itself, or null: the default's parts): ms per frame
+ * over `frames` after `warmup`, each run waited for.
+ */
+async function timeFrames(scene: SceneValue, s: FrameState, frames: number, warmup: number, loadFor: SceneValue | null = scene): Promise<number> {
+  await renderer.load(loadFor, s);
+  resize(oursCanvas, s);
+  for (let i = 0; i < warmup; i++) renderer.render(scene, s);
+  finish(gl);
+  const t0 = performance.now();
+  for (let i = 0; i < frames; i++) renderer.render(scene, s);
+  finish(gl);
+  return (performance.now() - t0) / frames;
+}
+
+/** `scene`'s frame in state `s`, read from the screen, base64. */
+async function screenPixels(scene: SceneValue, s: FrameState, loadFor: SceneValue | null = scene): Promise<{ width: number; height: number; data: string }> {
+  await renderer.load(loadFor, s);
+  resize(oursCanvas, s);
+  const px = renderer.read(scene, s, null, 'screen');
+  return { width: px.width, height: px.height, data: toBase64(px.data) };
+}
 
 const api = {
   /** ms per frame over `frames` frames, after `warmup` untimed ones. */
@@ -180,43 +204,20 @@ const api = {
 
   /** The rough floor (bench/rough-scene.ts) in frame state `s`: ms per frame over `frames` after `warmup`. */
   async roughTime(s: FrameState, frames: number, warmup: number): Promise<number> {
-    await renderer.load(null, s);
-    resize(oursCanvas, s);
-    const scene = (roughScene ??= roughFloorScene());
-    for (let i = 0; i < warmup; i++) renderer.render(scene, s);
-    finish(gl);
-    const t0 = performance.now();
-    for (let i = 0; i < frames; i++) renderer.render(scene, s);
-    finish(gl);
-    return (performance.now() - t0) / frames;
+    return timeFrames((roughScene ??= roughFloorScene()), s, frames, warmup, null);
   },
 
   async roughPixels(s: FrameState): Promise<{ width: number; height: number; data: string }> {
-    await renderer.load(null, s);
-    resize(oursCanvas, s);
-    const px = renderer.read((roughScene ??= roughFloorScene()), s, null, 'screen');
-    return { width: px.width, height: px.height, data: toBase64(px.data) };
+    return screenPixels((roughScene ??= roughFloorScene()), s, null);
   },
 
   /** The studio grid of glTF spheres (tests/unit/helpers/pbr-scenes.ts) in frame state `s`: ms per frame over `frames` after `warmup`. */
   async pbrTime(s: FrameState, frames: number, warmup: number): Promise<number> {
-    const scene = (pbrScene ??= studioGrid());
-    await renderer.load(scene, s);
-    resize(oursCanvas, s);
-    for (let i = 0; i < warmup; i++) renderer.render(scene, s);
-    finish(gl);
-    const t0 = performance.now();
-    for (let i = 0; i < frames; i++) renderer.render(scene, s);
-    finish(gl);
-    return (performance.now() - t0) / frames;
+    return timeFrames((pbrScene ??= studioGrid()), s, frames, warmup);
   },
 
   async pbrPixels(s: FrameState): Promise<{ width: number; height: number; data: string }> {
-    const scene = (pbrScene ??= studioGrid());
-    await renderer.load(scene, s);
-    resize(oursCanvas, s);
-    const px = renderer.read(scene, s, null, 'screen');
-    return { width: px.width, height: px.height, data: toBase64(px.data) };
+    return screenPixels((pbrScene ??= studioGrid()), s);
   },
 
   info(): { renderer: string; timerQuery: boolean; maxSamples: number } {

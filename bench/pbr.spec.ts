@@ -5,7 +5,7 @@
 // own noise (against itself at 2,048 directions); and the studio's maps' making (once a page), in Node. Writes bench/pbr.md;
 // BENCH_SMOKE=1 runs it tiny so the pipeline cannot rot. Not yet here: three.js's peer (MeshStandardMaterial, PMREM) and the
 // ratio at equal accuracy (the issue's note says what is left).
-import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { writeFileSync } from 'node:fs';
 import { createHash } from 'node:crypto';
 import { test, expect } from '../tests/e2e/fixtures';
 import { compareImages, renderScene, type ReferenceImage } from '../src/reference';
@@ -14,7 +14,7 @@ import { SoftwareRenderer } from '../src/software';
 import { prepareEnvironment } from '../src/frame/environment-light';
 import type { FrameState } from '../src/frame/types';
 import { STUDIO, studioGrid } from '../tests/unit/helpers/pbr-scenes';
-import { sourcesVersion } from './reference-cache';
+import { cachedImage, sourcesVersion } from './reference-cache';
 import { paretoFront } from './pareto';
 import { summary } from './stats';
 
@@ -46,21 +46,7 @@ function reference(directions: number): { ref: ReferenceImage; ms: number | null
   const s = state();
   const sources = ['../src/reference/', '../src/scene/', '../src/math/'].map((d) => new URL(d, import.meta.url));
   const key = createHash('sha256').update(JSON.stringify({ s, spp: REF_SPP, directions, v: sourcesVersion(sources), scene: 'studio-grid' })).digest('hex').slice(0, 16);
-  const file = new URL(`./.cache/pbr-${key}.json`, import.meta.url);
-  if (existsSync(file)) {
-    const j = JSON.parse(readFileSync(file, 'utf8'));
-    const ref = { ...j, rgba: new Uint8ClampedArray(Buffer.from(j.rgba, 'base64')), rgb: new Float64Array(new Uint8Array(Buffer.from(j.rgb, 'base64')).buffer), regions: new Uint8Array(Buffer.from(j.regions, 'base64')) };
-    return { ref, ms: null };
-  }
-  const t0 = performance.now();
-  const ref = renderScene(studioGrid(), s, null, { samplesPerAxis: REF_SPP, environmentSamples: directions });
-  const ms = performance.now() - t0;
-  mkdirSync(new URL('./.cache/', import.meta.url), { recursive: true });
-  writeFileSync(file, JSON.stringify({
-    ...ref, rgba: Buffer.from(ref.rgba).toString('base64'), rgb: Buffer.from(new Uint8Array(ref.rgb.buffer)).toString('base64'),
-    regions: Buffer.from(ref.regions).toString('base64'), keys: undefined, codes: undefined,
-  }));
-  return { ref, ms };
+  return cachedImage(`pbr-${key}`, () => renderScene(studioGrid(), s, null, { samplesPerAxis: REF_SPP, environmentSamples: directions }));
 }
 
 interface Row { label: string; ms: number; iqr: number; psnr: Record<(typeof REGIONS)[number], number> }

@@ -32,18 +32,29 @@ export function cachedReference(r: ReferenceRequest): ReferenceImage {
   const sources = ['../src/reference/', '../src/scene/', '../src/math/'].map((d) => new URL(d, import.meta.url));
   // The state (colour space included) is the key: a none and an srgb reference never share a file.
   const key = createHash('sha256').update(JSON.stringify({ state, spp: r.samplesPerAxis, v: sourcesVersion(sources) })).digest('hex').slice(0, 16);
-  const file = new URL(`reference-${key}.json`, CACHE);
+  return cachedImage(`reference-${key}`, () => renderReference(state, { samplesPerAxis: r.samplesPerAxis })).ref;
+}
+
+/**
+ * The reference image `compute` makes, kept in bench/.cache/`name`.json (`name` carries the key of everything that defines it):
+ * read back when it is there (ms null), else computed, timed and written.
+ */
+export function cachedImage(name: string, compute: () => ReferenceImage): { ref: ReferenceImage; ms: number | null } {
+  const file = new URL(`${name}.json`, CACHE);
   if (existsSync(file)) {
     const j = JSON.parse(readFileSync(file, 'utf8'));
-    return { ...j, rgba: new Uint8ClampedArray(Buffer.from(j.rgba, 'base64')), rgb: new Float64Array(new Uint8Array(Buffer.from(j.rgb, 'base64')).buffer), regions: new Uint8Array(Buffer.from(j.regions, 'base64')) };
+    const ref = { ...j, rgba: new Uint8ClampedArray(Buffer.from(j.rgba, 'base64')), rgb: new Float64Array(new Uint8Array(Buffer.from(j.rgb, 'base64')).buffer), regions: new Uint8Array(Buffer.from(j.regions, 'base64')) };
+    return { ref, ms: null };
   }
-  const ref = renderReference(state, { samplesPerAxis: r.samplesPerAxis });
+  const t0 = performance.now();
+  const ref = compute();
+  const ms = performance.now() - t0;
   mkdirSync(CACHE, { recursive: true });
   writeFileSync(file, JSON.stringify({
     ...ref, rgba: Buffer.from(ref.rgba).toString('base64'), rgb: Buffer.from(new Uint8Array(ref.rgb.buffer)).toString('base64'),
-    regions: Buffer.from(ref.regions).toString('base64'),
+    regions: Buffer.from(ref.regions).toString('base64'), keys: undefined, codes: undefined,
   }));
-  return ref;
+  return { ref, ms };
 }
 
 /** A digest of the reference's own sources, so a change to them invalidates the cache. */

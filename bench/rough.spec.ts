@@ -7,7 +7,7 @@
 // kept) — beside the polished frame. The reference's own noise: its glass against itself with
 // twice the microfacet normals, and how much that moves the rows. Writes bench/rough.md;
 // BENCH_SMOKE=1 runs it tiny so the pipeline cannot rot.
-import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { writeFileSync } from 'node:fs';
 import { createHash } from 'node:crypto';
 import { test, expect } from '../tests/e2e/fixtures';
 import { compareImages, renderScene, type ReferenceImage } from '../src/reference';
@@ -16,7 +16,7 @@ import { SoftwareRenderer } from '../src/software';
 import { ROUGHNESS_QUALITIES, type RoughnessQuality } from '../src/frame/rough-glass';
 import type { FrameState } from '../src/frame/types';
 import { roughFloorScene, ROUGH_FLOOR_VIEW, SPHERE_HEIGHT } from './rough-scene';
-import { sourcesVersion } from './reference-cache';
+import { cachedImage, sourcesVersion } from './reference-cache';
 import { paretoFront } from './pareto';
 import { summary } from './stats';
 
@@ -54,21 +54,7 @@ function reference(roughness: number, ior: number, microfacets: number): { ref: 
   const s = state(roughness, ior);
   const sources = ['../src/reference/', '../src/scene/', '../src/math/'].map((d) => new URL(d, import.meta.url));
   const key = createHash('sha256').update(JSON.stringify({ s, spp: REF_SPP, microfacets, v: sourcesVersion(sources), scene: 'rough-floor' })).digest('hex').slice(0, 16);
-  const file = new URL(`./.cache/rough-${key}.json`, import.meta.url);
-  if (existsSync(file)) {
-    const j = JSON.parse(readFileSync(file, 'utf8'));
-    const ref = { ...j, rgba: new Uint8ClampedArray(Buffer.from(j.rgba, 'base64')), rgb: new Float64Array(new Uint8Array(Buffer.from(j.rgb, 'base64')).buffer), regions: new Uint8Array(Buffer.from(j.regions, 'base64')) };
-    return { ref, ms: null };
-  }
-  const t0 = performance.now();
-  const ref = renderScene(roughFloorScene(), s, null, { samplesPerAxis: REF_SPP, microfacetSamples: microfacets });
-  const ms = performance.now() - t0;
-  mkdirSync(new URL('./.cache/', import.meta.url), { recursive: true });
-  writeFileSync(file, JSON.stringify({
-    ...ref, rgba: Buffer.from(ref.rgba).toString('base64'), rgb: Buffer.from(new Uint8Array(ref.rgb.buffer)).toString('base64'),
-    regions: Buffer.from(ref.regions).toString('base64'), keys: undefined, codes: undefined,
-  }));
-  return { ref, ms };
+  return cachedImage(`rough-${key}`, () => renderScene(roughFloorScene(), s, null, { samplesPerAxis: REF_SPP, microfacetSamples: microfacets }));
 }
 
 interface Config { label: string; extra: Partial<FrameState>; rough: boolean; quality?: RoughnessQuality; level?: number }

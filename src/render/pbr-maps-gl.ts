@@ -23,8 +23,9 @@ interface Held {
 }
 
 export class PbrMapsGl {
-  /** By URL, after 's' for a map held as colour in srgb, 'd' for one held as stored. */
-  private readonly held = new Map<string, Held>();
+  /** By URL (no key is built per frame): the maps held as colour in srgb, and those held as stored. */
+  private readonly colour = new Map<string, Held>();
+  private readonly data = new Map<string, Held>();
   private white: Texture | null = null;
   private srgb = true;
 
@@ -69,27 +70,29 @@ export class PbrMapsGl {
   }
 
   dispose(): void {
-    for (const e of this.held.values()) e.texture.dispose();
-    this.held.clear();
+    for (const held of [this.colour, this.data]) {
+      for (const e of held.values()) e.texture.dispose();
+      held.clear();
+    }
     this.white?.dispose();
     this.white = null;
   }
 
   private texture(t: PbrTexture | null, srgb: boolean): Texture {
     const map = readMap(t);
-    return (map && this.held.get((srgb ? 's' : 'd') + map.source.url)?.texture) ?? this.white!;
+    return (map && (srgb ? this.colour : this.data).get(map.source.url)?.texture) ?? this.white!;
   }
 
   private hold(t: PbrTexture | null, images: SceneImages | null | undefined, srgb: boolean): void {
     const map = readMap(t);
     if (map === null) return;
-    const key = (srgb ? 's' : 'd') + map.source.url, image = images?.get(map.source.url), e = this.held.get(key);
+    const url = map.source.url, held = srgb ? this.colour : this.data, image = images?.get(url), e = held.get(url);
     if (e?.source === image) return;
     e?.texture.dispose();
-    this.held.delete(key);
+    held.delete(url);
     if (image) {
       const { width, height, data } = image;
-      this.held.set(key, { source: image, texture: new Texture(this.gl, this.counter, { width, height, data, mipmap: true, repeat: true, srgb, anisotropic: srgb }) });
+      held.set(url, { source: image, texture: new Texture(this.gl, this.counter, { width, height, data, mipmap: true, repeat: true, srgb, anisotropic: srgb }) });
     }
   }
 }

@@ -1,15 +1,10 @@
 // The accuracy bar (docs/knobs.md#bars-the-tests-hold) through the element: a model loaded by <glass-object> (OBJ + MTL with
 // map_Kd, a concave hexagon, negative indices) over the default glass, drawn by the element and
 // by the float64 reference from the element's own scene value, ≥ 35 dB PSNR.
-import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { test, expect, openPage, capture } from './fixtures';
 import { mountHtml } from './helpers/scene-children';
-import { readPng } from './helpers/golden';
-import { renderScene, compareImages, type DecodedImage } from '../../src/reference';
-import type { Scene, SceneObject } from '../../src/scene/scene';
-import type { FrameState } from '../../src/frame/types';
-import { defaultFrameState } from '../unit/helpers/frame-state';
+import { renderScene, compareImages } from '../../src/reference';
+import { elementScene } from './helpers/element-scene';
 import { expectPsnr, note } from './helpers/bounds';
 
 const BOUND_DB = 35;
@@ -26,11 +21,6 @@ const MEASURED = {
   'software srgb': { all: 40.6, objects: 50.2, glass: 54.0 },
   'software none': { all: 46.5, objects: 53.5, glass: 51.1 },
 } as const;
-const MODELS = path.resolve(path.dirname(fileURLToPath(import.meta.url)), 'pages/models');
-
-interface JsonObject extends Omit<SceneObject, 'geometry'> {
-  geometry: SceneObject['geometry'] | { kind: 'mesh'; key: string; data: Record<string, number[]> };
-}
 
 const CASES = [['webgl', 'srgb'], ['software', 'srgb'], ['software', 'none']] as const;
 for (const [renderer, space] of CASES) test(`${renderer}, color-space ${space}: a textured OBJ with MTL, a concave n-gon and negative indices matches the reference`, async ({ page }) => {
@@ -58,44 +48,13 @@ for (const [renderer, space] of CASES) test(`${renderer}, color-space ${space}: 
   }
   const image = await capture(page);
 
-  const { scene, view } = await page.evaluate(() => {
-    const el = document.querySelector('glass-plane-scene') as unknown as {
-      scene: Scene; cameraPosition: number[]; cameraRotation: number[]; fov: number; transparency: number; ior: number;
-    };
-    const s = el.scene;
-    const objects = s.objects.map((o) => {
-      if (o.geometry.kind !== 'mesh') return o;
-      const d = o.geometry.data;
-      const data = { positions: [...d.positions], normals: [...d.normals], uvs: [...d.uvs], indices: [...d.indices] };
-      return { ...o, geometry: { ...o.geometry, data } };
-    });
-    return {
-      scene: { ...s, objects } as unknown as Scene,
-      view: { position: el.cameraPosition, rotation: el.cameraRotation, fov: el.fov, transparency: el.transparency, ior: el.ior },
-    };
-  });
-  const objects = (scene.objects as unknown as JsonObject[]).map((o): SceneObject => {
-    if (o.geometry.kind !== 'mesh') return o as SceneObject;
-    const d = o.geometry.data as Record<string, number[]>;
-    const data = {
-      positions: new Float32Array(d.positions), normals: new Float32Array(d.normals), uvs: new Float32Array(d.uvs),
-      indices: new Uint32Array(d.indices),
-    };
-    return { ...o, geometry: { kind: 'mesh', key: o.geometry.key, data } };
-  });
+  // The element's scene value and camera; its images (the map_Kd PNG) read back from the page.
+  const { scene, state, images } = await elementScene(page, image.width, image.height, { colorSpace: space });
+  const objects = scene.objects;
   expect(objects.length, 'one scene object per material').toBe(2);
   const textured = objects.find((o) => o.material.texture.kind === 'image');
   expect(textured?.material.texture, 'map_Kd resolved against the MTL').toMatchObject({ kind: 'image' });
-  const url = (textured!.material.texture as { url: string }).url;
-  const png = readPng(path.join(MODELS, 'checker.png'));
-  const images = new Map<string, DecodedImage>([[url, { width: png.width, height: png.height, data: png.data }]]);
-
-  const state: FrameState = defaultFrameState({
-    width: image.width, height: image.height, spin: 0, transparency: view.transparency,
-    ior: view.ior, fov: view.fov, cameraPosition: view.position as [number, number, number],
-    yaw: view.rotation[0], pitch: view.rotation[1], colorSpace: space,
-  });
-  const ref = renderScene({ ...scene, objects }, state, images, { samplesPerAxis: 4 });
+  const ref = renderScene(scene, state, images, { samplesPerAxis: 4 });
   const cmp = compareImages(ref, image.data);
   const line = `${renderer} ${space}: textured OBJ + MTL, n-gon, negative indices: PSNR ${cmp.psnr.all.toFixed(1)} dB (objects ${cmp.psnr.objects.toFixed(1)}, glass ${cmp.psnr.glass.toFixed(1)}), max error ${cmp.maxError.toFixed(0)}`;
   note(line);

@@ -29,19 +29,24 @@ export function checkerPng(a: [number, number, number], b: [number, number, numb
   return new Uint8Array(PNG.sync.write(png));
 }
 
+/** A maker of box meshes of half-size `h` (boxArrays) in `doc`, with positions, normals and UVs in one buffer, and `material`. */
+function boxMeshes(doc: Document): (h: number, material: Material) => ReturnType<Document['createMesh']> {
+  const buffer = doc.createBuffer();
+  return (h, material) => {
+    const b = boxArrays(h);
+    const acc = (type: 'VEC3' | 'VEC2' | 'SCALAR', a: Float32Array<ArrayBuffer> | Uint16Array<ArrayBuffer>) => doc.createAccessor().setType(type).setArray(a).setBuffer(buffer);
+    return doc.createMesh().addPrimitive(doc.createPrimitive().setAttribute('POSITION', acc('VEC3', b.positions))
+      .setAttribute('NORMAL', acc('VEC3', b.normals)).setAttribute('TEXCOORD_0', acc('VEC2', b.uvs)).setIndices(acc('SCALAR', b.indices)).setMaterial(material));
+  };
+}
+
 /**
  * A "product": a box on a plinth — the box textured (an embedded PNG), the plinth a plain red
  * material — in a node hierarchy (a parent scaled and turned, the box moved up inside it).
  */
 export async function productGlb(): Promise<Uint8Array> {
   const doc = new Document();
-  const buffer = doc.createBuffer();
-  const mesh = (h: number, material: Material) => {
-    const b = boxArrays(h);
-    const acc = (type: "VEC3" | "VEC2" | "SCALAR", a: Float32Array<ArrayBuffer> | Uint16Array<ArrayBuffer>) => doc.createAccessor().setType(type).setArray(a).setBuffer(buffer);
-    return doc.createMesh().addPrimitive(doc.createPrimitive().setAttribute('POSITION', acc('VEC3', b.positions))
-      .setAttribute('NORMAL', acc('VEC3', b.normals)).setAttribute('TEXCOORD_0', acc('VEC2', b.uvs)).setIndices(acc('SCALAR', b.indices)).setMaterial(material));
-  };
+  const mesh = boxMeshes(doc);
   const texture = doc.createTexture('checker').setImage(checkerPng([230, 200, 40], [30, 60, 200])).setMimeType('image/png');
   const boxMaterial = doc.createMaterial('box').setBaseColorTexture(texture).setMetallicFactor(0).setRoughnessFactor(0.5);
   const red = doc.createMaterial('plinth').setBaseColorFactor([0.8, 0.1, 0.1, 1]).setMetallicFactor(0).setRoughnessFactor(0.8);
@@ -96,13 +101,7 @@ export async function bunnyGlb(): Promise<Uint8Array> {
  */
 export async function mapsGlb(): Promise<Uint8Array> {
   const doc = new Document();
-  const buffer = doc.createBuffer();
-  const mesh = (h: number, material: Material) => {
-    const b = boxArrays(h);
-    const acc = (type: "VEC3" | "VEC2" | "SCALAR", a: Float32Array<ArrayBuffer> | Uint16Array<ArrayBuffer>) => doc.createAccessor().setType(type).setArray(a).setBuffer(buffer);
-    return doc.createMesh().addPrimitive(doc.createPrimitive().setAttribute('POSITION', acc('VEC3', b.positions))
-      .setAttribute('NORMAL', acc('VEC3', b.normals)).setAttribute('TEXCOORD_0', acc('VEC2', b.uvs)).setIndices(acc('SCALAR', b.indices)).setMaterial(material));
-  };
+  const mesh = boxMeshes(doc);
   const png = (name: string, a: [number, number, number], b: [number, number, number]) => doc.createTexture(name).setImage(checkerPng(a, b)).setMimeType('image/png');
   const box = doc.createMaterial('mapped').setBaseColorFactor([0.9, 0.6, 0.3, 1]).setMetallicFactor(1).setRoughnessFactor(1)
     .setMetallicRoughnessTexture(png('metal rough', [0, 50, 255], [0, 230, 0]))
