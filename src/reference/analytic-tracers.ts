@@ -59,7 +59,7 @@ export class BoxTracer implements ObjectTracer {
     const face = FACE_OF[axis][d[axis] > 0 ? 1 : 0];
     const [fn, fa, fb] = BOX_FACES[face];
     hit.surface = this.firstCode + face;
-    hit.tangent[3] = 0; // no tangents: no normal map (docs/gltf.md#the-normal-map)
+    hit.tangent.fill(0); // no tangents: no normal map (docs/gltf.md#the-normal-map)
     hit.color.fill(1);
     hit.flipped = false;
     hit.object = this.object;
@@ -119,7 +119,7 @@ export class SphereTracer implements ObjectTracer {
     if (!(h2 >= 0)) return false;
     const t = tc - Math.sqrt(h2 / a);
     hit.surface = this.code;
-    hit.tangent[3] = 0;
+    hit.tangent.fill(0);
     hit.color.fill(1);
     hit.flipped = false;
     hit.object = this.object;

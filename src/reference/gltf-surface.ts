@@ -23,6 +23,7 @@ export function shadeGltf(
   surface.roughness = pbr.roughness;
   surface.occlusion = 1;
   const bt = uv ? readMap(pbr.baseColorTexture) : null;
+  // Stryker disable next-line ConditionalExpression: read again without a transform, the base colour texture gives objectTexture's value
   if (bt !== null && bt.transform !== null) textures.mapAt(bt.source.url, true, bt.transform, hit, ray, tex);
   // The vertex colour multiplies the base colour with its texture (docs/gltf.md#vertex-colours).
   // Stryker disable next-line EqualityOperator: k = 3 writes tex[3], past the end of its 3 elements: dropped
@@ -41,6 +42,7 @@ export function shadeGltf(
     for (let k = 0; k < 3; k++) emitted[k] = emissive[k] * texel[k];
     emissive = emitted;
   }
+  // Stryker disable next-line ConditionalExpression: w is 0 only on a box's or sphere's hit, whose tracers zero the whole tangent: a zero tangent turns nothing
   const nm = uv && hit.tangent[3] !== 0 ? readMap(pbr.normalTexture) : null;
   if (nm === null || textures.mapAt(nm.source.url, false, nm.transform, hit, ray, texel) === null) {
     return shadePbr(hit, pbr, emissive, tex, lights, eye, out, towardsViewer, environment, surface);

@@ -57,6 +57,7 @@ export class MeshTracer implements ObjectTracer {
   /** The tangent interpolated at the hit, in the world, unit (docs/gltf.md#the-normal-map); w 0 where the mesh has none. */
   private tangentAt(hit: SurfaceHit, i0: number, i1: number, i2: number, w0: number, w1: number, w2: number): void {
     const t = this.mesh.tangents, out = hit.tangent, g = this.g;
+    // Stryker disable next-line ConditionalExpression,ArithmeticOperator: a scene's tangents are 4 a vertex or absent (the reader's, merge.ts): the length test is a guard
     if (t === undefined || t.length < 4 * (this.mesh.positions.length / 3)) {
       out[3] = 0;
       return;
@@ -64,8 +65,10 @@ export class MeshTracer implements ObjectTracer {
     // Stryker disable next-line EqualityOperator: k = 3 writes g[3], past the end of its 3 elements: dropped
     for (let k = 0; k < 3; k++) g[k] = w0 * t[4 * i0 + k] + w1 * t[4 * i1 + k] + w2 * t[4 * i2 + k];
     this.frame.directionToWorld(out, g);
+    // Stryker disable next-line ConditionalExpression: a zero tangent divided by 1 or read as it is stays zero
     const len = Math.hypot(out[0], out[1], out[2]) || 1;
     out[0] /= len; out[1] /= len; out[2] /= len;
+    // Stryker disable next-line EqualityOperator,ArithmeticOperator: w is ±1 (x·w = x/w), and a sum of exactly 0 needs corners of both sides weighed equal
     out[3] = w0 * t[4 * i0 + 3] + w1 * t[4 * i1 + 3] + w2 * t[4 * i2 + 3] < 0 ? -1 : 1;
   }
 

@@ -29,6 +29,7 @@ export class ImageTextures {
   base(m: Material, images: SceneImages | null | undefined, space: ColorSpace): MipTexture {
     const source = m.texture;
     if (source.kind === 'none') return WHITE;
+    // Stryker disable next-line ConditionalExpression: the procedural source names no URL: the image path finds none and falls back to the same texture
     if (source.kind !== 'image') return proceduralMipTexture(space);
     return this.image(source.url, images, space) ?? (source.fallback === 'none' ? WHITE : proceduralMipTexture(space));
   }

@@ -6,12 +6,16 @@
 import { describe, expect, it } from 'vitest';
 import { compareImages, renderScene } from '../../src/reference';
 import { SoftwareRenderer } from '../../src/software';
+import { Lights } from '../../src/software/lighting';
+import { pbrFragment } from '../../src/software/pbr-fragment';
+import type { MipTexture } from '../../src/software/mip-texture';
+import { pbrMaterial } from './helpers/pbr-scenes';
 import { prepareEnvironment } from '../../src/frame/environment-light';
 import { srgbToLinear, linearToSrgb } from '../../src/math/srgb';
 import type { Scene } from '../../src/scene/scene';
 import type { DecodedImage } from '../../src/scene/decoded-image';
 import { BOX_STATE as STATE, ID, STUDIO, mirrorToKey } from './helpers/pbr-scenes';
-import { AO, COLOURED, EM, IMAGES, MAP_CASES, NORMAL_CASES, QUADRANTS, QUADRANTS_MOVED, TILTED_NORMAL_MAP, box, map, quadrantsUnder } from './helpers/pbr-map-cases';
+import { AO, COLOURED, EM, IMAGES, MAP_CASES, NORMAL_CASES, QUADRANTS, QUADRANTS_MOVED, SLANTED_STRIPES, TILTED_NORMAL_MAP, box, map, quadrantsUnder } from './helpers/pbr-map-cases';
 
 const CENTRE = 16 * 33 + 16;
 /** The centre pixel of `scene` by the reference (linear, unclamped) and the software renderer (8-bit). */
@@ -170,5 +174,55 @@ describe('the normal map in no special pose', () => {
     // Measured: 60.0 dB; the map left out, 26.5.
     expect(psnr.objects, `objects ${psnr.objects.toFixed(1)} dB`).toBeGreaterThan(58);
     expect(without.objects, `without the map: objects ${without.objects.toFixed(1)} dB`).toBeLessThan(35);
+  });
+});
+
+describe('a transform\'s cross terms in the footprint', () => {
+  it('slanted stripes under a turned, shrunk transform: the CPU renderer against the reference\'s exact footprints, within 0.3 dB of the figure', () => {
+    // The texture's axes fall skewed on the screen, so each footprint's shape depends on the transform's cross terms. Both
+    // images are deterministic (one sample a pixel, no random stream): the margin is the figure's rounding, not noise. The
+    // CPU renderer's anisotropic read approximates a footprint (SwiftShader's rule: taps along one derivative), so a flipped
+    // cross term can move its agreement either way (38.3, 45.8, 33.2, 38.3 dB measured); the lookup itself is tied by hand below.
+    const state = { ...STATE, width: 65, height: 65, colorSpace: 'srgb' as const };
+    const c = SLANTED_STRIPES;
+    const soft = new SoftwareRenderer({ samplesPerAxis: 1 }).render(c.scene, state, c.images);
+    const p = compareImages(renderScene(c.scene, state, c.images, { samplesPerAxis: 1, textureFilter: 'box' }), soft).psnr;
+    // Measured: objects 37.8 dB.
+    expect(p.objects, `objects ${p.objects.toFixed(2)} dB`).toBeGreaterThan(37.5);
+  });
+});
+
+describe('a transform moves a lookup and its derivatives (the CPU renderer), by hand', () => {
+  it('u\' = a·u + b·v + c, v\' = d·u + e·v + f, each derivative through the linear part: the lookup every map is read at', () => {
+    // A texture that records what it is asked for, as each of the four maps and the base colour texture.
+    const asked: number[][] = [];
+    const recorder = { sample: (l: Float64Array, out: Float64Array) => { asked.push([...l]); out.fill(1); } } as unknown as MipTexture;
+    const m = [2, 3, 0.5, -1, 4, 0.25];
+    const pbr = pbrMaterial({
+      baseColorTexture: map('base', 0, m), metallicRoughnessTexture: map('mr', 0, m), occlusionTexture: map('ao', 0, m), emissiveTexture: map('em', 0, m),
+    });
+    const lights = new Lights();
+    lights.set(box(pbr), [0, 0, 1], [0, 0, 4]);
+    const lookup = new Float64Array([0.1, 0.2, 0.01, 0.02, 0.03, 0.05]);
+    const g = new Float64Array([0, 0, -4, 0, 0, 1, 0, 0, 1]);
+    pbrFragment(lights, { ...box(pbr).objects[0].material, emissive: [1, 1, 1] }, false, g, recorder, [1, 1, 1], [1, 1, 1],
+      { metalRough: recorder, occlusion: recorder, emissive: recorder, normal: null }, new Float64Array(4), lookup, new Float64Array(3));
+    // (0.1, 0.2) → (2·0.1 + 3·0.2 + 0.5, −0.1 + 4·0.2 + 0.25) = (1.3, 0.95); ∂/∂x (0.01, 0.02) → (0.08, 0.07); ∂/∂y (0.03, 0.05) → (0.21, 0.17).
+    const want = [1.3, 0.95, 0.08, 0.07, 0.21, 0.17];
+    expect(asked.length, 'the base colour texture and three maps').toBe(4);
+    for (const l of asked) l.forEach((x, k) => expect(x, `component ${k}`).toBeCloseTo(want[k], 12));
+  });
+});
+
+describe('the reference\'s footprint under a transform', () => {
+  it('one exact box footprint a pixel agrees with 64 point samples where the shading is linear in the map (slanted stripes given off)', () => {
+    // Emission is linear in its map: the mean of the light over a pixel is the light of the map's mean over its footprint, so
+    // the footprint (the hit's UV gradients moved through the transform's linear part) must cover what the samples cover.
+    const state = { ...STATE, width: 65, height: 65, colorSpace: 'srgb' as const };
+    const c = SLANTED_STRIPES;
+    const truth = renderScene(c.scene, state, c.images, { samplesPerAxis: 8, textureFilter: 'point' });
+    const p = compareImages(truth, renderScene(c.scene, state, c.images, { samplesPerAxis: 1, textureFilter: 'box' }).rgba).psnr;
+    // Measured: objects 58.2 dB (a cross term's sign flipped: 41.7, 40.8).
+    expect(p.objects, `objects ${p.objects.toFixed(1)} dB`).toBeGreaterThan(56.2);
   });
 });

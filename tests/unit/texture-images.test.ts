@@ -16,7 +16,8 @@ beforeEach(() => {
   });
   vi.stubGlobal('OffscreenCanvas', class {
     constructor(readonly width: number, readonly height: number) {}
-    getContext() {
+    getContext(kind: string) {
+      if (kind !== '2d') return null; // as a canvas does for a context it has not
       const { width, height } = this;
       return { drawImage: () => undefined, getImageData: () => ({ width, height, data: new Uint8ClampedArray(4 * width * height) }) };
     }
@@ -86,6 +87,7 @@ describe('TextureImages', () => {
     expect(a.given).toEqual([]);
     expect(a.host.loaded).not.toHaveBeenCalled();
     expect(warn).toHaveBeenCalledTimes(1);
+    expect(String(warn.mock.calls[0][0]), 'the warning names the image and the status').toMatch(new RegExp(`texture "${url}" could not be loaded \\(HTTP 404\\)`));
     warn.mockRestore();
   });
 

@@ -31,7 +31,8 @@ function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
   variant.environment = variant.pbr && !!env && ctx.environment !== null && ctx.environment.use(env);
   // A normal map on TEXCOORD_0 and a mesh with tangents (docs/gltf.md#the-normal-map); a clustered copy in the reflection has none.
   const g = o.geometry;
-  variant.normalMap = variant.pbr && g.kind === 'mesh' && !!g.data.tangents && o.material.pbr!.normalTexture?.texCoord === 0;
+  // Under another mapping no map is read (docs/gltf.md#the-maps).
+  variant.normalMap = variant.pbr && g.kind === 'mesh' && !!g.data.tangents && o.material.mapping === 'uv' && o.material.pbr!.normalTexture?.texCoord === 0;
   variant.vertexColors = variant.pbr && g.kind === 'mesh' && !!g.data.colors;
   return variant;
 }

@@ -74,6 +74,16 @@ export const MAP_CASES: MapCase[] = [
   },
   // An emission without its map beside a metallic-roughness map: the factor alone, whatever that map's texel.
   { name: 'an emissive factor without a map, beside a metallic-roughness map', scene: box({ baseColor: GREY, metallic: 1, roughness: 1, metallicRoughnessTexture: map(MR) }, [0.3, 0.2, 0.1]), images: IMAGES, want: [0.3, 0.2, 0.1].map((e) => lit(0.5, 1, 191 / 255) + e) },
+  // An emissive map whose image is missing, beside a metallic-roughness map: the factor alone, not times that map's texel.
+  { name: 'an emissive map whose image is missing, beside a metallic-roughness map', scene: box({ baseColor: GREY, metallic: 1, roughness: 1, metallicRoughnessTexture: map(MR), emissiveTexture: map('https://example.com/no emission.png') }, [0.3, 0.2, 0.1]), images: IMAGES, want: [0.3, 0.2, 0.1].map((e) => lit(0.5, 1, 191 / 255) + e) },
+  // An emissive map on a black emissive factor (the element gives such a material no Material.emissive): nothing given off.
+  { name: 'an emissive map on a black factor: nothing given off', scene: box({ baseColor: GREY, metallic: 0, roughness: 1, emissiveTexture: map(EM) }), images: IMAGES, want: grey(lit(0.5, 0, 1)) },
+  // Under another mapping the emissive map is not read either: the factor alone.
+  {
+    name: 'an emissive map under the triplanar mapping: the factor alone', images: IMAGES, want: [0.3, 0.2, 0.1].map((e) => lit(0.5, 0, 1) + e),
+    scene: ((sc: Scene) => ({ ...sc, objects: [{ ...sc.objects[0], material: { ...sc.objects[0].material, mapping: 'triplanar' as const } }] }))(
+      box({ baseColor: GREY, metallic: 0, roughness: 1, emissiveTexture: map(EM) }, [0.3, 0.2, 0.1])),
+  },
   // Not read, the factor alone: the image missing; on TEXCOORD_1; under a mapping other than uv (the maps follow the mesh's UV).
   // (A URL no case gives an image for: the GLSL's page keeps the images of the draws before.)
   { name: 'a map whose image is missing', scene: box({ baseColor: GREY, metallic: 1, roughness: 1, metallicRoughnessTexture: map('https://example.com/gone.png') }), images: new Map(), want: factorOnly },
@@ -157,7 +167,13 @@ function normalMapped(scale: number, l: number[], turn = 0, doubleSided = false,
   };
 }
 
-const HEAD_ON = [0, 0, 1], FROM_ABOVE = [0, Math.sin(Math.PI / 6), Math.cos(Math.PI / 6)];
+const HEAD_ON = [0, 0, 1], FROM_ABOVE = [0, Math.sin(Math.PI / 6), Math.cos(Math.PI / 6)], FROM_THE_SIDE = [Math.sin(Math.PI / 6), 0, Math.cos(Math.PI / 6)];
+
+/** `s` with its quad's tangents replaced by `t` (xyzw at every vertex). */
+const withTangents = (s: Scene, t: number[], key: string): Scene => {
+  const o = s.objects[0], g = o.geometry as { kind: 'mesh'; key: string; data: typeof MAPPED_QUAD };
+  return { ...s, objects: [{ ...o, geometry: { ...g, key, data: { ...g.data, tangents: new Float32Array([0, 1, 2, 3].flatMap(() => t)) } } }] };
+};
 const unit = (a: number[]) => a.map((x) => x / Math.hypot(...a));
 
 export const NORMAL_CASES: MapCase[] = [
@@ -187,6 +203,23 @@ export const NORMAL_CASES: MapCase[] = [
       const data = { ...g.data, normals: g.data.normals.map((x) => -x) };
       return { ...s, objects: [{ ...o, geometry: { ...g, key: 'inside-out quad', data } }] };
     })(normalMapped(1, HEAD_ON)),
+  },
+  // Seen from behind under a light from the side: the perturbed normal turned whole, its tilt along T kept (x, −y, z in the
+  // world, T turned to −x, B = w·(N × T) = +y): a frame turned before the perturbation would tilt it the other way.
+  {
+    name: 'double-sided, seen from behind, under a light from the side', scene: normalMapped(1, FROM_THE_SIDE, 180, true), images: new Map([[NM, image(218, 128, 218)]]),
+    want: grey(roughDielectric(unit(((t) => [t[0], -t[1], t[2]])(unpack(218, 128, 218))), FROM_THE_SIDE)),
+  },
+  // normalScale ½ on a texel tilting towards B, under a light from above: x and y halved.
+  { name: 'normalScale ½ towards B, under a light from above', scene: normalMapped(0.5, FROM_ABOVE), images: new Map([[NM, image(128, 218, 218)]]), want: grey(roughDielectric(unit(unpack(128, 218, 218).map((c, k) => (k < 2 ? c / 2 : c))), FROM_ABOVE)) },
+  // A tangent three times as long: made unit before the frame is built (as it is after a scaling transform, or interpolated).
+  { name: 'a tangent three times as long', scene: withTangents(normalMapped(1, FROM_ABOVE), [3, 0, 0, 1], 'long tangents'), images: new Map([[NM, image(128, 218, 218)]]), want: grey(roughDielectric(unit(unpack(128, 218, 218)), FROM_ABOVE)) },
+  // A zero tangent (a file's, kept zero): no frame to turn in, the interpolated normal.
+  { name: 'a zero tangent: the interpolated normal', scene: withTangents(normalMapped(1, HEAD_ON), [0, 0, 0, 1], 'zero tangents'), images: new Map([[NM, image(218, 128, 218)]]), want: grey(0.148) },
+  // Under a mapping other than uv the normal map is not read, as the other maps are not.
+  {
+    name: 'the normal map under the triplanar mapping: not read', images: new Map([[NM, image(218, 128, 218)]]), want: grey(0.148),
+    scene: ((s: Scene) => ({ ...s, objects: [{ ...s.objects[0], material: { ...s.objects[0].material, mapping: 'triplanar' as const } }] }))(normalMapped(1, HEAD_ON)),
   },
   // The image missing (a URL no case gives one for): the interpolated normal (0.148, tests/unit/helpers/double-sided.ts).
   { name: 'a normal map whose image is missing', scene: normalMapped(1, HEAD_ON, 0, false, 'https://example.com/no normal.png'), images: new Map(), want: grey(0.148) },
@@ -221,13 +254,29 @@ export const COLOURED: MapCase = (() => {
  * off the normals (so that every term of the frame's making counts), a 2×2 normal map, under both lights: the renderers compared.
  */
 export const TILTED_NORMAL_MAP: MapCase = (() => {
-  const s = normalMapped(1, [-0.4, 0.8, 0.6]);
+  const s = normalMapped(1, [-0.4, 0.8, 0.6], 0, true);
   const o = s.objects[0], g = o.geometry as { kind: 'mesh'; key: string; data: typeof MAPPED_QUAD };
-  const n = unit([0.2, -0.15, 1]), t = [1, 0.3, 0.4, -1];
+  // Tangents three times unit length (made unit before use), the quad double-sided (seen from its front: nothing turned).
+  const n = unit([0.2, -0.15, 1]), t = [3, 0.9, 1.2, -1];
   const data = { ...g.data, normals: new Float32Array([0, 1, 2, 3].flatMap(() => n)), tangents: new Float32Array([0, 1, 2, 3].flatMap(() => t)) };
   return {
     name: 'a tilted normal-mapped quad', want: [],
     images: new Map([[NM, quad([218, 128, 218], [128, 60, 230], [40, 200, 200], [160, 170, 240])]]),
     scene: { ...s, objects: [{ ...o, transform: { ...o.transform, rotation: [25, -35, 15] as [number, number, number] }, geometry: { ...g, key: 'tilted quad', data } }] },
+  };
+})();
+
+/**
+ * A checker map (2×2, white and black) as the emission of a quad seen at a slant, under a transform that turns and shrinks it: the
+ * texture's axes fall skewed on the screen, so a footprint's size along the stripes hangs on the transform's cross terms.
+ */
+export const SLANTED_STRIPES: MapCase = (() => {
+  const stripes = 'https://example.com/stripes.png';
+  const s = normalMapped(1, HEAD_ON, 0, false, 'https://example.com/no normal.png');
+  const o = s.objects[0];
+  const pbr = { ...o.material.pbr!, baseColor: [0.2, 0.2, 0.2, 1] as [number, number, number, number], emissiveTexture: map(stripes, 0, gltfTransform(0.7, [9, 2], [0.1, 0.3])) };
+  return {
+    name: 'slanted stripes', want: [], images: new Map([[stripes, quad([255, 255, 255], [0, 0, 0], [0, 0, 0], [255, 255, 255])]]),
+    scene: { ...s, objects: [{ ...o, transform: { ...o.transform, rotation: [-55, 40, 10] as [number, number, number] }, material: { ...o.material, emissive: [0.8, 0.8, 0.8] as [number, number, number], pbr } }] },
   };
 })();
