@@ -2,14 +2,13 @@
 // three.js peer), times batches of frames closed by a 1-pixel readback, returns pixels.
 import { Renderer } from '../src/render/renderer';
 import type { FrameState } from '../src/frame/types';
-import type { Scene as SceneValue } from '../src/scene/scene';
 import { defaultFrameState } from '../tests/unit/helpers/frame-state';
 import { ThreePeer } from './three-peer';
 import { DEFAULTS, type Knobs } from './configs';
 import type { BenchView } from './views';
 import { BENCH_SCENES } from './scenes';
 import { roughFloorScene } from './rough-scene';
-import { studioGrid } from '../tests/unit/helpers/pbr-scenes';
+import { finish, ourContext, ourFrames, resize, toBase64 } from './page-gl';
 import type { Shading } from '../src/frame/types';
 
 export interface Scene {
@@ -31,55 +30,13 @@ function frameState(scene: Scene, knobs: Knobs, view: BenchView, mode: FrameStat
 
 const oursCanvas = document.getElementById('ours') as HTMLCanvasElement;
 const peerCanvas = document.getElementById('peer') as HTMLCanvasElement;
-// The element's own context attributes (src/element/glass-plane-scene.ts).
-const gl = oursCanvas.getContext('webgl2', {
-  alpha: true, antialias: false, depth: true, stencil: false, premultipliedAlpha: true, preserveDrawingBuffer: false,
-})!;
+const gl = ourContext(oursCanvas);
 const renderer = new Renderer(gl, {});
+const { timeFrames, screenPixels } = ourFrames(renderer, gl, oursCanvas);
 let peer: ThreePeer | null = null;
 let roughScene: ReturnType<typeof roughFloorScene> | null = null;
-let pbrScene: ReturnType<typeof studioGrid> | null = null;
-const pixel = new Uint8Array(4);
-
-function resize(canvas: HTMLCanvasElement, s: FrameState): void {
-  if (canvas.width !== s.width) canvas.width = s.width;
-  if (canvas.height !== s.height) canvas.height = s.height;
-}
-
-function finish(context: WebGL2RenderingContext): void {
-  context.readPixels(0, 0, 1, 1, context.RGBA, context.UNSIGNED_BYTE, pixel);
-}
-
-function toBase64(bytes: Uint8ClampedArray | Uint8Array): string {
-  let s = '';
-  for (let i = 0; i < bytes.length; i += 0x8000) s += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-  return btoa(s);
-}
 
 type Kind = 'ours' | 'ours-unoptimized' | 'scene-only' | 'clear-only' | 'three';
-
-/**
- * `scene` in frame state `s` after loading what `loadFor` needs (the scene itself, or null: the default's parts): ms per frame
- * over `frames` after `warmup`, each run waited for.
- */
-async function timeFrames(scene: SceneValue, s: FrameState, frames: number, warmup: number, loadFor: SceneValue | null = scene): Promise<number> {
-  await renderer.load(loadFor, s);
-  resize(oursCanvas, s);
-  for (let i = 0; i < warmup; i++) renderer.render(scene, s);
-  finish(gl);
-  const t0 = performance.now();
-  for (let i = 0; i < frames; i++) renderer.render(scene, s);
-  finish(gl);
-  return (performance.now() - t0) / frames;
-}
-
-/** `scene`'s frame in state `s`, read from the screen, base64. */
-async function screenPixels(scene: SceneValue, s: FrameState, loadFor: SceneValue | null = scene): Promise<{ width: number; height: number; data: string }> {
-  await renderer.load(loadFor, s);
-  resize(oursCanvas, s);
-  const px = renderer.read(scene, s, null, 'screen');
-  return { width: px.width, height: px.height, data: toBase64(px.data) };
-}
 
 const api = {
   /** ms per frame over `frames` frames, after `warmup` untimed ones. */
@@ -209,15 +166,6 @@ const api = {
 
   async roughPixels(s: FrameState): Promise<{ width: number; height: number; data: string }> {
     return screenPixels((roughScene ??= roughFloorScene()), s, null);
-  },
-
-  /** The studio grid of glTF spheres (tests/unit/helpers/pbr-scenes.ts) in frame state `s`: ms per frame over `frames` after `warmup`. */
-  async pbrTime(s: FrameState, frames: number, warmup: number): Promise<number> {
-    return timeFrames((pbrScene ??= studioGrid()), s, frames, warmup);
-  },
-
-  async pbrPixels(s: FrameState): Promise<{ width: number; height: number; data: string }> {
-    return screenPixels((pbrScene ??= studioGrid()), s);
   },
 
   info(): { renderer: string; timerQuery: boolean; maxSamples: number } {

@@ -37,14 +37,15 @@ export function cachedReference(r: ReferenceRequest): ReferenceImage {
 
 /**
  * The reference image `compute` makes, kept in bench/.cache/`name`.json (`name` carries the key of everything that defines it):
- * read back when it is there (ms null), else computed, timed and written.
+ * read back when it is there, else computed, timed and written. `ms` is the time it took to make, now or when the file was
+ * written (null for a file written before the time was kept); `cached` says which.
  */
-export function cachedImage(name: string, compute: () => ReferenceImage): { ref: ReferenceImage; ms: number | null } {
+export function cachedImage(name: string, compute: () => ReferenceImage): { ref: ReferenceImage; ms: number | null; cached: boolean } {
   const file = new URL(`${name}.json`, CACHE);
   if (existsSync(file)) {
     const j = JSON.parse(readFileSync(file, 'utf8'));
     const ref = { ...j, rgba: new Uint8ClampedArray(Buffer.from(j.rgba, 'base64')), rgb: new Float64Array(new Uint8Array(Buffer.from(j.rgb, 'base64')).buffer), regions: new Uint8Array(Buffer.from(j.regions, 'base64')) };
-    return { ref, ms: null };
+    return { ref, ms: typeof j.ms === 'number' ? j.ms : null, cached: true };
   }
   const t0 = performance.now();
   const ref = compute();
@@ -52,9 +53,9 @@ export function cachedImage(name: string, compute: () => ReferenceImage): { ref:
   mkdirSync(CACHE, { recursive: true });
   writeFileSync(file, JSON.stringify({
     ...ref, rgba: Buffer.from(ref.rgba).toString('base64'), rgb: Buffer.from(new Uint8Array(ref.rgb.buffer)).toString('base64'),
-    regions: Buffer.from(ref.regions).toString('base64'), keys: undefined, codes: undefined,
+    regions: Buffer.from(ref.regions).toString('base64'), keys: undefined, codes: undefined, ms,
   }));
-  return { ref, ms };
+  return { ref, ms, cached: false };
 }
 
 /** A digest of the reference's own sources, so a change to them invalidates the cache. */

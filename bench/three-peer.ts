@@ -163,7 +163,7 @@ void main() {
 }
 `;
 
-const GLASS_FRAGMENT = /* glsl */ `
+export const GLASS_FRAGMENT = /* glsl */ `
 uniform sampler2D tDiffuse;
 uniform sampler2D uTexture;
 uniform float uTransparency;
@@ -204,11 +204,11 @@ void main() {
 }
 `;
 
-const COPY_VERTEX = /* glsl */ `
+export const COPY_VERTEX = /* glsl */ `
 void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }
 `;
 
-const COPY_FRAGMENT = /* glsl */ `
+export const COPY_FRAGMENT = /* glsl */ `
 uniform sampler2D tSource;
 void main() {
   gl_FragColor = texelFetch(tSource, ivec2(gl_FragCoord.xy), 0);
@@ -218,7 +218,7 @@ void main() {
 
 // ---- helpers ---------------------------------------------------------------------------------
 
-function toGeometry(m: MeshData): THREE.BufferGeometry {
+export function toGeometry(m: MeshData): THREE.BufferGeometry {
   const g = new THREE.BufferGeometry();
   g.setAttribute('position', new THREE.BufferAttribute(m.positions, 3));
   g.setAttribute('normal', new THREE.BufferAttribute(m.normals, 3));
@@ -234,7 +234,7 @@ function shadingDefines(shading: FrameState['shading']): Defines {
   return { [shading === 'flat' ? 'SHADING_FLAT' : shading === 'gouraud' ? 'SHADING_GOURAUD' : 'SHADING_PHONG']: '', LIGHT_COUNT: '1', LIGHT0_POINT: 'false' };
 }
 
-function fresnelDefines(fresnel: FrameState['fresnel']): Defines {
+export function fresnelDefines(fresnel: FrameState['fresnel']): Defines {
   return { [fresnel === 'schlick' ? 'FRESNEL_SCHLICK' : fresnel === 'classic' ? 'FRESNEL_CLASSIC' : 'FRESNEL_EXACT']: '' };
 }
 
@@ -245,10 +245,25 @@ function v3(a: readonly number[]): THREE.Vector3 {
 const DEFAULT_OPTIONS: PeerOptions = { samples: 0, reflectionScale: 1, sphereSegments: 64 };
 
 /** Most taps of an anisotropic read in 'srgb', as ours (src/render/gl/texture.ts). */
-const MAX_ANISOTROPY = 16;
+export const MAX_ANISOTROPY = 16;
 
 /** three's name for the colour space 8-bit colour is held in: sRGB-encoded, or as stored. */
-const held = (cs: ColorSpace): THREE.ColorSpace => (cs === 'srgb' ? THREE.SRGBColorSpace : THREE.NoColorSpace);
+export const held = (cs: ColorSpace): THREE.ColorSpace => (cs === 'srgb' ? THREE.SRGBColorSpace : THREE.NoColorSpace);
+
+/** The procedural texture as three holds it in colour space `cs`: row 0 first, repeat, trilinear mips (anisotropic in 'srgb'). */
+export function proceduralDataTexture(r: THREE.WebGLRenderer, cs: ColorSpace, texels: Uint8Array = proceduralTexture()): THREE.DataTexture {
+  const t = new THREE.DataTexture(texels, TEXTURE_SIZE, TEXTURE_SIZE, THREE.RGBAFormat, THREE.UnsignedByteType);
+  t.flipY = false; // row y = 0 is the first row uploaded: texel (x, y) at UV ((x+0.5)/512, (y+0.5)/512)
+  t.wrapS = t.wrapT = THREE.RepeatWrapping;
+  t.magFilter = THREE.LinearFilter;
+  t.minFilter = THREE.LinearMipmapLinearFilter;
+  t.generateMipmaps = true;
+  t.colorSpace = held(cs);
+  t.anisotropy = cs === 'srgb' ? Math.min(MAX_ANISOTROPY, r.capabilities.getMaxAnisotropy()) : 1;
+  t.unpackAlignment = 1;
+  t.needsUpdate = true;
+  return t;
+}
 
 // ---- the peer --------------------------------------------------------------------------------
 
@@ -296,20 +311,7 @@ export class ThreePeer {
     this.gl = r.getContext() as WebGL2RenderingContext;
 
     const texels = proceduralTexture();
-    const texture = (cs: ColorSpace): THREE.DataTexture => {
-      const t = new THREE.DataTexture(texels, TEXTURE_SIZE, TEXTURE_SIZE, THREE.RGBAFormat, THREE.UnsignedByteType);
-      t.flipY = false; // row y = 0 is the first row uploaded: texel (x, y) at UV ((x+0.5)/512, (y+0.5)/512)
-      t.wrapS = t.wrapT = THREE.RepeatWrapping;
-      t.magFilter = THREE.LinearFilter;
-      t.minFilter = THREE.LinearMipmapLinearFilter;
-      t.generateMipmaps = true;
-      t.colorSpace = held(cs);
-      t.anisotropy = cs === 'srgb' ? Math.min(MAX_ANISOTROPY, r.capabilities.getMaxAnisotropy()) : 1;
-      t.unpackAlignment = 1;
-      t.needsUpdate = true;
-      return t;
-    };
-    this.textures = { srgb: texture('srgb'), none: texture('none') };
+    this.textures = { srgb: proceduralDataTexture(r, 'srgb', texels), none: proceduralDataTexture(r, 'none', texels) };
 
     this.cubeMaterial = this.objectMaterial(CUBE.albedo);
     this.sphereMaterial = this.objectMaterial(SPHERE.albedo);

@@ -1,0 +1,58 @@
+// What both bench pages (bench-page.ts, pbr-page.ts) do with our renderer in the browser: a context made as the element makes
+// its own, the canvas sized to a frame state, batches of frames timed and closed by a one-pixel read, pixels as base64.
+import { Renderer } from '../src/render/renderer';
+import type { FrameState } from '../src/frame/types';
+import type { Scene } from '../src/scene/scene';
+
+const pixel = new Uint8Array(4);
+
+/** A WebGL2 context with the element's own attributes (src/element/glass-plane-scene.ts). */
+export function ourContext(canvas: HTMLCanvasElement): WebGL2RenderingContext {
+  return canvas.getContext('webgl2', {
+    alpha: true, antialias: false, depth: true, stencil: false, premultipliedAlpha: true, preserveDrawingBuffer: false,
+  })!;
+}
+
+export function resize(canvas: HTMLCanvasElement, s: Pick<FrameState, 'width' | 'height'>): void {
+  if (canvas.width !== s.width) canvas.width = s.width;
+  if (canvas.height !== s.height) canvas.height = s.height;
+}
+
+/** Waits for the GPU's work so far: a one-pixel read. */
+export function finish(context: WebGL2RenderingContext): void {
+  context.readPixels(0, 0, 1, 1, context.RGBA, context.UNSIGNED_BYTE, pixel);
+}
+
+export function toBase64(bytes: Uint8ClampedArray | Uint8Array): string {
+  let s = '';
+  for (let i = 0; i < bytes.length; i += 0x8000) s += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+  return btoa(s);
+}
+
+/** Our renderer on `canvas`: frames timed, and read from the screen. */
+export function ourFrames(renderer: Renderer, gl: WebGL2RenderingContext, canvas: HTMLCanvasElement) {
+  return {
+    /**
+     * `scene` in frame state `s` after loading what `loadFor` needs (the scene itself, or null: the default's parts): ms per
+     * frame over `frames` after `warmup`, each run waited for.
+     */
+    async timeFrames(scene: Scene, s: FrameState, frames: number, warmup: number, loadFor: Scene | null = scene): Promise<number> {
+      await renderer.load(loadFor, s);
+      resize(canvas, s);
+      for (let i = 0; i < warmup; i++) renderer.render(scene, s);
+      finish(gl);
+      const t0 = performance.now();
+      for (let i = 0; i < frames; i++) renderer.render(scene, s);
+      finish(gl);
+      return (performance.now() - t0) / frames;
+    },
+
+    /** `scene`'s frame in state `s`, read from the screen, base64. */
+    async screenPixels(scene: Scene, s: FrameState, loadFor: Scene | null = scene): Promise<{ width: number; height: number; data: string }> {
+      await renderer.load(loadFor, s);
+      resize(canvas, s);
+      const px = renderer.read(scene, s, null, 'screen');
+      return { width: px.width, height: px.height, data: toBase64(px.data) };
+    },
+  };
+}
