@@ -69,8 +69,11 @@ export interface SceneAttributes {
   toneMapping: ToneMapping | 'auto';
   /** A factor on the frame's light before tone mapping (docs/pbr.md#tone-mapping). */
   exposure: number;
-  /** The light from all around that glTF materials are lit by (docs/pbr.md#the-environment): the studio, or none. */
-  environment: 'neutral' | 'none';
+  /**
+   * The light from all around that glTF materials are lit by (docs/pbr.md#the-environment): the studio, none, or the URL of an
+   * equirectangular image (docs/pbr.md#an-image: Radiance .hdr, PNG or JPEG).
+   */
+  environment: 'neutral' | 'none' | (string & {});
   /** A factor on the environment's light. */
   environmentIntensity: number;
   /** The glass's roughness, 0..1 (docs/rough-glass.md#roughness): 0 polished. */
@@ -321,7 +324,16 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
   keywordSpec('colorSpace', 'color-space', COLOR_SPACES),
   keywordSpec('toneMapping', 'tone-mapping', TONE_MAPPING_WORDS),
   numberSpec('exposure', 'exposure', 1, 0, 64),
-  keywordSpec('environment', 'environment', ['neutral', 'none']),
+  {
+    // A keyword (any case), else a URL as written; empty is the default.
+    property: 'environment', attribute: 'environment', default: 'neutral',
+    parse(raw) {
+      const w = raw === null ? '' : raw.trim();
+      const k = w.toLowerCase();
+      return { value: w === '' || k === 'neutral' ? 'neutral' : k === 'none' ? 'none' : w };
+    },
+    format: (v) => v,
+  } satisfies AttributeSpec<'environment'>,
   numberSpec('environmentIntensity', 'environment-intensity', 1, 0, 64),
   numberSpec('roughness', 'roughness', 0, 0, 1),
   keywordSpec('roughnessQuality', 'roughness-quality', ['medium', 'low', 'high']),

@@ -4,6 +4,7 @@
 import { defaultScene } from '../scene/default-scene';
 import { hasPbrMaterial, type Glass, type Light, type Scene, type SceneObject } from '../scene/scene';
 import type { SceneAttributes } from './attributes';
+import type { EnvironmentImage } from '../math/environment-image';
 
 /** The attributes the scene value is built from: a change of any other builds nothing. */
 export const SCENE_ATTRIBUTES = [
@@ -13,10 +14,18 @@ export const SCENE_ATTRIBUTES = [
 /** `spin` is the cube's spin as drawn (0 under reduced motion unless `spin` is set). */
 export type SceneInputs = Pick<SceneAttributes, (typeof SCENE_ATTRIBUTES)[number]>;
 
+/**
+ * The environment an `environment="url"` attribute gives (element/environment-files.ts, docs/pbr.md#an-image): its image once in,
+ * or `neutral` (the studio) after it failed.
+ */
+export type EnvironmentPart = { url: string; image: EnvironmentImage } | 'neutral';
+
 /** Children's contributions; null where the element has no such child (the default is used). */
 export interface ChildParts {
   objects: readonly SceneObject[] | null;
   lights: readonly Light[] | null;
+  /** The environment a URL gives: absent or null while there is none (a keyword, or the image on its way: the lights alone). */
+  environment?: EnvironmentPart | null;
 }
 
 export function composeScene(v: SceneInputs, parts: ChildParts): Scene {
@@ -30,7 +39,10 @@ export function composeScene(v: SceneInputs, parts: ChildParts): Scene {
     background: [...v.background],
   };
   // The environment lights glTF materials alone (docs/pbr.md#the-environment): a scene without one is left as it was.
-  if (v.environment === 'neutral' && hasPbrMaterial(scene)) scene.environment = { kind: 'studio', intensity: v.environmentIntensity };
+  const env = parts.environment, intensity = v.environmentIntensity;
+  if (!hasPbrMaterial(scene)) return scene;
+  if (env && env !== 'neutral') scene.environment = { kind: 'image', intensity, url: env.url, image: env.image };
+  else if (v.environment === 'neutral' || env === 'neutral') scene.environment = { kind: 'studio', intensity };
   return scene;
 }
 

@@ -59,7 +59,7 @@ export interface GlassPlaneScene extends SceneAttributes {}
  * @attr {'srgb' | 'none'} [color-space="srgb"] - srgb: linear-light rendering with sRGB in and out; none: colours used as stored (the course programs)
  * @attr {'auto' | 'neutral' | 'aces' | 'none'} [tone-mapping="auto"] - the curve from light to the screen at the frame's end (srgb): auto is neutral for a scene with a glTF material, else none (clipped at 1)
  * @attr {number} [exposure=1] - a factor on the frame's light before the tone mapping, 0..64
- * @attr {'neutral' | 'none'} [environment="neutral"] - the light from all around on glTF materials: a studio of soft panels, or none (the lights alone)
+ * @attr {string} [environment="neutral"] - the light from all around on glTF materials: neutral (a studio of soft panels), none (the lights alone), or the URL of an equirectangular .hdr, PNG or JPEG
  * @attr {number} [environment-intensity=1] - a factor on the environment's light, 0..64
  * @attr {number} [roughness=0] - rough glass (GGX, α = roughness²), 0..1: 0 polished; blurs what the glass reflects and lets through, sharp where an object touches it
  * @attr {'low' | 'medium' | 'high'} [roughness-quality="medium"] - neighbours rough glass gathers per pixel: low 4, medium 8, high 16 per ring
@@ -88,7 +88,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
   private readonly failure: Failure;
   private readonly warnings = new AttributeWarnings();
   /** The light-DOM children (<glass-object>, <glass-light>) as parts of the scene. */
-  private readonly source = new SceneSource({ element: this, partsChanged: () => this.sceneChanged() });
+  private readonly source = new SceneSource({ element: this, partsChanged: () => this.sceneChanged(), environment: () => this.values.environment });
   /** Image textures the scene names, decoded once per URL per page, given to the renderer: a lazy part (TEXTURE_IMAGES); null before it is in. */
   private images: TextureImages | null = null;
   /** What only some pages need (element/parts.ts), asked for with the renderer's once per frame. */

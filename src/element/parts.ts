@@ -5,6 +5,8 @@ import type { SceneAttributes } from './attributes';
 import type { CameraRig } from './camera-rig';
 import type { SceneSource } from './scene-source';
 import type { SceneValue } from './scene-value';
+import { isEnvironmentUrl } from './scene-source';
+import { hasPbrMaterial } from '../scene/scene';
 
 /** What the element's parts read and are handed to: its attributes and controllers. */
 export interface ElementPartsHost {
@@ -67,6 +69,14 @@ export const TEXTURE_IMAGES: Part<typeof import('./texture-images')> = {
   arrived: (h, chunk) => h.imagesArrived(chunk),
 };
 
+/** `environment="url"`: the image's reader and the making of its maps. Until it is in, glTF materials see the lights alone. */
+export const ENVIRONMENT_FILE: Part<typeof import('./environment-files')> = {
+  name: 'environment', chunk: 'environment-files', load: () => import('./environment-files'),
+  needed: (h) => isEnvironmentUrl(h.values.environment) && hasPbrMaterial(h.scenes.current), holds: false,
+  instead: 'glTF materials are lit by the scene\'s lights alone',
+  arrived: (h, chunk) => h.source.filesArrived(chunk),
+};
+
 /** The message part's texts; fetched by Failure when something fails (never by a frame). */
 export const FAILURE_MESSAGES: Part<typeof import('./failure-messages')> = {
   name: 'the failure messages', chunk: 'diagnostics', load: () => import('./failure-messages'),
@@ -74,5 +84,5 @@ export const FAILURE_MESSAGES: Part<typeof import('./failure-messages')> = {
 };
 
 export const ELEMENT_PARTS: readonly Part<unknown>[] = [
-  CONTROLS, GROUP_ROTATION, CAMERA_SOURCE, GATHER_PARTS, CHILD_ELEMENTS, TEXTURE_IMAGES, FAILURE_MESSAGES,
+  CONTROLS, GROUP_ROTATION, CAMERA_SOURCE, GATHER_PARTS, CHILD_ELEMENTS, TEXTURE_IMAGES, ENVIRONMENT_FILE, FAILURE_MESSAGES,
 ];

@@ -3,13 +3,15 @@
 // notices for their attributes and loads, and whenDefined for children upgraded later. The
 // children's own elements (children/child-elements.ts) and what gathers their parts
 // (children/gather-parts.ts: children defined by another copy of the package need it too) are
-// lazy parts (element/parts.ts), which read hasUndefinedChild() and hasChild().
+// lazy parts (element/parts.ts), which read hasUndefinedChild() and hasChild(). The image an `environment` URL names is a part of
+// the scene too (element/environment-files.ts, its own lazy part, ENVIRONMENT_FILE), handed over here when it is in.
 import type { ChildParts } from './compose-scene';
 import { CHILD_CHANGE, LIGHT_TAG, OBJECT_TAG } from './children/tags';
 import type { GlassLight } from './children/glass-light';
 import type { GlassObject } from './children/glass-object';
 import type { GatherHost } from './children/gather-parts';
 import type { Controller } from './controller';
+import type { EnvironmentFiles } from './environment-files';
 
 const NO_PARTS: ChildParts = { objects: null, lights: null };
 
@@ -19,9 +21,14 @@ const isOurs = (name: string): boolean => name === OBJECT_TAG || name === LIGHT_
 export interface SceneSourceHost {
   /** The scene element: its direct children are the parts. */
   readonly element: HTMLElement;
-  /** A child was added, removed, reordered, changed, upgraded, or its model arrived. */
+  /** A child was added, removed, reordered, changed, upgraded, or its model arrived; or the environment's image. */
   partsChanged(): void;
+  /** The `environment` attribute: a keyword or a URL. */
+  environment(): string;
 }
+
+/** A URL, not one of the environment's keywords. */
+export const isEnvironmentUrl = (environment: string): boolean => environment !== 'neutral' && environment !== 'none';
 
 export class SceneSource implements Controller, GatherHost {
   private observer: MutationObserver | null = null;
@@ -31,6 +38,8 @@ export class SceneSource implements Controller, GatherHost {
   private readonly awaiting = new Set<string>();
   /** children/gather-parts.ts once it is in. */
   private gatherer: typeof import('./children/gather-parts') | null = null;
+  /** element/environment-files.ts once it is in. */
+  private files: EnvironmentFiles | null = null;
   readonly element: HTMLElement;
 
   constructor(private readonly host: SceneSourceHost) {
@@ -49,6 +58,7 @@ export class SceneSource implements Controller, GatherHost {
     this.observer?.disconnect();
     this.observer = null;
     this.element.removeEventListener(CHILD_CHANGE, this.onChildChange);
+    this.files?.release();
   }
 
   /** True while a direct <glass-object> or <glass-light> child is fetching or parsing its file. */
@@ -57,12 +67,27 @@ export class SceneSource implements Controller, GatherHost {
       const name = child.localName;
       if (isOurs(name) && (child as GlassObject | GlassLight).loading === true) return true;
     }
-    return false;
+    return this.files?.loading ?? false;
   }
 
-  /** The children's objects and lights (null: none of that kind, use the default). Cached. */
+  /**
+   * The children's objects and lights (null: none of that kind, use the default), cached; and the environment's image when the
+   * attribute names one, asked for here (a scene is built once per change).
+   */
   current(): ChildParts {
-    return (this.parts ??= this.gather());
+    const parts = (this.parts ??= this.gather()), src = this.host.environment();
+    if (!isEnvironmentUrl(src)) {
+      this.files?.release();
+      return parts;
+    }
+    const environment = this.files?.partFor(src) ?? null;
+    return environment ? { ...parts, environment } : parts;
+  }
+
+  /** The environment's image code is in: the scene is built again, asking for the image. */
+  filesArrived(chunk: typeof import('./environment-files')): void {
+    this.files = new chunk.EnvironmentFiles({ element: this.element, changed: this.invalidate });
+    this.invalidate();
   }
 
   /** A direct child is a <glass-object> or <glass-light> (defined or not). */

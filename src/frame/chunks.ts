@@ -38,8 +38,11 @@ export const CHUNKS = {
   // standard.frag's call — the textures' code and the shader's reads are in pbr-gl; then glTF's doubleSided and the base colour
   // texture read through its KHR_texture_transform in standard.frag (+49 B, 32,692); then the normal map (+197 B, 32,889): the
   // tangent attribute, the variant and its key, standard.vert's and standard.frag's lines — the perturbation is in pbr-gl; then
-  // vertex colours (the attribute, the variant, the shaders' lines: +118 B, 33,007).
-  core: { budget: 33025, when: 'with the element' },
+  // vertex colours (the attribute, the variant, the shaders' lines: +118 B, 33,007); then `environment="url"` (+265 B, 33,272):
+  // the attribute's URL form, the part that fetches environment-files when it names one and the scene has a glTF material, the
+  // scene source's asking for the image and `ready` waiting for it, the scene value's image environment and the key its maps are
+  // kept by — the reading, decoding and reduction of the image are in environment-files.
+  core: { budget: 33300, when: 'with the element' },
   // Checks, debug views and the texts of failures: for developers, or when something went wrong.
   diagnostics: {
     budget: 1400, when: 'debug-view, frame checks, or a failure',
@@ -85,8 +88,14 @@ export const CHUNKS = {
   'environment-gl': { budget: 1425, when: 'a glTF material under an environment (WebGL)' },
   // The making of an environment's maps and the split-sum table, a row at a time (frame/environment-light.ts, math/prefilter.ts,
   // the studio), once a page: by environment-gl, or by the CPU renderer on the main thread (2,582); the same in its workers (2,528).
-  'environment-light': { budget: 2600, when: 'a glTF material under an environment' },
-  'assets/environment-light': { budget: 2550, when: 'the same, in the CPU renderer\'s workers' },
+  // Then an environment image (docs/pbr.md#an-image): its lookup, the light the maps are made from (math/environment-image.ts,
+  // which environment-files reads too: one chunk, not a third), and the makings and maps kept by each environment's key
+  // (+509 B, 3,109 here; +233 B, 2,783 in the workers).
+  'environment-light': {
+    budget: 3125, when: 'a glTF material under an environment',
+    modules: ['src/frame/environment-light.ts', 'src/math/environment-image.ts'],
+  },
+  'assets/environment-light': { budget: 2800, when: 'the same, in the CPU renderer\'s workers' },
 
   // 4,700 until a glTF model was drawn plain without a texture (+1 B), then reflect="false" (+87 B), then a glTF mesh's tangents
   // and vertex colours into its MeshData (+15 B, 4,865).
@@ -131,13 +140,16 @@ export const CHUNKS = {
   },
   // The CPU renderer's main thread waiting for an environment's maps (software/environment-ready.ts): a scene with a glTF
   // material under an environment, without workers.
+  // environment="url" (docs/pbr.md#an-image): the Radiance reader, the browser's decode taken as sRGB, the reduction, the load.
+  'environment-files': { budget: 3000, when: 'environment="url" with a glTF material' },
   'environment-ready': { budget: 300, when: 'the CPU renderer on the main thread, a glTF material under an environment' },
   // 23,850 until rough glass's gather read its centre on the fragment's footprint (23,864).
   // then emissive and reflect="false" (+13 B), then glTF materials (+658 B, 24,608), then tone mapping (+616 B, 25,224), then
   // the hook for an environment's light (+149 B, 25,399), then requests queued behind the environment's maps (+236 B, 25,635),
   // then glTF materials' maps (+400 B, 26,035), then KHR_texture_transform and glTF's doubleSided (+164 B, 26,199), then the
   // normal map (+439 B, 26,638), then vertex colours (+99 B, 26,737).
-  'assets/worker': { budget: 26750, when: 'the CPU renderer' },
+  // +13 B (26,763): the prepared environments' table keyed by environmentKey (an image's URL).
+  'assets/worker': { budget: 26775, when: 'the CPU renderer' },
   // The bundler's glue for lazy chunks that share modules: written by rolldown, not by us.
   // 200 until glTF's chunks shared modules with the others (+229 B).
   'rolldown-runtime': { budget: 450, when: 'with the first lazy chunk' },

@@ -5,24 +5,26 @@ import { dfgTableSteps } from '../math/dfg';
 import { environmentMapSteps } from '../math/prefilter';
 import { addEnvironment, type EnvironmentMaps } from '../math/environment-maps';
 import { studioRadiance } from '../math/studio';
+import { imageRadiance } from '../math/environment-image';
 import type { RadianceFn } from '../math/split-sum';
-import type { Environment } from '../scene/scene';
+import { environmentKey, type Environment } from '../scene/scene';
 import type { PreparedEnvironment } from './environment-cache';
 
 // The table frame/environment-cache.ts reads, under the same registered symbol (not imported: see there).
-type Table = Map<Environment['kind'], PreparedEnvironment>;
+type Table = Map<string, PreparedEnvironment>;
 const table = (): Table => ((globalThis as Record<symbol, Table>)[Symbol.for('glass-plane-scene.environments')] ??= new Map());
-const preparedFor = (environment: Environment): PreparedEnvironment | null => table().get(environment.kind) ?? null;
+const preparedFor = (environment: Environment): PreparedEnvironment | null => table().get(environmentKey(environment)) ?? null;
 
-// One kind so far: the studio.
 const studio: RadianceFn = (out, x, y, z) => { out[0] = out[1] = out[2] = studioRadiance(x, y, z); };
+/** The light the maps are made from: the studio's, or an image's lookup (docs/pbr.md#an-image). */
+const radianceOf = (environment: Environment): RadianceFn => (environment.kind === 'image' ? imageRadiance(environment.image) : studio);
 
 function keep(environment: Environment, maps: EnvironmentMaps, dfg: Float32Array): PreparedEnvironment {
   const made: PreparedEnvironment = {
     maps, dfg,
     add: (out, intensity, base, metallic, roughness, n, v) => addEnvironment(out, maps, dfg, intensity, base, metallic, roughness, n, v),
   };
-  table().set(environment.kind, made);
+  table().set(environmentKey(environment), made);
   return made;
 }
 
@@ -34,9 +36,9 @@ function runAll<T>(steps: Generator<void, T, void>): T {
   }
 }
 
-/** The maps and table of `environment` (its kind; the intensity is applied when shading): kept ones, or made now and kept. */
+/** The maps and table of `environment` (the intensity is applied when shading): kept ones, or made now and kept. */
 export function prepareEnvironment(environment: Environment): PreparedEnvironment {
-  return preparedFor(environment) ?? keep(environment, runAll(environmentMapSteps(studio)), runAll(dfgTableSteps()));
+  return preparedFor(environment) ?? keep(environment, runAll(environmentMapSteps(radianceOf(environment))), table().values().next().value?.dfg ?? runAll(dfgTableSteps()));
 }
 
 /** Runs `steps` in slices of about `sliceMs`, each in a task of its own: the page answers between them. */
@@ -52,19 +54,26 @@ async function runSliced<T>(steps: Generator<void, T, void>, sliceMs: number): P
   }
 }
 
-let making: Promise<PreparedEnvironment> | null = null;
+/** The makings under way, by environmentKey. */
+const making = new Map<string, Promise<PreparedEnvironment>>();
 
 /**
  * prepareEnvironment on a page's main thread: the maps and table made a row at a time, in tasks of about `sliceMs` (the making
- * takes a second or more here, which one task would hold the page for). One making at a time, shared by whoever asks.
+ * takes a second or more here, which one task would hold the page for). One making per environment, shared by whoever asks.
  */
 export function prepareEnvironmentSliced(environment: Environment, sliceMs = 8): Promise<PreparedEnvironment> {
   const kept = preparedFor(environment);
   if (kept !== null) return Promise.resolve(kept);
-  making ??= (async () => {
-    const maps = await runSliced(environmentMapSteps(studio), sliceMs);
-    const dfg = await runSliced(dfgTableSteps(), sliceMs);
-    return keep(environment, maps, dfg);
-  })().finally(() => { making = null; });
-  return making;
+  const key = environmentKey(environment);
+  let p = making.get(key);
+  if (!p) {
+    p = (async () => {
+      const maps = await runSliced(environmentMapSteps(radianceOf(environment)), sliceMs);
+      // The table is the same for every environment: made once.
+      const dfg = table().values().next().value?.dfg ?? (await runSliced(dfgTableSteps(), sliceMs));
+      return keep(environment, maps, dfg);
+    })().finally(() => making.delete(key));
+    making.set(key, p);
+  }
+  return p;
 }

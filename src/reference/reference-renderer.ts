@@ -11,6 +11,7 @@ import { toneMap } from '../math/tone-map';
 import { colourCeiling } from './reference-state';
 import { HashStream, MicrofacetSamples } from './microfacet-samples';
 import { STUDIO_LIGHT } from './pbr-light';
+import { imageLight } from './image-light';
 
 export interface ReferenceOptions {
   /**
@@ -118,7 +119,8 @@ export function renderScene(scene: Scene, state: ViewState, images?: SceneImages
   // docs/pbr.md#the-reference: each sample's shadings draw `envSamples` directions from a stream keyed by pixel and sample.
   const env = scene.environment ?? null, stream = new HashStream();
   const envSamples = env ? Math.max(1, Math.ceil((options.environmentSamples ?? DEFAULT_ENVIRONMENT_SAMPLES) / (n * n))) : 0;
-  tracer.environment = env ? { light: STUDIO_LIGHT, intensity: env.intensity, samples: envSamples, random: stream.next } : null;
+  const light = env ? (env.kind === 'image' ? imageLight(env.image) : STUDIO_LIGHT) : null;
+  tracer.environment = env && light ? { light, intensity: env.intensity, samples: envSamples, random: stream.next } : null;
   const codes = tracer.scene.codes;
   const rgb = new Float64Array(width * height * 3);
   const rgba = new Uint8ClampedArray(width * height * 4);

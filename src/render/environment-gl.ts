@@ -7,7 +7,7 @@ import source from '../../shaders/environment.glsl?raw';
 import { prepareEnvironment, prepareEnvironmentSliced } from '../frame/environment-light';
 import { sampleEquirect, type EquirectMap } from '../math/environment-maps';
 import { texelDirection } from '../math/prefilter';
-import type { Environment } from '../scene/scene';
+import { environmentKey, type Environment } from '../scene/scene';
 import type { Program } from './gl/program';
 import type { ResourceCounter } from './gl/resource-counter';
 import { DFG_SIZE } from '../math/dfg';
@@ -39,13 +39,17 @@ function atWidth(map: EquirectMap, width: number): Float32Array {
 export class EnvironmentGl {
   private maps: WebGLTexture | null = null;
   private table: WebGLTexture | null = null;
-  private kind: Environment['kind'] | null = null;
+  /** Whose textures these are (environmentKey). */
+  private key: string | null = null;
 
   constructor(private readonly gl: WebGL2RenderingContext, private readonly counter: ResourceCounter) {}
 
-  /** Makes the textures of `environment`'s kind the first time it is asked (the maps themselves once per page); true. */
+  /**
+   * Makes the textures of `environment` the first time it is asked (the maps themselves once per page: the element makes an
+   * image's before its scene names it, the part's load the studio's); true.
+   */
   use(environment: Environment): boolean {
-    if (this.kind === environment.kind) return true;
+    if (this.key === environmentKey(environment)) return true;
     this.release();
     const gl = this.gl, prepared = prepareEnvironment(environment), levels = prepared.maps.levels;
     const width = levels[0].width, height = width / 2;
@@ -70,7 +74,7 @@ export class EnvironmentGl {
     gl.bindTexture(gl.TEXTURE_2D, null);
     this.maps = maps;
     this.table = table;
-    this.kind = environment.kind;
+    this.key = environmentKey(environment);
     return true;
   }
 
@@ -97,6 +101,6 @@ export class EnvironmentGl {
     this.gl.deleteTexture(this.table);
     this.counter.add('textures', -2);
     this.maps = this.table = null;
-    this.kind = null;
+    this.key = null;
   }
 }

@@ -3,6 +3,7 @@
 // downstream knows what an object is called, only its geometry, transform and material.
 import type { MeshData } from './geometry/mesh-data';
 import { readMap, type PbrMaterial } from './pbr-material';
+import type { EnvironmentImage } from '../math/environment-image';
 
 export type Vec3 = readonly [number, number, number];
 
@@ -96,13 +97,19 @@ export interface Glass {
 }
 
 /**
- * Light from every direction (docs/pbr.md#the-environment), which lights glTF materials only: `studio` is the neutral studio of
- * math/studio.ts, its radiance times `intensity`.
+ * Light from every direction (docs/pbr.md#the-environment), which lights glTF materials only, its radiance times `intensity`:
+ * `studio` is the neutral studio of math/studio.ts; `image` an equirectangular image of linear light (docs/pbr.md#an-image),
+ * reduced to at most 512 × 256 texels (math/environment-image.ts), named by its URL.
  */
-export interface Environment {
-  kind: 'studio';
-  intensity: number;
-}
+export type Environment =
+  | { kind: 'studio'; intensity: number }
+  | { kind: 'image'; intensity: number; url: string; image: EnvironmentImage };
+
+/**
+ * The name an environment's prepared maps are kept under (frame/environment-cache.ts): `studio`, or an image's URL (absolute, so
+ * never the word). Made of nothing new: the frame loop may ask.
+ */
+export const environmentKey = (e: Environment): string => (e.kind === 'image' ? e.url : e.kind);
 
 export interface Scene {
   /** Null: no glass, hence no glass pass and no reflection pass (a plain model viewer). */

@@ -18,6 +18,20 @@ describe('composeScene', () => {
     expect('environment' in composeScene(inputs(), { objects: [base], lights: null })).toBe(false);
   });
 
+  it('environment="url": the image once it is in, the lights alone while it loads, the studio after it failed; never without a glTF material', () => {
+    const base = defaultScene(0.75, 0.8).objects[0];
+    const gltf: SceneObject = { ...base, material: { ...base.material, pbr: pbrMaterial() } };
+    const image = { width: 2, height: 1, rgb: new Float32Array(6) }, url = 'https://example.test/sky.hdr';
+    const env = (environment: Parameters<typeof composeScene>[1]['environment'], objects = [gltf]) =>
+      composeScene(inputs({ environment: 'sky.hdr', environmentIntensity: 3 }), { objects, lights: null, environment }).environment;
+    expect(env({ url, image })).toEqual({ kind: 'image', intensity: 3, url, image });
+    expect(env(null)).toBeUndefined();
+    expect(env(undefined)).toBeUndefined();
+    expect(env('neutral')).toEqual({ kind: 'studio', intensity: 3 });
+    expect(env({ url, image }, [base])).toBeUndefined();
+    expect(env('neutral', [base])).toBeUndefined();
+  });
+
   it('is the default scene with the default attributes and no children', () => {
     expect(composeScene(inputs({ cubeDistance: 0.5, spin: 0.3 }), { objects: null, lights: null })).toEqual(defaultScene(0.5, 0.3));
   });

@@ -89,10 +89,15 @@ describe('numbers in a range', () => {
     expectParse('fov', 'wide', 60, 'not a number, using 60');
   });
 
-  it('environment: neutral or none, default neutral; environment-intensity: 0..64, default 1', () => {
+  it('environment: neutral, none or a URL as written, default neutral; environment-intensity: 0..64, default 1', () => {
     expectParse('environment', 'none', 'none');
     expectParse('environment', ' NEUTRAL ', 'neutral');
-    expectParse('environment', 'studio', 'neutral', 'expected one of neutral, none; using neutral');
+    expectParse('environment', ' None', 'none');
+    expectParse('environment', null, 'neutral');
+    expectParse('environment', '  ', 'neutral');
+    // Anything else is a URL (relative to the page), trimmed, its case kept: a word that is no file fails as a load does.
+    expectParse('environment', ' skies/Venice Sunset.HDR ', 'skies/Venice Sunset.HDR');
+    expectParse('environment', 'studio', 'studio');
     expectParse('environment-intensity', '0', 0);
     expectParse('environment-intensity', '2.5', 2.5);
     expectParse('environment-intensity', '-1', 0, 'below 0, clamped');

@@ -169,9 +169,9 @@ describe.skipIf(instrumented)('the frame\'s one question allocates nothing when 
     expect(answers).toBe(0);
   });
 
-  it('the element\'s parts, none needed (no controls, no turn, no children, no images, no camera-src)', async () => {
+  it('the element\'s parts, none needed (no controls, no turn, no children, no images, no camera-src, no environment URL)', async () => {
     const host = {
-      values: { controls: null, cameraSrc: null },
+      values: { controls: null, cameraSrc: null, environment: 'neutral' },
       scenes: { turnSet: () => false },
       source: { hasChild: () => false, hasUndefinedChild: () => false },
       namesImages: () => false,

@@ -1,7 +1,7 @@
 // One fetch and parse per URL per page (docs/scene-model.md#loading): elements share a pending load and keep the
 // result. Each user holds a reference; when the last one lets go of a load still under way,
 // it is aborted. A failed load is forgotten, so setting the URL again later tries again.
-// Models, and the course's camera and lighting files (docs/course-files.md#lighting-file), each kind keyed apart.
+// Models, the course's camera and lighting files (docs/course-files.md#lighting-file) and environment images, each kind keyed apart.
 import { LoadError, type LoadErrorDetail } from '../../loaders/load-error';
 import type { LoadedModel } from './model-loader';
 import type { Progress } from './model-fetch';
@@ -70,7 +70,8 @@ export function acquireCourseFile<K extends CourseFileKind>(kind: K, url: string
     import('./course-files').then(({ loadCourseFile }) => loadCourseFile(kind, url, signal, progress)));
 }
 
-function acquire<T extends { warnings: string[] }>(key: string, url: string, onProgress: (p: Progress) => void, load: Loader<T>): Handle<T> {
+/** Any file loaded once per `key` per page by `load` (the environment's image, element/environment-files.ts, brings its own). */
+export function acquire<T extends { warnings: string[] }>(key: string, url: string, onProgress: (p: Progress) => void, load: Loader<T>): Handle<T> {
   let entry = cache.get(key) as Entry<T> | undefined;
   if (!entry) cache.set(key, (entry = start(key, url, load)));
   const e = entry;

@@ -24,7 +24,9 @@ export async function elementScene(page: Page, width: number, height: number, ov
       const d = o.geometry.data;
       return { ...o, geometry: { ...o.geometry, data: { positions: [...d.positions], normals: [...d.normals], uvs: [...d.uvs], indices: [...d.indices], tangents: d.tangents ? [...d.tangents] : undefined } } };
     });
-    return { scene: { ...s, objects } as unknown as Scene, view: { position: el.cameraPosition, rotation: el.cameraRotation, fov: el.fov, transparency: el.transparency, ior: el.ior } };
+    // An environment image's texels as a plain array (made a Float32Array again below).
+    const environment = s.environment?.kind === 'image' ? { ...s.environment, image: { ...s.environment.image, rgb: [...s.environment.image.rgb] } } : s.environment;
+    return { scene: { ...s, objects, ...(environment ? { environment } : {}) } as unknown as Scene, view: { position: el.cameraPosition, rotation: el.cameraRotation, fov: el.fov, transparency: el.transparency, ior: el.ior } };
   });
   const objects = scene.objects.map((o): SceneObject => {
     if (o.geometry.kind !== 'mesh') return o;
@@ -44,5 +46,7 @@ export async function elementScene(page: Page, width: number, height: number, ov
     width, height, spin: 0, transparency: view.transparency, ior: view.ior, fov: view.fov,
     cameraPosition: view.position as [number, number, number], yaw: view.rotation[0], pitch: view.rotation[1], ...over,
   });
-  return { scene: { ...scene, objects }, state, images };
+  const env = scene.environment;
+  const environment = env?.kind === 'image' ? { ...env, image: { ...env.image, rgb: new Float32Array(env.image.rgb) } } : env;
+  return { scene: { ...scene, objects, ...(environment ? { environment } : {}) }, state, images };
 }

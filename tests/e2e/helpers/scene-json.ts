@@ -14,6 +14,9 @@ export function sceneToJson(scene: Scene): Scene {
       const data = { positions: [...d.positions], normals: [...d.normals], uvs: [...d.uvs], indices: [...d.indices], ...(d.tangents ? { tangents: [...d.tangents] } : {}), ...(d.colors ? { colors: [...d.colors] } : {}) };
       return { ...o, geometry: { ...o.geometry, data: data as unknown as typeof d } };
     }),
+    ...(scene.environment?.kind === 'image'
+      ? { environment: { ...scene.environment, image: { ...scene.environment.image, rgb: [...scene.environment.image.rgb] as unknown as Float32Array } } }
+      : {}),
   };
 }
 

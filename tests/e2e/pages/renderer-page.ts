@@ -30,6 +30,8 @@ function revive(scene: Scene): Scene {
       };
       return { ...o, geometry: { ...o.geometry, data } };
     }),
+    // An environment image's texels as a plain array (scene-json.ts): its Float32Array again.
+    ...(scene.environment?.kind === 'image' ? { environment: { ...scene.environment, image: { ...scene.environment.image, rgb: new Float32Array(scene.environment.image.rgb) } } } : {}),
   };
 }
 

@@ -4,6 +4,7 @@
 import type { PbrMaterial } from '../../../src/scene/pbr-material';
 import type { Environment, Light, Material, Scene, SceneObject, Vec3 } from '../../../src/scene/scene';
 import { defaultFrameState } from './frame-state';
+import { imageDirection, type EnvironmentImage } from '../../../src/math/environment-image';
 
 export const METALLIC = [0, 0.5, 1] as const;
 export const ROUGHNESS = [0.05, 0.3, 0.6, 1] as const;
@@ -126,3 +127,26 @@ export function mirrorToKey(pbr = pbrMaterial({ baseColor: [0.1, 0.1, 0.1, 1], m
     objects: [{ ...o, transform: { ...o.transform, rotation: [-Math.asin(n[1]) * DEG, Math.atan2(n[0], n[2]) * DEG, 0] } }],
   };
 }
+
+/**
+ * A sky of `width` × `width`/2 texels (docs/pbr.md#an-image), as an equirectangular .hdr would hold it: blue above the horizon,
+ * lighter toward it; a warm ground below; a sun of radiance 40 and 6° across, high toward −z and +x (where the grid's camera
+ * looks into it); linear light.
+ */
+export function skyImage(width = 128): EnvironmentImage {
+  const height = width / 2, rgb = new Float32Array(width * height * 3), d = new Float64Array(3);
+  const sun = [0.45, 0.6, -0.66], len = Math.hypot(...sun), cosSun = Math.cos((3 * Math.PI) / 180);
+  for (let j = 0; j < height; j++) {
+    for (let i = 0; i < width; i++) {
+      imageDirection(d, (i + 0.5) / width, (j + 0.5) / height);
+      const up = d[1], o = 3 * (j * width + i);
+      if ((d[0] * sun[0] + d[1] * sun[1] + d[2] * sun[2]) / len > cosSun) rgb.set([40, 38, 34], o);
+      else if (up >= 0) rgb.set([0.25 + 0.35 * (1 - up), 0.4 + 0.3 * (1 - up), 0.9], o);
+      else rgb.set([0.3, 0.22, 0.15], o);
+    }
+  }
+  return { width, height, rgb };
+}
+
+/** `image` as a scene's environment, at `intensity`. */
+export const imageEnvironment = (image: EnvironmentImage, intensity = 1, url = 'https://example.test/sky.hdr'): Environment => ({ kind: 'image', intensity, url, image });
