@@ -36,6 +36,9 @@ in vec4 vTangent;
 #ifdef VERTEX_COLORS
 in vec3 vColor;
 #endif
+#ifdef ALPHA_MASK
+uniform vec2 uAlphaMask;       // glTF's alpha mask (docs/gltf.md#alpha): the base colour factor's alpha, the cutoff
+#endif
 
 out vec4 outColor;
 
@@ -77,6 +80,16 @@ void main() {
   if (vClipDistance < 0.0) discard;
 #endif
 #if defined(PBR)
+#ifdef ALPHA_MASK
+  // The base colour's alpha, its factor times its texture's (read as the base colour is) where the mapping is uv, against the cutoff.
+#ifdef MAPPING_UV
+  vec2 at = moveUv(0, vUv);
+  float alpha = uAlphaMask.x * texture(uTexture, uImageTexture > 0.5 ? vec2(at.x, 1.0 - at.y) : at).a;
+#else
+  float alpha = uAlphaMask.x;
+#endif
+  if (alpha < uAlphaMask.y) discard;
+#endif
   vec3 v = viewVector(vRelPos);
   // The texture is in the base colour, which also sets a metal's F0 (docs/pbr.md#the-scenes-lights).
 #ifdef MAPPING_UV

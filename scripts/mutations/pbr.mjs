@@ -7,6 +7,7 @@ const TONE = 'tests/e2e/tone-mapping.spec.ts';
 const CHUNK = 'tests/e2e/pbr-chunk.spec.ts';
 const ENV = 'tests/e2e/environment.spec.ts';
 const MAPS = 'tests/e2e/pbr-maps.spec.ts';
+const MASK = 'tests/e2e/alpha-mask.spec.ts';
 const GLSL = 'GLSL: Stryker does not mutate shader source (shaders/)';
 
 export default [
@@ -225,5 +226,29 @@ export default [
     why: 'a vertex attribute of WebGL: only a browser draws it',
     edits: [{ file: 'src/render/gl/mesh.ts', find: '    if (data.colors) this.attribute(ATTRIB.color, data.colors, 3);', replace: '' }],
     tests: [MAPS],
+  },
+  {
+    name: 'P37 the alpha mask never discards',
+    why: GLSL,
+    edits: [{ file: 'shaders/standard.frag', find: '  if (alpha < uAlphaMask.y) discard;', replace: '' }],
+    tests: [MASK],
+  },
+  {
+    name: 'P38 the alpha mask reads the factor alone (not the texture\'s alpha)',
+    why: GLSL,
+    edits: [{ file: 'shaders/standard.frag', find: '  float alpha = uAlphaMask.x * texture(uTexture, uImageTexture > 0.5 ? vec2(at.x, 1.0 - at.y) : at).a;', replace: '  float alpha = uAlphaMask.x;' }],
+    tests: [MASK],
+  },
+  {
+    name: 'P39 the alpha mask reads the texture upside down (at v, not 1 − v)',
+    why: GLSL,
+    edits: [{ file: 'shaders/standard.frag', find: 'uImageTexture > 0.5 ? vec2(at.x, 1.0 - at.y) : at).a;', replace: 'at).a;' }],
+    tests: [MASK],
+  },
+  {
+    name: 'P40 the alpha mask\'s cutoff not set (0: nothing cut)',
+    why: 'a uniform of WebGL: only a browser draws it',
+    edits: [{ file: 'src/render/pbr-maps-gl.ts', find: "gl.uniform2f(p.location('uAlphaMask'), m.baseColor[3], m.alphaCutoff);", replace: "gl.uniform2f(p.location('uAlphaMask'), m.baseColor[3], 0);" }],
+    tests: [MASK],
   },
 ];

@@ -1,10 +1,15 @@
 // A glTF material at a hit for the reference (docs/gltf.md#drawing): metallic and roughness times the metallic-roughness
 // map's B and G, the occlusion map's R by its strength, the emission times the emissive map — each map read by the
 // reference's own sampler (surface-texture.ts) at the hit's UV moved by its transform, where the mapping is `uv`; the base
-// colour texture read again where it has a transform; the normal map turning the shading normal — then shadePbr.
+// colour texture read again where it has a transform; the normal map turning the shading normal — then shadePbr. And its alpha
+// mask (docs/gltf.md#alpha): a hit on a material of alphaMode `mask` whose base colour alpha — its factor times its texture's
+// alpha, read as the base colour is, where the mapping is `uv` — is below the cutoff is no surface: the ray goes on past it
+// (keptHit, which sample-tracer.ts's nearest asks).
 import { readMap } from '../scene/pbr-material';
 import type { Material } from '../scene/scene';
 import type { Ray } from './ray';
+import type { ObjectTracer } from './analytic-tracers';
+import type { Plane } from '../math/mirror';
 import { shadePbr, type EnvironmentShading, type PbrSurface, type PreparedLight } from './shade';
 import type { SurfaceHit } from './surface-hit';
 import type { SurfaceTexture } from './surface-texture';
@@ -71,4 +76,30 @@ function mappedNormal(hit: SurfaceHit, t: Float64Array, scale: number): void {
   const mx = x * tx + y * bx + z * nx, my = x * ty + y * by + z * ny, mz = x * tz + y * bz + z * nz;
   const ml = s / (Math.hypot(mx, my, mz) || 1);
   n[0] = mx * ml; n[1] = my * ml; n[2] = mz * ml;
+}
+
+const alpha = new Float64Array(3);
+
+/** Whether `hit` on material `m` is cut away by its alpha mask. */
+export function maskedOut(textures: SurfaceTexture, m: Material, hit: SurfaceHit, ray: Ray): boolean {
+  const pbr = m.pbr;
+  if (pbr === undefined || pbr.alphaMode !== 'mask') return false;
+  let a = pbr.baseColor[3];
+  const bt = m.mapping === 'uv' ? readMap(pbr.baseColorTexture) : null;
+  if (bt !== null && textures.mapAt(bt.source.url, 'alpha', bt.transform, hit, ray, alpha) !== null) a *= alpha[0];
+  return a < pbr.alphaCutoff;
+}
+
+/** How many cut-away surfaces of one object a ray goes through before it is taken as hitting none. */
+export const MAX_CUTS = 64;
+
+/**
+ * After `tracer`'s hit in `hit` on an object of material `m`: on past each of its surfaces the mask cuts away (up to MAX_CUTS),
+ * the next one in `hit`; false when none is left.
+ */
+export function keptHit(tracer: ObjectTracer, textures: SurfaceTexture, m: Material, ray: Ray, clipSide: number, plane: Plane | null, hit: SurfaceHit): boolean {
+  for (let cut = 0; maskedOut(textures, m, hit, ray); cut++) {
+    if (cut === MAX_CUTS || !tracer.hit(ray, hit.t * (1 + 1e-9) + 1e-9, clipSide, plane, hit)) return false;
+  }
+  return true;
 }

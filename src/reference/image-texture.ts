@@ -16,11 +16,12 @@ export interface ChannelTexture {
  * linear light with `srgb` (docs/colour.md#srgb: an image is colour data), used as stored with `none`.
  * Null when the pixels do not match the size (the caller falls back to the procedural texture).
  */
-export function imageTexture(image: DecodedImage, colorSpace: ColorSpace): ChannelTexture | null {
+export function imageTexture(image: DecodedImage, colorSpace: ColorSpace, alpha = false): ChannelTexture | null {
   const { width: w, height: h, data } = image;
-  const levels = byteLevels(colorSpace);
+  const levels = byteLevels(alpha ? 'none' : colorSpace);
   if (!(w >= 1 && h >= 1 && Number.isInteger(w) && Number.isInteger(h)) || data.length < w * h * 4) return null;
-  const channels = [0, 1, 2].map((c) => {
+  // `alpha`: the alpha channel as stored, in all three (glTF's alpha mask, docs/gltf.md#alpha).
+  const channels = (alpha ? [3, 3, 3] : [0, 1, 2]).map((c) => {
     const grey = new Float64Array(w * h);
     // Stryker disable next-line EqualityOperator: a row j = h would be written past the end of grey (w·h long): dropped
     for (let j = 0; j < h; j++) {

@@ -11,7 +11,7 @@ import { Ray } from './ray';
 import { RayScene } from './ray-scene';
 import { colourCeiling, type ViewState } from './reference-state';
 import { clamp01, clampTo, composeGlass, glassFresnel, prepareLight, shadeObject, type EnvironmentShading, type PreparedLight } from './shade';
-import { shadeGltf } from './gltf-surface';
+import { keptHit, shadeGltf } from './gltf-surface';
 import type { SurfaceCodes } from './surface-codes';
 import { SurfaceHit, SURFACE_NONE } from './surface-hit';
 import { Layer } from './layer';
@@ -262,7 +262,7 @@ export class SampleTracer {
     for (let i = 0; i < tracers.length; i++) {
       // A mirrored path (clipSide ≠ 0) passes through an object kept out of the reflection.
       if (clipSide !== 0 && objects[i].reflected === false) continue;
-      if (!tracers[i].hit(ray, tMin, clipSide, plane, spare)) continue;
+      if (!tracers[i].hit(ray, tMin, clipSide, plane, spare) || !keptHit(tracers[i], this.texture, objects[i].material, ray, clipSide, plane, spare)) continue;
       if (best === null || spare.t < best.t) {
         const free: SurfaceHit = best ?? (spare === layer.a ? layer.b : layer.a);
         best = spare;

@@ -25,6 +25,7 @@ export class SurfaceTexture {
   readonly procedural: ChannelTexture;
   private readonly images = new Map<string, ChannelTexture | null>();
   private readonly maps: Record<ColorSpace, Map<string, ChannelTexture | null>> = { srgb: new Map(), none: new Map() };
+  private readonly alphas = new Map<string, ChannelTexture | null>();
   private readonly edge1 = new Float64Array(2);
   private readonly edge2 = new Float64Array(2);
   private readonly uv = new Float64Array(2);
@@ -66,13 +67,14 @@ export class SurfaceTexture {
    * null: none) into `out` (docs/gltf.md#drawing): decoded to linear light when it is `colour` in an srgb frame, as stored
    * otherwise; null when its image is missing or malformed (the factor alone).
    */
-  mapAt(url: string, colour: boolean, m: readonly number[] | null, hit: SurfaceHit, ray: Ray, out: Float64Array): Float64Array | null {
-    const space = colour ? this.colorSpace : 'none', built = this.maps[space];
+  mapAt(url: string, colour: boolean | 'alpha', m: readonly number[] | null, hit: SurfaceHit, ray: Ray, out: Float64Array): Float64Array | null {
+    // 'alpha': the image's alpha channel as stored, in out[0..2] (glTF's alpha mask, docs/gltf.md#alpha).
+    const space = colour === true ? this.colorSpace : 'none', built = colour === 'alpha' ? this.alphas : this.maps[space];
     let tex = built.get(url);
     // Stryker disable next-line ConditionalExpression: decoding it again gives the same texture (the cache saves the time)
     if (tex === undefined) {
       const image = this.decoded.get(url);
-      tex = image === undefined ? null : imageTexture(image, space);
+      tex = image === undefined ? null : imageTexture(image, space, colour === 'alpha');
       built.set(url, tex);
     }
     if (tex === null) return null;

@@ -61,6 +61,8 @@ export class PbrMapsGl {
     // White stands for a missing map: flat only at scale 0 (its 2·1 − 1 = 1 in x and y too).
     gl.uniform1f(p.location('uNormalScale'), normal === this.white ? 0 : m.normalScale);
     gl.uniform1f(p.location('uOcclusionStrength'), m.occlusionStrength);
+    // The ALPHA_MASK variant's (docs/gltf.md#alpha): the base colour factor's alpha and the cutoff.
+    gl.uniform2f(p.location('uAlphaMask'), m.baseColor[3], m.alphaCutoff);
     rows(0, m.baseColorTexture);
     rows(1, m.metallicRoughnessTexture);
     rows(2, m.occlusionTexture);

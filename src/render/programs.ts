@@ -41,6 +41,8 @@ export interface ObjectVariant {
   normalMap: boolean;
   /** A glTF material on a mesh with vertex colours (docs/gltf.md#vertex-colours). */
   vertexColors: boolean;
+  /** A glTF material of alphaMode `mask` (docs/gltf.md#alpha): fragments under the cutoff discarded. */
+  alphaMask: boolean;
 }
 
 function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant, pbr: string | null, environment: string | null): string[] {
@@ -54,6 +56,7 @@ function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant, pbr:
   if (environment !== null) header.push('#define ENVIRONMENT');
   if (pbr !== null && v.normalMap) header.push('#define NORMAL_MAP');
   if (pbr !== null && v.vertexColors) header.push('#define VERTEX_COLORS');
+  if (pbr !== null && v.alphaMask) header.push('#define ALPHA_MASK');
   header.push(`#define LIGHT_COUNT ${v.lights}`, `#define MAPPING_${v.mapping.toUpperCase()}`);
   for (let i = 0; i < MAX_LIGHTS; i++) header.push(`#define LIGHT${i}_POINT ${(v.pointMask >> i) & 1 ? 'true' : 'false'}`);
   header.push(lighting);
@@ -129,11 +132,11 @@ export class ProgramCache {
     const variants = ((this.standards[clip] ??= {})[shading] ??= []);
     const lights = Math.max(1, Math.min(MAX_LIGHTS, v.lights));
     const points = v.pointMask & ((1 << lights) - 1);
-    const env = v.pbr && v.environment, normalMap = v.pbr && v.normalMap, colors = v.pbr && v.vertexColors;
-    const kind = v.pbr ? 1 + (env ? 1 : 0) + (normalMap ? 2 : 0) + (colors ? 4 : 0) : 0;
-    const i = 2 * kind + (v.twoSided ? 1 : 0) + 18 * (lights - 1 + MAX_LIGHTS * (points + (1 << MAX_LIGHTS) * MAPPINGS.indexOf(v.mapping)));
+    const env = v.pbr && v.environment, normalMap = v.pbr && v.normalMap, colors = v.pbr && v.vertexColors, mask = v.pbr && v.alphaMask;
+    const kind = v.pbr ? 1 + (env ? 1 : 0) + (normalMap ? 2 : 0) + (colors ? 4 : 0) + (mask ? 8 : 0) : 0;
+    const i = 2 * kind + (v.twoSided ? 1 : 0) + 34 * (lights - 1 + MAX_LIGHTS * (points + (1 << MAX_LIGHTS) * MAPPINGS.indexOf(v.mapping)));
     return (variants[i] ??= this.build(
-      `standard:${clip}:${shading}${v.twoSided ? ':two-sided' : ''}${v.pbr ? ':pbr' : ''}${env ? ':environment' : ''}${normalMap ? ':normal-map' : ''}${colors ? ':vertex-colours' : ''}:lights${lights}/${points}:${v.mapping}`,
+      `standard:${clip}:${shading}${v.twoSided ? ':two-sided' : ''}${v.pbr ? ':pbr' : ''}${env ? ':environment' : ''}${normalMap ? ':normal-map' : ''}${colors ? ':vertex-colours' : ''}${mask ? ':alpha-mask' : ''}:lights${lights}/${points}:${v.mapping}`,
       standardVert, standardFrag,
       standardHeader(clip, shading, { ...v, lights, pointMask: points }, v.pbr ? this.pbrSource() : null, env ? this.environmentSource() : null),
     ));

@@ -1,6 +1,6 @@
 // The textures an object draws with on the CPU: its texture (the procedural one, an image, or white) and a glTF material's
 // maps (docs/gltf.md#drawing), each image built into a MipTexture once per colour space it is read in.
-import { imageMipTexture, proceduralMipTexture, type MipTexture } from './mip-texture';
+import { imageAlphaMipTexture, imageMipTexture, proceduralMipTexture, type MipTexture } from './mip-texture';
 import type { ColorSpace } from '../math/srgb';
 import type { DecodedImage, SceneImages } from '../scene/decoded-image';
 import { readMap, type PbrMaterial } from '../scene/pbr-material';
@@ -20,10 +20,13 @@ export interface PbrMaps {
   emissive: MipTexture | null;
   /** A tangent-space normal (2·RGB − 1): data, as stored. */
   normal: MipTexture | null;
+  /** The base colour image's alpha, as stored: read only under alphaMode `mask` (docs/gltf.md#alpha). */
+  alpha: MipTexture | null;
 }
 
 export class ImageTextures {
   private readonly built: Record<ColorSpace, WeakMap<DecodedImage, MipTexture | null>> = { srgb: new WeakMap(), none: new WeakMap() };
+  private readonly alphas = new WeakMap<DecodedImage, MipTexture | null>();
 
   /** The texture `m` draws with in `space`: white without one, the procedural one while its image is missing (unless it falls back to none). */
   base(m: Material, images: SceneImages | null | undefined, space: ColorSpace): MipTexture {
@@ -40,6 +43,11 @@ export class ImageTextures {
     out.occlusion = this.map(pbr?.occlusionTexture, images, 'none');
     out.emissive = this.map(pbr?.emissiveTexture, images, space);
     out.normal = this.map(pbr?.normalTexture, images, 'none');
+    const base = pbr?.alphaMode === 'mask' ? readMap(pbr.baseColorTexture) : null, image = base === null ? undefined : images?.get(base.source.url);
+    let alpha = image === undefined ? null : this.alphas.get(image);
+    // Stryker disable next-line ConditionalExpression: building it again gives the same texture (the cache saves the time)
+    if (image !== undefined && alpha === undefined) this.alphas.set(image, (alpha = imageAlphaMipTexture(image)));
+    out.alpha = alpha ?? null;
   }
 
   private map(t: PbrMaterial['emissiveTexture'] | undefined, images: SceneImages | null | undefined, space: ColorSpace): MipTexture | null {

@@ -170,17 +170,27 @@ export function proceduralMipTexture(space: ColorSpace): MipTexture {
  * match the size.
  */
 export function imageMipTexture(image: DecodedImage, space: ColorSpace): MipTexture | null {
+  return fromImage(image, space, false);
+}
+
+/** The image's alpha channel, as stored (0..1), with imageMipTexture's orientation: what glTF's alpha mask reads (docs/gltf.md#alpha). */
+export function imageAlphaMipTexture(image: DecodedImage): MipTexture | null {
+  return fromImage(image, 'none', true);
+}
+
+function fromImage(image: DecodedImage, space: ColorSpace, alpha: boolean): MipTexture | null {
   const { width: w, height: h, data } = image;
   if (!(w >= 1 && h >= 1 && Number.isInteger(w) && Number.isInteger(h)) || data.length < w * h * 4) return null;
-  const rgb = new Float32Array(w * h * 3), level = byteTable(space);
+  const channels = alpha ? 1 : 3, rgb = new Float32Array(w * h * channels), level = byteTable(space);
   // Stryker disable next-line EqualityOperator: j = h writes past rgb's end, which a Float32Array drops
   for (let j = 0; j < h; j++) {
     const row = (h - 1 - j) * w;
     // Stryker disable next-line EqualityOperator: i = w writes the next row's first texel, written again with that row (or past the end)
     for (let i = 0; i < w; i++) {
+      if (alpha) rgb[j * w + i] = level[data[(row + i) * 4 + 3]];
       // Stryker disable next-line EqualityOperator: k = 3 writes the next texel's red, written again with it (or past the end)
-      for (let k = 0; k < 3; k++) rgb[(j * w + i) * 3 + k] = level[data[(row + i) * 4 + k]];
+      else for (let k = 0; k < 3; k++) rgb[(j * w + i) * 3 + k] = level[data[(row + i) * 4 + k]];
     }
   }
-  return new MipTexture(3, w, h, rgb, space === 'srgb');
+  return new MipTexture(channels, w, h, rgb, space === 'srgb');
 }

@@ -7,7 +7,7 @@ import type { MeshData } from '../scene/geometry/mesh-data';
 import type { Bounds, Material } from '../scene/scene';
 import type { Shading } from '../frame/types';
 import { blinnPhong, type Lights } from './lighting';
-import { pbrFragment } from './pbr-fragment';
+import { maskedOut, pbrFragment } from './pbr-fragment';
 import type { PbrMaps } from './image-textures';
 import type { MipTexture } from './mip-texture';
 import { CLIP_DISTANCE, VARYINGS, type FragmentShader, type Rasterizer } from './raster';
@@ -136,8 +136,9 @@ export class ObjectShader implements FragmentShader {
     r.userClip = d.clipPlane !== null;
     r.derivatives = true;
     this.cache = null;
-    // Opaque draws only: their colour goes to the Float32 target as it is (no blend, no codes).
-    if (d.cache !== null && this.codes === null && d.material.opacity >= 1 && !timing?.constantFragments) {
+    // Opaque draws only: their colour goes to the Float32 target as it is (no blend, no codes); not a mask's, whose cut-away
+    // fragments leave nothing to keep.
+    if (d.cache !== null && this.codes === null && d.material.opacity >= 1 && d.material.pbr?.alphaMode !== 'mask' && !timing?.constantFragments) {
       const n = r.shadeEvery;
       d.cache.begin(d.index, objectKey(d, r, this.top, this.key, this.keyObjects), this.keyObjects, (r.width / n) * (r.height / n));
       if (d.cache.current !== 0) this.cache = d.cache;
@@ -214,13 +215,14 @@ export class ObjectShader implements FragmentShader {
     }
   }
 
-  fragment(pixel: number, r: Rasterizer): void {
+  /** False: cut away by glTF's alpha mask (nothing written; the rasterizer takes its depth back). */
+  fragment(pixel: number, r: Rasterizer): boolean {
     const cache = this.cache, entry = cache === null ? 0 : r.pixelOf(pixel);
     if (cache !== null && cache.has(entry, r.face)) {
       const c = cache.rgb, o = 3 * entry;
       this.cr = c[o]; this.cg = c[o + 1]; this.cb = c[o + 2];
       this.repeat(pixel);
-      return;
+      return true;
     }
     const d = this.draw, p = r.poly, b0 = r.b0, b1 = r.b1, b2 = r.b2;
     const i0 = r.o0, i1 = r.o1, i2 = r.o2;
@@ -245,6 +247,7 @@ export class ObjectShader implements FragmentShader {
       for (let k = 0; k < 6; k++) sums[k] = b0 * p[i0 + k] + b1 * p[i1 + k] + b2 * p[i2 + k];
     }
     const tex = this.texture(r);
+    if (pbr !== undefined && maskedOut(pbr, d.maps, d.material.mapping === 'uv' ? this.lookup : null)) return false;
     // The 8-bit target's clamp, inline (a helper's double result is boxed when not inlined).
     // Emitted light adds to the lit colour (docs/gltf.md#drawing); without it, nothing is added.
     const e = d.material.emissive;
@@ -281,6 +284,7 @@ export class ObjectShader implements FragmentShader {
       this.code = h > 0 ? h / (1 + h) : 0;
     }
     this.repeat(pixel);
+    return true;
   }
 
   /** Writes the last fragment's colour at `sample` (blended by the material's opacity). */

@@ -4,7 +4,7 @@
 import { pbrLights, type Lights } from './lighting';
 import type { PbrMaps } from './image-textures';
 import type { MipTexture } from './mip-texture';
-import { readMap, type PbrTexture } from '../scene/pbr-material';
+import { readMap, type PbrMaterial, type PbrTexture } from '../scene/pbr-material';
 import type { Material } from '../scene/scene';
 
 const texel = new Float64Array(3), surface = new Float64Array(3), base = new Float64Array(3), moved = new Float64Array(6);
@@ -44,6 +44,17 @@ export function pbrFragment(
   } else {
     out[0] += e[0]; out[1] += e[1]; out[2] += e[2];
   }
+}
+
+/**
+ * glTF's alpha mask (docs/gltf.md#alpha): whether the fragment is cut away — under alphaMode `mask`, the base colour's alpha
+ * (its factor times its texture's alpha, read as the base colour is, where `lookup` is given) below the cutoff.
+ */
+export function maskedOut(pbr: PbrMaterial, maps: PbrMaps, lookup: Float64Array | null): boolean {
+  if (pbr.alphaMode !== 'mask') return false;
+  let a = pbr.baseColor[3];
+  if (lookup !== null && maps.alpha !== null) a *= sampleAt(maps.alpha, pbr.baseColorTexture, lookup)[0];
+  return a < pbr.alphaCutoff;
 }
 
 /**

@@ -13,7 +13,8 @@ export type CullMode = 'none' | 'back';
 
 /** Called for every pixel that passes the mask and the depth test; reads the rasterizer's fields. */
 export interface FragmentShader {
-  fragment(pixel: number, r: Rasterizer): void;
+  /** False: the fragment is discarded (glTF's alpha mask): nothing written, and its depth taken back. */
+  fragment(pixel: number, r: Rasterizer): boolean | void;
   /** Multisampling (Rasterizer.shadeEvery > 1): writes the result of the last `fragment` call at `sample`, another covered
    *  sample of the same pixel and triangle (blending with what that sample holds). Absent: `fragment` is called for every sample. */
   repeat?(sample: number): void;
@@ -257,9 +258,9 @@ export class Rasterizer {
    * to a call that is not inlined are boxed, one allocation per fragment), perspective-correcting
    * them first unless `barycentrics` is off.
    */
-  private shade(pixel: number, shader: FragmentShader): void {
+  private shade(pixel: number, shader: FragmentShader): boolean {
     if (this.barycentrics) this.perspective();
-    shader.fragment(pixel, this);
+    return shader.fragment(pixel, this) !== false;
   }
 
   /** b0..b2 (and, with `derivatives`, their derivatives per pixel) from l0 and l1. */
@@ -314,9 +315,10 @@ export class Rasterizer {
             // Rounded as the Float32 buffer stores it, so equal depths compare equal (LESS fails).
             const z = Math.fround(l0 * z0 + l1 * z1 + l2 * z2 + depthBias);
             if (!depthTest || z < depth[pixel]) {
+              const before = depth[pixel];
               if (depthWrite) depth[pixel] = z;
               this.l0 = l0; this.l1 = l1; this.z = z;
-              this.shade(pixel, shader);
+              if (!this.shade(pixel, shader)) depth[pixel] = before;
             }
           }
         }
@@ -328,7 +330,7 @@ export class Rasterizer {
    * `scan` for a multisampled target (shadeEvery = n > 1): the box's samples visited pixel by
    * pixel (n×n at a time), each sample covered by the top-left rule and depth-tested on its own;
    * the first that passes is shaded, with derivatives per pixel (n samples), the others take
-   * `repeat`. Rows of pixels are bounded by the union of their sample rows' covered runs.
+   * `repeat`, or are cut with it (a GPU's discard). Rows of pixels are bounded by the union of their sample rows' runs.
    */
   private scanPixels(i: number, j: number, k: number, area: number, px0: number, px1: number, py0: number, py1: number, shader: FragmentShader): void {
     const n = this.shadeEvery;
@@ -364,7 +366,7 @@ export class Rasterizer {
       // Whole pixels covering the run.
       const xFirst = qx0 + Math.floor(k0 / n) * n, xLast = Math.min(qx0 + k1, width - 1);
       for (let px = xFirst; px <= xLast; px += n) {
-        let shaded = false;
+        let shaded = false, cut = false;
         const dx = px - qx0;
         for (let sy = 0; sy < n; sy++) {
           const yy = y + sy;
@@ -378,7 +380,8 @@ export class Rasterizer {
             if (mask !== null && mask[sample] === 0) continue;
             const l0 = e0 * inv, l1 = e1 * inv, l2 = 1 - l0 - l1;
             const z = Math.fround(l0 * z0 + l1 * z1 + l2 * z2 + depthBias);
-            if (depthTest && !(z < depth[sample])) continue;
+            if ((depthTest && !(z < depth[sample])) || cut) continue;
+            const before = depth[sample];
             if (depthWrite) depth[sample] = z;
             if (shaded && repeat) {
               shader.repeat!(sample);
@@ -388,7 +391,7 @@ export class Rasterizer {
             // Shaded at the pixel's centre, as a GPU interpolates without `centroid` (off the
             // triangle at its edges): a sample's offset would shift textures by a part of a pixel.
             this.l0 = (row0 + dx * stepX0 + centre0) * inv; this.l1 = (row1 + dx * stepX1 + centre1) * inv; this.z = z;
-            this.shade(sample, shader);
+            if (!this.shade(sample, shader)) { depth[sample] = before; cut = true; }
           }
         }
       }

@@ -99,7 +99,7 @@ export class SoftwareRenderer {
       mesh: { positions: new Float32Array(0), normals: new Float32Array(0), uvs: new Float32Array(0), indices: new Uint16Array(0) },
       model: new Float64Array(16), normal: new Float64Array(9), eye: [0, 0, 0], view: [0, 0, 0, 1], viewProjection: new Float64Array(16),
       clipPlane: null, material: undefined as unknown as ObjectDraw['material'], bounds: { center: [0, 0, 0], radius: 1 },
-      texture: this.glassShader.texture, twoSided: false, shading: 'phong', lights: this.lightsMain, cache: null, index: 0, maps: { metalRough: null, occlusion: null, emissive: null, normal: null },
+      texture: this.glassShader.texture, twoSided: false, shading: 'phong', lights: this.lightsMain, cache: null, index: 0, maps: { metalRough: null, occlusion: null, emissive: null, normal: null, alpha: null },
     };
   }
   // Stryker restore StringLiteral,ArrayDeclaration,ObjectLiteral,BooleanLiteral

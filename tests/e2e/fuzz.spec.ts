@@ -195,7 +195,8 @@ test('1100 random values over every attribute and property: no exception, warnin
       projection: (v) => ['perspective', 'orthographic'].includes(v as string),
       toneMapping: (v) => ['auto', 'neutral', 'aces', 'none'].includes(v as string),
       exposure: (v) => inRange(v, 0, 64),
-      environment: (v) => ['neutral', 'none'].includes(v as string),
+      // A keyword, or a URL as written (trimmed, never empty: docs/pbr.md#an-image).
+      environment: (v) => typeof v === 'string' && v !== '' && v === v.trim(),
       environmentIntensity: (v) => inRange(v, 0, 64),
       alt: (v) => typeof v === 'string',
     };

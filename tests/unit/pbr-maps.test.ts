@@ -206,7 +206,7 @@ describe('a transform moves a lookup and its derivatives (the CPU renderer), by 
     const lookup = new Float64Array([0.1, 0.2, 0.01, 0.02, 0.03, 0.05]);
     const g = new Float64Array([0, 0, -4, 0, 0, 1, 0, 0, 1]);
     pbrFragment(lights, { ...box(pbr).objects[0].material, emissive: [1, 1, 1] }, false, g, recorder, [1, 1, 1], [1, 1, 1],
-      { metalRough: recorder, occlusion: recorder, emissive: recorder, normal: null }, new Float64Array(4), lookup, new Float64Array(3));
+      { metalRough: recorder, occlusion: recorder, emissive: recorder, normal: null, alpha: null }, new Float64Array(4), lookup, new Float64Array(3));
     // (0.1, 0.2) → (2·0.1 + 3·0.2 + 0.5, −0.1 + 4·0.2 + 0.25) = (1.3, 0.95); ∂/∂x (0.01, 0.02) → (0.08, 0.07); ∂/∂y (0.03, 0.05) → (0.21, 0.17).
     const want = [1.3, 0.95, 0.08, 0.07, 0.21, 0.17];
     expect(asked.length, 'the base colour texture and three maps').toBe(4);

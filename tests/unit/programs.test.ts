@@ -11,7 +11,7 @@ import { fakeGl } from './helpers/fake-gl';
 const CLIPS: ClipMode[] = ['none', 'clip-distance', 'discard'];
 const SHADINGS: Shading[] = ['phong', 'gouraud', 'flat'];
 /** The default scene's draws: one-sided, one light, UV mapping. */
-const V: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false, normalMap: false, vertexColors: false };
+const V: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false, normalMap: false, vertexColors: false, alphaMask: false };
 
 describe('ProgramCache', () => {
   it('compiles each variant once and returns the same program after', () => {
@@ -125,6 +125,24 @@ describe('ProgramCache', () => {
     const defined = sources.filter((src) => src.includes('#define NORMAL_MAP\n'));
     expect(defined.length).toBe(2 * 8); // eight programs (four without vertex colours, four with), a vertex and a fragment shader each
     for (const src of defined) expect(src).toContain('// the PBR part');
+  });
+
+  it('a glTF material\'s alpha mask is a variant of its own, combined with every other, at every light count and mapping (docs/gltf.md#alpha)', () => {
+    const { gl, sources } = fakeGl();
+    const cache = new ProgramCache(gl, SharedResources.acquire(gl));
+    cache.setPbrSources('// the PBR part', '// the tone map part');
+    cache.setEnvironmentSource('// the environment part');
+    const M = { ...V, pbr: true, alphaMask: true };
+    expect(cache.standard('none', 'phong', M).name).toBe('standard:none:phong:pbr:alpha-mask:lights1/0:uv');
+    const flags = [false, true];
+    const all = flags.flatMap((environment) => flags.flatMap((normalMap) => flags.flatMap((vertexColors) => flags.flatMap((alphaMask) =>
+      flags.map((twoSided) => cache.standard('none', 'phong', { ...V, pbr: true, environment, normalMap, vertexColors, alphaMask, twoSided }))))));
+    expect(new Set(all).size).toBe(32);
+    // The index leaves no gap and no overlap with the next light count or mapping.
+    const lit = [1, 2].flatMap((lights) => (['uv', 'triplanar'] as const).map((mapping) => cache.standard('none', 'phong', { ...M, lights, mapping, environment: true, normalMap: true, vertexColors: true, twoSided: true })));
+    expect(new Set([...all, ...lit]).size).toBe(32 + 3);
+    expect(cache.standard('none', 'phong', { ...V, alphaMask: true })).toBe(cache.standard('none', 'phong', V));
+    expect(sources.filter((src) => src.includes('#define ALPHA_MASK\n')).length).toBe(2 * (16 + 3));
   });
 
   it('dispose deletes every program and shader', () => {

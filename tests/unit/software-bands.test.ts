@@ -44,7 +44,7 @@ describe('Rasterizer.top and bottom', () => {
     const v = new Float64Array(4 * VARYINGS);
     [[-1, -1], [1, -1], [1, 1], [-1, 1]].forEach(([x, y], i) => { v[i * VARYINGS] = x; v[i * VARYINGS + 1] = y; v[i * VARYINGS + 3] = 1; });
     const rows = new Array<number>(30).fill(0);
-    const count = (sample: number) => rows[Math.floor(sample / 40)]++;
+    const count = (sample: number) => { rows[Math.floor(sample / 40)]++; };
     r.drawTriangles(v, [0, 1, 2, 0, 2, 3], 6, { fragment: count, repeat: count });
     return rows;
   }

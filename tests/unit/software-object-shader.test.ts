@@ -67,7 +67,7 @@ function draw(o: Partial<ObjectDraw> = {}): ObjectDraw {
   return {
     mesh: quad(UP), model: identity4(), normal: identity3(), eye: [0, 0, 2], view: [0, 0, 1, 0], viewProjection: VP(),
     clipPlane: null, material: material(), bounds: { center: [0, 0, 0], radius: 1 }, texture: WHITE, twoSided: false,
-    shading: 'phong', lights: AMBIENT_ONLY(), cache: null, index: 0, maps: { metalRough: null, occlusion: null, emissive: null, normal: null }, ...o,
+    shading: 'phong', lights: AMBIENT_ONLY(), cache: null, index: 0, maps: { metalRough: null, occlusion: null, emissive: null, normal: null, alpha: null }, ...o,
   };
 }
 
@@ -570,7 +570,7 @@ describe('the frame-to-frame cache', () => {
     // The environment and the maps are keyed by identity: markers stand for them.
     const lit = AMBIENT_ONLY(), env = {} as NonNullable<Lights['environment']>;
     lit.environment = env;
-    const maps = { metalRough: {} as MipTexture, occlusion: {} as MipTexture, emissive: {} as MipTexture, normal: {} as MipTexture };
+    const maps = { metalRough: {} as MipTexture, occlusion: {} as MipTexture, emissive: {} as MipTexture, normal: {} as MipTexture, alpha: null };
     s.render(base({ cache, index: 3, lights: lit, maps }), r);
     // 8×12 samples at 2×2 a pixel: 4×6 = 24 pixels.
     expect(begin).toHaveBeenCalledWith(3, expect.any(Float64Array), expect.any(Array), 24);

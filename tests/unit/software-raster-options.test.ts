@@ -399,13 +399,13 @@ describe('a rasterizer reused', () => {
     const fresh = target(8, 8);
     fresh.stride = 20;
     const want: number[] = [];
-    fresh.drawTriangles(wide(20), [0, 1, 2], 3, { fragment: (_p, r) => want.push(last(r)) });
+    fresh.drawTriangles(wide(20), [0, 1, 2], 3, { fragment: (_p, r) => { want.push(last(r)); } });
     const reused = target(8, 8);
     reused.drawTriangles(wide(VARYINGS), [0, 1, 2], 3, new Log());
     reused.clearDepth();
     reused.stride = 20;
     const got: number[] = [];
-    reused.drawTriangles(wide(20), [0, 1, 2], 3, { fragment: (_p, r) => got.push(last(r)) });
+    reused.drawTriangles(wide(20), [0, 1, 2], 3, { fragment: (_p, r) => { got.push(last(r)); } });
     expect(got.length).toBeGreaterThan(10);
     expect(Math.min(...want)).toBeGreaterThan(1);
     expect(Math.max(...want)).toBeLessThan(3);

@@ -18,7 +18,7 @@ export function prepareObjectPrograms(ctx: PassContext, clip: ClipMode): void {
 }
 
 /** The object's variant, filled in place (no allocation per draw). */
-const variant: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false, normalMap: false, vertexColors: false };
+const variant: ObjectVariant = { twoSided: false, lights: 1, pointMask: 0, mapping: 'uv', pbr: false, environment: false, normalMap: false, vertexColors: false, alphaMask: false };
 function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
   variant.twoSided = drawnTwoSided(o);
   variant.lights = ctx.setup.lightCount;
@@ -34,6 +34,7 @@ function variantOf(ctx: PassContext, o: SceneObject): ObjectVariant {
   // Under another mapping no map is read (docs/gltf.md#the-maps).
   variant.normalMap = variant.pbr && g.kind === 'mesh' && !!g.data.tangents && o.material.mapping === 'uv' && o.material.pbr!.normalTexture?.texCoord === 0;
   variant.vertexColors = variant.pbr && g.kind === 'mesh' && !!g.data.colors;
+  variant.alphaMask = variant.pbr && o.material.pbr!.alphaMode === 'mask';
   return variant;
 }
 
