@@ -8,6 +8,7 @@ const CHUNK = 'tests/e2e/pbr-chunk.spec.ts';
 const ENV = 'tests/e2e/environment.spec.ts';
 const MAPS = 'tests/e2e/pbr-maps.spec.ts';
 const MASK = 'tests/e2e/alpha-mask.spec.ts';
+const SKY = 'tests/e2e/environment-image.spec.ts';
 const GLSL = 'GLSL: Stryker does not mutate shader source (shaders/)';
 
 export default [
@@ -250,5 +251,23 @@ export default [
     why: 'a uniform of WebGL: only a browser draws it',
     edits: [{ file: 'src/render/pbr-maps-gl.ts', find: "gl.uniform2f(p.location('uAlphaMask'), m.baseColor[3], m.alphaCutoff);", replace: "gl.uniform2f(p.location('uAlphaMask'), m.baseColor[3], 0);" }],
     tests: [MASK],
+  },
+  {
+    name: 'P41 a PNG sky\'s bytes taken as linear light (not decoded from sRGB)',
+    why: 'the browser\'s image decoder: only a page decodes a PNG',
+    edits: [{ file: 'src/element/environment-files.ts', find: '    rgb[3 * k] = SRGB_BYTE_TO_LINEAR[px[4 * k]];', replace: '    rgb[3 * k] = px[4 * k] / 255;' }],
+    tests: [SKY],
+  },
+  {
+    name: 'P42 an environment file that fails leaves glTF materials without the studio',
+    why: 'the element in a page: a fetch that fails',
+    edits: [{ file: 'src/element/environment-files.ts', find: "    this.part = 'neutral';", replace: '    this.part = null;' }],
+    tests: [SKY],
+  },
+  {
+    name: 'P43 the environment file fetched for a scene without a glTF material',
+    why: 'a lazy chunk of the element: only a page fetches it',
+    edits: [{ file: 'src/element/parts.ts', find: 'needed: (h) => isEnvironmentUrl(h.values.environment) && hasPbrMaterial(h.scenes.current),', replace: 'needed: (h) => isEnvironmentUrl(h.values.environment),' }],
+    tests: [SKY],
   },
 ];

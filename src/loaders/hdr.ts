@@ -18,18 +18,20 @@ export const MAX_PIXELS = 1 << 24;
 /** The longest header read before giving up on finding its end. */
 const MAX_HEADER = 1 << 16;
 
-/** The file's lines from `start` up to the resolution line (CR LF or LF), with where the pixels begin. */
+/** The file's lines from `start` up to the resolution line, with where the pixels begin (a CR LF line keeps its CR: every reader trims or stops at white space). */
 function headerLines(b: Uint8Array, start: number, url: string): { lines: string[]; pixels: number } {
   const lines: string[] = [];
   const end = Math.min(b.length, start + MAX_HEADER);
   let p = start, blank = false;
+  // Stryker disable next-line EqualityOperator: at p = end the inner loop stops at once and q === end breaks out
   while (p < end) {
     let q = p;
+    // Stryker disable next-line EqualityOperator: b[end] is past the window (or undefined past the file): not LF, and q === end breaks out next
     while (q < end && b[q] !== 0x0a) q++;
     if (q === end) break;
     let text = '';
+    // Stryker disable next-line EqualityOperator: i = q adds the line's LF, which the readers of a line trim as they trim a CR
     for (let i = p; i < q; i++) text += String.fromCharCode(b[i]);
-    if (text.endsWith('\r')) text = text.slice(0, -1);
     lines.push(text);
     p = q + 1;
     // The line after the blank one is the resolution line: the pixels follow it.
@@ -60,6 +62,7 @@ const short = (at: At) => new LoadError(at.url, `the pixels end in scanline ${at
 function readRunLengthLine(at: At, line: Uint8Array): void {
   const { b, width } = at, n1 = at.s + 1;
   let p = at.p;
+  // Stryker disable next-line EqualityOperator: a marker with nothing after it stops at the first count instead, with the same error
   if (p + 4 > b.length) throw short(at);
   const said = (b[p + 2] << 8) | b[p + 3];
   if (said !== width) throw new LoadError(at.url, `scanline ${n1} says it is ${said} wide; the header says ${width}`);
@@ -75,6 +78,7 @@ function readRunLengthLine(at: At, line: Uint8Array): void {
       if (count > 128) {
         if (p >= b.length) throw short(at);
         const v = b[p++];
+        // Stryker disable next-line EqualityOperator: k = n writes the next pixel's byte of this channel, written again by the next run (or past the line: dropped)
         for (let k = 0; k < n; k++) line[4 * (x + k) + c] = v;
       } else {
         if (p + n > b.length) throw short(at);
@@ -98,6 +102,7 @@ function readFlatLine(at: At, line: Uint8Array): void {
       if (x === 0) throw new LoadError(at.url, `scanline ${n1} begins with a repeat (1, 1, 1, n) of no pixel`);
       const n = e * 2 ** shift;
       if (x + n > width) throw new LoadError(at.url, `a repeat goes past the end of scanline ${n1} (${width} wide)`);
+      // Stryker disable next-line EqualityOperator: k = n copies into the next pixel, written again when it is read (or past the line: dropped)
       for (let k = 0; k < n; k++) line.copyWithin(4 * (x + k), 4 * (x - 1), 4 * x);
       x += n;
       shift += 8;
@@ -115,11 +120,13 @@ export function parseHdr(bytes: ArrayBuffer | Uint8Array, options: { url: string
   // A UTF-8 byte-order mark some editors put before the header.
   const start = b[0] === 0xef && b[1] === 0xbb && b[2] === 0xbf ? 3 : 0;
   let first = start;
+  // Stryker disable next-line EqualityOperator,ConditionalExpression: b[b.length] is undefined: not white space, so the loop stops there anyway
   while (first < b.length && (b[first] === 0x20 || b[first] === 0x09 || b[first] === 0x0d || b[first] === 0x0a)) first++;
   if (b[first] === 0x3c) throw new LoadError(url, 'this is an HTML page, not a Radiance .hdr image (a server\'s error page?)');
   if (b[start] !== 0x23 || b[start + 1] !== 0x3f) throw new LoadError(url, 'not a Radiance .hdr image: it does not begin with "#?"');
 
   const { lines, pixels } = headerLines(b, start, url);
+  // Stryker disable next-line EqualityOperator,ArithmeticOperator: the resolution line (and lines past the last, undefined) never match FORMAT=
   for (let i = 0; i < lines.length - 1; i++) {
     const m = /^\s*FORMAT\s*=\s*(\S+)/.exec(lines[i]);
     if (m && m[1] !== '32-bit_rle_rgbe') throw new LoadError(url, `FORMAT=${m[1]}: only 32-bit_rle_rgbe (RGB) pixels are read`, i + 1);

@@ -114,6 +114,13 @@ test('a PNG sky lights the model as sRGB; files that cannot be read fire error n
   };
   const png = await picture('skies/sky.png');
   expect(png).toEqual({ errors: [], env: { kind: 'image', width: 64 } });
+  // Its bytes taken as sRGB: the texels the scene value holds are the sky's linear light again, to the 8-bit step.
+  const texels = await page.evaluate(() => {
+    const e = ([...document.querySelectorAll('glass-plane-scene')].pop() as unknown as { scene: Scene }).scene.environment;
+    return e?.kind === 'image' ? [...e.image.rgb.subarray(0, 3 * 64 * 32)] : [];
+  });
+  const sky = skyImage(64);
+  for (const k of [3 * (5 * 64 + 10), 3 * (28 * 64 + 40) + 2]) expect(Math.abs(texels[k] - sky.rgb[k]), `texel value ${k}`).toBeLessThan(0.01 * Math.max(0.1, sky.rgb[k]) + 0.002);
   for (const [file, message] of [['missing.hdr', /404/], ['page.hdr', /HTML/], ['cut.hdr', /scanline \d+ of 128/]] as const) {
     const got = await picture(`skies/${file}`);
     expect(got.env, file).toEqual({ kind: 'studio', width: 0 });

@@ -7,8 +7,8 @@ import { compareImages, renderScene } from '../../src/reference';
 import { SoftwareRenderer } from '../../src/software';
 import type { Scene } from '../../src/scene/scene';
 import type { DecodedImage } from '../../src/scene/decoded-image';
-import { BOX_STATE } from './helpers/pbr-scenes';
-import { lit } from './helpers/pbr-map-cases';
+import { BOX_STATE, withPbr } from './helpers/pbr-scenes';
+import { lit, map } from './helpers/pbr-map-cases';
 import { BASE, PLATE, columns, maskScene as scene, redOverClear } from './helpers/alpha-mask-scenes';
 
 const px = (x: number, y: number) => y * 33 + x;
@@ -111,3 +111,34 @@ describe('the base colour texture\'s alpha', () => {
     expect(whole.psnr.all, `unmasked: all ${whole.psnr.all.toFixed(1)} dB`).toBeLessThan(cmp.psnr.all - 10);
   });
 });
+
+describe('a ray through a cut surface meets the same object\'s next one', () => {
+  // One mesh of two quads facing the camera (BOX_STATE's, at z = 4): the front at z = 3.5 (half a unit away: a ray's t under 1,
+  // where a re-hit that did not step past the cut one would find it again), the back at z = 3.2. One material, MASK, a 2×1
+  // image: the left texel clear, the right opaque; the front quad's UVs all on the left texel, the back's all on the right.
+  const IMG = 'https://example.com/two texels.png';
+  const quad = (z: number, u: number) => ({ p: [-0.2, -0.2, z, 0.2, -0.2, z, 0.2, 0.2, z, -0.2, 0.2, z], uv: [u, 0.5, u, 0.5, u, 0.5, u, 0.5] });
+  const front = quad(3.5, 0.25), back = quad(3.2, 0.75);
+  const data = {
+    positions: new Float32Array([...front.p, ...back.p]), normals: new Float32Array(Array.from({ length: 8 }, () => [0, 0, 1]).flat()),
+    uvs: new Float32Array([...front.uv, ...back.uv]), indices: new Uint16Array([0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7]),
+  };
+  const image: DecodedImage = { width: 2, height: 1, data: new Uint8ClampedArray([255, 255, 255, 0, 255, 255, 255, 255]) };
+
+  it('the reference and the software renderer draw the back quad there, lit, not the plate behind', () => {
+    const base = scene({});
+    const masked = base.objects[0], pbr = { ...masked.material.pbr!, baseColorTexture: map(IMG), baseColor: [0.5, 0.5, 0.5, 1] as const };
+    const mesh = { ...masked, geometry: { kind: 'mesh' as const, key: 'two quads', data }, material: { ...withPbr(pbr, { kind: 'image', url: IMG, fallback: 'none' }) }, bounds: { center: [0, 0, 3.35] as const, radius: 0.4 } };
+    const s: Scene = { ...base, objects: [mesh, base.objects[1]] };
+    const got = draw(s, new Map([[IMG, image]]));
+    const lit = Math.round(lit3() * 255);
+    expect(got.soft[4 * CENTRE], 'software: the back quad').toBe(lit);
+    expect(got.ref[3 * CENTRE], 'reference: the back quad').toBeCloseTo(lit3(), 12);
+    // Both quads clear: the plate.
+    const clear: DecodedImage = { width: 2, height: 1, data: new Uint8ClampedArray([255, 255, 255, 0, 255, 255, 255, 0]) };
+    expectAt(draw(s, new Map([[IMG, clear]])), CENTRE, PLATE, 'both cut');
+  });
+});
+
+/** The box's face colour head-on (metallic 1, roughness 1, base ½): lit() of pbr-map-cases. */
+const lit3 = () => lit(0.5, 1, 1);

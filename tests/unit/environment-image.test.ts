@@ -75,3 +75,33 @@ describe('reading an environment image', () => {
     expect(mean(small.rgb)).toBeCloseTo(mean(rgb), 5);
   });
 });
+
+describe('the edges of the read and the reduction', () => {
+  /** w × h, green j² by row (not linear: an extrapolation from the wrong two rows shows), red the column. */
+  const squares = (w: number, h: number): EnvironmentImage => {
+    const rgb = new Float32Array(w * h * 3);
+    for (let j = 0; j < h; j++) for (let i = 0; i < w; i++) rgb.set([i, j * j, 0], 3 * (j * w + i));
+    return { width: w, height: h, rgb };
+  };
+
+  it('rows: the top and bottom held, between rows 2 and 3 their mean, one row and two rows read whole', () => {
+    const img = squares(8, 4);
+    expect(read(img, [0, 1, 0])[1]).toBe(0);
+    expect(read(img, [0, -1, 0])[1]).toBe(9);
+    // θ = 3π/4: v = ¾, y = 2.5: halfway between rows 2 and 3: (4 + 9)/2.
+    expect(read(img, [Math.SQRT1_2, -Math.SQRT1_2, 0])[1]).toBeCloseTo(6.5, 9);
+    // A direction a rounding past unit length: held, not NaN.
+    expect(read(img, [0, 1 + 2e-16, 0])[1]).toBe(0);
+    expect(read(img, [0, -1 - 2e-16, 0])[1]).toBe(9);
+    const one = squares(8, 1);
+    for (const y of [1, 0.3, -0.7, -1]) expect(read(one, [0, y, Math.sqrt(1 - y * y)])[1]).toBe(0);
+    const two = squares(8, 2);
+    expect(read(two, [0, -1, 0])[1]).toBe(1);
+    expect(read(two, [1, 0, 0])[1]).toBeCloseTo(0.5, 12);
+  });
+
+  it('a tall image is reduced by its height: 4 × 8 at most 8 wide is 2 × 4', () => {
+    const small = reduceImage(ramp(4, 8), 8);
+    expect([small.width, small.height]).toEqual([2, 4]);
+  });
+});

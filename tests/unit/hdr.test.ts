@@ -150,3 +150,91 @@ describe('the files the tests write (helpers/hdr-file.ts)', () => {
     }
   });
 });
+
+describe('the edges of the format (each a mutant of the reader once)', () => {
+  const ok = (bytes: Uint8Array) => parseHdr(bytes, { url: URL_ });
+  const px1 = flat([128, 128, 128, 129]);
+
+  it('a header past 64 kB without its blank line is refused, however it goes on', () => {
+    const comments = Array.from({ length: 1200 }, (_, i) => `# comment line ${i} ${'x'.repeat(50)}`);
+    expect(fails(file(['#?RADIANCE', ...comments], '-Y 1 +X 1', px1)).message).toMatch(/no resolution line/);
+  });
+
+  it('the line a missing resolution line is reported at: after the last whole line', () => {
+    expect(fails(enc.encode('#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n')).line).toBe(3);
+    expect(fails(enc.encode('#?RADIANCE\nFORMAT=32-bit_rle_rgbe')).line).toBe(2);
+  });
+
+  it('white space before an HTML page, and bytes that are almost a BOM, almost "#?"', () => {
+    for (const ws of ['\r\n', '\t', ' ', '\n']) expect(fails(enc.encode(`${ws}<html>`)).message).toMatch(/HTML/);
+    const header = file(HEADER, '-Y 1 +X 1', px1);
+    for (const three of [[0xef, 0xbb, 0x41], [0xef, 0x41, 0xbf], [0x41, 0xbb, 0xbf]]) {
+      expect(fails(new Uint8Array([...three, ...header])).message, three.join()).toMatch(/#\?/);
+    }
+    // Whole files but for their first two bytes: refused by those alone.
+    expect(fails(file(['#!RADIANCE'], '-Y 1 +X 1', px1)).message).toMatch(/#\?/);
+    expect(fails(file(['X?RADIANCE'], '-Y 1 +X 1', px1)).message).toMatch(/#\?/);
+  });
+
+  it('FORMAT: indented or spaced still read; in a comment not', () => {
+    expect(fails(file(['#?RADIANCE', '  FORMAT=32-bit_rle_xyze'], '-Y 1 +X 1', px1)).line).toBe(2);
+    expect(fails(file(['#?RADIANCE', 'FORMAT = 32-bit_rle_xyze'], '-Y 1 +X 1', px1)).line).toBe(2);
+    expect(ok(file(['#?RADIANCE', '# FORMAT=32-bit_rle_xyze (not this file)'], '-Y 1 +X 1', px1)).width).toBe(1);
+  });
+
+  it('the resolution line: spaces around it taken, more on it refused; column order told by its shape', () => {
+    expect(ok(file(HEADER, '  -Y 1 +X 1  ', px1)).width).toBe(1);
+    expect(fails(file(HEADER, '-Y 1 +X 1 junk', px1)).message).toMatch(/not a resolution line/);
+    expect(fails(file(HEADER, 'junk -Y 1 +X 1', px1)).message).toMatch(/not a resolution line/);
+    expect(fails(file(HEADER, '+X  12  -Y  12', px1)).message).toMatch(/column by column/);
+    expect(fails(file(HEADER, 'x +X 2 -Y 2', px1)).message).toMatch(/not a resolution line/);
+    expect(fails(file(HEADER, '+X 2 -Y 2 x', px1)).message).toMatch(/not a resolution line/);
+    expect(fails(file(HEADER, '-Y 2 +X 0', px1)).message).toMatch(/0 × 2/);
+  });
+
+  it('sizes: 4096 × 4096 is allowed (then short of bytes); the room reported', () => {
+    expect(fails(file(HEADER, '-Y 4096 +X 4096', px1)).message).toMatch(/4096 scanlines, but the 4 bytes after it hold at most 1$/);
+    expect(fails(file(HEADER, '-Y 3000 +X 4000', rleLine(4000, [[128 + 127, 1]]))).message).toMatch(/the 6 bytes after it hold at most 1$/);
+  });
+
+  it('run-length scanlines cut anywhere: in the marker, before a count, before a run\'s value, inside a literal', () => {
+    const cut = (tail: number[]) => fails(file(HEADER, '-Y 2 +X 8', [...rleLine(8, [[136, 1], [136, 1], [136, 1], [136, 1]]), ...tail])).message;
+    for (const tail of [[2, 2, 0, 8, 136], [2, 2, 0, 8], [2, 2, 0, 8, 136, 1, 136], [2, 2, 0, 8, 8, 1, 2, 3]]) {
+      expect(cut(tail), tail.join()).toMatch(/the pixels end in scanline 2 of 2/);
+    }
+    // In the last channel, where no later check would catch it: its count, its run's value, its literal.
+    const last = [2, 2, 0, 8, 136, 1, 136, 1, 136, 1];
+    for (const tail of [last, [...last, 136], [...last, 8, 1, 2, 3]]) expect(cut(tail), tail.join()).toMatch(/the pixels end in scanline 2 of 2/);
+    // The marker itself cut: three bytes of four.
+    expect(cut([2, 2, 0])).toMatch(/the pixels end in scanline 2 of 2/);
+  });
+
+  it('a literal of 128 bytes (the count 128 is a literal, not a run)', () => {
+    const w = 128, lit = [128, ...Array.from({ length: 128 }, (_, i) => i)];
+    const img = ok(file(HEADER, `-Y 1 +X ${w}`, rleLine(w, [lit, [128 + 127, 0, 129, 0], [128 + 127, 0, 129, 0], [128 + 127, 137, 129, 137]])));
+    expect(img.rgb[3 * 100] * 0.5 - 0.5).toBe(100);
+  });
+
+  it('which scanlines are run-length: only (2, 2, width < 32768) at a width of 8 or more; the rest flat', () => {
+    // 8 wide, flat, its first pixel (2, 2, 200, 137): the third byte's top bit says it is a pixel.
+    const first = [2, 2, 200, 137], rest = Array.from({ length: 7 }, () => [10, 20, 30, 137]).flat();
+    expect(ok(file(HEADER, '-Y 1 +X 8', [...first, ...rest])).rgb[2] * 0.5 - 0.5).toBe(200);
+    // 8 wide, flat, first pixel (2, 5, 0, 137): not the marker.
+    expect(ok(file(HEADER, '-Y 1 +X 8', [2, 5, 0, 137, ...rest])).rgb[1] * 0.5 - 0.5).toBe(5);
+    // 4 wide, flat, first pixel (2, 2, 0, 137): too narrow for run-length scanlines.
+    expect(ok(file(HEADER, '-Y 1 +X 4', [2, 2, 0, 137, 10, 20, 30, 137, 10, 20, 30, 137, 10, 20, 30, 137])).rgb[0] * 0.5 - 0.5).toBe(2);
+    // 32768 wide, flat: too wide for them (its width does not fit the marker's 15 bits).
+    const wide = new Uint8Array(32768 * 4);
+    for (let i = 0; i < 32768; i++) wide.set([2, 2, 0, 137], 4 * i);
+    const img = ok(file(HEADER, '-Y 1 +X 32768', [...wide]));
+    expect(img.rgb[3 * 32767] * 0.5 - 0.5).toBe(2);
+  });
+
+  it('flat pixels: a pixel with some channels 1 is a pixel; a third pixel lands third; repeats\' errors name their scanline', () => {
+    const img = ok(file(HEADER, '-Y 1 +X 5', flat([1, 2, 3, 137], [1, 1, 5, 137], [7, 8, 9, 137], [1, 5, 1, 137], [5, 1, 1, 137])));
+    expect(Array.from(img.rgb).map((v) => v * 0.5 - 0.5)).toEqual([1, 2, 3, 1, 1, 5, 7, 8, 9, 1, 5, 1, 5, 1, 1]);
+    const two = (second: number[]) => fails(file(HEADER, '-Y 2 +X 3', [...flat([5, 5, 5, 130], [5, 5, 5, 130], [5, 5, 5, 130]), ...second])).message;
+    expect(two(flat([1, 1, 1, 1]))).toMatch(/scanline 2 begins with a repeat/);
+    expect(two(flat([5, 5, 5, 130], [1, 1, 1, 5]))).toMatch(/a repeat goes past the end of scanline 2 \(3 wide\)/);
+  });
+});

@@ -4,7 +4,7 @@
 import { describe, expect, it } from 'vitest';
 import { imageLight } from '../../src/reference/image-light';
 import { environmentLight } from '../../src/reference/pbr-light';
-import type { EnvironmentImage } from '../../src/math/environment-image';
+import { imageDirection, type EnvironmentImage } from '../../src/math/environment-image';
 
 function lcg(seed: number): () => number {
   let s = seed;
@@ -67,5 +67,44 @@ describe("the reference's light from an image", () => {
       expect(Math.abs(a.mean[c] - b.mean[c])).toBeLessThan(4 * both);
       expect(a.error[c]).toBeLessThan(b.error[c] / 2);
     }
+  });
+});
+
+describe('the draw and its density by hand: a 4 × 2 image black but one blue texel (column 1, row 0)', () => {
+  // Luminance 0.0722 there. Across (⅛ ¾ ⅛, wrapping): row 0 is 1, 6, 1, 0 eighths of it; down (held at the edges): row 0's
+  // cells 7/8 of that, row 1's 1/8. Both rows' sin θ is sin(π/4). So the cells weigh 7, 42, 7, 0 / 1, 6, 1, 0: 64 in all.
+  const rgb = new Float32Array(4 * 2 * 3);
+  rgb[3 * 1 + 2] = 1;
+  const light = imageLight({ width: 4, height: 2, rgb }), d = new Float64Array(3);
+  const at = (u: number, v: number) => { imageDirection(d, u, v); return light.lights!.density(d[0], d[1], d[2]); };
+  const perShare = 8 / (2 * Math.PI * Math.PI * Math.SQRT1_2);
+
+  it('the density: each cell\'s share × 8 texels ÷ (2π² sin θ), 0 where the cell has none, 0 at the poles', () => {
+    expect(at(1.5 / 4, 0.25)).toBeCloseTo((42 / 64) * perShare, 12);
+    expect(at(0.5 / 4, 0.25)).toBeCloseTo((7 / 64) * perShare, 12);
+    expect(at(2.5 / 4, 0.25)).toBeCloseTo((7 / 64) * perShare, 12);
+    expect(at(0.5 / 4, 0.75)).toBeCloseTo((1 / 64) * perShare, 12);
+    expect(at(1.5 / 4, 0.75)).toBeCloseTo((6 / 64) * perShare, 12);
+    expect(at(3.5 / 4, 0.25)).toBe(0);
+    expect(light.lights!.density(0, 1, 0)).toBe(0);
+    expect(light.lights!.density(0, -1, 0)).toBe(0);
+    // −x, at u = 1 exactly (atan2(+0, −1) = π): the last column's cell, not past it.
+    expect(light.lights!.density(-1, 0, 0)).toBeCloseTo(0, 12);
+    expect(light.lights!.density(-Math.SQRT1_2, 0, Math.SQRT1_2 * 1e-9)).toBe(0);
+  });
+
+  it('the draw: (u, v) through the CDFs to a point uniform in the cell, where its share says', () => {
+    const uvOf = (u: number, v: number) => {
+      light.lights!.draw(d, u, v, 0.5);
+      return [0.5 + Math.atan2(d[2], d[0]) / (2 * Math.PI), Math.acos(d[1]) / Math.PI];
+    };
+    // v = 0.25: 16 of row 0's 56 cumulative → row 0, 16/56 of it; u = (7 + 42·¼)/56 → column 1, a quarter in.
+    const [u1, v1] = uvOf((7 + 42 * 0.25) / 56, (0.25 * 56) / 64);
+    expect(u1).toBeCloseTo((1 + 0.25) / 4, 12);
+    expect(v1).toBeCloseTo((0 + 0.25) / 2, 12);
+    // v past row 0's 56 of 64: row 1, (60 − 56)/8 = ½ into it; u = (1 + 6·0.8)/8: column 1, 0.8 in.
+    const [u2, v2] = uvOf((1 + 6 * 0.8) / 8, 60 / 64);
+    expect(u2).toBeCloseTo((1 + 0.8) / 4, 12);
+    expect(v2).toBeCloseTo((1 + 0.5) / 2, 12);
   });
 });
