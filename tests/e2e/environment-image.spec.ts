@@ -6,7 +6,7 @@
 import { PNG } from 'pngjs';
 import { test, expect, openPage, capture } from './fixtures';
 import { drawScene, openRendererPage } from './helpers/scene-json';
-import { mountHtml } from './helpers/scene-children';
+import { mountHtml, requestedFrame } from './helpers/scene-children';
 import { fetchedChunks } from './helpers/chunks';
 import { productGlb } from './helpers/gltf-models';
 import { elementScene } from './helpers/element-scene';
@@ -78,13 +78,7 @@ for (const renderer of ['webgl', 'software'] as const) {
     await openPage(page);
     const seen = await mount(page, renderer, 'skies/sky at noon.hdr');
     expect(seen.filter((e) => e.type === 'error')).toEqual([]);
-    for (let k = 0; k < 2; k++) {
-      await page.evaluate(() => new Promise((r) => {
-        const el = document.querySelector('glass-plane-scene') as unknown as HTMLElement & { requestRender(): void };
-        el.addEventListener('frame', r, { once: true });
-        el.requestRender();
-      }));
-    }
+    for (let k = 0; k < 2; k++) await requestedFrame(page);
     const image = await capture(page);
     const { scene, state, images } = await elementScene(page, image.width, image.height, { toneMapping: 'neutral' });
     const env = scene.environment!;

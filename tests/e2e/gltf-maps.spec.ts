@@ -3,7 +3,7 @@
 // renderer as the float64 reference draws the element's own scene value with the same images; `load` fires once the maps'
 // images are in, and the picture changes when they are.
 import { test, expect, openPage, capture } from './fixtures';
-import { mountHtml } from './helpers/scene-children';
+import { mountHtml, requestedFrame } from './helpers/scene-children';
 import { mapsGlb } from './helpers/gltf-models';
 import { elementScene } from './helpers/element-scene';
 import { expectPsnr, note } from './helpers/bounds';
@@ -18,11 +18,7 @@ const MEASURED = {
   software: { all: 38.7, objects: 39.5, glass: 53.4 },
 } as const;
 
-const nextFrame = (page: import('@playwright/test').Page) => page.evaluate(() => new Promise((r) => {
-  const el = document.querySelector('glass-plane-scene') as unknown as HTMLElement & { requestRender(): void };
-  el.addEventListener('frame', r, { once: true });
-  el.requestRender();
-}));
+const nextFrame = requestedFrame;
 
 test('the maps\' GLB is valid glTF', async () => {
   expect(await validationErrors(await mapsGlb())).toEqual([]);

@@ -3,7 +3,7 @@
 // draws the element's own scene value; a broken GLB is an `error` naming the file and the place,
 // the rest of the scene drawn; and only a glTF model fetches glTF's chunk.
 import { test, expect, openPage, capture } from './fixtures';
-import { mountHtml } from './helpers/scene-children';
+import { mountHtml, requestedFrame } from './helpers/scene-children';
 import { fetchedChunks } from './helpers/chunks';
 import { productGlb } from './helpers/gltf-models';
 import { renderScene, compareImages } from '../../src/reference';
@@ -36,13 +36,7 @@ for (const [renderer, environment] of [['webgl', 'neutral'], ['software', 'neutr
     expect(seen.filter((e) => e.target === 'glass-object' && e.type !== 'progress').map((e) => e.type)).toEqual(['load']);
     // A frame started after `load` has the texture. The first `frame` after a request may be one the CPU renderer's worker was
     // drawing already (its request went before the image): the second was started after.
-    for (let k = 0; k < 2; k++) {
-      await page.evaluate(() => new Promise((r) => {
-        const el = document.querySelector('glass-plane-scene') as unknown as HTMLElement & { requestRender(): void };
-        el.addEventListener('frame', r, { once: true });
-        el.requestRender();
-      }));
-    }
+    for (let k = 0; k < 2; k++) await requestedFrame(page);
     const image = await capture(page);
     // tone-mapping="auto" with a glTF material (docs/pbr.md#tone-mapping).
     const { scene, state, images } = await elementScene(page, image.width, image.height, { toneMapping: 'neutral' });

@@ -115,3 +115,10 @@ export async function nextEvent(page: Page, type: string, change: string, select
     new Function('el', change)(el);
   }), { type, change, selector });
 }
+
+/** Asks the page's first scene element for a frame and waits for its `frame` event (a frame started after this call). */
+export const requestedFrame = (page: Page): Promise<unknown> => page.evaluate(() => new Promise((r) => {
+  const el = document.querySelector('glass-plane-scene') as unknown as HTMLElement & { requestRender(): void };
+  el.addEventListener('frame', r, { once: true });
+  el.requestRender();
+}));
