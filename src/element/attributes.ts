@@ -6,6 +6,10 @@ import type { ToneMapping } from '../math/tone-map';
 import { clampPitch, wrapYaw, type Projection } from '../math/camera';
 import type { RoughnessQuality } from '../frame/rough-glass';
 import { browserCssColor, parseCssColor } from './css-color';
+import { MAX_REFINEMENT } from '../frame/refinement';
+
+/** `refine`'s default (docs/refinement.md#the-attribute): off until the tests that capture a still frame wait for `refined`. */
+export const REFINE_DEFAULT = 0;
 
 export const DEBUG_VIEWS = ['none', 'reflection', 'scene', 'fresnel', 'passes'] as const;
 export type DebugView = (typeof DEBUG_VIEWS)[number];
@@ -53,6 +57,8 @@ export interface SceneAttributes {
   reflectionScale: number;
   /** MSAA samples for the reflection and scene passes: 0, 2 or 4 (software: 2 and 4 as 2×2 per pixel). */
   samples: number;
+  /** Frames a still view draws to converge (docs/refinement.md): 0 off; else moving frames draw with one sample. */
+  refine: number;
   shading: Shading;
   /** Sphere segments 4..512, or 'auto' (from the sphere's size on screen). */
   tessellation: number | 'auto';
@@ -317,6 +323,18 @@ export const ATTRIBUTES: readonly AttributeSpec[] = [
     },
     format: (v) => String(v),
   } satisfies AttributeSpec<'samples'>,
+  {
+    // A whole number of frames, 0..MAX_REFINEMENT; 0 turns refinement off.
+    property: 'refine', attribute: 'refine', default: REFINE_DEFAULT,
+    parse(raw) {
+      if (raw === null) return { value: REFINE_DEFAULT };
+      const x = num(raw);
+      if (Number.isNaN(x)) return { value: REFINE_DEFAULT, problem: `not a number, using ${REFINE_DEFAULT}` };
+      const value = Math.round(Math.min(MAX_REFINEMENT, Math.max(0, x)));
+      return value === x ? { value } : { value, problem: `expected a whole number of frames 0..${MAX_REFINEMENT}; using ${value}` };
+    },
+    format: (v) => String(v),
+  } satisfies AttributeSpec<'refine'>,
   keywordSpec('shading', 'shading', SHADINGS),
   autoOrNumberSpec('tessellation', 'tessellation', 4, 512, true),
   autoOrNumberSpec('pixelRatio', 'pixel-ratio', 0.25, 4, false),

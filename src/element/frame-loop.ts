@@ -1,8 +1,8 @@
 // When the element draws: on demand, only when something changed or moves, while the element is
 // in view (IntersectionObserver) and the page is shown (visibilitychange); the canvas's drawing
 // buffer follows the element's box (ResizeObserver) and the pixel ratio; prefers-reduced-motion is
-// watched for the spin. Frames stop when nothing moves (idle). What a frame draws is the host's
-// business: no GL, no scene here.
+// watched for the spin. Frames stop when nothing moves (idle), once a still view's refinement frames are drawn
+// (docs/refinement.md#at-rest). What a frame draws is the host's business: no GL, no scene here.
 import type { Controller } from './controller';
 
 /** Start drawing a little before the element scrolls into view. */
@@ -22,8 +22,13 @@ export interface FrameLoopHost {
   canDraw(): boolean;
   /** Something moves without a change (the clock turns an object, a control's motion): frames keep coming. */
   animating(): boolean;
-  /** Draws one frame (or starts drawing it); `now` is the frame's timestamp. */
-  frame(now: number): void;
+  /** Frames a still view draws (docs/refinement.md#at-rest); 0: none, frames stop at once. */
+  refineFrames(): number;
+  /**
+   * Draws one frame (or starts drawing it); `now` is the frame's timestamp, `refinement` its place in a still view (0: a
+   * moving frame, or refinement off). Returns whether it was drawn (false: held back, still owed).
+   */
+  frame(now: number, refinement: number): boolean;
   /** Frames were cancelled (out of sight, the page hidden, a resize drawn at once). */
   paused(): void;
   /** The last frame of a motion was drawn: nothing moves any more. */
@@ -35,6 +40,8 @@ export interface FrameLoopHost {
 export class FrameLoop implements Controller {
   /** Something changed since the last frame drawn: the next frame draws it. */
   dirty = true;
+  /** The still view's last refinement frame drawn (0: a moving frame, or none since the last change). */
+  refined = 0;
   private rafId = 0;
   private inView = false;
   private resizeObserver: ResizeObserver | null = null;
@@ -79,7 +86,7 @@ export class FrameLoop implements Controller {
   /** Draws only when something changed or moves, the element is in view and the page shown. */
   schedule(): void {
     if (this.rafId !== 0 || !this.host.canDraw() || !this.inView || document.hidden) return;
-    if (!this.dirty && !this.host.animating()) return;
+    if (!this.dirty && !this.host.animating() && !this.refining()) return;
     this.rafId = requestAnimationFrame(this.onFrame);
   }
 
@@ -92,7 +99,7 @@ export class FrameLoop implements Controller {
    */
   resume(offThread = false): void {
     const moving = this.host.animating();
-    if (!this.dirty && !moving) return;
+    if (!this.dirty && !moving && !this.refining()) return;
     if (!offThread || !moving || !this.host.canDraw() || !this.inView || document.hidden) {
       this.schedule();
       return;
@@ -122,14 +129,27 @@ export class FrameLoop implements Controller {
     this.host.paused();
   }
 
+  /** A still view's refinement is under way and not done: frames keep coming. */
+  refining(): boolean {
+    return this.refined > 0 && this.refined < this.host.refineFrames();
+  }
+
   private readonly onFrame = (now: number): void => {
     this.rafId = 0;
     if (!this.host.canDraw()) return;
-    this.host.frame(now);
+    // docs/refinement.md#at-rest: a frame while something moves is a moving one; a change restarts the still view at 1.
+    const frames = this.host.refineFrames();
+    const refinement = frames === 0 || this.host.animating() ? 0 : this.dirty ? 1 : Math.min(frames, this.refined + 1);
+    const drawn = this.host.frame(now, refinement);
+    if (drawn) this.refined = refinement;
     if (this.host.animating()) this.schedule();
     // At rest only once the last frame is drawn: one held back (the GPU busy, a part on its way)
     // is still owed, and a gesture's write-back must follow the pose it shows.
-    else if (!this.dirty) this.host.idle();
+    else if (!this.dirty) {
+      this.host.idle();
+      // The next frame of the still view; one still on its way (a worker's) asks for it when it lands (resume).
+      if (drawn && this.refining()) this.schedule();
+    }
   };
 
   private readonly onResize = (): void => {

@@ -5,6 +5,13 @@ import type { FrameState } from '../frame/types';
 import type { SceneAttributes } from './attributes';
 import { hasPbrMaterial, type Scene } from '../scene/scene';
 
+/**
+ * The frames a still view draws (docs/refinement.md#at-rest): `refine`, or 0 where nothing is refined — with
+ * `color-space="none"` (no linear light to average) or a debug view (one pass as it is).
+ */
+export const refineFrames = (v: Readonly<Pick<SceneAttributes, 'refine' | 'colorSpace' | 'debugView'>>): number =>
+  v.colorSpace === 'srgb' && v.debugView === 'none' ? v.refine : 0;
+
 export class FrameStates {
   /** The state of the frame being drawn (one object, filled again every frame). */
   readonly current: FrameState = {
@@ -12,6 +19,7 @@ export class FrameStates {
     fov: 60, cameraPosition: [0, 0, 0], yaw: 0, pitch: 0, view: 'final',
     reflectionScale: 1, samples: 4, shading: 'phong', tessellation: 'auto', reflectionFormat: 'rgba8', colorSpace: 'srgb',
     projection: 'perspective', target: null, roughness: 0, roughnessQuality: 'medium', toneMapping: 'none', exposure: 1,
+    refinement: 0, refinementFrames: 0,
   };
   /** The state of the last frame drawn; null before the first. */
   last: FrameState | null = null;
@@ -24,7 +32,7 @@ export class FrameStates {
    * The attributes' part of the frame at timestamp `now`, the drawing buffer `width` × `height`, the cube turning at `spin`;
    * `scene` decides `tone-mapping="auto"` (docs/pbr.md#tone-mapping: neutral with a glTF material, else none).
    */
-  fill(v: Readonly<SceneAttributes>, now: number, width: number, height: number, spin: number, scene: Scene | null = null): FrameState {
+  fill(v: Readonly<SceneAttributes>, now: number, width: number, height: number, spin: number, scene: Scene | null = null, refinement = 0): FrameState {
     const s = this.current;
     if (this.clockStart < 0) this.clockStart = now;
     s.width = width;
@@ -37,7 +45,10 @@ export class FrameStates {
     s.fresnel = v.fresnel;
     s.view = v.debugView === 'none' ? 'final' : v.debugView;
     s.reflectionScale = v.reflectionScale;
-    s.samples = v.samples;
+    // docs/refinement.md#at-rest: with refinement on, moving frames and strata frames draw one sample; the preview as asked.
+    s.samples = refineFrames(v) > 0 && refinement !== 1 ? 0 : v.samples;
+    s.refinement = refinement;
+    s.refinementFrames = v.refine;
     s.shading = v.shading;
     s.tessellation = v.tessellation;
     s.reflectionFormat = v.reflectionFormat;

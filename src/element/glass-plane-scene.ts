@@ -17,7 +17,7 @@ import { LazyParts } from '../frame/lazy-parts';
 import { ELEMENT_PARTS, FAILURE_MESSAGES, GROUP_ROTATION, type ElementPartsHost } from './parts';
 import { sceneSpins } from './compose-scene';
 import { SceneValue } from './scene-value';
-import { FrameStates } from './frame-state';
+import { FrameStates, refineFrames } from './frame-state';
 import { CameraRig } from './camera-rig';
 import { FrameLoop } from './frame-loop';
 import { BackendController } from './backend-controller';
@@ -52,6 +52,7 @@ export interface GlassPlaneScene extends SceneAttributes {}
  * @attr {'none' | 'reflection' | 'scene' | 'fresnel' | 'passes'} [debug-view="none"] - shows one pass instead of the final image
  * @attr {number} [reflection-scale=1] - reflection framebuffer size ÷ drawing-buffer size, 0.125..2
  * @attr {0 | 2 | 4} [samples=4] - MSAA samples of the reflection and scene passes (software: 2×2 per pixel for 2 and 4)
+ * @attr {number} [refine=0] - frames a still view draws to converge to the supersampled picture, 0..1024; 0 off; with it moving frames draw one sample
  * @attr {'phong' | 'gouraud' | 'flat'} [shading="phong"] - per-fragment phong, per-vertex gouraud, or flat
  * @attr {number | 'auto'} [tessellation="auto"] - sphere segments 4..512, or auto (from the sphere's size on screen)
  * @attr {number | 'auto'} [pixel-ratio="auto"] - drawing-buffer pixels per CSS pixel 0.25..4, or auto (devicePixelRatio)
@@ -71,6 +72,7 @@ export interface GlassPlaneScene extends SceneAttributes {}
  * @attr {string} [alt="A dark glass plane reflecting a cube, with a sphere behind it"] - text alternative; becomes the aria-label
  * @fires {CustomEvent<FrameReport>} ready - once, after the first frame is on the canvas
  * @fires {CustomEvent<FrameReport>} frame - after every frame drawn
+ * @fires {CustomEvent<FrameReport>} refined - after the last frame of a still view's refinement: the picture is final
  * @fires {CustomEvent<GlassPlaneSceneErrorDetail>} error - WebGL2 unavailable, a shader failed, the context was lost, or a load failed
  * @fires {CustomEvent<CameraChangeDetail>} camera-change - after a gesture moved the camera, or the page set a camera attribute
  * @csspart canvas - the canvas the scene is drawn on
@@ -142,7 +144,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
       element: this, canvas, pixelRatio: () => this.values.pixelRatio, maxSize: () => this.backend.maxSize,
       canDraw: () => this.backend.current !== null && !this.failure.type,
       animating: () => (this.values.time === null && sceneSpins(this.scenes.current)) || this.rig.moving,
-      frame: (now) => this.drawFrame(now),
+      frame: (now, k) => this.drawFrame(now, k), refineFrames: () => refineFrames(this.values),
       paused: () => this.rig.paused(), idle: () => this.rig.idle(),
       motionPreferenceChanged: () => this.sceneChanged(),
     });
@@ -245,7 +247,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
   /** Frames, passes run and skipped, draw calls, compiled programs, live GL resources and scene builds. */
   get stats(): RenderStats {
     const s = this.backend.stats();
-    s.frames = this.events.frames;
+    this.events.count(s);
     s.sceneBuilds = this.scenes.builds;
     return s;
   }
@@ -256,30 +258,28 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
   }
 
   /**
-   * One frame: the controls advance, then the backend draws, unless its last frame is still on its
-   * way or a lazy part the frame needs is (dirty stays set: a frame is asked for when it lands).
+   * One frame, `refinement` of a still view (docs/refinement.md#at-rest): the controls advance, then the backend draws, unless
+   * its last frame is still on its way or a lazy part the frame needs is (dirty stays set: a frame is asked for when it lands).
    */
-  private drawFrame(now: number): void {
+  private drawFrame(now: number, refinement: number): boolean {
     this.rig.step();
     const backend = this.backend.current!;
-    if (backend.busy) return;
+    if (backend.busy) return false;
     const scene = this.scenes.current;
-    if (this.clientWidth === 0 || this.clientHeight === 0) {
-      this.loop.dirty = false; // nothing to show
-      return;
-    }
-    const state = this.frameState(now);
+    if (this.clientWidth === 0 || this.clientHeight === 0) return (this.loop.dirty = false); // nothing to show
+    const state = this.frameState(now, refinement);
     // The frame's one question, to the element's parts and the renderer's: both start what they lack.
     const held = this.parts.request() !== null;
-    if (backend.waitsFor(scene, state) || held) return;
+    if (backend.waitsFor(scene, state) || held) return false;
     this.loop.dirty = false;
     this.images?.sync(scene);
     backend.draw(scene, state);
+    return true;
   }
 
   /** The attributes' part of the frame, then the camera's (which reads the scene for a course camera). */
-  private frameState(now: number): FrameState {
-    const s = this.states.fill(this.values, now, this.canvas.width, this.canvas.height, this.effectiveSpin(), this.scenes.current);
+  private frameState(now: number, refinement = 0): FrameState {
+    const s = this.states.fill(this.values, now, this.canvas.width, this.canvas.height, this.effectiveSpin(), this.scenes.current, refinement);
     this.rig.aim(s, this.scenes.current);
     return s;
   }

@@ -10,6 +10,7 @@ import type { Scene } from '../scene/scene';
 import type { DecodedImage } from '../scene/decoded-image';
 import type { SoftwareRenderer } from '../software/software-renderer';
 import { putBand, splitRows, type Band } from '../software/bands';
+import { refines } from '../frame/refinement';
 import { SentResources, type SoftwareRequest, type SoftwareResponse } from '../software/protocol';
 
 export type SoftwareThread = 'worker' | 'main';
@@ -150,7 +151,8 @@ export class SoftwareHost {
       }
       return Promise.resolve(this.renderNow(scene, state, samplesPerAxis));
     }
-    const id = ++this.nextId, bands = this.bandsOf(state);
+    // A still view's frames keep their bands (docs/refinement.md#averaging): each worker averages its own rows.
+    const id = ++this.nextId, bands = this.bandsOf(state), still = refines(state);
     const drawn = bands.map((band, i) => this.workers[i].draw({ id, state, samplesPerAxis, band }, scene, this.images));
     return Promise.all(drawn).then((parts) => {
       this.lastWorkerMs = Math.max(...parts.map((p) => p.ms));
@@ -161,7 +163,7 @@ export class SoftwareHost {
         const b = bands[i]!;
         putBand(frame, p.pixels, b, width);
         // Rows per ms, smoothed over a few frames; an empty or instant band keeps its speed.
-        if (b.bottom > b.top && p.ms > 0) this.speeds[i] = 0.5 * this.speeds[i] + 0.5 * ((b.bottom - b.top) / p.ms);
+        if (!still && b.bottom > b.top && p.ms > 0) this.speeds[i] = 0.5 * this.speeds[i] + 0.5 * ((b.bottom - b.top) / p.ms);
       });
       return frame;
     }).catch(() => (this.disposed ? new Uint8ClampedArray(0) : this.renderNow(scene, state, samplesPerAxis)));

@@ -25,6 +25,8 @@ export interface CameraChangeDetail {
 export interface GlassPlaneSceneEventMap extends Omit<HTMLElementEventMap, 'error'> {
   ready: CustomEvent<FrameReport>;
   frame: CustomEvent<FrameReport>;
+  /** docs/refinement.md#events: a still view's last refinement frame is on the canvas. */
+  refined: CustomEvent<FrameReport>;
   error: CustomEvent<GlassPlaneSceneErrorDetail>;
   'camera-change': CustomEvent<CameraChangeDetail>;
 }

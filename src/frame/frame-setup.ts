@@ -13,6 +13,7 @@ import { glassFrame, type GlassFrame } from '../scene/glass-frame';
 import { isIdentity, turnMatrix } from '../scene/turn';
 import { MAX_LIGHTS, type Glass, type Scene, type SceneObject } from '../scene/scene';
 import type { FrameState } from './types';
+import { jitterClip, refinementOffset, refines } from './refinement';
 
 /** What one draw of one object needs, for one eye (real or mirrored). */
 export class DrawMatrices {
@@ -120,6 +121,8 @@ export class FrameSetup {
   /** The glass's normal matrix: its mesh is in world coordinates. */
   private readonly identityNormal = mat3.identity(f64(9) as unknown as mat3) as unknown as Float64Array;
   private readonly scratch3 = f64(3);
+  /** This frame's offset of the pixel grid when it refines a still view (docs/refinement.md). */
+  private readonly jitter = f64(2);
   private readonly identity = mat4.identity(f64(16) as unknown as mat4) as unknown as Float64Array;
   private lastGlass: Glass | null | undefined = undefined;
   /** The trackball's turn of the objects and of the first light this frame (FrameState.turn); null: none. */
@@ -161,6 +164,10 @@ export class FrameSetup {
     this.objectsTurn = turn && !isIdentity(turn.objects) ? (turnMatrix(this.objectsTurnMatrix as unknown as mat4, turn.objects, turn.center) as unknown as Float64Array) : null;
     this.lightTurn = turn && !isIdentity(turn.light) ? (turnMatrix(this.lightTurnMatrix as unknown as mat4, turn.light, turn.center) as unknown as Float64Array) : null;
     this.viewAndProjection(s, scene, forward, course);
+    if (refines(s)) {
+      refinementOffset(s.refinement!, s.refinementFrames ?? 1, this.jitter);
+      jitterClip(this.viewProjection, this.jitter[0], this.jitter[1], s.width, s.height);
+    }
     // Mirrored eye-relative: V·R·x = Vrot·L·(x − mirroredEye), L the plane's linear reflection.
     reflectionMatrix(this.reflectionLinear, plane);
     this.reflectionLinear[12] = this.reflectionLinear[13] = this.reflectionLinear[14] = 0;

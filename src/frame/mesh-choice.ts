@@ -8,6 +8,7 @@ import { segmentsForScreenRadius, sphereMesh } from '../scene/geometry/sphere';
 import type { Geometry, SceneObject } from '../scene/scene';
 import { AUTO_SILHOUETTE_ERROR_PX, sphereScreenRadius } from './sphere-screen';
 import type { FrameState } from './types';
+import { refinementScale } from './refinement';
 
 /** Built-ins are closed and wound outwards (back faces culled); meshes from files are neither. */
 export const isTwoSided = (g: Geometry): boolean => g.kind === 'mesh' || g.kind === 'gaussian';
@@ -22,7 +23,7 @@ export const drawnTwoSided = (o: SceneObject): boolean => isTwoSided(o.geometry)
  * Segments of a sphere whose world bounds are `centre`, `worldRadius`: the tessellation asked
  * for, or with 'auto' enough that its silhouette error r(1 − cos(π/N)) stays under
  * AUTO_SILHOUETTE_ERROR_PX of the grid it is drawn on (`pixelScale` samples per pixel along an
- * axis: supersampling must not see the polygon either). `orthoHalfHeight`: the orthographic
+ * axis, times a refinement frame's scale: supersampling must not see the polygon either). `orthoHalfHeight`: the orthographic
  * view's half-height, 0 in perspective (sphereScreenRadius). `current` > 0: the segments of the
  * mesh in hand, kept while it is at most twice what is needed, so a camera moving back and forth
  * does not rebuild it every frame.
@@ -31,7 +32,7 @@ export function sphereSegments(
   state: FrameState, centre: ArrayLike<number>, worldRadius: number, orthoHalfHeight: number, pixelScale = 1, current = 0,
 ): number {
   if (state.tessellation !== 'auto') return state.tessellation;
-  const screen = sphereScreenRadius(state, centre, worldRadius, orthoHalfHeight) * pixelScale;
+  const screen = sphereScreenRadius(state, centre, worldRadius, orthoHalfHeight) * pixelScale * refinementScale(state);
   const wanted = segmentsForScreenRadius(Math.min(screen, 1e6), AUTO_SILHOUETTE_ERROR_PX);
   // Stryker disable next-line EqualityOperator: at current = wanted both answers are the same number
   return current >= wanted && current <= 2 * wanted ? current : wanted;

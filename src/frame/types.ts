@@ -79,6 +79,13 @@ export interface FrameState {
    * identity: the scene as it is.
    */
   turn?: SceneTurn | null;
+  /**
+   * docs/refinement.md: 0 or absent, an ordinary frame; k ≥ 1, the k-th frame of a still view, its pixel grid moved by
+   * frame/refinement.ts's offset and averaged with the k − 1 frames before it (in linear light; 1 starts the average).
+   */
+  refinement?: number;
+  /** How many frames the still view's refinement draws (the `refine` attribute): the grid its offsets fill. Absent: 1. */
+  refinementFrames?: number;
 }
 
 export type ReflectionFormat = 'rgba8' | 'rgba16f';
@@ -100,6 +107,11 @@ export interface FrameReport {
   height: number;
   passes: Readonly<Record<PassName, PassReport>>;
   drawCalls: number;
+  /**
+   * docs/refinement.md#events: the frame's place in a still view's refinement, 1 (the preview) to `refine` (the last, with
+   * `refined`); 0 a frame that refines nothing (moving, refinement off). Set by the element.
+   */
+  refinement?: number;
 }
 
 export interface ResourceCounts {
@@ -136,6 +148,8 @@ export interface RenderStats {
    * (an attribute that shapes the scene, a child, a model), never for a camera or trackball move.
    */
   sceneBuilds?: number;
+  /** Refinement frames drawn (set by the element): among `frames`, those of still views (docs/refinement.md#events). */
+  refinementFrames?: number;
   /** Live GL objects owned by this element; all zero after it is removed. */
   resources: ResourceCounts & { total: number };
 }

@@ -211,6 +211,11 @@ export class ProgramCache {
     return this.screens.get(name) ?? this.fullScreen(name, encodeFrag, [`#define TONE_${curve.toUpperCase()}`, this.toneMapSource()]);
   }
 
+  /** The frame copied as it is, linear and unclamped: what refinement averages (docs/refinement.md#averaging). */
+  copy(): Program {
+    return this.fullScreen('copy', encodeFrag, ['#define COPY']);
+  }
+
   private toneMapSource(): string {
     if (this.toneMap === null) throw new Error('glass-plane-scene: a tone-mapped encode was asked for before its chunk loaded');
     return this.toneMap;

@@ -15,6 +15,7 @@ import { TextureCache } from './texture-cache';
 import { LinearFrame } from './linear-frame';
 import { srgbToLinear } from '../math/srgb';
 import { encodesAtEnd, toneMapped } from '../frame/linear-light';
+import { refinementScale, refines } from '../frame/refinement';
 import { readFramebuffer, type Pixels } from './gl/read-pixels';
 import { SharedResources } from './gl/shared-resources';
 import { FrameSetup } from '../frame/frame-setup';
@@ -130,7 +131,7 @@ export class Renderer implements DebugViewFrame {
     this.blitVao = gl.createVertexArray()!;
     c.add('vertexArrays');
     this.rough = new RoughGlass(gl, c, this.programs, this.blitVao, this.maxTargetSize, this.canHalfFloat);
-    this.linearFrame = new LinearFrame(gl, c, this.programs, this.blitVao);
+    this.linearFrame = new LinearFrame(gl, c, this.programs, this.blitVao, this.canHalfFloat, this.canHalfFloat && gl.getExtension('EXT_float_blend') !== null);
     this.ctx = {
       gl, programs: this.programs, objectMeshes: this.objectMeshes, glassMesh: this.glassMesh, textures: this.textures, background: this.background,
       setup: this.setup, state: undefined as unknown as FrameState, scene: undefined as unknown as Scene,
@@ -138,6 +139,7 @@ export class Renderer implements DebugViewFrame {
       cull: true,
       transparentDepth: false,
       hdr: false,
+      lodBias: 0,
       environment: null,
       pbrMaps: null,
       scissor: null,
@@ -187,8 +189,8 @@ export class Renderer implements DebugViewFrame {
 
   /**
    * Pixels of a frame drawn as render() draws it (the same arguments), then `source`: 'screen'
-   * redraws the canvas and reads it back (the drawing buffer is not preserved between frames);
-   * the others draw one pass off screen.
+   * redraws the canvas and reads it back (the drawing buffer is not preserved between frames; a refinement frame
+   * is a frame of the mean, as render() draws it); the others draw one pass off screen, unaveraged.
    */
   read(scene: Scene | null, state: FrameState, images: SceneImages | null | undefined, source: ReadbackSource): Pixels {
     this.ctx.scene = scene ?? this.defaultScene.get(state.cubeDistance, state.spin);
@@ -197,6 +199,8 @@ export class Renderer implements DebugViewFrame {
       this.draw(state, images, null);
       return readFramebuffer(this.gl, null, state.width, state.height);
     }
+    // One pass as a frame drawn alone: unmoved, and the mean on the canvas not advanced.
+    if ((state.refinement ?? 0) !== 0) state = { ...state, refinement: 0 };
     this.prepare(state, images);
     if (source === 'reflection') {
       this.runReflection();
@@ -257,6 +261,7 @@ export class Renderer implements DebugViewFrame {
     for (let k = 0; k < 3; k++) this.background[k] = srgb ? srgbToLinear(scene.background[k]) : scene.background[k];
     this.setup.update(state, scene);
     this.ctx.hdr = toneMapped(state) && this.canHalfFloat && this.programs.hasPbr;
+    this.ctx.lodBias = -Math.log2(refinementScale(state));
     this.objectMeshes.trim(scene.objects.length);
     this.objectMeshes.beginFrame(this.setup.halfHeight);
     this.ctx.triangles.scene = this.ctx.triangles.reflection = 0;
@@ -337,7 +342,7 @@ export class Renderer implements DebugViewFrame {
     if (encodesAtEnd(state)) {
       const hdr = this.ctx.hdr;
       const n = this.drawView(state, this.linearFrame.begin(state.width, state.height, samples, hdr));
-      return n + this.linearFrame.end(destination, hdr ? state.toneMapping ?? 'none' : null, state.exposure ?? 1);
+      return n + this.linearFrame.end(destination, hdr ? state.toneMapping ?? 'none' : null, state.exposure ?? 1, refines(state) ? state.refinement! : 0, state.refinementFrames ?? 1);
     }
     if (samples === 0) return this.drawView(state, destination);
     const msaa = (this.mainMsaa ??= new MultisampleTarget(this.gl, this.counter));

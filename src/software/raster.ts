@@ -6,9 +6,9 @@ import { edgeFunctions, HALF, runEnd, runStart, SUB } from './edges';
 
 export { CLIP_W, CLIP_DISTANCE, VARYINGS };
 export { SUBPIXEL_BITS } from './edges';
+
 /** A clipped triangle has at most 3 + one vertex per plane (near, far, 4 guard, user). */
 const MAX_POLY = 10;
-
 export type CullMode = 'none' | 'back';
 
 /** Called for every pixel that passes the mask and the depth test; reads the rasterizer's fields. */
@@ -37,8 +37,9 @@ export class Rasterizer {
   userClip = false;
   /** Only pixels whose mask byte is non-zero are drawn (the glass's footprint); null: all. */
   mask: Uint8Array | null = null;
-  /** Compute dbdx/dbdy per fragment (texture LOD needs them). */
+  /** Compute dbdx/dbdy per fragment (texture LOD needs them), scaled by `footprint`: 1 per cell of the grid, 1/side in a strata frame (docs/refinement.md#footprints). */
   derivatives = true;
+  footprint = 1;
   /** Compute b0..b2 (and derivatives) before each fragment; false: only l0, l1 and z are set, and a shader that needs them
    *  after all calls perspective() (the glass's footprint never does, a cached glass pixel need not): no division for it. */
   barycentrics = true;
@@ -61,12 +62,8 @@ export class Rasterizer {
   // Per fragment, for the shader: the clipped vertices (`poly`), the triangle's three vertex
   // offsets into it, the perspective-correct barycentrics and their derivatives per pixel.
   poly: Float64Array;
-  o0 = 0;
-  o1 = 0;
-  o2 = 0;
-  b0 = 0;
-  b1 = 0;
-  b2 = 0;
+  o0 = 0; o1 = 0; o2 = 0;
+  b0 = 0; b1 = 0; b2 = 0;
   dbdx0 = 0;
   dbdx1 = 0;
   dbdx2 = 0;
@@ -272,8 +269,9 @@ export class Rasterizer {
     this.b0 = b0; this.b1 = b1; this.b2 = b2;
     if (this.derivatives) {
       const sumX = this.sumX, sumY = this.sumY;
-      this.dbdx0 = (this.ax - b0 * sumX) * q; this.dbdx1 = (this.bx - b1 * sumX) * q; this.dbdx2 = (this.cx - b2 * sumX) * q;
-      this.dbdy0 = (this.ay - b0 * sumY) * q; this.dbdy1 = (this.by - b1 * sumY) * q; this.dbdy2 = (this.cy - b2 * sumY) * q;
+      const f = q * this.footprint;
+      this.dbdx0 = (this.ax - b0 * sumX) * f; this.dbdx1 = (this.bx - b1 * sumX) * f; this.dbdx2 = (this.cx - b2 * sumX) * f;
+      this.dbdy0 = (this.ay - b0 * sumY) * f; this.dbdy1 = (this.by - b1 * sumY) * f; this.dbdy2 = (this.cy - b2 * sumY) * f;
     }
   }
 

@@ -6,6 +6,8 @@ import { isRough } from '../frame/roughness';
 import { eyeRelativePlane } from '../math/mirror';
 import { srgbToLinear, type ColorSpace } from '../math/srgb';
 import { colourCeiling, resolveFrame } from './encode';
+import { RunningMean } from './running-mean';
+import { refinementScale, refines } from '../frame/refinement';
 import { CourseProjection } from '../frame/course-projection';
 import { orthographicView } from '../frame/orthographic-view';
 import { FrameSetup } from '../frame/frame-setup';
@@ -60,6 +62,8 @@ export class SoftwareRenderer {
   private readonly lightsMain = new Lights();
   private readonly lightsMirrored = new Lights();
   private colour = new Float32Array(0);
+  /** The mean of a still view's refinement frames (docs/refinement.md#averaging). */
+  private readonly mean = new RunningMean();
   private reflection = new Float32Array(0);
   private mask = new Uint8Array(0);
   private output = new Uint8ClampedArray(0);
@@ -140,6 +144,7 @@ export class SoftwareRenderer {
     const n = ssaa * msaa;
     this.main.shadeEvery = this.mirror.shadeEvery = msaa;
     this.pixelScale = ssaa;
+    this.main.footprint = this.mirror.footprint = 1 / refinementScale(state);
     const width = Math.max(0, Math.floor(state.width)), height = Math.max(0, Math.floor(state.height));
     const W = width * n, H = height * n;
     this.resize(W, H, width * height);
@@ -194,7 +199,9 @@ export class SoftwareRenderer {
     }
     // F is a number, shown unencoded in either space (docs/colour.md#debug-views); every other view is a picture.
     const out = this.output.subarray(4 * top * width, 4 * bottom * width);
-    resolveFrame(out, source.subarray(3 * this.from, 3 * this.to), width, bottom - top, n, state);
+    const samples = source.subarray(3 * this.from, 3 * this.to);
+    if (refines(state)) resolveFrame(out, this.mean.add(samples, width, height, top, bottom, n, state.refinement!, state.refinementFrames ?? 1), width, bottom - top, 1, state);
+    else resolveFrame(out, samples, width, bottom - top, n, state);
     return this.output;
   }
 

@@ -189,6 +189,7 @@ test('1100 random values over every attribute and property: no exception, warnin
       debugView: (v) => ['none', 'reflection', 'scene', 'fresnel', 'passes'].includes(v as string),
       reflectionScale: (v) => inRange(v, 0.125, 2),
       samples: (v) => [0, 2, 4].includes(v as number),
+      refine: (v) => Number.isInteger(v) && (v as number) >= 0 && (v as number) <= 1024,
       shading: (v) => ['phong', 'gouraud', 'flat'].includes(v as string),
       tessellation: (v) => v === 'auto' || (Number.isInteger(v) && inRange(v, 4, 512)),
       pixelRatio: (v) => v === 'auto' || inRange(v, 0.25, 4),

@@ -59,7 +59,7 @@ describe('defaults', () => {
     expect(new Set(names).size).toBe(names.length);
     expect([...names].sort()).toEqual([
       'background', 'camera-position', 'camera-rotation', 'camera-src', 'camera-target', 'color-space', 'controls', 'cube-distance', 'debug-view',
-      'environment', 'environment-intensity', 'exposure', 'fov', 'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'poster', 'projection', 'reflection-format',
+      'environment', 'environment-intensity', 'exposure', 'fov', 'fresnel', 'glass-center', 'glass-normal', 'glass-size', 'ior', 'pixel-ratio', 'poster', 'projection', 'refine', 'reflection-format',
       'reflection-scale', 'renderer', 'roughness', 'roughness-quality', 'samples', 'shading', 'spin', 'tessellation', 'time', 'tone-mapping',
       'transparency',
     ]);
@@ -275,6 +275,7 @@ describe('fuzz: parse never throws and always yields a usable value', () => {
           case 'projection': expect(['perspective', 'orthographic']).toContain(v); break;
           case 'renderer': expect(['auto', 'webgl', 'software']).toContain(v); break;
           case 'samples': expect([0, 2, 4]).toContain(v); break;
+          case 'refine': expect(Number.isInteger(v) && (v as number) >= 0 && (v as number) <= 1024).toBe(true); break;
           case 'tessellation':
             if (v !== 'auto') expect(Number.isInteger(v) && (v as number) >= 4 && (v as number) <= 512).toBe(true);
             break;

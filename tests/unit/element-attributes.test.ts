@@ -27,7 +27,7 @@ describe('defaults (docs/element.md#attribute-table)', () => {
     expect(defaultAttributes()).toEqual({
       transparency: 0.5, cubeDistance: 0.75, ior: 1.5, fresnel: 'exact', cameraPosition: [3.6, 2.4, 0.2],
       cameraRotation: [-169, -23.6], fov: 60, projection: 'perspective', controls: null, renderer: 'auto', cameraTarget: null,
-      cameraSrc: null, poster: null, spin: 0.8, time: null, debugView: 'none', reflectionScale: 1, samples: 4, shading: 'phong',
+      cameraSrc: null, poster: null, spin: 0.8, time: null, debugView: 'none', reflectionScale: 1, samples: 4, refine: 0, shading: 'phong',
       tessellation: 'auto', pixelRatio: 'auto', reflectionFormat: 'rgba8', colorSpace: 'srgb', toneMapping: 'auto', exposure: 1, environment: 'neutral', environmentIntensity: 1, roughness: 0,
       roughnessQuality: 'medium', glassCenter: [0, 1, 0], glassNormal: [0, 0, 1], glassSize: [8, 4], background: [0.1, 0.1, 0.1],
     });
@@ -174,6 +174,22 @@ describe('samples: 0, 2 or 4, the nearest at or below', () => {
     expectParse('samples', 'many', 4, 'expected 0, 2 or 4; using 4');
     expectParse('samples', '', 4, 'expected 0, 2 or 4; using 4');
     expect(format('samples', 2)).toBe('2');
+  });
+});
+
+describe('refine: a whole number of frames, 0..1024', () => {
+  it('keeps whole numbers in range, rounds and clamps others with a warning, and falls back to the default on words', () => {
+    expectParse('refine', '0', 0);
+    expectParse('refine', '10', 10);
+    expectParse('refine', '1024', 1024);
+    expectParse('refine', '2.5', 3, 'expected a whole number of frames 0..1024; using 3');
+    expectParse('refine', '9.4', 9, 'expected a whole number of frames 0..1024; using 9');
+    expectParse('refine', '1025', 1024, 'expected a whole number of frames 0..1024; using 1024');
+    expectParse('refine', '-1', 0, 'expected a whole number of frames 0..1024; using 0');
+    expectParse('refine', 'Infinity', 1024, 'expected a whole number of frames 0..1024; using 1024');
+    expectParse('refine', 'lots', 0, 'not a number, using 0');
+    expectParse('refine', '', 0, 'not a number, using 0');
+    expect(format('refine', 82)).toBe('82');
   });
 });
 

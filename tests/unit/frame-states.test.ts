@@ -1,7 +1,7 @@
 // The element's FrameStates (src/element/frame-state.ts): tone-mapping="auto" decided by the scene (docs/pbr.md#in-the-frame),
 // the other keywords and the exposure as parsed.
 import { describe, expect, it } from 'vitest';
-import { FrameStates } from '../../src/element/frame-state';
+import { FrameStates, refineFrames } from '../../src/element/frame-state';
 import { defaultAttributes, type SceneAttributes } from '../../src/element/attributes';
 import { defaultScene } from '../../src/scene/default-scene';
 import type { Scene } from '../../src/scene/scene';
@@ -42,7 +42,7 @@ describe('the rest of the frame state', () => {
     expect({ ...s, cameraPosition: undefined, fov: undefined, yaw: undefined, pitch: undefined, projection: undefined, target: undefined }).toEqual({
       width: 320, height: 200, time: 2.5, spin: 0.6, cubeDistance: -1.25, transparency: 0.3, ior: 2.2, fresnel: 'classic', view: 'reflection',
       reflectionScale: 0.5, samples: 2, shading: 'flat', tessellation: 48, reflectionFormat: 'rgba16f', colorSpace: 'none',
-      roughness: 0.4, roughnessQuality: 'high', toneMapping: 'aces', exposure: 3,
+      roughness: 0.4, roughnessQuality: 'high', toneMapping: 'aces', exposure: 3, refinement: 0, refinementFrames: 0,
       cameraPosition: undefined, fov: undefined, yaw: undefined, pitch: undefined, projection: undefined, target: undefined,
     });
     expect(s).toBe(states.current);
@@ -84,5 +84,34 @@ describe('the rest of the frame state', () => {
     expect(states.last).toBe(kept);
     expect(states.last!.width).toBe(5);
     expect(states.last!.cameraPosition).toEqual([4, 5, 6]);
+  });
+});
+
+describe('refinement in the frame state (docs/refinement.md#the-attribute)', () => {
+  const at = (over: Partial<SceneAttributes>, refinement: number) =>
+    new FrameStates().fill({ ...defaultAttributes(), ...over }, 0, 64, 32, 0, null, refinement);
+
+  it('refine 0: every frame at `samples`, refining nothing', () => {
+    for (const k of [0, 1, 2]) expect(at({ refine: 0, samples: 4 }, k).samples).toBe(4);
+    expect(at({ refine: 0 }, 0).refinement).toBe(0);
+    expect(at({ refine: 0 }, 0).refinementFrames).toBe(0);
+  });
+
+  it('refine N: moving and strata frames at one sample, the preview at `samples`; k and N travel in the state', () => {
+    expect(at({ refine: 10, samples: 4 }, 0).samples).toBe(0);
+    expect(at({ refine: 10, samples: 4 }, 1).samples).toBe(4);
+    expect(at({ refine: 10, samples: 2 }, 1).samples).toBe(2);
+    expect(at({ refine: 10, samples: 4 }, 2).samples).toBe(0);
+    const s = at({ refine: 10 }, 7);
+    expect([s.refinement, s.refinementFrames]).toEqual([7, 10]);
+  });
+
+  it('with color-space none or a debug view nothing refines: `samples` as set, and refineFrames is 0', () => {
+    expect(at({ refine: 10, samples: 4, colorSpace: 'none' }, 0).samples).toBe(4);
+    expect(at({ refine: 10, samples: 4, debugView: 'scene' }, 2).samples).toBe(4);
+    expect(refineFrames({ ...defaultAttributes(), refine: 10 })).toBe(10);
+    expect(refineFrames({ ...defaultAttributes(), refine: 10, colorSpace: 'none' })).toBe(0);
+    expect(refineFrames({ ...defaultAttributes(), refine: 10, debugView: 'fresnel' })).toBe(0);
+    expect(refineFrames(defaultAttributes())).toBe(0);
   });
 });

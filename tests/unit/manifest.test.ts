@@ -75,7 +75,7 @@ describe('events, methods and properties in custom-elements.json', () => {
 
   it('<glass-plane-scene> fires ready, frame, error and camera-change with typed details', () => {
     expect(events('glass-plane-scene')).toEqual({
-      ready: 'CustomEvent<FrameReport>', frame: 'CustomEvent<FrameReport>',
+      ready: 'CustomEvent<FrameReport>', frame: 'CustomEvent<FrameReport>', refined: 'CustomEvent<FrameReport>',
       error: 'CustomEvent<GlassPlaneSceneErrorDetail>', 'camera-change': 'CustomEvent<CameraChangeDetail>',
     });
   });

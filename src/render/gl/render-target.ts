@@ -1,13 +1,14 @@
 // An off-screen colour texture + depth renderbuffer; reallocated only when its size changes.
 // Colour as RGBA8, SRGB8_ALPHA8 (linear light held encoded: no banding in the darks, blended
-// and sampled in linear; docs/colour.md#srgb) or RGBA16F (needs EXT_color_buffer_float).
+// and sampled in linear; docs/colour.md#srgb), RGBA16F (needs EXT_color_buffer_float) or RGBA32F (refinement's sum:
+// blended only with EXT_float_blend, read with texelFetch, so filtered NEAREST).
 import type { ResourceCounter } from './resource-counter';
 
-export type TargetFormat = 'rgba8' | 'srgb8' | 'rgba16f';
+export type TargetFormat = 'rgba8' | 'srgb8' | 'rgba16f' | 'rgba32f';
 
 /** Internal format of a colour attachment. */
 export function internalFormat(gl: WebGL2RenderingContext, format: TargetFormat): number {
-  return format === 'rgba16f' ? gl.RGBA16F : format === 'srgb8' ? gl.SRGB8_ALPHA8 : gl.RGBA8;
+  return format === 'rgba16f' ? gl.RGBA16F : format === 'rgba32f' ? gl.RGBA32F : format === 'srgb8' ? gl.SRGB8_ALPHA8 : gl.RGBA8;
 }
 
 export class RenderTarget {
@@ -29,8 +30,10 @@ export class RenderTarget {
     gl.bindTexture(gl.TEXTURE_2D, this.color);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+    // Float32 textures are not filterable without OES_texture_float_linear: LINEAR would leave them incomplete.
+    const filter = format === 'rgba32f' ? gl.NEAREST : gl.LINEAR;
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, filter);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, filter);
     gl.bindTexture(gl.TEXTURE_2D, null);
   }
 
@@ -48,6 +51,7 @@ export class RenderTarget {
     this.height = height;
     gl.bindTexture(gl.TEXTURE_2D, this.color);
     if (this.halfFloat) gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA16F, width, height, 0, gl.RGBA, gl.HALF_FLOAT, null);
+    else if (this.format === 'rgba32f') gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, width, height, 0, gl.RGBA, gl.FLOAT, null);
     else gl.texImage2D(gl.TEXTURE_2D, 0, internalFormat(gl, this.format), width, height, 0, gl.RGBA, gl.UNSIGNED_BYTE, null);
     gl.bindTexture(gl.TEXTURE_2D, null);
     gl.bindRenderbuffer(gl.RENDERBUFFER, this.depth);

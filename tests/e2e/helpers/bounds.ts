@@ -26,3 +26,14 @@ export function expectPsnr(cmp: Pick<ImageComparison, 'psnr'>, measured: Partial
       .toBeGreaterThanOrEqual(figure - MARGIN_DB);
   }
 }
+
+/** PSNR (dB) of two RGBA8 images of the same size over their colour channels (alpha left out). */
+export function psnr(a: ArrayLike<number>, b: ArrayLike<number>): number {
+  let se = 0, n = 0;
+  for (let i = 0; i < a.length; i++) {
+    if (i % 4 === 3) continue;
+    se += (a[i] - b[i]) ** 2;
+    n++;
+  }
+  return 10 * Math.log10((255 * 255 * n) / se);
+}

@@ -36,3 +36,13 @@ export async function drawScene(page: Page, state: FrameState, scene: Scene, ima
   const buf = Buffer.from(b64, 'base64');
   return { width: state.width, height: state.height, data: new Uint8Array(buf.buffer, buf.byteOffset, buf.length) };
 }
+
+/** The picture a still view of `frames` refinement frames of `scene` ends with, drawn by the Renderer in the page. */
+export async function refineScene(page: Page, state: FrameState, scene: Scene, frames: number): Promise<RgbaImage> {
+  const b64 = await page.evaluate(
+    ({ state, scene, frames }) => (window as unknown as { __renderer: { refine(s: unknown, sc: unknown, n: number): Promise<string> } }).__renderer.refine(state, scene, frames),
+    { state, scene: sceneToJson(scene), frames },
+  );
+  const buf = Buffer.from(b64, 'base64');
+  return { width: state.width, height: state.height, data: new Uint8Array(buf.buffer, buf.byteOffset, buf.length) };
+}

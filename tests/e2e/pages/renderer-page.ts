@@ -76,6 +76,18 @@ const api = {
     const source = state.view === 'final' || state.view === 'scene' || state.view === 'reflection' ? state.view : state.view === 'passes' ? 'screen' : 'final';
     return toBase64(renderer.read(revive(scene), state, decoded, source).data);
   },
+  /**
+   * A still view of `frames` refinement frames (docs/refinement.md): frames 1..frames − 1 drawn, the last read from the
+   * canvas as it is drawn; RGBA8, top row first, base64.
+   */
+  async refine(state: FrameState, scene: Scene, frames: number): Promise<string> {
+    const s = revive(scene);
+    await renderer.load(s, state);
+    canvas.width = state.width;
+    canvas.height = state.height;
+    for (let k = 1; k < frames; k++) renderer.render(s, { ...state, refinement: k, refinementFrames: frames }, decoded);
+    return toBase64(renderer.read(s, { ...state, refinement: frames, refinementFrames: frames }, decoded, 'screen').data);
+  },
   /** A state drawn without loading first (rough glass before its chunk is in). */
   drawNow(state: FrameState, scene: Scene): string {
     canvas.width = state.width;
