@@ -29,6 +29,7 @@ export function App() {
       debug-view="reflection"
       reflection-scale={0.5}
       samples={2}
+      refine={10}
       shading="gouraud"
       tessellation="auto"
       pixel-ratio={2}
