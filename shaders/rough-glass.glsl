@@ -18,6 +18,7 @@ uniform float uOrthographic;         // 1: orthographic (the view direction is u
 uniform float uAlpha;               // GGX α = roughness²
 uniform int uAngles;                // neighbours per ring
 uniform float uLodBias;             // added to each ring's mip level
+uniform vec3 uGatherJitter;         // refinement (docs/refinement.md#rough-glass): each sample's place in its sector (u, v), its level's shift
 uniform vec4 uReflectionSize;       // texels: the image's size (xy), its storage's (zw)
 uniform sampler2D uTransmission;    // the frame beyond the glass (when uTransmits is 1)
 uniform vec4 uTransmissionSize;
@@ -161,12 +162,13 @@ vec4 roughGather(sampler2D image, sampler2D codes, vec4 sizes, vec4 J, bool clam
     float outer = ring < 0 ? 0.5 * ROUGH_FIRST_RING : ROUGH_FIRST_RING * exp2(float(ring));
     float inner = ring < 0 ? 0.0 : ring == 0 ? 0.5 * ROUGH_FIRST_RING : ROUGH_FIRST_RING * exp2(float(ring - 1));
     int count = ring < 0 ? 1 : uAngles;
-    float mid = ring < 0 ? 0.0 : 0.5 * (inner + outer);
+    // Alone the sample lies mid-ring; a strata frame puts it at its share u of the sector's area.
+    float mid = ring < 0 ? 0.0 : uGatherJitter.z == 0.0 ? 0.5 * (inner + outer) : sqrt(mix(inner * inner, outer * outer, uGatherJitter.x));
     float area = ROUGH_PI * (outer * outer - inner * inner) / float(count) * det / (smax * smax);
-    float level = ring < 0 ? 0.0 : max(0.0, 0.5 * log2(area) + uLodBias);
+    float level = ring < 0 ? 0.0 : max(0.0, 0.5 * log2(area) + uLodBias + uGatherJitter.z);
     float xo = outer / smax, xi = inner / smax;
     for (int i = 0; i < count; i++) {
-      float phi = 2.0 * ROUGH_PI * (float(i) + 0.5 * float(ring & 1)) / float(count);
+      float phi = 2.0 * ROUGH_PI * (float(i) + 0.5 * float(ring & 1) + uGatherJitter.y - 0.5) / float(count);
       vec2 delta = mul2(A, vec2(cos(phi), sin(phi)) * (mid / smax));
       vec2 uv = (q + delta) / storage;
       vec4 texel = textureLod(image, uv, level);

@@ -87,6 +87,29 @@ export function refinementOffset(k: number, frames: number, out: Float64Array | 
 export const refinementScale = (state: Pick<FrameState, 'colorSpace' | 'view' | 'refinement' | 'refinementFrames'>): number =>
   refines(state) && state.refinement! >= 2 ? refinementGrid(state.refinementFrames ?? 1) : 1;
 
+/**
+ * Rough glass's gather in strata frame k (docs/refinement.md#rough-glass): where in each ring's sector its sample lies,
+ * (u, v) — u the share of the sector's area inside it, v the turn across it — and the shift of its mip level, −log₂ side,
+ * each sample then standing for 1/side² of its sector. The strata are the sequence's, taken in another order
+ * (point 7·(k − 2) mod side², a permutation since 7 and side² share no factor), so that the pixel's move and the
+ * sample's place do not go together. Any other frame: (½, ½, 0), the gather as it is alone. Written into `out`.
+ */
+export function gatherJitter(state: Pick<FrameState, 'colorSpace' | 'view' | 'refinement' | 'refinementFrames'>, out: Float64Array | Float32Array): void {
+  const side = refinementScale(state);
+  if (side === 1) {
+    out[0] = out[1] = 0.5;
+    out[2] = 0;
+    return;
+  }
+  const frames = state.refinementFrames ?? 1;
+  refinementOffset(2 + ((7 * (Math.floor(state.refinement!) - 2)) % (side * side)), frames, gatherOffset);
+  out[0] = gatherOffset[0] + 0.5;
+  out[1] = gatherOffset[1] + 0.5;
+  out[2] = -Math.log2(side);
+}
+
+const gatherOffset = new Float64Array(2);
+
 /** The weight of strata frame k (k ≥ 2) in the strata's running mean: 1/(k − 1), so frame 2 starts it. */
 export function refinementWeight(k: number): number {
   return k >= 3 ? 1 / (Math.floor(k) - 1) : 1;

@@ -20,6 +20,7 @@ import { transmissionPass } from './passes/transmission-pass';
 import { eyeRelativePlane } from '../math/mirror';
 import { ggxAlpha } from '../math/ggx';
 import { ROUGH_GATHER, type RoughGatherSettings } from '../frame/rough-glass';
+import { gatherJitter } from '../frame/refinement';
 
 /** What the rough variant reads beyond the sharp glass's inputs (filled in place each frame). */
 interface RoughGlassInputs {
@@ -67,6 +68,7 @@ export class RoughTargets implements RoughBinding {
   private readonly viewProjection = new Float32Array(16);
   private readonly normal = new Float32Array(3);
   private readonly forward = new Float32Array(3);
+  private readonly jitter = new Float32Array(3);
   private readonly background = new Float32Array(3);
 
   constructor(
@@ -214,6 +216,8 @@ export class RoughTargets implements RoughBinding {
     gl.uniform1f(p.location('uAlpha'), rough.alpha);
     gl.uniform1i(p.location('uAngles'), rough.settings.angles);
     gl.uniform1f(p.location('uLodBias'), rough.settings.lodBias);
+    gatherJitter(state, this.jitter);
+    gl.uniform3fv(p.location('uGatherJitter'), this.jitter);
     gl.uniform4f(p.location('uReflectionSize'), rough.reflectionWidth, rough.reflectionHeight, rough.reflectionTextureWidth, rough.reflectionTextureHeight);
     gl.uniform4f(p.location('uTransmissionSize'), rough.transmissionWidth, rough.transmissionHeight, rough.transmissionTextureWidth, rough.transmissionTextureHeight);
     gl.uniform1f(p.location('uTransmits'), rough.transmission ? 1 : 0);

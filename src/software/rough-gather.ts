@@ -38,6 +38,8 @@ export class RoughGather {
    * touching the glass, seen through it, blurred by half a pixel and never hardened.
    */
   footprint = 1;
+  /** A strata frame's place of each ring sample in its sector and its level's shift (frame/refinement.ts gatherJitter). */
+  readonly jitter = new Float64Array([0.5, 0.5, 0]);
   private width = 0;
   private height = 0;
   private vp: Float64Array = new Float64Array(16);
@@ -173,12 +175,14 @@ export class RoughGather {
     for (let ring = -1; ring < rings; ring++) {
       const outer = ring < 0 ? ROUGH_FIRST_RING / 2 : ROUGH_FIRST_RING * 2 ** ring;
       const inner = ring < 0 ? 0 : ring === 0 ? ROUGH_FIRST_RING / 2 : ROUGH_FIRST_RING * 2 ** (ring - 1);
-      const count = ring < 0 ? 1 : angles, mid = ring < 0 ? 0 : (inner + outer) / 2;
+      const count = ring < 0 ? 1 : angles, jit = this.jitter;
+      // Alone the sample lies mid-ring; a strata frame puts it at its share u of the sector's area.
+      const mid = ring < 0 ? 0 : jit[2] === 0 ? (inner + outer) / 2 : Math.sqrt(inner * inner + jit[0] * (outer * outer - inner * inner));
       const area = ((Math.PI * (outer * outer - inner * inner)) / count) * (detPx / (smax * smax));
-      const level = ring < 0 ? lodCentre : Math.max(0, 0.5 * Math.log2(area) + lodBias) + lodCells;
+      const level = ring < 0 ? lodCentre : Math.max(0, 0.5 * Math.log2(area) + lodBias + jit[2]) + lodCells;
       const xo = outer / smax, xi = inner / smax;
       for (let i = 0; i < count; i++) {
-        const phi = (2 * Math.PI * (i + 0.5 * (ring & 1))) / count;
+        const phi = (2 * Math.PI * (i + 0.5 * (ring & 1) + jit[1] - 0.5)) / count;
         const vx = (Math.cos(phi) * mid) / smax, vy = (Math.sin(phi) * mid) / smax;
         const dx = A0 * vx + A1 * vy, dy = A2 * vx + A3 * vy, x = s * (px + dx), y = s * (py + dy);
         this.read(image, x, y, level);

@@ -7,7 +7,7 @@ import { eyeRelativePlane } from '../math/mirror';
 import { srgbToLinear, type ColorSpace } from '../math/srgb';
 import { colourCeiling, resolveFrame } from './encode';
 import { RunningMean } from './running-mean';
-import { refinementScale, refines } from '../frame/refinement';
+import { gatherJitter, refinementScale, refines } from '../frame/refinement';
 import { CourseProjection } from '../frame/course-projection';
 import { orthographicView } from '../frame/orthographic-view';
 import { FrameSetup } from '../frame/frame-setup';
@@ -243,6 +243,7 @@ export class SoftwareRenderer {
     g.fixedLevel = state.fixedBlurLevel ?? -1;
     g.cells = W / width;
     g.footprint = r.shadeEvery;
+    gatherJitter(state, g.jitter);
     const v = s.viewVectorMain;
     this.forward[0] = -v[0]; this.forward[1] = -v[1]; this.forward[2] = -v[2];
     for (let k = 0; k < 3; k++) this.viewerNormal[k] = s.side * plane[k];

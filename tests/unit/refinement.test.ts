@@ -1,7 +1,7 @@
 // Refinement at rest (docs/refinement.md): the offsets of the pixel grid, the running mean's weights, which frames
 // refine, the clip-space shift, FrameSetup's use of it and the software renderer's mean — each by hand.
 import { describe, expect, it } from 'vitest';
-import { binomial3, jitterClip, MAX_REFINEMENT, meanShare, refinementGrid, refinementOffset, refinementScale, refinementWeight, refines } from '../../src/frame/refinement';
+import { binomial3, gatherJitter, jitterClip, MAX_REFINEMENT, meanShare, refinementGrid, refinementOffset, refinementScale, refinementWeight, refines } from '../../src/frame/refinement';
 import { FrameSetup } from '../../src/frame/frame-setup';
 import { RunningMean } from '../../src/software/running-mean';
 import { defaultScene } from '../../src/scene/default-scene';
@@ -92,6 +92,28 @@ describe('refinement: the strata', () => {
     expect(refinementScale({ ...s, refinement: 2, refinementFrames: 10 })).toBe(3);
     expect(refinementScale({ ...s, refinement: 2, refinementFrames: undefined })).toBe(1);
     expect(refinementScale({ ...s, refinement: 2, view: 'scene' })).toBe(1);
+  });
+});
+
+describe('refinement: rough glass’s gather', () => {
+  it('strata frames place each ring sample at another stratum of its sector, the order 7·i mod side²', () => {
+    const out = new Float64Array(3);
+    const at = (refinement: number, refinementFrames = 10) => {
+      gatherJitter(defaultFrameState({ refinement, refinementFrames }), out);
+      return Array.from(out);
+    };
+    expect(at(1)).toEqual([0.5, 0.5, 0]); // the preview: the gather as it is alone
+    expect(at(0)).toEqual([0.5, 0.5, 0]);
+    expectClose(at(2), [0.5, 0.5, -Math.log2(3)], 1e-15); // point 0: the centre stratum
+    expectClose(at(3), [5 / 6, 0.5, -Math.log2(3)], 1e-15); // point 7: cell (2, 1)
+    expectClose(at(4), [1 / 6, 0.5, -Math.log2(3)], 1e-15); // point 14 mod 9 = 5: cell (0, 1)
+    expectClose(at(3, 82).slice(2), [-Math.log2(9)], 1e-15);
+    gatherJitter(defaultFrameState({ refinement: 3, refinementFrames: 10, view: 'scene' }), out);
+    expect(Array.from(out)).toEqual([0.5, 0.5, 0]);
+    // Nine strata frames of a 10-frame view: nine distinct strata.
+    const seen = new Set<string>();
+    for (let k = 2; k <= 10; k++) seen.add(at(k).slice(0, 2).map((x) => x.toFixed(6)).join(','));
+    expect(seen.size).toBe(9);
   });
 });
 
