@@ -6,6 +6,18 @@ precision highp float;
 // LIGHT_COUNT (1..4) and LIGHTi_POINT (true/false) come with the variant: each light is written
 // out with constant indices and a constant kind, so nothing is indexed or selected at run time
 // (a loop over uniform arrays cost the default scene 40% on SwiftShader).
+// Added to every material texture's level of detail (here, before pbr.glsl and standard.frag read it): 0, or −log2(side)
+// in a refinement frame, whose textures are read over its stratum (docs/refinement.md#footprints).
+uniform float uLodBias;
+
+/** A material texture at uv, its level of detail moved by uLodBias (in the vertex stage, where nothing calls it: level 0). */
+vec4 mapRead(sampler2D map, vec2 uv) {
+#ifdef FRAGMENT_STAGE
+  return texture(map, uv, uLodBias);
+#else
+  return textureLod(map, uv, 0.0);
+#endif
+}
 uniform vec4 uLightVector[MAX_LIGHTS];   // a unit vector towards the light, or its eye-relative position
 uniform vec3 uLightAmbient[MAX_LIGHTS];
 uniform vec3 uLightDiffuse[MAX_LIGHTS];

@@ -66,7 +66,7 @@ vec3 mappedNormal(vec3 n, vec4 t, vec2 uv, vec3 v) {
   if (tl == 0.0) return facing(n, v);
   tt /= tl;
   vec3 b = (t.w < 0.0 ? -1.0 : 1.0) * cross(n, tt);
-  vec3 m = texture(uNormalMap, mapUv(4, uv), uLodBias).rgb * 2.0 - 1.0;
+  vec3 m = mapRead(uNormalMap, mapUv(4, uv)).rgb * 2.0 - 1.0;
   m.xy *= uNormalScale;
   vec3 p = normalize(m.x * tt + m.y * b + m.z * n);
 #ifdef TWO_SIDED
@@ -86,9 +86,9 @@ vec3 pbrColor(vec3 n, vec3 v, vec3 relPos, vec3 base, vec3 e, vec2 uv) {
   if (uPbr.z > 0.5) return base + e;
   vec3 s = vec3(uPbr.xy, 1.0);
 #ifdef MAPPING_UV
-  s *= vec3(texture(uMetalRough, mapUv(1, uv), uLodBias).bg, 1.0);
-  s.z = 1.0 + uOcclusionStrength * (texture(uOcclusion, mapUv(2, uv), uLodBias).r - 1.0);
-  e *= texture(uEmissiveMap, mapUv(3, uv), uLodBias).rgb;
+  s *= vec3(mapRead(uMetalRough, mapUv(1, uv)).bg, 1.0);
+  s.z = 1.0 + uOcclusionStrength * (mapRead(uOcclusion, mapUv(2, uv)).r - 1.0);
+  e *= mapRead(uEmissiveMap, mapUv(3, uv)).rgb;
 #endif
   vec3 c = e;
   ADD_PBR_LIGHT(0, LIGHT0_POINT);

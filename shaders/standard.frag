@@ -8,7 +8,6 @@ uniform sampler2D uTexture;
 uniform float uOpacity;
 uniform vec3 uEmissive;        // light given off, added to the lit colour (docs/gltf.md#drawing)
 uniform float uImageTexture;   // 1: an image, read at (u, 1 − v) (OBJ: v = 0 is its bottom row)
-uniform float uLodBias;        // 0, or −log2(side) in a refinement frame: textures read over its stratum (docs/refinement.md#footprints)
 #ifndef MAPPING_UV
 uniform vec4 uBounds;          // the object's bounding sphere (object space): centre, radius
 #endif
@@ -46,7 +45,7 @@ out vec4 outColor;
 const float PI = 3.141592653589793;
 
 vec3 tex(vec2 uv) {
-  return texture(uTexture, uImageTexture > 0.5 ? vec2(uv.x, 1.0 - uv.y) : uv, uLodBias).rgb;
+  return mapRead(uTexture, uImageTexture > 0.5 ? vec2(uv.x, 1.0 - uv.y) : uv).rgb;
 }
 
 /** The texture mappings (one per variant, docs/scene-model.md#texture-mappings), formula for formula as src/scene/mapping.ts writes them. */
@@ -85,7 +84,7 @@ void main() {
   // The base colour's alpha, its factor times its texture's (read as the base colour is) where the mapping is uv, against the cutoff.
 #ifdef MAPPING_UV
   vec2 at = moveUv(0, vUv);
-  float alpha = uAlphaMask.x * texture(uTexture, uImageTexture > 0.5 ? vec2(at.x, 1.0 - at.y) : at, uLodBias).a;
+  float alpha = uAlphaMask.x * mapRead(uTexture, uImageTexture > 0.5 ? vec2(at.x, 1.0 - at.y) : at).a;
 #else
   float alpha = uAlphaMask.x;
 #endif

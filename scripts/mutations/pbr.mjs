@@ -141,13 +141,13 @@ export default [
   {
     name: 'P22 the metallic-roughness map\'s channels swapped (G metallic, B roughness)',
     why: GLSL,
-    edits: [{ file: 'shaders/pbr.glsl', find: 's *= vec3(texture(uMetalRough, mapUv(1, uv), uLodBias).bg, 1.0);', replace: 's *= vec3(texture(uMetalRough, mapUv(1, uv), uLodBias).gb, 1.0);' }],
+    edits: [{ file: 'shaders/pbr.glsl', find: 's *= vec3(mapRead(uMetalRough, mapUv(1, uv)).bg, 1.0);', replace: 's *= vec3(mapRead(uMetalRough, mapUv(1, uv)).gb, 1.0);' }],
     tests: [MAPS],
   },
   {
     name: 'P23 the occlusion map\'s strength not applied (R itself)',
     why: GLSL,
-    edits: [{ file: 'shaders/pbr.glsl', find: 's.z = 1.0 + uOcclusionStrength * (texture(uOcclusion, mapUv(2, uv), uLodBias).r - 1.0);', replace: 's.z = texture(uOcclusion, mapUv(2, uv), uLodBias).r;' }],
+    edits: [{ file: 'shaders/pbr.glsl', find: 's.z = 1.0 + uOcclusionStrength * (mapRead(uOcclusion, mapUv(2, uv)).r - 1.0);', replace: 's.z = mapRead(uOcclusion, mapUv(2, uv)).r;' }],
     tests: [MAPS],
   },
   {
@@ -237,13 +237,13 @@ export default [
   {
     name: 'P38 the alpha mask reads the factor alone (not the texture\'s alpha)',
     why: GLSL,
-    edits: [{ file: 'shaders/standard.frag', find: '  float alpha = uAlphaMask.x * texture(uTexture, uImageTexture > 0.5 ? vec2(at.x, 1.0 - at.y) : at, uLodBias).a;', replace: '  float alpha = uAlphaMask.x;' }],
+    edits: [{ file: 'shaders/standard.frag', find: '  float alpha = uAlphaMask.x * mapRead(uTexture, uImageTexture > 0.5 ? vec2(at.x, 1.0 - at.y) : at).a;', replace: '  float alpha = uAlphaMask.x;' }],
     tests: [MASK],
   },
   {
     name: 'P39 the alpha mask reads the texture upside down (at v, not 1 − v)',
     why: GLSL,
-    edits: [{ file: 'shaders/standard.frag', find: 'uImageTexture > 0.5 ? vec2(at.x, 1.0 - at.y) : at, uLodBias).a;', replace: 'at, uLodBias).a;' }],
+    edits: [{ file: 'shaders/standard.frag', find: 'uImageTexture > 0.5 ? vec2(at.x, 1.0 - at.y) : at).a;', replace: 'at).a;' }],
     tests: [MASK],
   },
   {

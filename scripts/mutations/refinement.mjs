@@ -64,7 +64,7 @@ export default [
   {
     name: 'R10 WebGL textures read over the pixel in strata frames (no level-of-detail bias)',
     why: GL,
-    edits: [{ file: 'shaders/standard.frag', find: 'return texture(uTexture, uImageTexture > 0.5 ? vec2(uv.x, 1.0 - uv.y) : uv, uLodBias).rgb;', replace: 'return texture(uTexture, uImageTexture > 0.5 ? vec2(uv.x, 1.0 - uv.y) : uv).rgb;' }],
+    edits: [{ file: 'shaders/lighting.glsl', find: 'return texture(map, uv, uLodBias);', replace: 'return texture(map, uv);' }],
     tests: [SPEC],
   },
   {

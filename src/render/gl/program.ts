@@ -42,7 +42,8 @@ export class Program {
     header: readonly string[] = [],
   ) {
     const vs = this.compile(gl.VERTEX_SHADER, withHeader(vertexSource, header));
-    const fs = this.compile(gl.FRAGMENT_SHADER, withHeader(fragmentSource, header), vs);
+    // FRAGMENT_STAGE: what both stages share (lighting.glsl) may read textures with a bias, which only a fragment shader can.
+    const fs = this.compile(gl.FRAGMENT_SHADER, withHeader(fragmentSource, ['#define FRAGMENT_STAGE', ...header]), vs);
     const program = gl.createProgram()!;
     counter.add('programs');
     gl.attachShader(program, vs);
