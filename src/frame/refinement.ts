@@ -33,6 +33,7 @@ const digits = new Uint8Array(MAX_DIGITS);
  */
 function faureCell(i: number, m: number, out: Int32Array): void {
   let n = i;
+  // Stryker disable next-line EqualityOperator: j = MAX_DIGITS writes past the Uint8Array's end (dropped); no such digit is read
   for (let j = 0; j < MAX_DIGITS; j++) {
     digits[j] = n % 3;
     n = Math.floor(n / 3);
@@ -137,6 +138,7 @@ export const refines = (state: Pick<FrameState, 'colorSpace' | 'view' | 'refinem
  */
 export function jitterClip(m: Float64Array, dx: number, dy: number, width: number, height: number): void {
   const ax = (2 * dx) / Math.max(1, width), ay = (2 * dy) / Math.max(1, height);
+  // Stryker disable next-line EqualityOperator: c = 16 writes past the Float64Array's end (dropped)
   for (let c = 0; c < 16; c += 4) {
     m[c] += ax * m[c + 3];
     m[c + 1] += ay * m[c + 3];

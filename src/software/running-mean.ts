@@ -23,13 +23,16 @@ export class RunningMean {
     const from = 3 * top * width, to = 3 * bottom * width;
     const preview = this.preview.subarray(from, to);
     if (k < 2) {
+      // Stryker disable next-line ArithmeticOperator: bottom + top rows write only past the band's end (a subarray: dropped)
       boxInto(preview, source, width, bottom - top, n, 0, 1);
       return preview;
     }
     const mean = this.mean.subarray(from, to), shown = this.shown.subarray(from, to);
     const w = refinementWeight(k);
+    // Stryker disable next-line ConditionalExpression,EqualityOperator: at k = 2 the weight is 1, so 1 − w is the 0 it keeps
     boxInto(mean, source, width, bottom - top, n, k > 2 ? 1 - w : 0, w);
     const t = meanShare(k, frames);
+    // Stryker disable next-line EqualityOperator: i = shown.length writes past the band's end (dropped)
     for (let i = 0; i < shown.length; i++) shown[i] = (1 - t) * preview[i] + t * mean[i];
     return shown;
   }
@@ -38,6 +41,7 @@ export class RunningMean {
 /** out = keep·out + w·(the mean of each pixel's n × n samples in `source`), for `rows` rows of `width` pixels. */
 function boxInto(out: Float32Array, source: Float32Array, width: number, rows: number, n: number, keep: number, w: number): void {
   const scale = w / (n * n), W = width * n;
+  // Stryker disable next-line EqualityOperator: y = rows writes past the band's end (dropped)
   for (let y = 0; y < rows; y++) {
     for (let x = 0; x < width; x++) {
       let r = 0, g = 0, b = 0;

@@ -24,6 +24,8 @@ describe('refinement: the strata', () => {
     expect(binomial3(2, 1)).toBe(2);
     expect(binomial3(1, 2)).toBe(0);
     expect(binomial3(0, 0)).toBe(1);
+    expect(binomial3(2, 3)).toBe(0); // n's digits run out before k's: C(0, 1) = 0
+    expect(binomial3(9, 3)).toBe(0); // 100 and 010 in base 3: C(0, 1) = 0
     expect(binomial3(8, 4)).toBe(70 % 3);
   });
 
@@ -73,6 +75,8 @@ describe('refinement: the strata', () => {
     expect(mean).toBe(3);
     expect([1, 2, 6, 10, 11].map((k) => meanShare(k, 10))).toEqual([0, 1 / 9, 5 / 9, 1, 1]);
     expect(meanShare(3, 1)).toBe(0);
+    expect(meanShare(0, 10)).toBe(0);
+    expect(meanShare(0.5, 10)).toBe(0);
     expect(meanShare(2, 2)).toBe(1);
     expect(meanShare(2.5, 3)).toBe(0.5);
     expect(MAX_REFINEMENT).toBe(1024);
@@ -183,5 +187,18 @@ describe('refinement: the software renderer’s running mean', () => {
     expect(Array.from(mean.add(frame([1, 2]), 2, 3, 1, 2, 1, 2, 2))).toEqual([1, 2, 3, 2, 4, 6]);
     // Row 0's preview was never written: frame 2 over it shows the half of the strata's share (2 frames: share 1).
     expect(Array.from(mean.add(frame([1, 1]), 2, 3, 0, 1, 1, 2, 3))).toEqual([0.5, 1, 1.5, 0.5, 1, 1.5]);
+  });
+
+  it('a band of two rows, 2 × 2 samples a pixel: each pixel its own samples, through three frames', () => {
+    const mean = new RunningMean();
+    // Pixels (row, column) = 1, 2 / 3, 4, each of its 2 × 2 samples alike; 4 × 4 samples, RGB = v, 2v, 3v.
+    const frame = (scale: number) => {
+      const rows = [[1, 1, 2, 2], [1, 1, 2, 2], [3, 3, 4, 4], [3, 3, 4, 4]];
+      return Float32Array.from(rows.flat().flatMap((v) => [scale * v, 2 * scale * v, 3 * scale * v]));
+    };
+    const red = (a: Float32Array) => Array.from(a).filter((_, i) => i % 3 === 0);
+    expect(red(mean.add(frame(1), 2, 2, 0, 2, 2, 1, 3))).toEqual([1, 2, 3, 4]);
+    expect(red(mean.add(frame(10), 2, 2, 0, 2, 2, 2, 3))).toEqual([5.5, 11, 16.5, 22]); // share ½ of the mean 10, 20, 30, 40
+    expect(red(mean.add(frame(20), 2, 2, 0, 2, 2, 3, 3))).toEqual([15, 30, 45, 60]); // the mean of 10·v and 20·v, all of it
   });
 });
