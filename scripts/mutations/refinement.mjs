@@ -73,4 +73,10 @@ export default [
     edits: [{ file: 'src/element/software-host.ts', find: 'if (!still && b.bottom > b.top && p.ms > 0)', replace: 'if (b.bottom > b.top && p.ms > 0)' }],
     tests: [SPEC],
   },
+  {
+    name: 'R12 WebGL rough glass gathers where it gathers alone in every strata frame',
+    why: GL,
+    edits: [{ file: 'src/render/rough-targets.ts', find: "gl.uniform3fv(p.location('uGatherJitter'), this.jitter);", replace: "gl.uniform3f(p.location('uGatherJitter'), 0.5, 0.5, 0);" }],
+    tests: [SPEC],
+  },
 ];
