@@ -26,7 +26,12 @@ const mean = (xs: number[]) => xs.reduce((a, b) => a + b, 0) / xs.length;
 
 /** Mean PSNR of one region over the views (views where the region is empty are skipped). */
 export function meanPsnr(row: Row, region: keyof PerRegion): number {
-  const xs = row.perView.map((v) => v.error?.psnr[region] ?? NaN).filter((x) => !Number.isNaN(x));
+  return meanRegion(row.perView.map((v) => v.error?.psnr), region);
+}
+
+/** Mean PSNR of one region over `psnrs`, one a view (absent, or an empty region's NaN, skipped). */
+export function meanRegion(psnrs: readonly (PerRegion | null | undefined)[], region: keyof PerRegion): number {
+  const xs = psnrs.map((p) => p?.[region] ?? NaN).filter((x) => !Number.isNaN(x));
   // An identical region has infinite PSNR; cap it so one view cannot dominate the mean.
   return xs.length ? mean(xs.map((x) => Math.min(x, 99))) : NaN;
 }

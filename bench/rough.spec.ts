@@ -8,24 +8,20 @@
 // twice the microfacet normals, and how much that moves the rows. Writes bench/rough.md;
 // BENCH_SMOKE=1 runs it tiny so the pipeline cannot rot.
 import { writeFileSync } from 'node:fs';
-import { createHash } from 'node:crypto';
 import { test, expect } from '../tests/e2e/fixtures';
-import { compareImages, renderScene, type ReferenceImage } from '../src/reference';
-import { defaultFrameState } from '../tests/unit/helpers/frame-state';
+import { compareImages, type ReferenceImage } from '../src/reference';
 import { SoftwareRenderer } from '../src/software';
 import { ROUGHNESS_QUALITIES, type RoughnessQuality } from '../src/frame/rough-glass';
 import type { FrameState } from '../src/frame/types';
-import { roughFloorScene, ROUGH_FLOOR_VIEW, SPHERE_HEIGHT } from './rough-scene';
-import { cachedImage, sourcesVersion } from './reference-cache';
+import { roughFloorScene, SPHERE_HEIGHT } from './rough-scene';
+import { roughReference as reference, roughState as state, ROUGH_MICROFACETS, ROUGH_REF_SPP, ROUGH_SIZE } from './rough-reference';
 import { paretoFront } from './pareto';
 import { summary } from './stats';
 
 const SMOKE = process.env.BENCH_SMOKE === '1';
-const SIZE = SMOKE ? { width: 80, height: 45 } : { width: 320, height: 180 };
 const CASES: [number, number][] = SMOKE ? [[0.3, 10]] : [[0.1, 1.5], [0.1, 10], [0.3, 1.5], [0.3, 10], [0.6, 1.5], [0.6, 10]];
-/** The reference: 4×4 strata per pixel, this many microfacet normals each; the check doubles them (at 2×2 × 256 doubling moved the rows by ~1 dB). */
-const REF_SPP = SMOKE ? 1 : 4;
-const MICROFACETS = SMOKE ? 16 : 1024;
+/** The reference's sampling (rough-reference.ts); the check doubles the microfacet normals. */
+const SIZE = ROUGH_SIZE, REF_SPP = ROUGH_REF_SPP, MICROFACETS = ROUGH_MICROFACETS;
 const CHECK_CASE = '0.3/10';
 const LEVELS = SMOKE ? [2] : [0, 1, 2, 3, 4, 5, 6, 7];
 const FRAMES = SMOKE ? 1 : 3;
@@ -39,22 +35,6 @@ interface Bench {
     roughPixels(s: FrameState): Promise<{ width: number; height: number; data: string }>;
     info(): { renderer: string };
   };
-}
-
-function state(roughness: number, ior: number, extra: Partial<FrameState> = {}): FrameState {
-  const v = ROUGH_FLOOR_VIEW;
-  return defaultFrameState({
-    width: SIZE.width, height: SIZE.height, spin: 0, cubeDistance: 0, ior, cameraPosition: v.cameraPosition, yaw: v.yaw, pitch: v.pitch,
-    roughness, ...extra,
-  });
-}
-
-/** The reference of a case, cached in bench/.cache by its state, sampling and the reference's sources. */
-function reference(roughness: number, ior: number, microfacets: number): { ref: ReferenceImage; ms: number | null; cached: boolean } {
-  const s = state(roughness, ior);
-  const sources = ['../src/reference/', '../src/scene/', '../src/math/'].map((d) => new URL(d, import.meta.url));
-  const key = createHash('sha256').update(JSON.stringify({ s, spp: REF_SPP, microfacets, v: sourcesVersion(sources), scene: 'rough-floor' })).digest('hex').slice(0, 16);
-  return cachedImage(`rough-${key}`, () => renderScene(roughFloorScene(), s, null, { samplesPerAxis: REF_SPP, microfacetSamples: microfacets }));
 }
 
 interface Config { label: string; extra: Partial<FrameState>; rough: boolean; quality?: RoughnessQuality; level?: number }
