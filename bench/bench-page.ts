@@ -2,7 +2,6 @@
 // three.js peer), times batches of frames closed by a 1-pixel readback, returns pixels.
 import { Renderer } from '../src/render/renderer';
 import type { FrameState } from '../src/frame/types';
-import { defaultFrameState } from '../tests/unit/helpers/frame-state';
 import { ThreePeer } from './three-peer';
 import { DEFAULTS, type Knobs } from './configs';
 import type { BenchView } from './views';
@@ -10,29 +9,15 @@ import { BENCH_SCENES } from './scenes';
 import { roughFloorScene } from './rough-scene';
 import { finish, ourContext, ourFrames, resize, toBase64 } from './page-gl';
 import type { Shading } from '../src/frame/types';
+import { frameState, type Scene } from './bench-state';
 
-export interface Scene {
-  width: number;
-  height: number;
-  time: number;
-}
-
-function frameState(scene: Scene, knobs: Knobs, view: BenchView, mode: FrameState['view'] = 'final'): FrameState {
-  return defaultFrameState({
-    width: Math.max(1, Math.round(scene.width * knobs.pixelRatio)),
-    height: Math.max(1, Math.round(scene.height * knobs.pixelRatio)),
-    time: scene.time, fresnel: knobs.fresnel,
-    cameraPosition: view.cameraPosition, yaw: view.yaw, pitch: view.pitch, colorSpace: knobs.colorSpace, view: mode,
-    reflectionScale: knobs.reflectionScale, samples: knobs.samples, shading: knobs.shading, tessellation: knobs.tessellation,
-    reflectionFormat: knobs.reflectionFormat, projection: view.projection,
-  });
-}
+export type { Scene };
 
 const oursCanvas = document.getElementById('ours') as HTMLCanvasElement;
 const peerCanvas = document.getElementById('peer') as HTMLCanvasElement;
 const gl = ourContext(oursCanvas);
 const renderer = new Renderer(gl, {});
-const { timeFrames, screenPixels } = ourFrames(renderer, gl, oursCanvas);
+const { timeFrames, screenPixels, stillTimes, stillPicture } = ourFrames(renderer, gl, oursCanvas);
 let peer: ThreePeer | null = null;
 let roughScene: ReturnType<typeof roughFloorScene> | null = null;
 
@@ -166,6 +151,19 @@ const api = {
 
   async roughPixels(s: FrameState): Promise<{ width: number; height: number; data: string }> {
     return screenPixels((roughScene ??= roughFloorScene()), s, null);
+  },
+
+  /**
+   * A still view of `frames` frames (docs/refinement.md) of the default scene at `knobs`, or of the rough floor
+   * (bench/rough-scene.ts) in frame state `rough`: ms from its start to the end of each frame, after `warmup` moving frames.
+   */
+  async stillTimes(scene: Scene, knobs: Knobs, view: BenchView, frames: number, warmup: number, rough: FrameState | null = null): Promise<number[]> {
+    return rough ? stillTimes((roughScene ??= roughFloorScene()), rough, frames, warmup, null) : stillTimes(null, frameState(scene, knobs, view), frames, warmup);
+  },
+
+  /** Frame k of that still view (drawn in order, 1 to `frames`): the picture shown after it, base64, or null when not `read`. */
+  async stillPicture(scene: Scene, knobs: Knobs, view: BenchView, k: number, frames: number, read: boolean, rough: FrameState | null = null): Promise<string | null> {
+    return rough ? stillPicture((roughScene ??= roughFloorScene()), rough, k, frames, read, null) : stillPicture(null, frameState(scene, knobs, view), k, frames, read);
   },
 
   info(): { renderer: string; timerQuery: boolean; maxSamples: number } {

@@ -1,8 +1,10 @@
 // What both bench pages (bench-page.ts, pbr-page.ts) do with our renderer in the browser: a context made as the element makes
-// its own, the canvas sized to a frame state, batches of frames timed and closed by a one-pixel read, pixels as base64.
+// its own, the canvas sized to a frame state, batches of frames timed and closed by a one-pixel read, pixels as base64; and a
+// still view's frames (docs/refinement.md), each timed, or read as the picture shown after it.
 import { Renderer } from '../src/render/renderer';
 import type { FrameState } from '../src/frame/types';
 import type { Scene } from '../src/scene/scene';
+import { stillFrame } from './bench-state';
 
 const pixel = new Uint8Array(4);
 
@@ -45,6 +47,43 @@ export function ourFrames(renderer: Renderer, gl: WebGL2RenderingContext, canvas
       for (let i = 0; i < frames; i++) renderer.render(scene, s);
       finish(gl);
       return (performance.now() - t0) / frames;
+    },
+
+    /**
+     * A still view of `frames` frames (docs/refinement.md#at-rest) of `scene` (null: the default one) from state `s`, after
+     * `warmup` moving frames (what brought the camera there, drawn as a moving one is with refinement on): ms from the view's
+     * start to the end of each of its frames, each waited for by a one-pixel read.
+     */
+    async stillTimes(scene: Scene | null, s: FrameState, frames: number, warmup: number, loadFor: Scene | null = scene): Promise<number[]> {
+      await renderer.load(loadFor, stillFrame(s, 1, frames));
+      await renderer.load(loadFor, stillFrame(s, 2, frames));
+      resize(canvas, s);
+      for (let i = 0; i < warmup; i++) renderer.render(scene, stillFrame(s, 0, frames));
+      finish(gl);
+      const out: number[] = [];
+      const t0 = performance.now();
+      for (let k = 1; k <= frames; k++) {
+        renderer.render(scene, stillFrame(s, k, frames));
+        finish(gl);
+        out.push(performance.now() - t0);
+      }
+      return out;
+    },
+
+    /**
+     * Frame k of a still view of `frames` frames of `scene` from state `s`: the picture shown after it, read from the screen,
+     * base64 (`read` false: drawn, not read). The view's frames must be drawn in order, 1 to `frames`: each adds to the mean
+     * the frames before it left.
+     */
+    async stillPicture(scene: Scene | null, s: FrameState, k: number, frames: number, read: boolean, loadFor: Scene | null = scene): Promise<string | null> {
+      const f = stillFrame(s, k, frames);
+      await renderer.load(loadFor, f);
+      resize(canvas, s);
+      if (!read) {
+        renderer.render(scene, f);
+        return null;
+      }
+      return toBase64(renderer.read(scene, f, null, 'screen').data);
     },
 
     /** `scene`'s frame in state `s`, read from the screen, base64. */
