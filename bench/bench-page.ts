@@ -17,7 +17,7 @@ const oursCanvas = document.getElementById('ours') as HTMLCanvasElement;
 const peerCanvas = document.getElementById('peer') as HTMLCanvasElement;
 const gl = ourContext(oursCanvas);
 const renderer = new Renderer(gl, {});
-const { timeFrames, screenPixels, stillTimes, stillPicture } = ourFrames(renderer, gl, oursCanvas);
+const { timeFrames, screenPixels, stillTimes, stillFrame } = ourFrames(renderer, gl, oursCanvas);
 let peer: ThreePeer | null = null;
 let roughScene: ReturnType<typeof roughFloorScene> | null = null;
 
@@ -161,9 +161,9 @@ const api = {
     return rough ? stillTimes((roughScene ??= roughFloorScene()), rough, frames, warmup, null) : stillTimes(null, frameState(scene, knobs, view), frames, warmup);
   },
 
-  /** Frame k of that still view (drawn in order, 1 to `frames`): the picture shown after it, base64, or null when not `read`. */
-  async stillPicture(scene: Scene, knobs: Knobs, view: BenchView, k: number, frames: number, read: boolean, rough: FrameState | null = null): Promise<string | null> {
-    return rough ? stillPicture((roughScene ??= roughFloorScene()), rough, k, frames, read, null) : stillPicture(null, frameState(scene, knobs, view), k, frames, read);
+  /** Frame k of that still view (drawn in order, 1 to `frames`): its ms, and the picture shown after it (base64) when `read`. */
+  async stillFrame(scene: Scene, knobs: Knobs, view: BenchView, k: number, frames: number, read: boolean, rough: FrameState | null = null): Promise<{ ms: number; picture: string | null }> {
+    return rough ? stillFrame((roughScene ??= roughFloorScene()), rough, k, frames, read, null) : stillFrame(null, frameState(scene, knobs, view), k, frames, read);
   },
 
   info(): { renderer: string; timerQuery: boolean; maxSamples: number } {

@@ -28,6 +28,6 @@ export function frameState(scene: Scene, knobs: Knobs, view: BenchView, mode: Fr
  * (src/element/frame-state.ts): k = 1 the preview, at the samples `s` asks for; k ≥ 2 a strata frame, and k = 0 a moving
  * frame, both at one sample a pixel.
  */
-export function stillFrame(s: FrameState, k: number, frames: number): FrameState {
+export function stillState(s: FrameState, k: number, frames: number): FrameState {
   return { ...s, samples: k === 1 ? s.samples : 0, refinement: k, refinementFrames: frames };
 }

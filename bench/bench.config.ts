@@ -9,7 +9,7 @@ const PORT = Number(process.env.BENCH_PORT ?? (process.env.BENCH_SMOKE ? 5185 : 
 
 export default defineConfig({
   testDir: '.',
-  testMatch: process.env.BENCH_ONLY ? [process.env.BENCH_ONLY] : ['bench.spec.ts', 'scenes.spec.ts', 'projection.spec.ts', 'parse.spec.ts', 'many.spec.ts', 'software.spec.ts', 'rough.spec.ts', 'gltf.spec.ts', 'pbr.spec.ts'],
+  testMatch: process.env.BENCH_ONLY ? [process.env.BENCH_ONLY] : ['bench.spec.ts', 'scenes.spec.ts', 'projection.spec.ts', 'parse.spec.ts', 'many.spec.ts', 'software.spec.ts', 'rough.spec.ts', 'gltf.spec.ts', 'pbr.spec.ts', 'refine.spec.ts'],
   outputDir: '../test-results/bench',
   workers: 1,
   retries: 0,

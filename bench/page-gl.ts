@@ -4,7 +4,8 @@
 import { Renderer } from '../src/render/renderer';
 import type { FrameState } from '../src/frame/types';
 import type { Scene } from '../src/scene/scene';
-import { stillFrame } from './bench-state';
+import { readFramebuffer } from '../src/render/gl/read-pixels';
+import { stillState } from './bench-state';
 
 const pixel = new Uint8Array(4);
 
@@ -55,15 +56,15 @@ export function ourFrames(renderer: Renderer, gl: WebGL2RenderingContext, canvas
      * start to the end of each of its frames, each waited for by a one-pixel read.
      */
     async stillTimes(scene: Scene | null, s: FrameState, frames: number, warmup: number, loadFor: Scene | null = scene): Promise<number[]> {
-      await renderer.load(loadFor, stillFrame(s, 1, frames));
-      await renderer.load(loadFor, stillFrame(s, 2, frames));
+      await renderer.load(loadFor, stillState(s, 1, frames));
+      await renderer.load(loadFor, stillState(s, 2, frames));
       resize(canvas, s);
-      for (let i = 0; i < warmup; i++) renderer.render(scene, stillFrame(s, 0, frames));
+      for (let i = 0; i < warmup; i++) renderer.render(scene, stillState(s, 0, frames));
       finish(gl);
       const out: number[] = [];
       const t0 = performance.now();
       for (let k = 1; k <= frames; k++) {
-        renderer.render(scene, stillFrame(s, k, frames));
+        renderer.render(scene, stillState(s, k, frames));
         finish(gl);
         out.push(performance.now() - t0);
       }
@@ -71,19 +72,20 @@ export function ourFrames(renderer: Renderer, gl: WebGL2RenderingContext, canvas
     },
 
     /**
-     * Frame k of a still view of `frames` frames of `scene` from state `s`: the picture shown after it, read from the screen,
-     * base64 (`read` false: drawn, not read). The view's frames must be drawn in order, 1 to `frames`: each adds to the mean
-     * the frames before it left.
+     * Frame k of a still view of `frames` frames of `scene` from state `s`: the ms it took, waited for by a one-pixel read,
+     * and when `read` the picture shown after it, read from the canvas it was drawn on (base64; the read is not timed). The
+     * view's frames must be drawn in order, 1 to `frames`: each adds to the mean the frames before it left.
      */
-    async stillPicture(scene: Scene | null, s: FrameState, k: number, frames: number, read: boolean, loadFor: Scene | null = scene): Promise<string | null> {
-      const f = stillFrame(s, k, frames);
+    async stillFrame(scene: Scene | null, s: FrameState, k: number, frames: number, read: boolean, loadFor: Scene | null = scene): Promise<{ ms: number; picture: string | null }> {
+      const f = stillState(s, k, frames);
       await renderer.load(loadFor, f);
       resize(canvas, s);
-      if (!read) {
-        renderer.render(scene, f);
-        return null;
-      }
-      return toBase64(renderer.read(scene, f, null, 'screen').data);
+      const t0 = performance.now();
+      renderer.render(scene, f);
+      finish(gl);
+      const ms = performance.now() - t0;
+      // The drawing buffer is not preserved, but it holds the frame until this task ends.
+      return { ms, picture: read ? toBase64(readFramebuffer(gl, null, s.width, s.height).data) : null };
     },
 
     /** `scene`'s frame in state `s`, read from the screen, base64. */
