@@ -162,8 +162,12 @@ const api = {
   },
 
   /** Frame k of that still view (drawn in order, 1 to `frames`): its ms, and the picture shown after it (base64) when `read`. */
-  async stillFrame(scene: Scene, knobs: Knobs, view: BenchView, k: number, frames: number, read: boolean, rough: FrameState | null = null): Promise<{ ms: number; picture: string | null }> {
-    return rough ? stillFrame((roughScene ??= roughFloorScene()), rough, k, frames, read, null) : stillFrame(null, frameState(scene, knobs, view), k, frames, read);
+  async stillFrame(
+    scene: Scene, knobs: Knobs, view: BenchView, k: number, frames: number, read: boolean, warmup: number, rough: FrameState | null = null,
+  ): Promise<{ ms: number; picture: string | null }> {
+    return rough
+      ? stillFrame((roughScene ??= roughFloorScene()), rough, k, frames, read, warmup, null)
+      : stillFrame(null, frameState(scene, knobs, view), k, frames, read, warmup);
   },
 
   info(): { renderer: string; timerQuery: boolean; maxSamples: number } {

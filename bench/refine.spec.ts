@@ -61,8 +61,8 @@ const decode = (b64: string) => new Uint8ClampedArray(Buffer.from(b64, 'base64')
 async function stillView(page: Page, view: BenchView, frames: number, ref: ReferenceImage, read: (k: number) => boolean, rough: FrameState | null = null): Promise<{ ms: number[]; psnr: (PerRegion | null)[] }> {
   const ms: number[] = [], psnr: (PerRegion | null)[] = [];
   for (let k = 1; k <= frames; k++) {
-    const f = await page.evaluate(([scene, knobs, view, k, frames, read, rough]) =>
-      (window as unknown as Bench).bench.stillFrame(scene, knobs, view, k, frames, read, rough), [SCENE, STILL_KNOBS, view, k, frames, read(k), rough] as const);
+    const f = await page.evaluate(([scene, knobs, view, k, frames, read, warmup, rough]) =>
+      (window as unknown as Bench).bench.stillFrame(scene, knobs, view, k, frames, read, warmup, rough), [SCENE, STILL_KNOBS, view, k, frames, read(k), WARMUP, rough] as const);
     ms.push((ms[k - 2] ?? 0) + f.ms);
     psnr.push(f.picture === null ? null : compareImages(ref, decode(f.picture)).psnr);
   }
