@@ -79,4 +79,10 @@ export default [
     edits: [{ file: 'src/render/rough-targets.ts', find: "gl.uniform3fv(p.location('uGatherJitter'), this.jitter);", replace: "gl.uniform3f(p.location('uGatherJitter'), 0.5, 0.5, 0);" }],
     tests: [SPEC],
   },
+  {
+    name: 'R13 WebGL glass reads its body texture over the pixel in strata frames (no level-of-detail bias)',
+    why: GL,
+    edits: [{ file: 'shaders/glass.frag', find: 'texture(uTexture, vUv, uBodyLodBias)', replace: 'texture(uTexture, vUv)' }],
+    tests: [SPEC],
+  },
 ];

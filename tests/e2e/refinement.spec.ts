@@ -10,6 +10,7 @@ import { SoftwareRenderer } from '../../src/software';
 import { defaultFrameState } from '../unit/helpers/frame-state';
 import { psnr } from './helpers/bounds';
 import { roughFloorScene, ROUGH_FLOOR_VIEW } from '../../bench/rough-scene';
+import { VIEWS } from '../../bench/views';
 
 const N = 5;
 
@@ -151,4 +152,17 @@ test('WebGL: rough glass at rest, the bench floor at roughness 0.3 and ior 10, c
   const still = compareImages(ref, (await refineScene(page, state, floor, 10)).data as unknown as Uint8ClampedArray).psnr;
   console.log(`WebGL rough glass at rest, 10 frames: glass ${alone.glass.toFixed(1)} → ${still.glass.toFixed(1)} dB, all ${alone.all.toFixed(1)} → ${still.all.toFixed(1)}`);
   expect(still.glass).toBeGreaterThan(alone.glass + 2);
+});
+
+test('WebGL: the glass far away keeps its body texture read over the stratum (the bench’s far view, 640 × 360)', async ({ page }) => {
+  await openRendererPage(page);
+  const scene = defaultScene(0.75, 0.8);
+  const v = VIEWS.find((x) => x.name === 'far away')!;
+  const state = defaultFrameState({ width: 640, height: 360, time: 1.25, samples: 0, cameraPosition: v.cameraPosition, yaw: v.yaw, pitch: v.pitch });
+  const ref = renderScene(scene, state, null, { samplesPerAxis: 4 });
+  const still = compareImages(ref, (await refineScene(page, state, scene, 10)).data as unknown as Uint8ClampedArray).psnr;
+  console.log(`WebGL far away, 10 frames: glass ${still.glass.toFixed(1)} dB, all ${still.all.toFixed(1)}`);
+  // Measured: glass 41.0 (44.6 the frame alone: the move's loss there is not found yet, docs/refinement.md); with the
+  // body texture read over the pixel in strata frames, 36.3.
+  expect(still.glass).toBeGreaterThan(39.5);
 });
