@@ -6,14 +6,16 @@ precision highp float;
 // LIGHT_COUNT (1..4) and LIGHTi_POINT (true/false) come with the variant: each light is written
 // out with constant indices and a constant kind, so nothing is indexed or selected at run time
 // (a loop over uniform arrays cost the default scene 40% on SwiftShader).
-// Added to every material texture's level of detail (here, before pbr.glsl and standard.frag read it): 0, or −log2(side)
-// in a refinement frame, whose textures are read over its stratum (docs/refinement.md#footprints).
-uniform float uLodBias;
+// The share of a pixel a material texture is read over (here, before pbr.glsl and standard.frag read it): 1, or 1/side in a
+// strata frame, whose textures are read over its stratum (docs/refinement.md#footprints). The screen derivatives are scaled,
+// not the level biased: under SwiftShader a bias of −log2(side) left the objects' average 10 dB from the supersampled one.
+uniform float uFootprint;
 
-/** A material texture at uv, its level of detail moved by uLodBias (in the vertex stage, where nothing calls it: level 0). */
+/** A material texture at uv, read over uFootprint of a pixel (in the vertex stage, where nothing calls it: level 0). */
 vec4 mapRead(sampler2D map, vec2 uv) {
 #ifdef FRAGMENT_STAGE
-  return texture(map, uv, uLodBias);
+  if (uFootprint == 1.0) return texture(map, uv);
+  return textureGrad(map, uv, dFdx(uv) * uFootprint, dFdy(uv) * uFootprint);
 #else
   return textureLod(map, uv, 0.0);
 #endif

@@ -62,9 +62,9 @@ export default [
     tests: [SPEC],
   },
   {
-    name: 'R10 WebGL textures read over the pixel in strata frames (no level-of-detail bias)',
+    name: 'R10 WebGL textures read over the pixel in strata frames (derivatives unscaled)',
     why: GL,
-    edits: [{ file: 'shaders/lighting.glsl', find: 'return texture(map, uv, uLodBias);', replace: 'return texture(map, uv);' }],
+    edits: [{ file: 'shaders/lighting.glsl', find: 'dFdx(uv) * uFootprint, dFdy(uv) * uFootprint', replace: 'dFdx(uv), dFdy(uv)' }],
     tests: [SPEC],
   },
   {
@@ -80,9 +80,9 @@ export default [
     tests: [SPEC],
   },
   {
-    name: 'R13 WebGL glass reads its body texture over the pixel in strata frames (no level-of-detail bias)',
+    name: 'R13 WebGL glass reads its body texture over the pixel in strata frames (derivatives unscaled)',
     why: GL,
-    edits: [{ file: 'shaders/glass.frag', find: 'texture(uTexture, vUv, uBodyLodBias)', replace: 'texture(uTexture, vUv)' }],
+    edits: [{ file: 'shaders/glass.frag', find: 'dFdx(vUv) * uFootprint, dFdy(vUv) * uFootprint', replace: 'dFdx(vUv), dFdy(vUv)' }],
     tests: [SPEC],
   },
 ];

@@ -139,7 +139,7 @@ export class Renderer implements DebugViewFrame {
       cull: true,
       transparentDepth: false,
       hdr: false,
-      lodBias: 0,
+      footprint: 1,
       environment: null,
       pbrMaps: null,
       scissor: null,
@@ -261,7 +261,7 @@ export class Renderer implements DebugViewFrame {
     for (let k = 0; k < 3; k++) this.background[k] = srgb ? srgbToLinear(scene.background[k]) : scene.background[k];
     this.setup.update(state, scene);
     this.ctx.hdr = toneMapped(state) && this.canHalfFloat && this.programs.hasPbr;
-    this.ctx.lodBias = -Math.log2(refinementScale(state));
+    this.ctx.footprint = 1 / refinementScale(state);
     this.objectMeshes.trim(scene.objects.length);
     this.objectMeshes.beginFrame(this.setup.halfHeight);
     this.ctx.triangles.scene = this.ctx.triangles.reflection = 0;

@@ -133,11 +133,12 @@ test('WebGL: a still view of 10 frames ends as the 3 × 3 supersampled picture, 
   const toSsaa = psnr(ssaa, refined.data);
   console.log(`WebGL refinement, 10 frames: all ${alone.all.toFixed(1)} → ${still.all.toFixed(1)} dB, objects ${alone.objects.toFixed(1)} → ${still.objects.toFixed(1)}, `
     + `edges ${alone.edges.toFixed(1)} → ${still.edges.toFixed(1)}; against the software renderer's 3 × 3: ${toSsaa.toFixed(1)} dB`);
-  // Measured (SwiftShader): all 40.3 → 48.2, objects 41.8 → 45.9, edges 31.7 → 41.1; against the 3 × 3 picture 47.8 (the
-  // frame alone against the software frame alone: 48.2 — the two rasterizers' own difference, which averaging keeps).
-  expect(still.all).toBeGreaterThan(alone.all + 7);
-  expect(still.edges).toBeGreaterThan(alone.edges + 8.5);
-  expect(toSsaa).toBeGreaterThan(46.5);
+  // Measured (SwiftShader): all 40.3 → 51.4, objects 41.8 → 50.7, edges 31.7 → 44.6; against the 3 × 3 picture 50.6. With the
+  // textures' level of detail biased by −log2 3 instead of their derivatives scaled by ⅓: all 48.2, objects 45.9, 47.8.
+  expect(still.all).toBeGreaterThan(alone.all + 10.5);
+  expect(still.objects).toBeGreaterThan(alone.objects + 8);
+  expect(still.edges).toBeGreaterThan(alone.edges + 12);
+  expect(toSsaa).toBeGreaterThan(50);
 });
 
 test('WebGL: rough glass at rest, the bench floor at roughness 0.3 and ior 10, closer to the Monte Carlo reference', async ({ page }) => {
@@ -151,7 +152,8 @@ test('WebGL: rough glass at rest, the bench floor at roughness 0.3 and ior 10, c
   const alone = compareImages(ref, (await drawScene(page, state, floor)).data as unknown as Uint8ClampedArray).psnr;
   const still = compareImages(ref, (await refineScene(page, state, floor, 10)).data as unknown as Uint8ClampedArray).psnr;
   console.log(`WebGL rough glass at rest, 10 frames: glass ${alone.glass.toFixed(1)} → ${still.glass.toFixed(1)} dB, all ${alone.all.toFixed(1)} → ${still.all.toFixed(1)}`);
-  expect(still.glass).toBeGreaterThan(alone.glass + 2);
+  // Measured: glass 45.4 → 50.6 dB (the issue's bar: 50); 47.4 with the glass's body texture read by a level-of-detail bias.
+  expect(still.glass).toBeGreaterThan(50);
 });
 
 test('WebGL: the glass far away keeps its body texture read over the stratum (the bench’s far view, 640 × 360)', async ({ page }) => {
@@ -162,7 +164,7 @@ test('WebGL: the glass far away keeps its body texture read over the stratum (th
   const ref = renderScene(scene, state, null, { samplesPerAxis: 4 });
   const still = compareImages(ref, (await refineScene(page, state, scene, 10)).data as unknown as Uint8ClampedArray).psnr;
   console.log(`WebGL far away, 10 frames: glass ${still.glass.toFixed(1)} dB, all ${still.all.toFixed(1)}`);
-  // Measured: glass 41.0 (44.6 the frame alone: the move's loss there is not found yet, docs/refinement.md); with the
-  // body texture read over the pixel in strata frames, 36.3.
-  expect(still.glass).toBeGreaterThan(39.5);
+  // Measured: glass 53.0 (44.6 the frame alone); with the body texture's level of detail biased by −log2 3 instead of its
+  // derivatives scaled, 41.0; read over the whole pixel in strata frames, 36.3.
+  expect(still.glass).toBeGreaterThan(52.5);
 });

@@ -80,7 +80,7 @@ export function drawObjects(
         current = program;
         program.use();
         setLights(gl, program, setup, mirrored);
-        gl.uniform1f(program.location('uLodBias'), ctx.lodBias);
+        gl.uniform1f(program.location('uFootprint'), ctx.footprint);
         if (variant.environment) ctx.environment!.bind(program, ctx.scene.environment!.intensity);
         if (mirrored) gl.uniform4fv(program.location('uClipPlane'), setup.clipPlane);
         else if (farSide) gl.uniform4fv(program.location('uClipPlane'), farSide);

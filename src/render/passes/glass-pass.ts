@@ -44,7 +44,7 @@ export function glassPass(ctx: PassContext, reflection: WebGLTexture, outputFres
     gl.uniform1f(program.location('uIor'), state.ior);
     gl.uniform4fv(program.location('uViewVector'), setup.viewVectorMain);
     gl.uniform3fv(program.location('uBodyTint'), BODY_TINT);
-    gl.uniform1f(program.location('uBodyLodBias'), ctx.lodBias);
+    gl.uniform1f(program.location('uFootprint'), ctx.footprint);
     gl.uniform1f(program.location('uLinearFrame'), encodesAtEnd(state) ? 1 : 0);
     // docs/pbr.md#tone-mapping: a tone-mapped frame keeps R above 1 (65504, a half float's largest).
     gl.uniform1f(program.location('uCeiling'), ctx.hdr ? 65504 : 1);

@@ -44,8 +44,8 @@ export interface PassContext {
    * (toneMapped), and the context can render to half float, and the tone-mapping chunk is in.
    */
   hdr: boolean;
-  /** Added to every material texture's level of detail: −log2 of the frame's refinement scale (docs/refinement.md#footprints). */
-  lodBias: number;
+  /** The share of a pixel every material texture is read over: 1 / the frame's refinement scale (docs/refinement.md#footprints). */
+  footprint: number;
   /** An environment's textures (docs/pbr.md#the-environment), once its chunk is in (ENVIRONMENT_LIGHT, render/parts.ts); the renderer disposes them. */
   environment: EnvironmentGl | null;
   /** glTF materials' maps (docs/gltf.md#drawing), once the PBR chunk is in (PBR_MATERIALS); the renderer disposes them. */
