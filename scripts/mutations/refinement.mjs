@@ -85,4 +85,16 @@ export default [
     edits: [{ file: 'shaders/glass.frag', find: 'dFdx(vUv) * uFootprint, dFdy(vUv) * uFootprint', replace: 'dFdx(vUv), dFdy(vUv)' }],
     tests: [SPEC],
   },
+  {
+    name: 'R14 WebGL glass biases its body texture\'s level by log2 uFootprint in strata frames instead of scaling its derivatives',
+    why: GL,
+    edits: [{ file: 'shaders/glass.frag', find: 'textureGrad(uTexture, vUv, dFdx(vUv) * uFootprint, dFdy(vUv) * uFootprint)', replace: 'texture(uTexture, vUv, log2(uFootprint))' }],
+    tests: [SPEC],
+  },
+  {
+    name: 'R15 WebGL material textures biased by log2 uFootprint in strata frames instead of their derivatives scaled',
+    why: GL,
+    edits: [{ file: 'shaders/lighting.glsl', find: 'return textureGrad(map, uv, dFdx(uv) * uFootprint, dFdy(uv) * uFootprint);', replace: 'return texture(map, uv, log2(uFootprint));' }],
+    tests: [SPEC],
+  },
 ];

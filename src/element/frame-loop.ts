@@ -129,6 +129,11 @@ export class FrameLoop implements Controller {
     this.host.paused();
   }
 
+  /** Nothing is owed: no change undrawn, nothing moving, the still view's frames all drawn. */
+  atRest(): boolean {
+    return !this.dirty && !this.host.animating() && !this.refining();
+  }
+
   /** A still view's refinement is under way and not done: frames keep coming. */
   refining(): boolean {
     return this.refined > 0 && this.refined < this.host.refineFrames();

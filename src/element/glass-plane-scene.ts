@@ -121,16 +121,12 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     const requestRender = () => this.requestRender();
     this.rig = new CameraRig({
       element: this, canvas, values: this.values, requestRender,
-      turned: () => this.scenes.turnChanged(),
-      flybyMoved: () => { this.loop.dirty = true; },
-      scene: () => this.scene,
+      turned: () => this.scenes.turnChanged(), flybyMoved: () => { this.loop.dirty = true; }, scene: () => this.scene,
       cycleDebugView: () => { this.debugView = DEBUG_VIEWS[(DEBUG_VIEWS.indexOf(this.values.debugView) + 1) % DEBUG_VIEWS.length]; },
     });
     const { objectRotation, lightRotation } = this.rig;
     this.scenes = new SceneValue({
-      inputs: () => ({ ...this.values, spin: this.effectiveSpin() }),
-      parts: () => this.source.current(),
-      objectRotation, lightRotation,
+      inputs: () => ({ ...this.values, spin: this.effectiveSpin() }), parts: () => this.source.current(), objectRotation, lightRotation,
     });
     const parts: ElementPartsHost = {
       values: this.values, rig: this.rig, scenes: this.scenes, source: this.source,
@@ -145,19 +141,18 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
       canDraw: () => this.backend.current !== null && !this.failure.type,
       animating: () => (this.values.time === null && sceneSpins(this.scenes.current)) || this.rig.moving,
       frame: (now, k) => this.drawFrame(now, k), refineFrames: () => refineFrames(this.values),
-      paused: () => this.rig.paused(), idle: () => this.rig.idle(),
-      motionPreferenceChanged: () => this.sceneChanged(),
+      paused: () => this.rig.paused(), idle: () => this.rig.idle(), motionPreferenceChanged: () => this.sceneChanged(),
     });
     this.backend = new BackendController({
       element: this, canvas, failure: this.failure, requestRender, renderer: () => this.values.renderer,
       started: (backend) => { this.images?.feed(backend); this.loop.resize(); this.requestRender(); },
-      stopFrames: () => this.loop.cancel(),
-      drawn: (state, report) => this.events.drawn(state, report),
-      resume: (offThread: boolean) => this.loop.resume(offThread),
+      stopFrames: () => this.loop.cancel(), drawn: (state, report) => this.events.drawn(state, report), resume: (t) => this.loop.resume(t),
     });
-    // A frame drawn clears a shader failure's message and is kept for capture.
-    const drawn = (state: FrameState) => { this.failure.drawn(); this.states.drawn(state); };
-    this.events = new FrameEvents({ element: this, drawn, loading: () => this.source.loading || this.rig.loading || this.parts.loading });
+    this.events = new FrameEvents({
+      element: this, loading: () => this.source.loading || this.rig.loading || this.parts.loading, atRest: () => this.loop.atRest(),
+      // A frame drawn clears a shader failure's message and is kept for capture.
+      drawn: (state) => { this.failure.drawn(); this.states.drawn(state); }, failed: () => this.failure.type !== null,
+    });
     const loading = new LoadingView({ element: this, root, poster: () => this.values.poster });
     this.routes = { rig: this.rig, backend: this.backend, loop: this.loop, failure: this.failure, loading, element: this, requestRender };
     this.controllers = [this.rig, this.loop, this.source, this.backend];
@@ -244,6 +239,11 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     return this.backend.capture(this.scenes.current, this.states.last ?? this.frameState(performance.now()), pass);
   }
 
+  /** Resolves once the picture is final (docs/refinement.md#events): after `refined`, or a frame at rest with nothing to refine. */
+  whenRefined(): Promise<void> {
+    return this.events.whenRefined();
+  }
+
   /** Frames, passes run and skipped, draw calls, compiled programs, live GL resources and scene builds. */
   get stats(): RenderStats {
     const s = this.backend.stats();
@@ -273,6 +273,7 @@ export class GlassPlaneScene extends ElementBase<GlassPlaneSceneEventMap> implem
     if (backend.waitsFor(scene, state) || held) return false;
     this.loop.dirty = false;
     this.images?.sync(scene);
+    this.events.started();
     backend.draw(scene, state);
     return true;
   }

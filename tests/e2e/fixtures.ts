@@ -128,6 +128,7 @@ export interface SceneElement extends HTMLElement {
   /** Null while nothing can be drawn. */
   capture(pass?: CapturePass): ImageData | null;
   requestRender(): void;
+  whenRefined(): Promise<void>;
   readonly stats: RenderStats;
   transparency: number;
   cubeDistance: number;

@@ -84,8 +84,8 @@ describe('events, methods and properties in custom-elements.json', () => {
     expect(Object.keys(events('glass-object')).sort()).toEqual(['error', 'load', 'progress']);
   });
 
-  it('<glass-plane-scene> has requestRender and capture, scene, stats and objectRotation, nothing private', () => {
-    expect(members('glass-plane-scene', 'method')).toEqual(expect.arrayContaining(['requestRender', 'capture']));
+  it('<glass-plane-scene> has requestRender, capture and whenRefined, scene, stats and objectRotation, nothing private', () => {
+    expect(members('glass-plane-scene', 'method')).toEqual(expect.arrayContaining(['requestRender', 'capture', 'whenRefined']));
     expect(members('glass-plane-scene', 'field')).toEqual(expect.arrayContaining(['scene', 'stats', 'objectRotation']));
     for (const d of elements.values()) {
       for (const m of d.members) expect(m.description, `${d.tagName} ${m.name}`).toMatch(/\S/);
