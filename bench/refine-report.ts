@@ -29,6 +29,8 @@ export interface RoughCase {
   ior: number;
   long: Still;
   short: Still;
+  /** The same still views drawn by the software renderer in Node (render() alone timed). */
+  software: { long: Still; short: Still };
   /** The reference's making, when it was made in this run (ms), else null. */
   referenceMs: number | null;
 }
@@ -148,7 +150,7 @@ export function formatRefine(input: RefineInput): string {
     `| software, ${ss.side} × ${ss.side} supersampled | ${regionMeans(ss.software)} |`, '',
     ...shortfall(input), '## WebGL: the moving frame', '',
     `What the element draws while something moves: with refine > 0 one sample a pixel (samples 0), whatever \`samples\` says; the`,
-    'element\'s current default (refine 0, samples 4) for comparison, and the three.js peer (bench/three-peer.ts) in the same run, as',
+    'element with refinement off (refine 0, samples 4) for comparison, and the three.js peer (bench/three-peer.ts) in the same run, as',
     `bench.spec.ts draws it. ms/frame: median [IQR] of ${input.movingReps} batches of ${input.movingFrames} frames per view, each batch closed by a`,
     `1-pixel readPixels, mean over views; PSNR dB ${REGIONS.join(' / ')}, mean over views.`, '',
     `| frame | ms/frame [IQR] | ${REGIONS.join(' | ')} |`, '|---|---|---|---|---|---|',
@@ -168,23 +170,32 @@ export function formatRefine(input: RefineInput): string {
     ...stillTable('software', input.software.long, input.stops, input.software.short), '',
     `| frame | ms/frame | ${REGIONS.join(' | ')} |`, '|---|---|---|---|---|---|',
     `| ${input.software.moving.label} | ${ms(movingMs(input.software.moving))} | ${regionMeans(input.software.moving.perView.map((v) => v.psnr))} |`, '',
-    '## Rough glass at rest (WebGL)', '',
+    '## Rough glass at rest', '',
     `The floor of bench/rough-scene.ts at ${input.rough.size.width}×${input.rough.size.height}, roughness-quality medium, samples 4 for the preview, against`,
     `bench/rough.spec.ts's reference (${input.rough.spp}×${input.rough.spp} strata a pixel, ${input.rough.microfacets} microfacet normals each; cached):`,
-    'PSNR dB on the glass after frame k of N, and the cumulative ms (one run, each frame waited for; reads not timed).', '',
-    `| roughness / ior | ${roughColumns(input).map((c) => c.label).join(' | ')} | ms at ${roughColumns(input).map((c) => c.label).join(', ')} |`,
-    `|---|${roughColumns(input).map(() => '---').join('|')}|---|`,
-    ...input.rough.cases.map((c) => {
-      const at = roughColumns(input).map((col) => ({ s: col.which === 'long' ? c.long : c.short, k: col.k }));
-      return `| ${c.roughness} / ${c.ior} | ${at.map(({ s, k }) => f(s.perView[0].psnr[k - 1]?.glass ?? NaN)).join(' | ')} | ${at.map(({ s, k }) => ms(s.perView[0].ms[k - 1])).join(', ')} |`;
-    }),
-    '', ...input.rough.cases.filter((c) => c.referenceMs !== null).map((c) => `Reference of ${c.roughness} / ${c.ior} computed in this run in ${(c.referenceMs! / 1000).toFixed(0)} s.`),
+    'PSNR dB on the glass after frame k of N, and the cumulative ms (one run, each frame waited for; reads not timed). WebGL in the',
+    'page, then the software renderer in Node (one thread).', '',
+    ...roughTable(input, 'WebGL', (c) => c), '',
+    ...roughTable(input, 'software', (c) => c.software), '', ...input.rough.cases.filter((c) => c.referenceMs !== null).map((c) => `Reference of ${c.roughness} / ${c.ior} computed in this run in ${(c.referenceMs! / 1000).toFixed(0)} s.`),
     '', '## The plot', '',
     '![Mean PSNR (all) against cumulative ms, WebGL](refine.svg)', '',
     'bench/refine.svg, drawn by the spec: mean PSNR (all) over the views against the cumulative ms of a still view (every frame of',
     `N = ${long.frames} and of N = ${short.frames}), ms on a log scale, with the moving frames of ours and of three.js marked.`, '',
   ];
   return lines.join('\n');
+}
+
+/** The rough cases' glass after the frames of roughColumns, by one renderer's still views. */
+function roughTable(input: RefineInput, renderer: string, views: (c: RoughCase) => { long: Still; short: Still }): string[] {
+  const cols = roughColumns(input);
+  return [
+    `| ${renderer}: roughness / ior | ${cols.map((c) => c.label).join(' | ')} | ms at ${cols.map((c) => c.label).join(', ')} |`,
+    `|---|${cols.map(() => '---').join('|')}|---|`,
+    ...input.rough.cases.map((c) => {
+      const at = cols.map((col) => ({ s: views(c)[col.which], k: col.k }));
+      return `| ${c.roughness} / ${c.ior} | ${at.map(({ s, k }) => f(s.perView[0].psnr[k - 1]?.glass ?? NaN)).join(' | ')} | ${at.map(({ s, k }) => ms(s.perView[0].ms[k - 1])).join(', ')} |`;
+    }),
+  ];
 }
 
 function roughColumns(input: RefineInput): { label: string; which: 'long' | 'short'; k: number }[] {
@@ -198,17 +209,15 @@ function roughColumns(input: RefineInput): { label: string; which: 'long' | 'sho
 /** Shortfalls smaller than this are not told. */
 const SHORTFALL_DB = 1;
 
-/** Why WebGL's short view ends short of its own supersampled picture, when it does (found by experiment as this was written). */
+/** WebGL's short view ending short of its own supersampled picture: told, with where to look first. */
 function shortfall(input: RefineInput): string[] {
   const { short, supersampled: ss } = input;
   const gap = meanRegion(ss.webgl, 'all') - meanAt(short, short.frames, 'all');
   if (!(gap > SHORTFALL_DB)) return [];
   return [
-    `WebGL's still view of ${short.frames} frames ends ${f(gap)} dB (all) short of WebGL's own ${ss.side} × ${ss.side} picture, where the software renderer's ends`,
-    'within reach of its own. Found by experiment when this bench was written (not in the code measured here): its strata frames',
-    'read the materials\' textures with a level-of-detail bias (standard.frag\'s uLodBias) where the software renderer scales the',
-    'screen derivatives, and the glass\'s body texture (glass.frag) over the whole pixel; drawn with textureGrad and the derivatives',
-    'times 2^uLodBias in both shaders, the default view\'s 10-frame picture went from 50.8 to 53.8 dB (objects 43.5 → 53.4, against',
-    '55.3 at pixel-ratio 3) and the far view\'s glass from 36.3 to 53.0 dB ([footprints](../docs/refinement.md#footprints)).', '',
+    `WebGL's still view of ${short.frames} frames ends ${f(gap)} dB (all) short of WebGL's own ${ss.side} × ${ss.side} picture. Where to`,
+    'look first: something its strata frames still decide by the pixel rather than by the stratum, as the level-of-detail bias did',
+    'before the textures were read by scaled derivatives (the far view\'s glass 41.0 dB after 10 frames, 53.0 with them;',
+    '[footprints](../docs/refinement.md#footprints)).', '',
   ];
 }

@@ -1,7 +1,7 @@
 // `npm run bench`, refinement at rest (docs/refinement.md, issue 35): what a still view buys and costs, frame by frame. In
 // the bench's seven views at 640×360 against bench.spec.ts's float64 reference: WebGL's PSNR after every frame of a still
 // view of 82 frames and of 10, and the cumulative time to get there; the time to a PSNR; the moving frame (samples 0, what
-// the element draws while moving with refine > 0) beside today's default and the three.js peer, in one shuffled
+// the element draws while moving with refine > 0) beside refine 0 (samples 4) and the three.js peer, in one shuffled
 // round-robin with the still views; the software renderer's still views in Node; rough glass at rest against
 // bench/rough.spec.ts's reference. Writes bench/refine.md and bench/refine.svg, prints the summary; asserts no timings.
 // BENCH_SMOKE=1 runs it tiny (one view, a few frames) so the pipeline cannot rot.
@@ -16,7 +16,7 @@ import { VIEWS, type BenchView } from './views';
 import { frameState, stillState, type Scene } from './bench-state';
 import { cachedReference } from './reference-cache';
 import { roughReference, roughState, ROUGH_MICROFACETS, ROUGH_REF_SPP, ROUGH_SIZE } from './rough-reference';
-import { ROUGH_FLOOR_VIEW } from './rough-scene';
+import { ROUGH_FLOOR_VIEW, roughFloorScene } from './rough-scene';
 import { shuffled, summary } from './stats';
 import { resample } from './resample';
 import { refinementGrid } from '../src/frame/refinement';
@@ -47,7 +47,7 @@ type Bench = { bench: BenchApi };
 const STILL_KNOBS: Knobs = DEFAULTS;
 const MOVING = [
   { key: 'moving', label: 'ours moving, refine > 0 (samples 0)', kind: 'ours' as const, knobs: { ...DEFAULTS, samples: 0 } as Knobs },
-  { key: 'default', label: 'ours today, refine 0 (samples 4)', kind: 'ours' as const, knobs: DEFAULTS },
+  { key: 'default', label: 'ours, refine 0 (samples 4)', kind: 'ours' as const, knobs: DEFAULTS },
   { key: 'three', label: 'three.js (Reflector, MSAA 4, 128 segments)', kind: 'three' as const, knobs: BASELINE },
   { key: 'three0', label: 'three.js, samples 0', kind: 'three' as const, knobs: { ...BASELINE, samples: 0 } as Knobs },
 ];
@@ -72,15 +72,18 @@ async function stillView(page: Page, view: BenchView, frames: number, ref: Refer
 /** Median per frame of runs of cumulative ms. */
 const medianRuns = (runs: number[][]) => runs[0].map((_, k) => summary(runs.map((r) => r[k])).median);
 
-/** The software renderer's still view in Node: cumulative ms (render() alone) and PSNR after the frames `read` says. */
-function softwareStill(view: BenchView, frames: number, ref: ReferenceImage, read: (k: number) => boolean): ViewStill {
-  const r = new SoftwareRenderer(), s = frameState(SCENE, STILL_KNOBS, view);
-  for (let i = 0; i < WARMUP; i++) r.render(null, stillState(s, 0, frames));
+/**
+ * The software renderer's still view in Node: cumulative ms (render() alone) and PSNR after the frames `read` says; of the
+ * default scene in a bench view, or of the rough floor in its state `rough`.
+ */
+function softwareStill(view: BenchView, frames: number, ref: ReferenceImage, read: (k: number) => boolean, rough: FrameState | null = null): ViewStill {
+  const r = new SoftwareRenderer(), s = rough ?? frameState(SCENE, STILL_KNOBS, view), scene = rough ? roughFloorScene() : null;
+  for (let i = 0; i < WARMUP; i++) r.render(scene, stillState(s, 0, frames));
   const ms: number[] = [], psnr: (PerRegion | null)[] = [];
   let total = 0;
   for (let k = 1; k <= frames; k++) {
     const t0 = performance.now();
-    const px = r.render(null, stillState(s, k, frames));
+    const px = r.render(scene, stillState(s, k, frames));
     total += performance.now() - t0;
     ms.push(total);
     psnr.push(read(k) ? compareImages(ref, px).psnr : null);
@@ -175,7 +178,9 @@ test('refinement at rest', async ({ page }) => {
   }));
   const roughCases: RoughCase[] = rough.map((c) => {
     const one = (frames: number): Still => ({ frames, perView: [{ view: ROUGH_FLOOR_VIEW.name, ...roughViews.get(`${c.roughness}|${frames}`)! }] });
-    return { roughness: c.roughness, ior: c.ior, long: one(LONG), short: one(SHORT), referenceMs: c.cached ? null : c.ms };
+    // The software renderer's after the page's work, as below.
+    const sw = (frames: number): Still => ({ frames, perView: [softwareStill(ROUGH_FLOOR_VIEW, frames, c.ref, (k) => k === 1 || k === 10 || k === frames, c.state)] });
+    return { roughness: c.roughness, ior: c.ior, long: one(LONG), short: one(SHORT), software: { long: sw(LONG), short: sw(SHORT) }, referenceMs: c.cached ? null : c.ms };
   });
 
   // The software renderer in Node, after the page's work (it would take a core from the page's timings).
@@ -227,7 +232,7 @@ test('refinement at rest', async ({ page }) => {
   } else console.log(markdown);
 
   // The smoke run proves the pipeline end to end: every frame timed, every picture read scored, the plot drawn.
-  for (const s of [long, short, software.long, software.short, ...roughCases.flatMap((c) => [c.long, c.short])]) {
+  for (const s of [long, short, software.long, software.short, ...roughCases.flatMap((c) => [c.long, c.short, c.software.long, c.software.short])]) {
     for (const v of s.perView) {
       for (const ms of v.ms) expect(Number.isFinite(ms), `${v.view} ms`).toBe(true);
       expect(Number.isFinite(v.psnr[s.frames - 1]!.all), `${v.view} PSNR after frame ${s.frames} of ${s.frames}`).toBe(true);

@@ -51,4 +51,6 @@ scene.addEventListener('frame', () => {
     last = now;
   }
 });
+// At rest the element stops drawing once the still view is refined: say so (no frame comes to overwrite it).
+scene.addEventListener('refined', (e) => { status.textContent = `at rest: ${e.detail.refinement} frames averaged, the picture is final`; });
 scene.addEventListener('error', (e) => { status.textContent = `error: ${e.detail.type}`; });

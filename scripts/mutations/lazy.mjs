@@ -20,7 +20,7 @@ export default [
   {
     name: 'Z2 ready fired while a lazy part (camera-src\'s reader) is still on its way',
     why: 'lazy chunks in a page: the element\'s ready event waits for them',
-    edits: [{ file: 'src/element/glass-plane-scene.ts', find: ' || this.rig.loading || this.parts.loading });', replace: ' || this.rig.loading });' }],
+    edits: [{ file: 'src/element/glass-plane-scene.ts', find: ' || this.rig.loading || this.parts.loading, atRest:', replace: ' || this.rig.loading, atRest:' }],
     tests: [CHUNK],
   },
   {

@@ -52,7 +52,7 @@ export interface GlassPlaneScene extends SceneAttributes {}
  * @attr {'none' | 'reflection' | 'scene' | 'fresnel' | 'passes'} [debug-view="none"] - shows one pass instead of the final image
  * @attr {number} [reflection-scale=1] - reflection framebuffer size ÷ drawing-buffer size, 0.125..2
  * @attr {0 | 2 | 4} [samples=4] - MSAA samples of the reflection and scene passes (software: 2×2 per pixel for 2 and 4)
- * @attr {number} [refine=0] - frames a still view draws to converge to the supersampled picture, 0..1024; 0 off; with it moving frames draw one sample
+ * @attr {number} [refine=10] - frames a still view draws to converge to the supersampled picture, 0..1024; 0 off; with it moving frames draw one sample
  * @attr {'phong' | 'gouraud' | 'flat'} [shading="phong"] - per-fragment phong, per-vertex gouraud, or flat
  * @attr {number | 'auto'} [tessellation="auto"] - sphere segments 4..512, or auto (from the sphere's size on screen)
  * @attr {number | 'auto'} [pixel-ratio="auto"] - drawing-buffer pixels per CSS pixel 0.25..4, or auto (devicePixelRatio)

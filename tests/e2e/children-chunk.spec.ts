@@ -7,7 +7,7 @@ import { mountFirstFrame, mountHtml } from './helpers/scene-children';
 import type { RgbaImage } from './helpers/golden';
 import { samePixels as same } from './helpers/chunks';
 
-const SCENE = `<glass-plane-scene time="0" spin="0" style="width:160px;height:90px" pixel-ratio="1">
+const SCENE = `<glass-plane-scene refine="0" time="0" spin="0" style="width:160px;height:90px" pixel-ratio="1">
   <glass-object shape="sphere" position="0 1 0" diffuse="0.9 0.2 0.2" ambient="0.9 0.2 0.2"></glass-object>
   <glass-light position="2 4 3"></glass-light>
 </glass-plane-scene>`;
@@ -23,7 +23,7 @@ const fetched = (page: import('@playwright/test').Page) =>
 
 test('a scene without children never fetches their chunk', async ({ page }) => {
   await openPage(page);
-  await mountHtml(page, '<glass-plane-scene time="0" style="width:160px;height:90px"></glass-plane-scene>');
+  await mountHtml(page, '<glass-plane-scene refine="0" time="0" style="width:160px;height:90px"></glass-plane-scene>');
   expect(await fetched(page)).toBe(false);
   expect(await page.evaluate(() => customElements.get('glass-object'))).toBeUndefined();
 });

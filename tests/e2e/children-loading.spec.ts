@@ -33,7 +33,7 @@ async function hold(page: Page, pattern: string): Promise<{ release: () => Promi
 
 test('a model: progress, then load; its MTL materials, one part per material, attributes win', async ({ page }) => {
   await openPage(page);
-  const events = await mountHtml(page, `<glass-plane-scene time="1">
+  const events = await mountHtml(page, `<glass-plane-scene refine="0" time="1">
     <glass-object src="models/tetra.obj" shininess="5"></glass-object></glass-plane-scene>`);
   const types = events.map((e) => e.type);
   expect(types.indexOf('progress')).toBeGreaterThanOrEqual(0);
@@ -67,7 +67,7 @@ test('attributes win over the MTL (opacity, diffuse, texture), and the MTL over 
   await openPage(page);
   const checker = fs.readFileSync(path.join(MODELS, 'checker.png'));
   await page.route('**/own/texture.png', (r) => r.fulfill({ status: 200, contentType: 'image/png', body: checker }));
-  await mountHtml(page, `<glass-plane-scene time="1">
+  await mountHtml(page, `<glass-plane-scene refine="0" time="1">
     <glass-object src="models/tetra.obj" opacity="1" diffuse="0 0 1" texture="/own/texture.png"></glass-object></glass-plane-scene>`);
   const [red, textured] = (await summary(page)).objects.map((o) => o.material);
   const own = expect.stringMatching(/\/own\/texture\.png$/);
@@ -85,7 +85,7 @@ test('a material named in two MTL files is the first file\'s', async ({ page }) 
     'second.mtl': 'newmtl paint\nKd 0 1 0\nKs 0 0 1\n',
   };
   await page.route('**/two-libs/*', (r) => r.fulfill({ status: 200, contentType: 'text/plain', body: files[r.request().url().split('/').pop()!] }));
-  await mountHtml(page, '<glass-plane-scene time="1"><glass-object src="/two-libs/model.obj"></glass-object></glass-plane-scene>');
+  await mountHtml(page, '<glass-plane-scene refine="0" time="1"><glass-object src="/two-libs/model.obj"></glass-object></glass-plane-scene>');
   const [m] = (await summary(page)).objects.map((o) => o.material);
   expect(m.diffuse).toEqual([1, 0, 0]);
   // Per material, not per value: the second file's Ks is not merged in.
@@ -98,7 +98,7 @@ test('a changed src aborts the old load, which never appears', async ({ page }) 
   const failed: string[] = [];
   page.on('requestfailed', (r) => failed.push(r.url()));
   await page.evaluate(() => {
-    document.body.innerHTML = '<glass-plane-scene time="1" style="width:160px;height:90px"><glass-object src="models/tetra-copy.obj"></glass-object></glass-plane-scene>';
+    document.body.innerHTML = '<glass-plane-scene refine="0" time="1" style="width:160px;height:90px"><glass-object src="models/tetra-copy.obj"></glass-object></glass-plane-scene>';
     const loads: string[] = [];
     (window as any).__loads = loads;
     document.body.addEventListener('load', (e) => loads.push((e as CustomEvent).detail.url), true);
@@ -120,7 +120,7 @@ test('removing a loading object aborts its fetch; ready does not wait for it', a
   const failed: string[] = [];
   page.on('requestfailed', (r) => failed.push(r.url()));
   const ready = page.evaluate(() => new Promise<void>((resolve) => {
-    document.body.innerHTML = '<glass-plane-scene time="1" style="width:160px;height:90px"><glass-object src="models/tetra-copy.obj"></glass-object></glass-plane-scene>';
+    document.body.innerHTML = '<glass-plane-scene refine="0" time="1" style="width:160px;height:90px"><glass-object src="models/tetra-copy.obj"></glass-object></glass-plane-scene>';
     const el = document.querySelector('glass-plane-scene')!;
     el.addEventListener('ready', () => resolve(), { once: true });
   }));
@@ -141,7 +141,7 @@ for (const [what, src, message] of failures) {
   test(`${what} is a load error with the URL; the rest of the scene stays`, async ({ page, consoleLog }) => {
     await openPage(page);
     await page.route('**/models/fallback.obj', (r) => r.fulfill({ status: 200, contentType: 'text/html', body: '<!doctype html><html><body>Not found</body></html>' }));
-    const events = await mountHtml(page, `<glass-plane-scene time="1">
+    const events = await mountHtml(page, `<glass-plane-scene refine="0" time="1">
       <glass-object src="${src}"></glass-object><glass-object shape="sphere"></glass-object></glass-plane-scene>`);
     const error = events.find((e) => e.type === 'error')!;
     expect(error.target).toBe('glass-object');
@@ -158,7 +158,7 @@ for (const [what, src, message] of failures) {
 
 test('a missing MTL and a bad face are warnings: load carries them, the console shows each once', async ({ page, consoleLog }) => {
   await openPage(page);
-  const events = await mountHtml(page, '<glass-plane-scene time="1"><glass-object src="models/no-mtl.obj"></glass-object></glass-plane-scene>');
+  const events = await mountHtml(page, '<glass-plane-scene refine="0" time="1"><glass-object src="models/no-mtl.obj"></glass-object></glass-plane-scene>');
   const load = events.find((e) => e.type === 'load')!;
   expect(load.detail.warnings).toHaveLength(2);
   expect(load.detail.warnings[0]).toMatch(/^glass-plane-scene: http:\/\/\S+\/models\/no-mtl\.obj line 7: /);
@@ -174,8 +174,8 @@ test('the same URL on 5 elements is fetched once', async ({ page }) => {
   const requests: string[] = [];
   page.on('request', (r) => requests.push(r.url()));
   const children = '<glass-object src="models/tetra.obj"></glass-object>'.repeat(3);
-  await mountHtml(page, `<glass-plane-scene time="1">${children}</glass-plane-scene>`);
-  await mountHtml(page, '<glass-plane-scene time="1"><glass-object src="./models/tetra.obj"></glass-object><glass-object src="models/tetra.obj" normalize></glass-object></glass-plane-scene>');
+  await mountHtml(page, `<glass-plane-scene refine="0" time="1">${children}</glass-plane-scene>`);
+  await mountHtml(page, '<glass-plane-scene refine="0" time="1"><glass-object src="./models/tetra.obj"></glass-object><glass-object src="models/tetra.obj" normalize></glass-object></glass-plane-scene>');
   expect(requests.filter((u) => u.endsWith('/models/tetra.obj'))).toHaveLength(1);
   expect(requests.filter((u) => u.endsWith('/models/tetra.mtl'))).toHaveLength(1);
   const counts = await page.evaluate(() => [...document.querySelectorAll('glass-plane-scene')].map((e) => (e as any).scene.objects.length));
@@ -205,7 +205,7 @@ test('a file of 256 KB or more is parsed in a worker', async ({ page }) => {
   const body = lines.join('\n');
   expect(body.length).toBeGreaterThanOrEqual(256 * 1024);
   await page.route('**/models/big.obj', (r) => r.fulfill({ status: 200, contentType: 'text/plain', body }));
-  const events = await mountHtml(page, '<glass-plane-scene time="1"><glass-object src="models/big.obj"></glass-object></glass-plane-scene>');
+  const events = await mountHtml(page, '<glass-plane-scene refine="0" time="1"><glass-object src="models/big.obj"></glass-object></glass-plane-scene>');
   expect(events.find((e) => e.type === 'load')).toBeTruthy();
   const workers = await page.evaluate(() => (window as any).__workers as string[]);
   expect(workers).toHaveLength(1);
@@ -213,7 +213,7 @@ test('a file of 256 KB or more is parsed in a worker', async ({ page }) => {
   const [o] = (await summary(page)).objects;
   expect([o.vertices, o.triangles]).toEqual([n * n, (n - 1) * (n - 1) * 2]);
   // The small model is parsed on the main thread.
-  await mountHtml(page, '<glass-plane-scene time="1"><glass-object src="models/tetra.obj"></glass-object></glass-plane-scene>');
+  await mountHtml(page, '<glass-plane-scene refine="0" time="1"><glass-object src="models/tetra.obj"></glass-object></glass-plane-scene>');
   expect(await page.evaluate(() => (window as any).__workers.length)).toBe(1);
 });
 

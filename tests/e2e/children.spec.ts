@@ -10,7 +10,7 @@ test.beforeEach(async ({ page }) => {
 
 test('child attributes parse, reflect to properties and fall back with one warning per value', async ({ page, consoleLog }) => {
   await openPage(page);
-  await mountHtml(page, `<glass-plane-scene time="1">
+  await mountHtml(page, `<glass-plane-scene refine="0" time="1">
     <glass-object id="a" shininess="abc" diffuse="0.1 0.2 0.3" scale="2" shape="sphere"></glass-object>
     <glass-object id="b" shininess="abc" opacity="7"></glass-object>
     <glass-light id="l" direction="0 0 0" ambient="2 2 2"></glass-light>
@@ -42,7 +42,7 @@ test('child attributes parse, reflect to properties and fall back with one warni
 
 test('no children: the default scene; objects and lights replace the defaults', async ({ page }) => {
   await openPage(page);
-  await mountHtml(page, '<glass-plane-scene time="1" cube-distance="0.5"></glass-plane-scene>');
+  await mountHtml(page, '<glass-plane-scene refine="0" time="1" cube-distance="0.5"></glass-plane-scene>');
   const d = await summary(page);
   expect(d.objects.map((o) => o.kind)).toEqual(['box', 'sphere']);
   expect(d.objects[0].position).toEqual([-1, 1, 0.5]);
@@ -72,7 +72,7 @@ test('no children: the default scene; objects and lights replace the defaults', 
 
 test('adding, removing, reordering and changing children updates el.scene, each with a frame', async ({ page }) => {
   await openPage(page);
-  await mountHtml(page, `<glass-plane-scene time="1">
+  await mountHtml(page, `<glass-plane-scene refine="0" time="1">
     <glass-object id="c"></glass-object><glass-object id="s" shape="sphere"></glass-object>
     <glass-light id="l1" direction="0 1 0"></glass-light>
   </glass-plane-scene>`);
@@ -104,7 +104,7 @@ test('adding, removing, reordering and changing children updates el.scene, each 
 
 test('at most 4 lights: the fifth is ignored with one warning', async ({ page, consoleLog }) => {
   await openPage(page);
-  await mountHtml(page, `<glass-plane-scene time="1">${'<glass-light></glass-light>'.repeat(5)}</glass-plane-scene>`);
+  await mountHtml(page, `<glass-plane-scene refine="0" time="1">${'<glass-light></glass-light>'.repeat(5)}</glass-plane-scene>`);
   expect((await summary(page)).lights).toHaveLength(4);
   await nextFrame(page, 'glass-plane-scene', (el) => el.append(document.createElement('glass-light')));
   expect((await summary(page)).lights).toHaveLength(4);
@@ -115,7 +115,7 @@ test('at most 4 lights: the fifth is ignored with one warning', async ({ page, c
 
 test('glass and background come from the attributes; "0 0" removes the glass', async ({ page, consoleLog }) => {
   await openPage(page);
-  await mountHtml(page, '<glass-plane-scene time="1" glass-normal="0 2 0" glass-center="0 0 0" glass-size="6 5" background="red"></glass-plane-scene>');
+  await mountHtml(page, '<glass-plane-scene refine="0" time="1" glass-normal="0 2 0" glass-center="0 0 0" glass-size="6 5" background="red"></glass-plane-scene>');
   const s = await summary(page);
   expect(s.glass).toEqual({ center: [0, 0, 0], normal: [0, 1, 0], size: [6, 5] });
   expect(s.background).toEqual([1, 0, 0]); // a named colour, through the canvas
@@ -140,7 +140,7 @@ test('glass and background come from the attributes; "0 0" removes the glass', a
 test('children defined after the scene element join the scene when they upgrade', async ({ page, consoleLog }) => {
   await page.route('**/child-elements*', (route) => route.abort());
   await openPage(page, 'parent-only');
-  await mountHtml(page, `<glass-plane-scene time="1">
+  await mountHtml(page, `<glass-plane-scene refine="0" time="1">
     <glass-object shape="sphere" position="1 2 3"></glass-object><glass-light position="0 5 0"></glass-light>
   </glass-plane-scene>`);
   // Not upgraded: nothing to describe yet, so the default scene, and no crash.
@@ -163,7 +163,7 @@ test('children defined after the scene element join the scene when they upgrade'
 test('children never upgraded (their chunk blocked): the scene element renders its default scene', async ({ page, consoleLog }) => {
   await page.route('**/child-elements*', (route) => route.abort());
   await openPage(page, 'parent-only');
-  await mountHtml(page, '<glass-plane-scene time="1"><glass-object src="models/tetra.obj"></glass-object><glass-light></glass-light></glass-plane-scene>');
+  await mountHtml(page, '<glass-plane-scene refine="0" time="1"><glass-object src="models/tetra.obj"></glass-object><glass-light></glass-light></glass-plane-scene>');
   const f = await nextFrame(page, 'glass-plane-scene');
   expect(f.passes.scene.ran).toBe(true);
   expect((await summary(page)).objects.map((o) => o.kind)).toEqual(['box', 'sphere']);

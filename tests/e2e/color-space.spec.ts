@@ -18,7 +18,7 @@ const GREY_128 = '/tests/e2e/pages/models/grey128.png';
  * A cube filling the middle of the frame, lit by ambient light only (`space`: the color-space
  * attribute, or none): colour = tex · Ka.
  */
-const AMBIENT_CUBE = (renderer: string, space: string | null, texture = WHITE, ka = 0.2159) => `<glass-plane-scene renderer="${renderer}"
+const AMBIENT_CUBE = (renderer: string, space: string | null, texture = WHITE, ka = 0.2159) => `<glass-plane-scene refine="0" renderer="${renderer}"
   ${space === null ? '' : `color-space="${space}"`} time="0" spin="0" glass-size="0 0" background="0 0 0" samples="0"
   camera-position="0 0 2.5" camera-rotation="-90 0"><glass-object shape="cube" texture="${texture}" ambient="${ka} ${ka} ${ka}"
   diffuse="0 0 0" specular="0 0 0"></glass-object><glass-light ambient="1 1 1" diffuse="0 0 0" specular="0 0 0"></glass-light></glass-plane-scene>`;
@@ -62,7 +62,7 @@ for (const renderer of ['webgl', 'software']) {
     // encode(0.6694·0.0015) = 0.01297 → 3. An 8-bit linear reflection would hold 0.0015 as 0.
     test('a dark reflection keeps its level: 3 where an 8-bit linear reflection would give 0', async ({ page }) => {
       await openPage(page);
-      await mountHtml(page, `<glass-plane-scene renderer="${renderer}" time="0" spin="0" samples="0" background="0 0 0"
+      await mountHtml(page, `<glass-plane-scene refine="0" renderer="${renderer}" time="0" spin="0" samples="0" background="0 0 0"
         glass-center="0 0 0" glass-normal="0 0 1" glass-size="8 8" ior="10" transparency="1" camera-position="0 0 5"
         camera-rotation="-90 0"><glass-object shape="cube" position="0 0 7" scale="4" texture="${WHITE}" ambient="0.0015 0.0015 0.0015"
         diffuse="0 0 0" specular="0 0 0"></glass-object><glass-light ambient="1 1 1" diffuse="0 0 0" specular="0 0 0"></glass-light>

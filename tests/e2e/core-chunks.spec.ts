@@ -15,7 +15,7 @@ const GATHER = 'gather-parts';
 const IMAGES = 'texture-images';
 const MESSAGES = 'failure-messages';
 const CHECKER = '/tests/e2e/pages/models/checker.png';
-const SCENE = (attrs = '', children = '') => `<glass-plane-scene time="0" spin="0" ${attrs}>${children}</glass-plane-scene>`;
+const SCENE = (attrs = '', children = '') => `<glass-plane-scene refine="0" time="0" spin="0" ${attrs}>${children}</glass-plane-scene>`;
 
 const settled = async (page: Page) => {
   await wait(page, 300);

@@ -17,7 +17,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const CFG = '/tests/data/course/camera.cfg';
-const SCENE = (attrs: string) => `<glass-plane-scene time="0" spin="0" ${attrs}></glass-plane-scene>`;
+const SCENE = (attrs: string) => `<glass-plane-scene refine="0" time="0" spin="0" ${attrs}></glass-plane-scene>`;
 const CHUNKS = ['camera-source', 'course-projection'];
 
 const fetched = (page: Page) =>

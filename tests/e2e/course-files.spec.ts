@@ -48,7 +48,7 @@ test.beforeEach(async ({ page }) => {
 
 test('a mesh .byu loads (no texture, no order) and camera-src draws it where courseProject says', async ({ page }) => {
   await openPage(page);
-  const events = await mountHtml(page, `<glass-plane-scene time="0" glass-size="0 0" background="${BLACK}" camera-src="${URL_BASE}camera.cfg">
+  const events = await mountHtml(page, `<glass-plane-scene refine="0" time="0" glass-size="0 0" background="${BLACK}" camera-src="${URL_BASE}camera.cfg">
     <glass-object src="${URL_BASE}tetra.byu" scale="2"></glass-object></glass-plane-scene>`);
   const load = events.find((e) => e.type === 'load')!;
   expect(load.target).toBe('glass-object');
@@ -80,7 +80,7 @@ test('a Bézier .byu: load detail.order, E×E vertices, resolution re-evaluates 
   await openPage(page);
   const requests: string[] = [];
   page.on('request', (r) => requests.push(r.url()));
-  const events = await mountHtml(page, `<glass-plane-scene time="0" glass-size="0 0" background="${BLACK}" camera-src="${URL_BASE}camera.cfg">
+  const events = await mountHtml(page, `<glass-plane-scene refine="0" time="0" glass-size="0 0" background="${BLACK}" camera-src="${URL_BASE}camera.cfg">
     <glass-object src="${URL_BASE}patch-2x5-first-fastest.byu" position="-4 -2 0" scale="1.5"></glass-object>
     <glass-object src="${URL_BASE}patch-3x3-second-fastest.byu" position="1 -1 0"></glass-object></glass-plane-scene>`);
   const loads = events.filter((e) => e.type === 'load').map((e) => [e.detail.url.split('/').pop(), e.detail.order]);
@@ -105,7 +105,7 @@ test('a Bézier .byu: load detail.order, E×E vertices, resolution re-evaluates 
 
 test('content after the counts is one warning, once per URL, in the load detail and the console', async ({ page, consoleLog }) => {
   await openPage(page);
-  const events = await mountHtml(page, `<glass-plane-scene time="0" glass-size="0 0">
+  const events = await mountHtml(page, `<glass-plane-scene refine="0" time="0" glass-size="0 0">
     <glass-object src="${URL_BASE}tetra-trailing.byu"></glass-object>
     <glass-object src="${URL_BASE}tetra-trailing.byu" position="2 0 0"></glass-object></glass-plane-scene>`);
   const loads = events.filter((e) => e.type === 'load');
@@ -130,7 +130,7 @@ const malformed: [string, number | null | undefined, RegExp][] = [
 for (const [file, line, message] of malformed) {
   test(`${file} is a load error with file and line; the rest of the scene draws`, async ({ page, consoleLog }) => {
     await openPage(page);
-    const events = await mountHtml(page, `<glass-plane-scene time="0" glass-size="0 0" background="${BLACK}" camera-src="${URL_BASE}camera.cfg">
+    const events = await mountHtml(page, `<glass-plane-scene refine="0" time="0" glass-size="0 0" background="${BLACK}" camera-src="${URL_BASE}camera.cfg">
       <glass-object src="${URL_BASE}${file}"></glass-object><glass-object shape="sphere" scale="2"></glass-object></glass-plane-scene>`);
     const error = events.find((e) => e.type === 'error')!;
     expect(error.target).toBe('glass-object');
@@ -150,7 +150,7 @@ for (const [file, line, message] of malformed) {
 
 test('iluminacao.txt: a point light at Pl and the material of every object, attributes first', async ({ page }) => {
   await openPage(page);
-  const events = await mountHtml(page, `<glass-plane-scene time="0" glass-size="0 0">
+  const events = await mountHtml(page, `<glass-plane-scene refine="0" time="0" glass-size="0 0">
     <glass-object src="${URL_BASE}tetra.byu"></glass-object>
     <glass-object shape="sphere" diffuse="0.1 0.9 0.1" shininess="3"></glass-object>
     <glass-light src="${URL_BASE}iluminacao.txt" specular="0.5 0.5 0.5"></glass-light></glass-plane-scene>`);
@@ -185,7 +185,7 @@ test('an MTL wins over the lighting file, a light\'s position over Pl, and the f
   await openPage(page);
   // The second file: every value unlike the first's (Pl −200 50 100, ka 0.2, kd·Od 0.35 0.25 0.4, ks 0.5, n 2).
   await page.route('**/second/iluminacao.txt', (r) => r.fulfill({ status: 200, contentType: 'text/plain', body: '5 6 7\n0.4\n50 50 50\n1\n0.1 0.2 0.3\n0.9\n100 100 100\n5\n' }));
-  await mountHtml(page, `<glass-plane-scene time="0" glass-size="0 0">
+  await mountHtml(page, `<glass-plane-scene refine="0" time="0" glass-size="0 0">
     <glass-object src="/tests/e2e/pages/models/tetra.obj"></glass-object>
     <glass-object src="${URL_BASE}tetra.byu"></glass-object>
     <glass-light src="${URL_BASE}iluminacao.txt"></glass-light>
@@ -207,7 +207,7 @@ test('an MTL wins over the lighting file, a light\'s position over Pl, and the f
 
 test('a lighting file that fails adds no light (the default one is used) and fires error with its line', async ({ page, consoleLog }) => {
   await openPage(page);
-  const events = await mountHtml(page, `<glass-plane-scene time="0" glass-size="0 0">
+  const events = await mountHtml(page, `<glass-plane-scene refine="0" time="0" glass-size="0 0">
     <glass-object src="${URL_BASE}tetra.byu"></glass-object>
     <glass-light src="${URL_BASE}iluminacao-bad-token.txt"></glass-light></glass-plane-scene>`);
   const error = events.find((e) => e.type === 'error')!;
@@ -233,7 +233,7 @@ function mirroredDifference(a: RgbaImage, b: RgbaImage): number {
 
 test('a negative hx mirrors the picture left to right (culled built-ins too)', async ({ page }) => {
   await openPage(page);
-  await mountHtml(page, `<glass-plane-scene time="0" glass-size="0 0" background="${BLACK}" camera-src="${URL_BASE}camera.cfg">
+  await mountHtml(page, `<glass-plane-scene refine="0" time="0" glass-size="0 0" background="${BLACK}" camera-src="${URL_BASE}camera.cfg">
     <glass-object src="${URL_BASE}tetra.byu" scale="2"></glass-object>
     <glass-object shape="cube" position="-2 0 0" rotation="20 30 0"></glass-object></glass-plane-scene>`);
   const a = await capture(page); // mountHtml waited for ready, which waits for the camera file
@@ -251,7 +251,7 @@ test('a negative hx mirrors the picture left to right (culled built-ins too)', a
 
 test('a camera-src that fails fires error (url, line) on the scene element and keeps the camera it had', async ({ page, consoleLog }) => {
   await openPage(page);
-  await mountHtml(page, `<glass-plane-scene time="0" glass-size="0 0" background="${BLACK}" camera-src="${URL_BASE}camera.cfg">
+  await mountHtml(page, `<glass-plane-scene refine="0" time="0" glass-size="0 0" background="${BLACK}" camera-src="${URL_BASE}camera.cfg">
     <glass-object src="${URL_BASE}tetra.byu" scale="2"></glass-object></glass-plane-scene>`);
   await settle(page);
   const a = await capture(page);
@@ -293,7 +293,7 @@ for (const glass of [false, true]) {
   test(`a course scene (camera, lighting, mesh and Bézier .byu${glass ? ', glass' : ''}) matches the reference`, async ({ page }) => {
     await openPage(page);
     const glassAttrs = glass ? 'glass-center="0 0 -0.5" glass-normal="0 0 1" glass-size="8 5" transparency="0.4"' : 'glass-size="0 0"';
-    await mountHtml(page, `<glass-plane-scene time="0" spin="0" samples="4" ${glassAttrs} camera-src="${URL_BASE}camera.cfg">
+    await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0" samples="4" ${glassAttrs} camera-src="${URL_BASE}camera.cfg">
       <glass-object src="${URL_BASE}tetra.byu" scale="2" rotation="0 -30 0"></glass-object>
       <glass-object src="${URL_BASE}patch-3x3-first-fastest.byu" position="-3.5 -1.5 0" diffuse="0.3 0.5 0.8"></glass-object>
       <glass-light src="${URL_BASE}iluminacao.txt"></glass-light></glass-plane-scene>`);

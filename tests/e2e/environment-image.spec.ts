@@ -62,7 +62,7 @@ async function routes(page: Page): Promise<void> {
   await page.route('**/skies/sky.png', (route) => route.fulfill({ status: 200, contentType: 'image/png', body: skyPng() }));
 }
 
-const mount = (page: Page, renderer: string, environment: string) => mountHtml(page, `<glass-plane-scene renderer="${renderer}" environment="${environment}" time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
+const mount = (page: Page, renderer: string, environment: string) => mountHtml(page, `<glass-plane-scene refine="0" renderer="${renderer}" environment="${environment}" time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
   <glass-object src="/wild/product.glb" position="0 0.3 1.2"></glass-object>
 </glass-plane-scene>`);
 
@@ -131,9 +131,9 @@ test('a PNG sky lights the model as sRGB; files that cannot be read fire error n
 test('the environment-files chunk is fetched only by a URL with a glTF material', async ({ page }) => {
   await routes(page);
   await openPage(page);
-  await mountHtml(page, `<glass-plane-scene time="0" spin="0" environment="skies/sky.png"></glass-plane-scene>`);
-  await mountHtml(page, `<glass-plane-scene time="0" spin="0"><glass-object src="/wild/product.glb"></glass-object></glass-plane-scene>`);
+  await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0" environment="skies/sky.png"></glass-plane-scene>`);
+  await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0"><glass-object src="/wild/product.glb"></glass-object></glass-plane-scene>`);
   expect(await fetchedChunks(page, ['environment-files'])).toEqual([]);
-  await mountHtml(page, `<glass-plane-scene time="0" spin="0" environment="skies/sky.png"><glass-object src="/wild/product.glb"></glass-object></glass-plane-scene>`);
+  await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0" environment="skies/sky.png"><glass-object src="/wild/product.glb"></glass-object></glass-plane-scene>`);
   expect(await fetchedChunks(page, ['environment-files'])).toEqual(['environment-files']);
 });

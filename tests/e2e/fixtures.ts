@@ -156,8 +156,13 @@ export async function openPage(page: Page, name = 'element'): Promise<void> {
  * Creates <glass-plane-scene> with `attrs` (true → present, false → absent), at `size` CSS px
  * when given (else the element's own default), appends it to the body and resolves with its
  * `ready` detail. Rejects on an `error` event or when ready has not come within 30 s.
+ *
+ * `refine` is 0 unless `attrs` sets it (so does mountHtml): a test of anything else captures the picture a frame draws
+ * as the knobs say, the same one whenever it reads the canvas after `ready`; with the element's default a still view
+ * would go on refining for a few frames after it (docs/refinement.md). tests/e2e/refinement.spec.ts tests the default.
  */
 export async function mount(page: Page, attrs: Attrs = {}, size?: { width: number; height: number }): Promise<Mounted> {
+  attrs = { refine: 0, ...attrs };
   return page.evaluate(
     ({ attrs, size }) =>
       new Promise<Mounted>((resolve, reject) => {

@@ -310,8 +310,12 @@ test('1100 random values over every attribute and property: no exception, warnin
   await nextFrame(page, selector, new Function('el', `
     for (const name of ${JSON.stringify(NAMES.map((n) => n.attribute))}) el.removeAttribute(name);
     el.setAttribute('time', '1.25');`) as (el: SceneElement) => void);
+  // Every attribute removed, `refine` too: both elements refine at its default, and are compared once refined.
+  const refined = (s: string) => page.evaluate((s) => (document.querySelector(s) as SceneElement).whenRefined(), s);
+  await refined(selector);
   const fuzzed = await capture(page, undefined, selector);
-  const fresh = await mount(page, { time: 1.25 }, SIZE);
+  const fresh = await mount(page, { time: 1.25, refine: false }, SIZE);
+  await refined(fresh.selector);
   const reference = await capture(page, undefined, fresh.selector);
   const read = (s: string) => page.evaluate(({ s, props }) => {
     const el = document.querySelector(s) as unknown as Record<string, unknown> & { stats: { sphereSegments: number } };
@@ -329,7 +333,8 @@ test('1100 random values over every attribute and property: no exception, warnin
     // The sphere's auto tessellation keeps a finer mesh it already has (up to twice what the size needs, hysteresis
     // against rebuilding every frame), so a mesh built during the storm may outlive it (here 40 segments for 20): the
     // same pixels, then, as a fresh element drawing that many.
-    const same = await mount(page, { time: 1.25, tessellation: a.segments }, SIZE);
+    const same = await mount(page, { time: 1.25, tessellation: a.segments, refine: false }, SIZE);
+    await refined(same.selector);
     const matched = await capture(page, undefined, same.selector);
     const dm = diffImages(fuzzed, matched);
     expect(dm.max, `sphere ${a.segments} segments (auto kept it) against a fresh element at tessellation ${a.segments}: ${formatDiff(dm)}`).toBe(0);

@@ -125,7 +125,7 @@ test('an image texture is deleted with the element that drew it', async ({ page 
   const before = (await glCensus(page)).live;
   const mountCube = (texture: string) => page.evaluate((texture) => new Promise<string>((resolve, reject) => {
     const host = document.createElement('div');
-    host.innerHTML = `<glass-plane-scene id="cube" time="0" spin="0" glass-size="0 0" camera-position="0 0 2.5" camera-rotation="-90 0"
+    host.innerHTML = `<glass-plane-scene refine="0" id="cube" time="0" spin="0" glass-size="0 0" camera-position="0 0 2.5" camera-rotation="-90 0"
       style="width: 160px; height: 90px"><glass-object shape="cube" ${texture}></glass-object></glass-plane-scene>`;
     const el = host.firstElementChild!;
     const t = setTimeout(() => reject(new Error('no ready event')), 30_000);
@@ -197,7 +197,7 @@ test('a glTF material\'s maps and the environment\'s textures are counted and de
   const before = (await glCensus(page)).live;
   const glb = await mapsGlb();
   await page.route('**/wild/maps.glb', (route) => route.fulfill({ status: 200, contentType: 'model/gltf-binary', body: Buffer.from(glb) }));
-  await mountHtml(page, `<glass-plane-scene id="maps" time="0" spin="0" style="width: 160px; height: 90px">
+  await mountHtml(page, `<glass-plane-scene refine="0" id="maps" time="0" spin="0" style="width: 160px; height: 90px">
     <glass-object src="/wild/maps.glb"></glass-object></glass-plane-scene>`);
   await page.evaluate(() => new Promise((r) => {
     const el = document.querySelector('#maps') as unknown as HTMLElement & { requestRender(): void };

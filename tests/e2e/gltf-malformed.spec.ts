@@ -84,7 +84,7 @@ for (const c of CASES) {
     await openPage(page);
     await page.evaluate((url) => {
       const host = document.createElement('div');
-      host.innerHTML = `<glass-plane-scene time="0" spin="0" style="width:160px;height:90px">
+      host.innerHTML = `<glass-plane-scene refine="0" time="0" spin="0" style="width:160px;height:90px">
         <glass-object shape="cube" position="-1 1 1"></glass-object><glass-object src="${url}" position="1 1 1"></glass-object></glass-plane-scene>`;
       const el = host.firstElementChild!;
       const w = window as unknown as { __ends: unknown[]; __ready: boolean };

@@ -29,7 +29,7 @@ for (const renderer of ['webgl', 'software'] as const) {
     const glb = await mapsGlb();
     await page.route('**/wild/maps.glb', (route) => route.fulfill({ status: 200, contentType: 'model/gltf-binary', body: Buffer.from(glb) }));
     await openPage(page);
-    const seen = await mountHtml(page, `<glass-plane-scene renderer="${renderer}" time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
+    const seen = await mountHtml(page, `<glass-plane-scene refine="0" renderer="${renderer}" time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
       <glass-object src="/wild/maps.glb" position="0 0.3 1.2"></glass-object>
     </glass-plane-scene>`);
     expect(seen.filter((e) => e.target === 'glass-object' && e.type !== 'progress').map((e) => e.type)).toEqual(['load']);

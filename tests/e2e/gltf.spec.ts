@@ -30,7 +30,7 @@ for (const [renderer, environment] of [['webgl', 'neutral'], ['software', 'neutr
     const glb = await productGlb();
     await page.route('**/wild/product.glb', (route) => route.fulfill({ status: 200, contentType: 'text/plain', body: Buffer.from(glb) }));
     await openPage(page);
-    const seen = await mountHtml(page, `<glass-plane-scene renderer="${renderer}" environment="${environment}" time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
+    const seen = await mountHtml(page, `<glass-plane-scene refine="0" renderer="${renderer}" environment="${environment}" time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
       <glass-object src="/wild/product.glb" position="0 0.3 1.2"></glass-object>
     </glass-plane-scene>`);
     expect(seen.filter((e) => e.target === 'glass-object' && e.type !== 'progress').map((e) => e.type)).toEqual(['load']);
@@ -63,7 +63,7 @@ test('a truncated GLB is an error naming the file and the place; the cube beside
   const glb = await productGlb();
   await page.route('**/wild/cut.glb', (route) => route.fulfill({ status: 200, contentType: 'model/gltf-binary', body: Buffer.from(glb.subarray(0, glb.length - 100)) }));
   await openPage(page);
-  const seen = await mountHtml(page, `<glass-plane-scene time="0" spin="0">
+  const seen = await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0">
     <glass-object shape="cube" position="-1 1 1"></glass-object>
     <glass-object src="/wild/cut.glb" position="1 1 1"></glass-object>
   </glass-plane-scene>`);
@@ -82,15 +82,15 @@ test("only a glTF model fetches glTF's chunk, and only a compressed one its deco
   const glb = await productGlb();
   await page.route('**/wild/product.glb', (route) => route.fulfill({ status: 200, contentType: 'text/plain', body: Buffer.from(glb) }));
   await openPage(page);
-  await mountHtml(page, `<glass-plane-scene time="0" spin="0"><glass-object src="/tests/e2e/pages/models/ngon-textured.obj"></glass-object></glass-plane-scene>`);
+  await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0"><glass-object src="/tests/e2e/pages/models/ngon-textured.obj"></glass-object></glass-plane-scene>`);
   // The decoder by its names: the built chunk (meshopt_decoder) or the package on the dev server
   // (meshoptimizer); the reader's own meshopt.ts is neither.
   const DECODER = ['meshopt_decoder', 'meshoptimizer'];
   expect(await fetchedChunks(page, ['gltf-model', 'gltf-worker', ...DECODER])).toEqual([]);
-  await mountHtml(page, `<glass-plane-scene time="0" spin="0"><glass-object src="/wild/product.glb"></glass-object></glass-plane-scene>`);
+  await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0"><glass-object src="/wild/product.glb"></glass-object></glass-plane-scene>`);
   expect(await fetchedChunks(page, ['gltf-model', ...DECODER])).toEqual(['gltf-model']);
   // gltfpack's duck (tests/data/gltf/SOURCES.md): meshopt, quantized, texture-transformed.
-  const seen = await mountHtml(page, `<glass-plane-scene time="0" spin="0"><glass-object src="/tests/data/gltf/Duck-meshopt.glb"></glass-object></glass-plane-scene>`);
+  const seen = await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0"><glass-object src="/tests/data/gltf/Duck-meshopt.glb"></glass-object></glass-plane-scene>`);
   expect(seen.filter((e) => e.target === 'glass-object' && e.type !== 'progress').map((e) => e.type)).toEqual(['load']);
   expect((await fetchedChunks(page, DECODER)).length).toBeGreaterThan(0);
   const triangles = await page.evaluate(() => ([...document.querySelectorAll('glass-plane-scene')].pop() as unknown as { scene: Scene }).scene.objects
@@ -104,7 +104,7 @@ test('a Draco decoder whose wasm fails is an error naming it, and the next Draco
   let refuse = true;
   await page.route('**/draco_decoder*.wasm', (route) => (refuse ? route.fulfill({ status: 503, body: 'busy' }) : route.continue()));
   await openPage(page);
-  const ending = async (src: string) => (await mountHtml(page, `<glass-plane-scene time="0" spin="0"><glass-object src="${src}"></glass-object></glass-plane-scene>`))
+  const ending = async (src: string) => (await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0"><glass-object src="${src}"></glass-object></glass-plane-scene>`))
     .filter((e) => e.target === 'glass-object' && (e.type === 'load' || e.type === 'error'));
   const failed = await ending('/tests/data/gltf/Box_Draco.glb?first');
   expect(failed.map((e) => e.type)).toEqual(['error']);
@@ -122,7 +122,7 @@ test('the standalone bundle loads a plain, a meshopt and a Draco GLB, each decod
   await page.route('**/wild/product.glb', (route) => route.fulfill({ status: 200, contentType: 'text/plain', body: Buffer.from(glb) }));
   await openPage(page, 'standalone');
   const loads = async (src: string) => {
-    const seen = await mountHtml(page, `<glass-plane-scene time="0" spin="0"><glass-object src="${src}"></glass-object></glass-plane-scene>`);
+    const seen = await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0"><glass-object src="${src}"></glass-object></glass-plane-scene>`);
     return seen.filter((e) => e.target === 'glass-object' && e.type !== 'progress').map((e) => e.type);
   };
   const fetched = () => page.evaluate(() => performance.getEntriesByType('resource').map((e) => e.name.split('/').pop()!)

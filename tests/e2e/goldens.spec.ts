@@ -63,7 +63,7 @@ test('README picture with color-space none: the frame before color-space, byte f
 // at the cube's contact, the sphere's light spread wide.
 test('README picture: a rough glass floor at 640×360', async ({ page }) => {
   await openPage(page);
-  await mountHtml(page, `<glass-plane-scene time="0" spin="0" pixel-ratio="1" ior="10" roughness="0.3"
+  await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0" pixel-ratio="1" ior="10" roughness="0.3"
     glass-center="0 0 0" glass-normal="0 1 0" glass-size="8 8" background="0.1 0.1 0.12"
     camera-position="0.3 1.9 5.2" camera-target="0 0.6 0">
     <glass-object shape="cube" position="-0.9 0.5 0.2" rotation="0 25 0" diffuse="0.9 0.3 0.3" ambient="0.9 0.3 0.3"></glass-object>
@@ -82,7 +82,7 @@ test('README picture: a GLB on a glass floor at 640×360', async ({ page }) => {
   const glb = await bunnyGlb();
   await page.route('**/wild/bunny.glb', (route) => route.fulfill({ status: 200, contentType: 'model/gltf-binary', body: Buffer.from(glb) }));
   await openPage(page);
-  await mountHtml(page, `<glass-plane-scene time="0" spin="0" pixel-ratio="1" ior="1.5" samples="4"
+  await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0" pixel-ratio="1" ior="1.5" samples="4"
     glass-center="0 0 0" glass-normal="0 1 0" glass-size="8 8" background="0.1 0.1 0.12"
     camera-position="0.2 1.5 3.4" camera-target="0 0.55 0">
     <glass-object src="/wild/bunny.glb"></glass-object>

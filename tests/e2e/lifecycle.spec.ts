@@ -318,7 +318,7 @@ test.describe('context loss', () => {
 
   test('an image texture survives the loss: after the restore a textured object draws the pixels it drew before', async ({ page }) => {
     await openPage(page);
-    const cube = (texture: string) => `<glass-plane-scene time="0" spin="0" glass-size="0 0" camera-position="0 0 2.5" camera-rotation="-90 0"
+    const cube = (texture: string) => `<glass-plane-scene refine="0" time="0" spin="0" glass-size="0 0" camera-position="0 0 2.5" camera-rotation="-90 0"
       style="width: 160px; height: 90px"><glass-object shape="cube" ${texture}></glass-object></glass-plane-scene>`;
     await mountHtml(page, cube(''));
     const procedural = await capture(page);

@@ -8,7 +8,7 @@ import { productGlb } from './helpers/gltf-models';
 const barLog = (page: import('@playwright/test').Page, srcs: string[]) => page.evaluate((srcs) => new Promise<string[]>((resolve) => {
   const log: string[] = [];
   const host = document.createElement('div');
-  host.innerHTML = `<glass-plane-scene time="0" spin="0" style="width:160px;height:90px">${srcs.map((s, i) => `<glass-object src="${s}" position="${i} 0 0"></glass-object>`).join('')}</glass-plane-scene>`;
+  host.innerHTML = `<glass-plane-scene refine="0" time="0" spin="0" style="width:160px;height:90px">${srcs.map((s, i) => `<glass-object src="${s}" position="${i} 0 0"></glass-object>`).join('')}</glass-plane-scene>`;
   const el = host.firstElementChild as HTMLElement;
   const bar = () => el.shadowRoot!.querySelector('[part=progress]') as HTMLElement;
   const shown = () => (bar().hidden ? 'hidden' : 'shown');
@@ -62,7 +62,7 @@ test('the poster covers the canvas until ready, then is removed; set after ready
   const seen = await page.evaluate(() => new Promise<string[]>((resolve) => {
     const poster = 'data:image/svg+xml,' + encodeURIComponent('<svg xmlns="http://www.w3.org/2000/svg" width="4" height="4"><rect width="4" height="4" fill="red"/></svg>');
     const host = document.createElement('div');
-    host.innerHTML = `<glass-plane-scene time="0" spin="0" style="width:160px;height:90px" poster="${poster}">
+    host.innerHTML = `<glass-plane-scene refine="0" time="0" spin="0" style="width:160px;height:90px" poster="${poster}">
       <glass-object src="/slow/product.glb"></glass-object></glass-plane-scene>`;
     const el = host.firstElementChild as HTMLElement;
     const img = () => el.shadowRoot!.querySelector('[part=poster]') as HTMLImageElement;

@@ -19,7 +19,7 @@ for (const c of CASES) {
     test.setTimeout(60_000);
     await page.route('**/wild/model.obj', (route) => route.fulfill({ status: 200, contentType: 'text/plain', body: c.body }));
     await openPage(page);
-    const seen = await mountHtml(page, `<glass-plane-scene time="0" spin="0">
+    const seen = await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0">
       <glass-object shape="cube" position="-1 1 1"></glass-object>
       <glass-object src="/wild/model.obj" position="1 1 1"></glass-object>
     </glass-plane-scene>`);
@@ -55,7 +55,7 @@ test('one face of 5 million corners (10 MB) beside a sphere: the page keeps answ
     const body = 'v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf' + ' 1 2 3 4'.repeat(1_250_000);
     const src = URL.createObjectURL(new Blob([body], { type: 'text/plain' }));
     const host = document.createElement('div');
-    host.innerHTML = `<glass-plane-scene style="width:160px;height:90px">
+    host.innerHTML = `<glass-plane-scene refine="0" style="width:160px;height:90px">
       <glass-object shape="sphere" position="-1 1 1"></glass-object>
       <glass-object src="${src}" position="1 1 1"></glass-object>
     </glass-plane-scene>`;

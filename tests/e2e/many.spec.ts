@@ -45,7 +45,7 @@ async function fill(page: Page): Promise<void> {
     all.forEach((attrs, i) => {
       const el = document.createElement('glass-plane-scene');
       el.id = `many-${i + 1}`;
-      for (const [k, v] of Object.entries(attrs)) if (v !== false) el.setAttribute(k, v === true ? '' : String(v));
+      for (const [k, v] of Object.entries({ refine: '0', ...attrs } as Attrs)) if (v !== false) el.setAttribute(k, v === true ? '' : String(v));
       el.addEventListener('ready', () => { log.ready[i] = true; }, { once: true });
       el.addEventListener('error', (e) => {
         const d = (e as unknown as CustomEvent<GlassPlaneSceneErrorDetail>).detail;

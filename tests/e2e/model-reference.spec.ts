@@ -30,7 +30,7 @@ for (const [renderer, space] of CASES) test(`${renderer}, color-space ${space}: 
     await new Promise((r) => setTimeout(r, 600));
     await route.continue();
   });
-  await mountHtml(page, `<glass-plane-scene renderer="${renderer}" color-space="${space}" time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
+  await mountHtml(page, `<glass-plane-scene refine="0" renderer="${renderer}" color-space="${space}" time="0" spin="0" samples="4" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">
     <glass-object src="/tests/e2e/pages/models/ngon-textured.obj" position="-1.5 0 1"></glass-object>
     <glass-light direction="0.3 0.8 1"></glass-light>
   </glass-plane-scene>`);

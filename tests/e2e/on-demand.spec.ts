@@ -92,7 +92,7 @@ test.describe('a scene of children goes idle', () => {
       const w = window as unknown as { __gpsCount?: number };
       const id = `gps-${(w.__gpsCount = (w.__gpsCount ?? 0) + 1)}`;
       const host = document.createElement('div');
-      host.innerHTML = `<glass-plane-scene id="${id}" ${attrs} style="width: 160px; height: 90px">${children}</glass-plane-scene>`;
+      host.innerHTML = `<glass-plane-scene refine="0" id="${id}" ${attrs} style="width: 160px; height: 90px">${children}</glass-plane-scene>`;
       const el = host.firstElementChild!;
       const timer = setTimeout(() => reject(new Error(`#${id}: no ready event within 30 s`)), 30_000);
       el.addEventListener('ready', () => {

@@ -10,7 +10,7 @@ import { Document, NodeIO } from '@gltf-transform/core';
 import { boxArrays } from './helpers/gltf-models';
 
 const PBR = 'pbr-gl';
-const SCENE = (children = '') => `<glass-plane-scene time="0" spin="0" samples="0" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">${children}</glass-plane-scene>`;
+const SCENE = (children = '') => `<glass-plane-scene refine="0" time="0" spin="0" samples="0" camera-position="1.8 1.6 4.5" camera-rotation="-100 -12">${children}</glass-plane-scene>`;
 const MODEL = '<glass-object src="/wild/product.glb" position="0 0.3 1.2"></glass-object>';
 const OBJ = '<glass-object shape="sphere" position="0 0.5 1"></glass-object>';
 

@@ -324,6 +324,7 @@ test.describe('properties set before the element is defined', () => {
         el.id = id;
         el.setAttribute('time', '1.25');
         el.setAttribute('spin', '0');
+        el.setAttribute('refine', '0'); // as mount() sets it
         el.style.width = '160px';
         el.style.height = '90px';
         return el;

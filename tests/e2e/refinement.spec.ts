@@ -11,6 +11,7 @@ import { defaultFrameState } from '../unit/helpers/frame-state';
 import { psnr } from './helpers/bounds';
 import { roughFloorScene, ROUGH_FLOOR_VIEW } from '../../bench/rough-scene';
 import { VIEWS } from '../../bench/views';
+import { REFINE_DEFAULT } from '../../src/element/attributes';
 
 const N = 5;
 
@@ -148,6 +149,31 @@ for (const renderer of ['webgl', 'software'] as const) test(`${renderer}: whenRe
   expect(stopped.slice(-6)).toEqual([1, 2, 3, 4, 5, 'refined']);
   expect(stopped.slice(0, -6)).toEqual(renderer === 'software' && stopped.length === 7 ? [0] : []);
   expect(got.off).toEqual([0]);
+});
+
+test('by default a still view refines (the bench\'s figure), and moving frames draw one sample a pixel', async ({ page }) => {
+  await openPage(page);
+  const got = await page.evaluate(async () => {
+    const el = document.createElement('glass-plane-scene') as SceneElement;
+    el.style.width = '160px';
+    el.style.height = '90px';
+    const log: unknown[] = [];
+    el.addEventListener('frame', (e) => log.push((e as CustomEvent).detail.refinement));
+    el.addEventListener('refined', () => log.push('refined'));
+    document.body.append(el); // the live clock, spin 0.8: moving
+    await new Promise((r) => setTimeout(r, 300));
+    const moving = log.splice(0);
+    el.setAttribute('spin', '0');
+    await el.whenRefined();
+    return { moving, still: log.splice(0), refine: (el as unknown as { refine: number }).refine };
+  });
+  expect(got.refine).toBe(REFINE_DEFAULT);
+  expect(REFINE_DEFAULT).toBeGreaterThan(1);
+  expect(got.moving.length).toBeGreaterThan(2);
+  expect(got.moving.every((k) => k === 0)).toBe(true);
+  // A frame of the spin may still be on its way when it stops.
+  const still = got.still.filter((k, i) => k !== 0 || i > 0);
+  expect(still).toEqual([...Array.from({ length: REFINE_DEFAULT }, (_, i) => i + 1), 'refined']);
 });
 
 test('refine="0" and color-space="none" draw one frame, refine nothing and fire no refined', async ({ page }) => {

@@ -6,7 +6,7 @@ import { mountHtml } from './helpers/scene-children';
 import { differingBytes } from '../unit/helpers/pixel-diff';
 import type { Scene } from '../../src/scene/scene';
 
-const scene = (cube: string) => `<glass-plane-scene time="0" spin="0" debug-view="reflection" style="width:160px;height:90px">
+const scene = (cube: string) => `<glass-plane-scene refine="0" time="0" spin="0" debug-view="reflection" style="width:160px;height:90px">
   ${cube}<glass-object shape="sphere" position="0.6 1 -1.2"></glass-object></glass-plane-scene>`;
 const CUBE = '<glass-object shape="cube" position="-0.8 1 0.9" rotation="0 30 0"';
 

@@ -30,7 +30,7 @@ test('a dense mesh\'s reflection draws the clustered copy its size in the reflec
   await openPage(page);
   await page.evaluate((size) => new Promise<void>((resolve, reject) => {
     const host = document.createElement('div');
-    host.innerHTML = `<glass-plane-scene id="lod" time="0" glass-center="0 -1 0" glass-normal="0 1 0" glass-size="8 8"
+    host.innerHTML = `<glass-plane-scene refine="0" id="lod" time="0" glass-center="0 -1 0" glass-normal="0 1 0" glass-size="8 8"
       camera-target="0 0.5 0" style="width: ${size.width}px; height: ${size.height}px"><glass-object shape="gaussian" resolution="225"></glass-object></glass-plane-scene>`;
     const el = host.firstElementChild!;
     const t = setTimeout(() => reject(new Error('no ready event')), 30_000);
@@ -58,7 +58,7 @@ test('a dense mesh\'s reflection draws the clustered copy its size in the reflec
 
 // The clustering is in a chunk of its own with flat shading and the Gaussian (render/mesh-extras.ts),
 // fetched by the renderer the first time a frame needs one of them; that frame waits for it.
-const GAUSSIAN = `<glass-plane-scene time="0" glass-center="0 -1 0" glass-normal="0 1 0" glass-size="8 8" camera-position="0 2 3"
+const GAUSSIAN = `<glass-plane-scene refine="0" time="0" glass-center="0 -1 0" glass-normal="0 1 0" glass-size="8 8" camera-position="0 2 3"
   camera-target="0 0.5 0" style="width: 160px; height: 90px"><glass-object shape="gaussian" resolution="225"></glass-object></glass-plane-scene>`;
 
 /** Mounts `html`; the triangles the element reports in its first `frame` event, and every warning text. */
@@ -78,7 +78,7 @@ const clusterFetched = (page: import('@playwright/test').Page) =>
 
 test('a scene with nothing to cluster, no Gaussian and smooth shading never fetches the mesh extras', async ({ page }) => {
   await openPage(page);
-  await firstFrameTriangles(page, '<glass-plane-scene time="0" style="width: 160px; height: 90px"></glass-plane-scene>');
+  await firstFrameTriangles(page, '<glass-plane-scene refine="0" time="0" style="width: 160px; height: 90px"></glass-plane-scene>');
   await page.waitForTimeout(200);
   expect(await clusterFetched(page)).toBe(false);
 });
@@ -105,7 +105,7 @@ test('if the mesh extras cannot load, the Gaussian is not drawn and the scene go
 });
 
 test('shading="flat": the first frame is flat, however slow the mesh extras (held back 600 ms)', async ({ page }) => {
-  const html = (shading: string) => `<glass-plane-scene time="0" spin="0" shading="${shading}" style="width: 160px; height: 90px"></glass-plane-scene>`;
+  const html = (shading: string) => `<glass-plane-scene refine="0" time="0" spin="0" shading="${shading}" style="width: 160px; height: 90px"></glass-plane-scene>`;
   await page.route('**/mesh-extras*', async (route) => {
     await new Promise((r) => setTimeout(r, 600));
     await route.continue();

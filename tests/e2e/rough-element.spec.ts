@@ -12,7 +12,7 @@ import { samePixels as same } from './helpers/chunks';
 
 const W = 160, H = 90;
 /** The bench's floor as markup: the glass, the cube resting on it, the sphere 1.5 above it, its camera. */
-const FLOOR = (renderer: string, roughness: string | null) => `<glass-plane-scene renderer="${renderer}" time="0" spin="0"
+const FLOOR = (renderer: string, roughness: string | null) => `<glass-plane-scene refine="0" renderer="${renderer}" time="0" spin="0"
   style="width:${W}px;height:${H}px" pixel-ratio="1" ior="10" ${roughness === null ? '' : `roughness="${roughness}"`}
   glass-center="0 0 0" glass-normal="0 1 0" glass-size="8 8" background="0.1 0.1 0.12"
   camera-position="0.3 1.9 5.2" camera-target="0 0.6 0">

@@ -6,7 +6,7 @@ import { mountHtml } from './helpers/scene-children';
 import { compareImages } from './helpers/golden';
 import { note } from './helpers/bounds';
 
-const BASE = `<glass-plane-scene time="0" spin="0" samples="0" camera-position="2.2 2.2 4.5" camera-rotation="-115 -18"
+const BASE = `<glass-plane-scene refine="0" time="0" spin="0" samples="0" camera-position="2.2 2.2 4.5" camera-rotation="-115 -18"
     glass-normal="0 1 0" glass-center="0 0 0" glass-size="6 6">
   <glass-object id="o" shape="sphere" position="0 0.8 0" scale="1.2" shininess="32"></glass-object>
   <glass-object id="m" src="/tests/e2e/pages/models/ngon-textured.obj" position="-2 0.3 -1" scale="0.6"></glass-object>
@@ -68,7 +68,7 @@ test('every attribute of the children (docs/scene-model.md#glass-object) changes
 
 test('the reflection skips (docs/knobs.md#reflection-skips) hold for any glass placement: a glass floor out of view, seen edge-on, or absent', async ({ page }) => {
   await openPage(page);
-  await mountHtml(page, `<glass-plane-scene time="0" spin="0" glass-normal="0 1 0" glass-center="0 0 0" glass-size="6 6"
+  await mountHtml(page, `<glass-plane-scene refine="0" time="0" spin="0" glass-normal="0 1 0" glass-center="0 0 0" glass-size="6 6"
       camera-position="0 2 5" camera-rotation="-90 -20"><glass-object shape="cube" position="0 1 0"></glass-object></glass-plane-scene>`);
   const reflection = (attrs: Record<string, string>) => page.evaluate((attrs) => new Promise<{ ran: boolean; reason?: string }>((resolve) => {
     const el = document.querySelector('glass-plane-scene')!;

@@ -5,7 +5,7 @@ import { note } from './helpers/bounds';
 import { mountHtml } from './helpers/scene-children';
 import { compareImages } from './helpers/golden';
 
-const CUBE = (texture: string) => `<glass-plane-scene time="0" spin="0" glass-size="0 0" camera-position="0 0 2.5" camera-rotation="-90 0"
+const CUBE = (texture: string) => `<glass-plane-scene refine="0" time="0" spin="0" glass-size="0 0" camera-position="0 0 2.5" camera-rotation="-90 0"
   style="width: 160px; height: 90px"><glass-object shape="cube" ${texture}></glass-object></glass-plane-scene>`;
 
 /** Frames until `done()` holds in the page (images decode asynchronously). */

@@ -44,7 +44,7 @@ test('WebGL: a glass reflecting light above 1, tone mapped, against the referenc
 
 test('the element: tone-mapping and exposure change the picture; `none` is the default scene\'s frame exactly', async ({ page }) => {
   await openPage(page);
-  const SCENE = (attrs: string) => `<glass-plane-scene time="0" spin="0" ${attrs}></glass-plane-scene>`;
+  const SCENE = (attrs: string) => `<glass-plane-scene refine="0" time="0" spin="0" ${attrs}></glass-plane-scene>`;
   const shot = async (attrs: string) => {
     await openPage(page);
     await mountHtml(page, SCENE(attrs));

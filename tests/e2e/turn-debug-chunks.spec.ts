@@ -13,7 +13,7 @@ const TURN = 'group-rotation';
 const VIEWS = 'debug-views';
 /** A quarter turn about y: the box and the sphere change places on screen. */
 const QUARTER: [number, number, number, number] = [0, Math.SQRT1_2, 0, Math.SQRT1_2];
-const SCENE = (attrs = '') => `<glass-plane-scene time="0" spin="0" ${attrs}></glass-plane-scene>`;
+const SCENE = (attrs = '') => `<glass-plane-scene refine="0" time="0" spin="0" ${attrs}></glass-plane-scene>`;
 
 interface Turnable extends HTMLElement {
   objectRotation: number[];

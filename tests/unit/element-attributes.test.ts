@@ -27,7 +27,7 @@ describe('defaults (docs/element.md#attribute-table)', () => {
     expect(defaultAttributes()).toEqual({
       transparency: 0.5, cubeDistance: 0.75, ior: 1.5, fresnel: 'exact', cameraPosition: [3.6, 2.4, 0.2],
       cameraRotation: [-169, -23.6], fov: 60, projection: 'perspective', controls: null, renderer: 'auto', cameraTarget: null,
-      cameraSrc: null, poster: null, spin: 0.8, time: null, debugView: 'none', reflectionScale: 1, samples: 4, refine: 0, shading: 'phong',
+      cameraSrc: null, poster: null, spin: 0.8, time: null, debugView: 'none', reflectionScale: 1, samples: 4, refine: 10, shading: 'phong',
       tessellation: 'auto', pixelRatio: 'auto', reflectionFormat: 'rgba8', colorSpace: 'srgb', toneMapping: 'auto', exposure: 1, environment: 'neutral', environmentIntensity: 1, roughness: 0,
       roughnessQuality: 'medium', glassCenter: [0, 1, 0], glassNormal: [0, 0, 1], glassSize: [8, 4], background: [0.1, 0.1, 0.1],
     });
@@ -187,8 +187,9 @@ describe('refine: a whole number of frames, 0..1024', () => {
     expectParse('refine', '1025', 1024, 'expected a whole number of frames 0..1024; using 1024');
     expectParse('refine', '-1', 0, 'expected a whole number of frames 0..1024; using 0');
     expectParse('refine', 'Infinity', 1024, 'expected a whole number of frames 0..1024; using 1024');
-    expectParse('refine', 'lots', 0, 'not a number, using 0');
-    expectParse('refine', '', 0, 'not a number, using 0');
+    expectParse('refine', 'lots', 10, 'not a number, using 10');
+    expectParse('refine', '', 10, 'not a number, using 10');
+    expectParse('refine', null, 10);
     expect(format('refine', 82)).toBe('82');
   });
 });

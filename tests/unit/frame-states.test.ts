@@ -42,7 +42,7 @@ describe('the rest of the frame state', () => {
     expect({ ...s, cameraPosition: undefined, fov: undefined, yaw: undefined, pitch: undefined, projection: undefined, target: undefined }).toEqual({
       width: 320, height: 200, time: 2.5, spin: 0.6, cubeDistance: -1.25, transparency: 0.3, ior: 2.2, fresnel: 'classic', view: 'reflection',
       reflectionScale: 0.5, samples: 2, shading: 'flat', tessellation: 48, reflectionFormat: 'rgba16f', colorSpace: 'none',
-      roughness: 0.4, roughnessQuality: 'high', toneMapping: 'aces', exposure: 3, refinement: 0, refinementFrames: 0,
+      roughness: 0.4, roughnessQuality: 'high', toneMapping: 'aces', exposure: 3, refinement: 0, refinementFrames: 10,
       cameraPosition: undefined, fov: undefined, yaw: undefined, pitch: undefined, projection: undefined, target: undefined,
     });
     expect(s).toBe(states.current);
@@ -112,6 +112,6 @@ describe('refinement in the frame state (docs/refinement.md#the-attribute)', () 
     expect(refineFrames({ ...defaultAttributes(), refine: 10 })).toBe(10);
     expect(refineFrames({ ...defaultAttributes(), refine: 10, colorSpace: 'none' })).toBe(0);
     expect(refineFrames({ ...defaultAttributes(), refine: 10, debugView: 'fresnel' })).toBe(0);
-    expect(refineFrames(defaultAttributes())).toBe(0);
+    expect(refineFrames(defaultAttributes())).toBe(10); // docs/refinement.md#the-attribute: the default
   });
 });

@@ -45,7 +45,7 @@ export function expectOneWarning(consoleLog: ConsoleLog, text: string): void {
  * the element draws with the attribute set from the start (which must differ from the plain one).
  */
 export async function expectFrameHeldFor(page: Page, name: string, attribute: string, value: string): Promise<void> {
-  const scene = (attrs: string) => `<glass-plane-scene time="0" spin="0" ${attrs}></glass-plane-scene>`;
+  const scene = (attrs: string) => `<glass-plane-scene refine="0" time="0" spin="0" ${attrs}></glass-plane-scene>`;
   await openPage(page);
   await mountHtml(page, scene(`${attribute}="${value}"`));
   await wait(page, 300);

@@ -65,6 +65,8 @@ export async function mountHtml(page: Page, html: string, timeoutMs = 30_000): P
     const host = document.createElement('div');
     host.innerHTML = html;
     const el = host.querySelector('glass-plane-scene')!;
+    // The unrefined picture, unless the test asks for refinement (tests/e2e/fixtures.ts mount).
+    if (!el.hasAttribute('refine')) el.setAttribute('refine', '0');
     (el as HTMLElement).style.width = '160px';
     (el as HTMLElement).style.height = '90px';
     const seen: { type: string; target: string; detail: any }[] = [];
@@ -91,6 +93,7 @@ export async function mountFirstFrame(page: Page, html: string): Promise<{ width
     const host = document.createElement('div');
     host.innerHTML = html;
     const el = host.querySelector('glass-plane-scene') as HTMLElement & { capture(): ImageData };
+    if (!el.hasAttribute('refine')) el.setAttribute('refine', '0');
     el.addEventListener('frame', () => {
       const img = el.capture();
       const bytes = new Uint8Array(img.data.buffer);
