@@ -10,9 +10,13 @@ export const instrumented = process.env.GPS_MUTATION_RUN === '1';
 /**
  * Runs `body` and counts the garbage collections that started while it ran (node's 'gc'
  * performance entries, delivered after it). Collections in the wait for that delivery — the
- * test runner's own messages — are not the body's and are not counted.
+ * test runner's own messages — are not the body's and are not counted. `body` runs once before,
+ * uncounted: compiling it allocates (feedback vectors, optimized code), which a frame loop pays
+ * once, and on a young generation left nearly full by earlier tests that alone once started a
+ * collection in a fresh clone's run (1, where a loop allocating 32 bytes a call starts dozens).
  */
 export async function collections(body: () => void): Promise<number> {
+  body();
   let count = 0, start = Infinity, end = Infinity;
   const observer = new PerformanceObserver((list) => {
     for (const e of list.getEntries()) if (e.startTime >= start && e.startTime <= end) count++;
