@@ -7,7 +7,6 @@ precision highp float;
 
 uniform sampler2D uTexture;
 uniform sampler2D uReflection;
-uniform float uFootprint;       // the share of a pixel the body texture is read over: 1, or 1/side in a strata frame (docs/refinement.md#footprints)
 uniform float uTransparency;
 uniform float uIor;
 uniform vec3 uBodyTint;         // tint ⊙ darkness
@@ -64,7 +63,7 @@ void main() {
 #else
   vec3 r = min(texture(uReflection, uv).rgb, vec3(uCeiling));
 #endif
-  vec3 d = (uFootprint == 1.0 ? texture(uTexture, vUv) : textureGrad(uTexture, vUv, dFdx(vUv) * uFootprint, dFdy(vUv) * uFootprint)).rgb * uBodyTint;
+  vec3 d = mapRead(uTexture, vUv).rgb * uBodyTint; // over the stratum in a strata frame (footprint.glsl)
 #ifdef FRESNEL_CLASSIC
   // Classic, the original prototype's glass verbatim: colour = mix(D, R, F), alpha = (1 − T)(0.2 + 0.8F), straight alpha.
   float a = (1.0 - uTransparency) * (0.2 + 0.8 * f);

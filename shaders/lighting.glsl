@@ -6,20 +6,7 @@ precision highp float;
 // LIGHT_COUNT (1..4) and LIGHTi_POINT (true/false) come with the variant: each light is written
 // out with constant indices and a constant kind, so nothing is indexed or selected at run time
 // (a loop over uniform arrays cost the default scene 40% on SwiftShader).
-// The share of a pixel a material texture is read over (here, before pbr.glsl and standard.frag read it): 1, or 1/side in a
-// strata frame, whose textures are read over its stratum (docs/refinement.md#footprints). The screen derivatives are scaled,
-// not the level biased: under SwiftShader a bias of −log2(side) left the objects' average 10 dB from the supersampled one.
-uniform float uFootprint;
-
-/** A material texture at uv, read over uFootprint of a pixel (in the vertex stage, where nothing calls it: level 0). */
-vec4 mapRead(sampler2D map, vec2 uv) {
-#ifdef FRAGMENT_STAGE
-  if (uFootprint == 1.0) return texture(map, uv);
-  return textureGrad(map, uv, dFdx(uv) * uFootprint, dFdy(uv) * uFootprint);
-#else
-  return textureLod(map, uv, 0.0);
-#endif
-}
+// Material textures are read through footprint.glsl's mapRead, which comes before.
 uniform vec4 uLightVector[MAX_LIGHTS];   // a unit vector towards the light, or its eye-relative position
 uniform vec3 uLightAmbient[MAX_LIGHTS];
 uniform vec3 uLightDiffuse[MAX_LIGHTS];

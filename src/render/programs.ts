@@ -6,6 +6,7 @@ import glassFrag from '../../shaders/glass.frag?raw';
 import blitVert from '../../shaders/blit.vert?raw';
 import encodeFrag from '../../shaders/encode.frag?raw';
 import lighting from '../../shaders/lighting.glsl?raw';
+import footprint from '../../shaders/footprint.glsl?raw';
 import type { FresnelModel } from '../math/fresnel';
 import type { ToneMapping } from '../math/tone-map';
 import type { Shading } from '../frame/types';
@@ -59,7 +60,7 @@ function standardHeader(clip: ClipMode, shading: Shading, v: ObjectVariant, pbr:
   if (pbr !== null && v.alphaMask) header.push('#define ALPHA_MASK');
   header.push(`#define LIGHT_COUNT ${v.lights}`, `#define MAPPING_${v.mapping.toUpperCase()}`);
   for (let i = 0; i < MAX_LIGHTS; i++) header.push(`#define LIGHT${i}_POINT ${(v.pointMask >> i) & 1 ? 'true' : 'false'}`);
-  header.push(lighting);
+  header.push(footprint, lighting);
   if (environment !== null) header.push(environment);
   if (pbr !== null) header.push(pbr);
   return header;
@@ -88,7 +89,7 @@ export interface RoughSources {
 function glassHeader(model: FresnelModel, outputFresnel: boolean, roughDefines: string[] = []): string[] {
   const header = [`#define FRESNEL_${model.toUpperCase()}`];
   if (outputFresnel) header.push('#define OUTPUT_FRESNEL');
-  header.push(...roughDefines);
+  header.push(...roughDefines, footprint);
   return header;
 }
 

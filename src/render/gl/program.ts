@@ -42,7 +42,7 @@ export class Program {
     header: readonly string[] = [],
   ) {
     const vs = this.compile(gl.VERTEX_SHADER, withHeader(vertexSource, header));
-    // FRAGMENT_STAGE: what both stages share (lighting.glsl) may read textures with a bias, which only a fragment shader can.
+    // FRAGMENT_STAGE: what both stages share (footprint.glsl) may read textures by screen derivatives, which only a fragment shader has.
     const fs = this.compile(gl.FRAGMENT_SHADER, withHeader(fragmentSource, ['#define FRAGMENT_STAGE', ...header]), vs);
     const program = gl.createProgram()!;
     counter.add('programs');
