@@ -62,9 +62,9 @@ export default [
     tests: [SPEC],
   },
   {
-    name: 'R10 WebGL textures read over the pixel in strata frames (derivatives unscaled)',
+    name: 'R10 WebGL textures (materials and the glass body) read over the pixel in strata frames (derivatives unscaled)',
     why: GL,
-    edits: [{ file: 'shaders/lighting.glsl', find: 'dFdx(uv) * uFootprint, dFdy(uv) * uFootprint', replace: 'dFdx(uv), dFdy(uv)' }],
+    edits: [{ file: 'shaders/footprint.glsl', find: 'dFdx(uv) * uFootprint, dFdy(uv) * uFootprint', replace: 'dFdx(uv), dFdy(uv)' }],
     tests: [SPEC],
   },
   {
@@ -80,21 +80,33 @@ export default [
     tests: [SPEC],
   },
   {
-    name: 'R13 WebGL glass reads its body texture over the pixel in strata frames (derivatives unscaled)',
+    name: 'R13 WebGL glass reads its body texture over the pixel in strata frames (texture(), not mapRead)',
     why: GL,
-    edits: [{ file: 'shaders/glass.frag', find: 'dFdx(vUv) * uFootprint, dFdy(vUv) * uFootprint', replace: 'dFdx(vUv), dFdy(vUv)' }],
+    edits: [{ file: 'shaders/glass.frag', find: 'mapRead(uTexture, vUv)', replace: 'texture(uTexture, vUv)' }],
     tests: [SPEC],
   },
   {
     name: 'R14 WebGL glass biases its body texture\'s level by log2 uFootprint in strata frames instead of scaling its derivatives',
     why: GL,
-    edits: [{ file: 'shaders/glass.frag', find: 'textureGrad(uTexture, vUv, dFdx(vUv) * uFootprint, dFdy(vUv) * uFootprint)', replace: 'texture(uTexture, vUv, log2(uFootprint))' }],
+    edits: [{ file: 'shaders/glass.frag', find: 'mapRead(uTexture, vUv)', replace: 'texture(uTexture, vUv, log2(uFootprint))' }],
     tests: [SPEC],
   },
   {
-    name: 'R15 WebGL material textures biased by log2 uFootprint in strata frames instead of their derivatives scaled',
+    name: 'R15 WebGL textures (materials and the glass body) biased by log2 uFootprint in strata frames instead of their derivatives scaled',
     why: GL,
-    edits: [{ file: 'shaders/lighting.glsl', find: 'return textureGrad(map, uv, dFdx(uv) * uFootprint, dFdy(uv) * uFootprint);', replace: 'return texture(map, uv, log2(uFootprint));' }],
+    edits: [{ file: 'shaders/footprint.glsl', find: 'return textureGrad(map, uv, dFdx(uv) * uFootprint, dFdy(uv) * uFootprint);', replace: 'return texture(map, uv, log2(uFootprint));' }],
+    tests: [SPEC],
+  },
+  {
+    name: 'R16 the loop at rest while its still view still refines (whenRefined() settles on the preview)',
+    why: PAGE,
+    edits: [{ file: 'src/element/frame-loop.ts', find: 'return !this.dirty && !this.host.animating() && !this.refining();', replace: 'return !this.dirty && !this.host.animating();' }],
+    tests: [SPEC],
+  },
+  {
+    name: 'R17 the element\'s frame not counted as on its way (whenRefined() may settle before a CPU frame lands)',
+    why: PAGE,
+    edits: [{ file: 'src/element/glass-plane-scene.ts', find: '    this.events.started();\n', replace: '' }],
     tests: [SPEC],
   },
 ];

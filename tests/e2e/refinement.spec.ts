@@ -176,6 +176,29 @@ test('by default a still view refines (the bench\'s figure), and moving frames d
   expect(still).toEqual([...Array.from({ length: REFINE_DEFAULT }, (_, i) => i + 1), 'refined']);
 });
 
+test('software: whenRefined() asked while the last frame is on its way settles once it lands, not before', async ({ page }) => {
+  await openPage(page);
+  const got = await page.evaluate(() => new Promise<{ inFlight: boolean; landedAtResolve: boolean }>((resolve) => {
+    const el = document.createElement('glass-plane-scene') as SceneElement;
+    for (const [k, v] of Object.entries({ refine: '3', time: '1.25', spin: '0', renderer: 'software', 'pixel-ratio': '1' })) el.setAttribute(k, v);
+    // Big enough that a worker's frame takes longer than a task.
+    el.style.width = '640px';
+    el.style.height = '360px';
+    let last = 0;
+    el.addEventListener('frame', (e) => {
+      last = (e as CustomEvent).detail.refinement;
+      if (last !== 2) return;
+      // After the animation frame that starts frame 3 (the loop asks for it after this event): it is on its way.
+      requestAnimationFrame(() => setTimeout(() => {
+        const inFlight = last === 2;
+        void el.whenRefined().then(() => resolve({ inFlight, landedAtResolve: last === 3 }));
+      }, 0));
+    });
+    document.body.append(el);
+  }));
+  expect(got).toEqual({ inFlight: true, landedAtResolve: true });
+});
+
 test('refine="0" and color-space="none" draw one frame, refine nothing and fire no refined', async ({ page }) => {
   await openPage(page);
   for (const attrs of [{ refine: '0' }, { refine: String(N), 'color-space': 'none' }, { refine: String(N), 'debug-view': 'scene' }]) {
